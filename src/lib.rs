@@ -1,0 +1,11 @@
+//! LTC Lab: shading many point lights with a physically based BRDF (GGX specular + Burley
+//! diffuse) approximated by Linearly Transformed Cosines. The math (`brdf`, `ltc`) knows
+//! nothing of GPUs or windows; `cpu` is the reference renderer built on it.
+
+pub mod brdf;
+pub mod cpu;
+pub mod error;
+pub mod ltc;
+pub mod metrics;
+pub mod output;
+pub mod scene;

@@ -1,0 +1,333 @@
+//! The LTC fitter: the method of selfshadow/ltc_code `fit/fitLTC.cpp` as DESIGN §2 describes
+//! it, in f64. Per cell (θo, α): a frame whose z axis is the lobe's average direction, free
+//! `m00, m11, m02` in `M = [x y z] · [[m00, 0, m02], [0, m11, 0], [0, 0, 1]]`, the error
+//! `Σ |f cos − n D|³ / (pdf_ltc + pdf_brdf)` over 32×32 midpoint strata sampled from both
+//! distributions, minimized by Nelder–Mead, warm-started from the neighbouring cell
+//! (roughness from 1 down, view from normal to grazing).
+
+use glam::{DMat3, DVec3};
+use rayon::prelude::*;
+
+use crate::ltc::lobe::{Lobe, Stratum, lobe_moments, strata};
+use crate::ltc::lut::{Lut, LutCell};
+use crate::ltc::nelder_mead::{Minimum, nelder_mead};
+use crate::ltc::{Clipping, Ltc, Normalization, mat3_rows};
+
+/// How a table is fitted. The defaults are ltc_code's where it has one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FitSettings {
+    /// Cells per side (ltc_code: 64).
+    pub size: usize,
+    /// Smallest GGX α; also the floor of the free diagonal entries (ltc_code's `MIN_ALPHA`).
+    pub alpha_min: f64,
+    /// Strata per side for the fit error (ltc_code: 32).
+    pub fit_samples: usize,
+    /// Strata per side for the magnitudes and average direction. ltc_code uses 32; 256 brings
+    /// the f64 magnitudes within 1e-3 of quadrature (see the `magnitudes` tests).
+    pub moment_samples: usize,
+    /// Strata per side for the pointwise error stored in the `err` channels.
+    pub error_samples: usize,
+    /// Initial simplex step (ltc_code: 0.05).
+    pub simplex_delta: f64,
+    /// Relative tolerance on the simplex values (ltc_code: 1e-5).
+    pub tolerance: f64,
+    /// Iteration limit (ltc_code: 100).
+    pub max_iterations: usize,
+}
+
+/// α_min = 1e-4, the `MIN_ALPHA` of ltc_code's published fit. Smaller (ltc_code's later 1e-5)
+/// makes the r = 0 lobe a near-delta whose `M⁻¹` entries grow like 1/α (1e5) — an f32
+/// bilinear blend with the next column is then meaningless; larger (a fork's 5e-4, Unity's
+/// 1e-3) clamps the r = 1/63 column (α = r² = 2.5e-4) onto the r = 0 one, so the table loses
+/// a column of its resolution. Any value below 2.5e-4 keeps every column distinct.
+pub const ALPHA_MIN: f64 = 1e-4;
+
+impl Default for FitSettings {
+    fn default() -> Self {
+        Self {
+            size: 64,
+            alpha_min: ALPHA_MIN,
+            fit_samples: 32,
+            moment_samples: 256,
+            error_samples: 64,
+            simplex_delta: 0.05,
+            tolerance: 1e-5,
+            max_iterations: 100,
+        }
+    }
+}
+
+/// The sample patterns of a fit, made once per table.
+#[derive(Clone, Debug)]
+pub struct FitStrata {
+    pub fit: Vec<Stratum>,
+    pub moments: Vec<Stratum>,
+}
+
+impl FitStrata {
+    pub fn new(settings: &FitSettings) -> Self {
+        Self {
+            fit: strata(settings.fit_samples),
+            moments: strata(settings.moment_samples),
+        }
+    }
+}
+
+/// ltc_code clamps θo just below 90° (1.57 rad) so that the grazing row has `n·v > 0`.
+pub const THETA_MAX: f64 = 1.57;
+
+/// The LUT axes of DESIGN §2: column `i` ↔ `r = i/(N−1)`, `α = max(r², α_min)`.
+pub fn cell_alpha(i: usize, size: usize, alpha_min: f64) -> f64 {
+    let r = i as f64 / (size - 1) as f64;
+    (r * r).max(alpha_min)
+}
+
+/// Row `j` ↔ `sqrt(1 − cos θo) = j/(N−1)`, θo clamped to `THETA_MAX`.
+pub fn cell_theta(j: usize, size: usize) -> f64 {
+    let x = j as f64 / (size - 1) as f64;
+    (1.0 - x * x).clamp(-1.0, 1.0).acos().min(THETA_MAX)
+}
+
+/// The free parameters `m00, m11, m02` and the frame they act in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LtcParams {
+    pub m: [f64; 3],
+    /// `[x y z]`: columns are the frame's axes in the shading frame.
+    pub frame: DMat3,
+}
+
+impl LtcParams {
+    /// `M = [x y z] · [[m00, 0, m02], [0, m11, 0], [0, 0, 1]]` (ltc_code's `LTC::update`).
+    pub fn brdf_from_cos(&self) -> DMat3 {
+        let [m00, m11, m02] = self.m;
+        self.frame * crate::ltc::mat3_from_rows([[m00, 0.0, m02], [0.0, m11, 0.0], [0.0, 0.0, 1.0]])
+    }
+}
+
+/// The frame of a non-normal cell: z along the lobe's average direction, y = the shading y.
+pub fn frame_from_average(dir: DVec3) -> DMat3 {
+    DMat3::from_cols(DVec3::new(dir.z, 0.0, -dir.x), DVec3::Y, dir)
+}
+
+/// ltc_code's fit objective: `Σ |f cos − n D|³ / (pdf_ltc + pdf_brdf)` over `n × n` strata
+/// sampled from the LTC and from the lobe, divided by `n²`.
+pub fn fit_error(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, strata: &[Stratum]) -> f64 {
+    mis_sum(lobe, v, alpha, ltc, strata, |diff| diff.abs().powi(3))
+}
+
+/// The pointwise error of DESIGN §4: `∫ |n D − f cos| dω / ∫ f cos dω`, estimated by the
+/// same two-distribution (balance-heuristic) sampling with `n × n` strata each.
+pub fn pointwise_error(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, n: usize) -> f64 {
+    mis_sum(lobe, v, alpha, ltc, &strata(n), f64::abs) / ltc.norm
+}
+
+/// `(1/n²) Σ g(f cos − n D) / (pdf_ltc + pdf_lobe)` over both sample sets: an unbiased
+/// estimate of `∫ g(f cos − n D) dω` wherever either density covers the integrand.
+fn mis_sum(
+    lobe: Lobe,
+    v: DVec3,
+    alpha: f64,
+    ltc: &Ltc,
+    strata: &[Stratum],
+    g: impl Fn(f64) -> f64,
+) -> f64 {
+    let term = |l: DVec3| {
+        let exact = lobe.eval(v, l, alpha);
+        // The fitted distribution covers the whole sphere: only the transformed cosine's own
+        // clamp applies, never the horizon rule (light below the horizon is fit error).
+        let d = ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
+        let pdf = d + exact.pdf;
+        if pdf > 0.0 {
+            g(exact.value - ltc.norm * d) / pdf
+        } else {
+            0.0
+        }
+    };
+    let mut sum = 0.0;
+    for s in strata {
+        sum += term(ltc.sample_cosine(s.cosine));
+        sum += term(lobe.sample_stratum(v, alpha, s));
+    }
+    sum / strata.len() as f64
+}
+
+/// One fitted cell.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CellFit {
+    pub params: LtcParams,
+    pub ltc: Ltc,
+    /// Final value of the fit objective.
+    pub objective: f64,
+    pub iterations: usize,
+    pub converged: bool,
+}
+
+/// Everything fixed for one cell while its parameters move.
+#[derive(Clone, Copy, Debug)]
+pub struct CellProblem {
+    pub lobe: Lobe,
+    pub alpha: f64,
+    pub view: DVec3,
+    pub norm: f64,
+    pub fresnel: f64,
+    pub frame: DMat3,
+    /// At normal view the lobe is rotationally symmetric: one free parameter (m00 = m11,
+    /// m02 = 0), as ltc_code does.
+    pub isotropic: bool,
+}
+
+impl CellProblem {
+    /// The cell (i, j) of a table, with its moments and frame (normal view: the identity).
+    pub fn new(lobe: Lobe, i: usize, j: usize, settings: &FitSettings, strata: &FitStrata) -> Self {
+        let alpha = cell_alpha(i, settings.size, settings.alpha_min);
+        let theta = cell_theta(j, settings.size);
+        let view = DVec3::new(theta.sin(), 0.0, theta.cos());
+        let moments = lobe_moments(lobe, view, alpha, &strata.moments);
+        let isotropic = j == 0;
+        Self {
+            lobe,
+            alpha,
+            view,
+            norm: moments.norm,
+            fresnel: moments.fresnel,
+            frame: if isotropic {
+                DMat3::IDENTITY
+            } else {
+                frame_from_average(moments.average_dir)
+            },
+            isotropic,
+        }
+    }
+
+    /// The parameters as ltc_code's `FitLTC::update` applies them: diagonal entries floored
+    /// at α_min, and tied together at normal view.
+    pub fn params(&self, p: &[f64; 3], alpha_min: f64) -> LtcParams {
+        let m00 = p[0].max(alpha_min);
+        let m = if self.isotropic {
+            [m00, m00, 0.0]
+        } else {
+            [m00, p[1].max(alpha_min), p[2]]
+        };
+        LtcParams {
+            m,
+            frame: self.frame,
+        }
+    }
+
+    pub fn ltc(&self, params: &LtcParams) -> Ltc {
+        Ltc::from_brdf_from_cos(params.brdf_from_cos(), self.norm, self.fresnel)
+    }
+
+    /// Runs Nelder–Mead from `start`; `observe` sees the best objective per iteration.
+    pub fn fit(
+        &self,
+        start: [f64; 3],
+        settings: &FitSettings,
+        strata: &FitStrata,
+        observe: impl FnMut(usize, f64),
+    ) -> CellFit {
+        let objective = |p: &[f64; 3]| {
+            let ltc = self.ltc(&self.params(p, settings.alpha_min));
+            fit_error(self.lobe, self.view, self.alpha, &ltc, &strata.fit)
+        };
+        let Minimum {
+            point,
+            value,
+            iterations,
+            converged,
+        } = nelder_mead(
+            start,
+            settings.simplex_delta,
+            settings.tolerance,
+            settings.max_iterations,
+            objective,
+            observe,
+        );
+        let params = self.params(&point, settings.alpha_min);
+        CellFit {
+            params,
+            ltc: self.ltc(&params),
+            objective: value,
+            iterations,
+            converged,
+        }
+    }
+}
+
+/// Fits one lobe over the whole table. ltc_code's serial order visits α from 1 down and,
+/// within each α, θo from normal to grazing; each normal-view cell starts from the previous
+/// α's normal-view result and every other cell from the cell before it in θo. So the
+/// normal-view cells form one chain (fitted first, serially) and each α column is then an
+/// independent chain: the columns run in parallel and give exactly the serial result.
+/// `on_cell` is called once per fitted cell (for a progress bar).
+pub fn fit_lobe(
+    lobe: Lobe,
+    settings: &FitSettings,
+    on_cell: &(dyn Fn() + Sync),
+) -> Vec<(CellFit, CellProblem)> {
+    let n = settings.size;
+    assert!(n >= 2, "a table needs at least 2 cells per side");
+    let strata = FitStrata::new(settings);
+    let mut normal_view: Vec<Option<(CellFit, CellProblem)>> = vec![None; n];
+    let mut start = [1.0, 1.0, 0.0];
+    for i in (0..n).rev() {
+        let problem = CellProblem::new(lobe, i, 0, settings, &strata);
+        let fit = problem.fit(start, settings, &strata, |_, _| {});
+        start = fit.params.m;
+        normal_view[i] = Some((fit, problem));
+        on_cell();
+    }
+
+    let columns: Vec<Vec<(CellFit, CellProblem)>> = normal_view
+        .into_par_iter()
+        .enumerate()
+        .map(|(i, first)| {
+            let first = first.expect("every normal-view cell was fitted");
+            let mut column = Vec::with_capacity(n);
+            let mut start = first.0.params.m;
+            column.push(first);
+            for j in 1..n {
+                let problem = CellProblem::new(lobe, i, j, settings, &strata);
+                let fit = problem.fit(start, settings, &strata, |_, _| {});
+                start = fit.params.m;
+                column.push((fit, problem));
+                on_cell();
+            }
+            column
+        })
+        .collect();
+
+    // Row-major: index j * n + i.
+    (0..n)
+        .flat_map(|j| (0..n).map(move |i| (i, j)))
+        .map(|(i, j)| columns[i][j])
+        .collect()
+}
+
+/// The stored form of DESIGN §2: `M⁻¹` divided by its middle element, as
+/// `[m00, m02, m20, m22]` of `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
+pub fn normalized_cos_from_brdf(ltc: &Ltc) -> [f64; 4] {
+    let r = mat3_rows(ltc.cos_from_brdf);
+    let s = r[1][1];
+    [r[0][0] / s, r[0][2] / s, r[2][0] / s, r[2][2] / s]
+}
+
+/// Fits both lobes and assembles the LUT, with each cell's pointwise error.
+pub fn fit_table(settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> Lut {
+    let spec = fit_lobe(Lobe::Specular, settings, on_cell);
+    let diff = fit_lobe(Lobe::Diffuse, settings, on_cell);
+    let cells = spec
+        .par_iter()
+        .zip(diff.par_iter())
+        .map(|((s, sp), (d, dp))| {
+            let s_err = pointwise_error(sp.lobe, sp.view, sp.alpha, &s.ltc, settings.error_samples);
+            let d_err = pointwise_error(dp.lobe, dp.view, dp.alpha, &d.ltc, settings.error_samples);
+            LutCell::from_fits(&s.ltc, s_err, &d.ltc, d_err)
+        })
+        .collect();
+    Lut {
+        size: settings.size,
+        alpha_min: settings.alpha_min,
+        cells,
+    }
+}

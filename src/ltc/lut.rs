@@ -1,0 +1,353 @@
+//! The LTC look-up table of DESIGN §2: an N×N f32 EXR (x = column i ↔ roughness, y = row j ↔
+//! view angle) with 13 named channels, its bilinear sampler (exactly the GPU's addressing),
+//! and the shipped 64×64 table embedded in the binary.
+
+use std::io::Cursor;
+use std::path::Path;
+use std::sync::OnceLock;
+
+use exr::prelude::*;
+use glam::DVec3;
+
+use crate::error::{InputError, Result, write_atomically};
+use crate::ltc::{Ltc, LtcPair, mat3_from_rows};
+
+/// The channels in DESIGN §2's order; `Channel as usize` indexes a cell.
+pub const CHANNEL_NAMES: [&str; CHANNEL_COUNT] = [
+    "spec.m00",
+    "spec.m02",
+    "spec.m20",
+    "spec.m22",
+    "spec.norm",
+    "spec.fresnel",
+    "spec.err",
+    "diff.m00",
+    "diff.m02",
+    "diff.m20",
+    "diff.m22",
+    "diff.norm",
+    "diff.err",
+];
+pub const CHANNEL_COUNT: usize = 13;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Channel {
+    SpecM00,
+    SpecM02,
+    SpecM20,
+    SpecM22,
+    SpecNorm,
+    SpecFresnel,
+    SpecErr,
+    DiffM00,
+    DiffM02,
+    DiffM20,
+    DiffM22,
+    DiffNorm,
+    DiffErr,
+}
+
+/// The header attribute that records α_min (the `alpha` of column 0).
+const ALPHA_MIN_ATTRIBUTE: &str = "ltc.alpha_min";
+
+/// The shipped table (`luts/ltc.exr`, made by `ltc-lab fit`), so the lab runs from anywhere.
+pub const EMBEDDED_EXR: &[u8] = include_bytes!("../../luts/ltc.exr");
+
+/// One cell: the channels of `CHANNEL_NAMES`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LutCell(pub [f32; CHANNEL_COUNT]);
+
+impl LutCell {
+    /// From fitted lobes: `M⁻¹` normalized by its middle element (DESIGN §2).
+    pub fn from_fits(spec: &Ltc, spec_err: f64, diff: &Ltc, diff_err: f64) -> Self {
+        let s = crate::ltc::fit::normalized_cos_from_brdf(spec);
+        let d = crate::ltc::fit::normalized_cos_from_brdf(diff);
+        let values = [
+            s[0],
+            s[1],
+            s[2],
+            s[3],
+            spec.norm,
+            spec.fresnel,
+            spec_err,
+            d[0],
+            d[1],
+            d[2],
+            d[3],
+            diff.norm,
+            diff_err,
+        ];
+        Self(values.map(|x| x as f32))
+    }
+
+    pub fn get(&self, c: Channel) -> f32 {
+        self.0[c as usize]
+    }
+}
+
+/// A sampled cell in f64: what the renderer and `eval` use.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LutSample(pub [f64; CHANNEL_COUNT]);
+
+impl LutSample {
+    pub fn get(&self, c: Channel) -> f64 {
+        self.0[c as usize]
+    }
+
+    /// Both lobes as `Ltc`s: `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
+    pub fn ltc_pair(&self) -> LtcPair {
+        use Channel::*;
+        let lobe = |m00, m02, m20, m22, norm, fresnel| {
+            Ltc::from_cos_from_brdf(
+                mat3_from_rows([
+                    [self.get(m00), 0.0, self.get(m02)],
+                    [0.0, 1.0, 0.0],
+                    [self.get(m20), 0.0, self.get(m22)],
+                ]),
+                self.get(norm),
+                fresnel,
+            )
+        };
+        LtcPair {
+            spec: lobe(
+                SpecM00,
+                SpecM02,
+                SpecM20,
+                SpecM22,
+                SpecNorm,
+                self.get(SpecFresnel),
+            ),
+            diff: lobe(DiffM00, DiffM02, DiffM20, DiffM22, DiffNorm, 0.0),
+        }
+    }
+}
+
+/// An N×N table; `cells[j * size + i]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lut {
+    pub size: usize,
+    pub alpha_min: f64,
+    pub cells: Vec<LutCell>,
+}
+
+impl Lut {
+    /// The table embedded in the binary (parsed once).
+    pub fn embedded() -> &'static Lut {
+        static LUT: OnceLock<Lut> = OnceLock::new();
+        LUT.get_or_init(|| {
+            Lut::from_exr_bytes(EMBEDDED_EXR, "embedded luts/ltc.exr")
+                .expect("the embedded LUT is checked by the test suite")
+        })
+    }
+
+    /// Reads and validates a LUT file; errors name the file.
+    pub fn read(path: &Path) -> Result<Lut> {
+        let name = path.display().to_string();
+        let bytes =
+            std::fs::read(path).map_err(|e| InputError::new(&name, format!("cannot read: {e}")))?;
+        Lut::from_exr_bytes(&bytes, &name)
+    }
+
+    /// The embedded table, or the file at `path` if one is given.
+    pub fn load(path: Option<&Path>) -> Result<std::borrow::Cow<'static, Lut>> {
+        match path {
+            Some(p) => Ok(std::borrow::Cow::Owned(Lut::read(p)?)),
+            None => Ok(std::borrow::Cow::Borrowed(Lut::embedded())),
+        }
+    }
+
+    pub fn from_exr_bytes(bytes: &[u8], name: &str) -> Result<Lut> {
+        let bad = |m: String| InputError::new(name, m);
+        let image = read()
+            .no_deep_data()
+            .largest_resolution_level()
+            .all_channels()
+            .first_valid_layer()
+            .all_attributes()
+            .from_buffered(Cursor::new(bytes))
+            .map_err(|e| bad(format!("not a readable OpenEXR LTC table ({e})")))?;
+        let layer = &image.layer_data;
+        let (w, h) = (layer.size.width(), layer.size.height());
+        if w != h || w < 2 {
+            return Err(bad(format!(
+                "the table must be square, at least 2×2; it is {w}×{h}"
+            )));
+        }
+        let alpha_min = match layer.attributes.other.get(&Text::from(ALPHA_MIN_ATTRIBUTE)) {
+            Some(AttributeValue::F64(a)) if a.is_finite() && *a > 0.0 && *a < 1.0 => *a,
+            Some(_) => {
+                return Err(bad(format!(
+                    "attribute {ALPHA_MIN_ATTRIBUTE} is not in (0, 1)"
+                )));
+            }
+            None => return Err(bad(format!("attribute {ALPHA_MIN_ATTRIBUTE} is missing"))),
+        };
+        let mut cells = vec![LutCell([0.0; CHANNEL_COUNT]); w * h];
+        for (c, channel_name) in CHANNEL_NAMES.iter().enumerate() {
+            let channel = layer
+                .channel_data
+                .list
+                .iter()
+                .find(|ch| ch.name == **channel_name)
+                .ok_or_else(|| bad(format!("channel {channel_name} is missing")))?;
+            let FlatSamples::F32(samples) = &channel.sample_data else {
+                return Err(bad(format!("channel {channel_name} is not 32-bit float")));
+            };
+            for (k, &x) in samples.iter().enumerate() {
+                if !x.is_finite() {
+                    return Err(bad(format!(
+                        "channel {channel_name} at cell (i={}, j={}) is {x}",
+                        k % w,
+                        k / w
+                    )));
+                }
+                cells[k].0[c] = x;
+            }
+        }
+        let lut = Lut {
+            size: w,
+            alpha_min,
+            cells,
+        };
+        lut.validate().map_err(bad)?;
+        Ok(lut)
+    }
+
+    /// Values no fit produces: a non-positive albedo or a singular or reflecting `M⁻¹`.
+    fn validate(&self) -> std::result::Result<(), String> {
+        use Channel::*;
+        for (k, cell) in self.cells.iter().enumerate() {
+            let at = format!("cell (i={}, j={})", k % self.size, k / self.size);
+            for (norm, m00, m02, m20, m22) in [
+                (SpecNorm, SpecM00, SpecM02, SpecM20, SpecM22),
+                (DiffNorm, DiffM00, DiffM02, DiffM20, DiffM22),
+            ] {
+                if cell.get(norm) <= 0.0 {
+                    return Err(format!(
+                        "{} at {at} is not positive",
+                        CHANNEL_NAMES[norm as usize]
+                    ));
+                }
+                let det = f64::from(cell.get(m00)) * f64::from(cell.get(m22))
+                    - f64::from(cell.get(m02)) * f64::from(cell.get(m20));
+                if det <= 0.0 {
+                    return Err(format!(
+                        "the {} matrix at {at} has determinant {det} (must be > 0)",
+                        &CHANNEL_NAMES[norm as usize][..4]
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    pub fn to_exr_bytes(&self) -> Vec<u8> {
+        let n = self.size;
+        let channels = CHANNEL_NAMES
+            .iter()
+            .enumerate()
+            .map(|(c, name)| {
+                AnyChannel::new(
+                    *name,
+                    FlatSamples::F32(self.cells.iter().map(|cell| cell.0[c]).collect()),
+                )
+            })
+            .collect();
+        let mut attributes = LayerAttributes::named("ltc");
+        attributes.other.insert(
+            Text::from(ALPHA_MIN_ATTRIBUTE),
+            AttributeValue::F64(self.alpha_min),
+        );
+        // ZIP is lossless: the round trip is bit-exact.
+        let encoding = Encoding {
+            compression: Compression::ZIP16,
+            ..Encoding::default()
+        };
+        let layer = Layer::new((n, n), attributes, encoding, AnyChannels::sort(channels));
+        let mut out = Cursor::new(Vec::new());
+        Image::from_layer(layer)
+            .write()
+            .to_buffered(&mut out)
+            .expect("writing an EXR to memory cannot fail");
+        out.into_inner()
+    }
+
+    /// Writes the table to `path` (atomically: no partial file on failure).
+    pub fn write(&self, path: &Path) -> Result<()> {
+        write_atomically(path, &self.to_exr_bytes())
+    }
+
+    pub fn cell(&self, i: usize, j: usize) -> &LutCell {
+        &self.cells[j * self.size + i]
+    }
+
+    /// The GPU texture coordinate of DESIGN §2:
+    /// `uv = (r, sqrt(1 − cos θo)) · (N−1)/N + 0.5/N`, `r = sqrt(α)`.
+    pub fn uv(&self, alpha: f64, cos_theta_o: f64) -> (f64, f64) {
+        let n = self.size as f64;
+        let r = alpha.max(0.0).sqrt();
+        let s = (1.0 - cos_theta_o.clamp(0.0, 1.0)).sqrt();
+        let scale = (n - 1.0) / n;
+        let bias = 0.5 / n;
+        (r * scale + bias, s * scale + bias)
+    }
+
+    /// Bilinear filtering at `uv` with clamp-to-edge addressing, as a GPU sampler does it:
+    /// texel centres at `(k + ½)/N`, the four nearest texels clamped into the table.
+    pub fn sample_uv(&self, u: f64, v: f64) -> LutSample {
+        let n = self.size;
+        let axis = |t: f64| {
+            let x = if t.is_finite() {
+                t * n as f64 - 0.5
+            } else {
+                0.0
+            };
+            let x0 = x.floor();
+            let frac = x - x0;
+            let clamp = |k: f64| k.clamp(0.0, (n - 1) as f64) as usize;
+            (clamp(x0), clamp(x0 + 1.0), frac)
+        };
+        let (i0, i1, fx) = axis(u);
+        let (j0, j1, fy) = axis(v);
+        let (c00, c10, c01, c11) = (
+            self.cell(i0, j0),
+            self.cell(i1, j0),
+            self.cell(i0, j1),
+            self.cell(i1, j1),
+        );
+        LutSample(std::array::from_fn(|c| {
+            let top = f64::from(c00.0[c]) * (1.0 - fx) + f64::from(c10.0[c]) * fx;
+            let bottom = f64::from(c01.0[c]) * (1.0 - fx) + f64::from(c11.0[c]) * fx;
+            top * (1.0 - fy) + bottom * fy
+        }))
+    }
+
+    /// The table at `(α, cos θo)`, bilinearly filtered.
+    pub fn sample(&self, alpha: f64, cos_theta_o: f64) -> LutSample {
+        let (u, v) = self.uv(alpha, cos_theta_o);
+        self.sample_uv(u, v)
+    }
+
+    /// The nearest cell at `(α, cos θo)` (what a nearest-filtering sampler returns).
+    pub fn sample_nearest(&self, alpha: f64, cos_theta_o: f64) -> LutSample {
+        let (u, v) = self.uv(alpha, cos_theta_o);
+        let n = self.size;
+        let index = |t: f64| ((t * n as f64).floor().max(0.0) as usize).min(n - 1);
+        LutSample(self.cell(index(u), index(v)).0.map(f64::from))
+    }
+
+    /// The LTCs for a view `v` (unit, shading frame) and roughness.
+    pub fn ltc_pair(&self, alpha: f64, v: DVec3) -> LtcPair {
+        self.sample(alpha, v.z).ltc_pair()
+    }
+
+    /// α of column `i` (DESIGN §2).
+    pub fn alpha(&self, i: usize) -> f64 {
+        crate::ltc::fit::cell_alpha(i, self.size, self.alpha_min)
+    }
+
+    /// θo (radians) of row `j` (DESIGN §2).
+    pub fn theta_o(&self, j: usize) -> f64 {
+        crate::ltc::fit::cell_theta(j, self.size)
+    }
+}

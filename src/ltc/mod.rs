@@ -1,0 +1,212 @@
+//! Linearly Transformed Cosines (Heitz et al. 2016) for point lights, DESIGN §1.
+//!
+//! A distribution `D(ω)` is the clamped cosine pushed through a 3×3 matrix `M`
+//! (`brdf_from_cos`); it is evaluated through `M⁻¹` (`cos_from_brdf`):
+//! `D(ω) = max(ω'.z, 0) · |det M⁻¹| / (π (ω'·ω')²)`, `ω' = M⁻¹ ω`.
+
+pub mod fit;
+pub mod lobe;
+pub mod lut;
+pub mod nelder_mead;
+
+use glam::{DMat3, DVec3};
+
+use crate::brdf::Lobes;
+
+/// Which of the paper's two light-clipping rules (eq. 30) are applied. The paper applies both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Clipping {
+    /// Case 1: a light below the surface (`n·l ≤ 0`) contributes nothing. Off, `M⁻¹` can lift
+    /// it above the horizon and it glows (the paper's Figure 2c).
+    pub horizon: bool,
+    /// Case 2: a light that `M⁻¹` pushes below the horizon (`(M⁻¹l).z ≤ 0`) contributes
+    /// nothing. Off, it contributes negative light.
+    pub transformed: bool,
+}
+
+impl Clipping {
+    /// The paper's eq. 30: both rules.
+    pub const BOTH: Self = Self {
+        horizon: true,
+        transformed: true,
+    };
+    pub const HORIZON: Self = Self {
+        horizon: true,
+        transformed: false,
+    };
+    pub const TRANSFORMED: Self = Self {
+        horizon: false,
+        transformed: true,
+    };
+    pub const NONE: Self = Self {
+        horizon: false,
+        transformed: false,
+    };
+}
+
+impl Default for Clipping {
+    fn default() -> Self {
+        Self::BOTH
+    }
+}
+
+/// How the LTC sum is normalized.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Normalization {
+    /// DESIGN §1: `D` carries its 1/π, and each lobe its magnitude (`F0 n_s + (1−F0) f_s` for
+    /// specular, `n_d` for diffuse).
+    #[default]
+    Corrected,
+    /// The paper's eq. 25/30 as printed: no 1/π and no magnitudes (kept to show the cost).
+    PaperLiteral,
+}
+
+/// One fitted lobe: its matrix both ways, `|det M⁻¹|`, and its magnitudes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ltc {
+    /// `M⁻¹`: maps a direction of the BRDF lobe to the clamped-cosine domain.
+    pub cos_from_brdf: DMat3,
+    /// `M`: maps the clamped cosine onto the BRDF lobe.
+    pub brdf_from_cos: DMat3,
+    /// `|det M⁻¹|`.
+    pub det_cos_from_brdf: f64,
+    /// `∫ f cos dω` with F = 1 (specular) or c = 1 (diffuse): the directional albedo.
+    pub norm: f64,
+    /// The Schlick part `∫ (1 − v·h)⁵ f cos dω` (specular; zero for diffuse).
+    pub fresnel: f64,
+}
+
+impl Ltc {
+    /// From `M⁻¹`, which may be scaled arbitrarily (`D` does not change).
+    pub fn from_cos_from_brdf(cos_from_brdf: DMat3, norm: f64, fresnel: f64) -> Self {
+        Self {
+            cos_from_brdf,
+            brdf_from_cos: cos_from_brdf.inverse(),
+            det_cos_from_brdf: cos_from_brdf.determinant().abs(),
+            norm,
+            fresnel,
+        }
+    }
+
+    /// From `M`.
+    pub fn from_brdf_from_cos(brdf_from_cos: DMat3, norm: f64, fresnel: f64) -> Self {
+        let cos_from_brdf = brdf_from_cos.inverse();
+        Self {
+            cos_from_brdf,
+            brdf_from_cos,
+            det_cos_from_brdf: cos_from_brdf.determinant().abs(),
+            norm,
+            fresnel,
+        }
+    }
+
+    /// The clamped cosine itself (`M = I`).
+    pub fn identity() -> Self {
+        Self::from_cos_from_brdf(DMat3::IDENTITY, 1.0, 0.0)
+    }
+
+    /// `D(l)` for a unit `l` in the shading frame, with the given clipping rules;
+    /// `PaperLiteral` drops the 1/π (eq. 25).
+    pub fn ltc_eval(&self, l: DVec3, clip: Clipping, normalization: Normalization) -> f64 {
+        if clip.horizon && l.z <= 0.0 {
+            return 0.0;
+        }
+        let w = self.cos_from_brdf * l;
+        if clip.transformed && w.z <= 0.0 {
+            return 0.0;
+        }
+        let len2 = w.length_squared();
+        if len2 <= 0.0 || !len2.is_finite() {
+            return 0.0;
+        }
+        let d = w.z * self.det_cos_from_brdf / (len2 * len2);
+        match normalization {
+            Normalization::Corrected => d / std::f64::consts::PI,
+            Normalization::PaperLiteral => d,
+        }
+    }
+
+    /// A direction distributed as `D`: a cosine-distributed sample pushed through `M`
+    /// (the inverse of `ltc_eval`'s change of variables).
+    pub fn sample(&self, u1: f64, u2: f64) -> DVec3 {
+        self.sample_cosine(cosine_sample(u1, u2))
+    }
+
+    /// `sample` for a cosine-distributed direction already drawn.
+    pub fn sample_cosine(&self, cosine: DVec3) -> DVec3 {
+        (self.brdf_from_cos * cosine).normalize()
+    }
+}
+
+/// Malley's method: a direction on the upper hemisphere with density `cos θ / π`.
+pub fn cosine_sample(u1: f64, u2: f64) -> DVec3 {
+    let r = u1.sqrt();
+    let phi = std::f64::consts::TAU * u2;
+    DVec3::new(r * phi.cos(), r * phi.sin(), (1.0 - u1).max(0.0).sqrt())
+}
+
+/// The two fitted lobes of one (θo, α), as the LUT gives them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LtcPair {
+    pub spec: Ltc,
+    pub diff: Ltc,
+}
+
+impl LtcPair {
+    /// The specular magnitude for a material with `F0` (DESIGN §1): `F0 n_s + (1 − F0) f_s`.
+    pub fn spec_magnitude(&self, f0: f64) -> f64 {
+        f0 * self.spec.norm + (1.0 - f0) * self.spec.fresnel
+    }
+
+    /// The LTC approximation of both cosine-weighted lobes for a unit-irradiance light in
+    /// direction `l` (unit, shading frame), base colour 1 (eq. 30 with DESIGN's corrections).
+    pub fn ltc_lobes(
+        &self,
+        l: DVec3,
+        f0: f64,
+        clip: Clipping,
+        normalization: Normalization,
+    ) -> Lobes<f64> {
+        let (spec_weight, diff_weight) = match normalization {
+            Normalization::Corrected => (self.spec_magnitude(f0), self.diff.norm),
+            Normalization::PaperLiteral => (1.0, 1.0),
+        };
+        Lobes {
+            specular: spec_weight * self.spec.ltc_eval(l, clip, normalization),
+            diffuse: diff_weight * self.diff.ltc_eval(l, clip, normalization),
+        }
+    }
+}
+
+/// Which clipping case a light direction falls in for a lobe (DESIGN §1, the paper's §2.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ClipCase {
+    /// Above the horizon before and after the transform.
+    Visible,
+    /// Case 1: below the horizon (`n·l ≤ 0`).
+    BelowHorizon,
+    /// Case 2: above the horizon but `(M⁻¹l).z ≤ 0`.
+    PushedBelow,
+}
+
+impl Ltc {
+    pub fn clip_case(&self, l: DVec3) -> ClipCase {
+        if l.z <= 0.0 {
+            ClipCase::BelowHorizon
+        } else if (self.cos_from_brdf * l).z <= 0.0 {
+            ClipCase::PushedBelow
+        } else {
+            ClipCase::Visible
+        }
+    }
+}
+
+/// A 3×3 matrix from its rows (glam stores columns).
+pub fn mat3_from_rows(rows: [[f64; 3]; 3]) -> DMat3 {
+    DMat3::from_cols_array_2d(&rows).transpose()
+}
+
+/// The rows of a matrix.
+pub fn mat3_rows(m: DMat3) -> [[f64; 3]; 3] {
+    m.transpose().to_cols_array_2d()
+}

@@ -1,0 +1,441 @@
+//! `ltc-lab`: the headless command line of DESIGN §6. Every bad input ends in one line on
+//! stderr naming it and exit code 2 (clap's own usage errors exit 2 as well).
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use glam::DVec3;
+
+use ltc_lab::brdf::{brdf_cos, view_from_theta};
+use ltc_lab::cpu::{Method, RenderSettings, render};
+use ltc_lab::error::{InputError, Result};
+use ltc_lab::ltc::fit::{FitSettings, fit_table};
+use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut};
+use ltc_lab::ltc::{Clipping, Normalization};
+use ltc_lab::output::write_frame;
+use ltc_lab::scene::Scene;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "ltc-lab",
+    version,
+    about = "Point lights shaded with Linearly Transformed Cosines: fit, evaluate, render, measure."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Fit both lobes (GGX specular, Burley diffuse) over an N×N (θo, α) table and write the LUT.
+    Fit {
+        /// Cells per side.
+        #[arg(long, default_value_t = 64)]
+        size: usize,
+        /// Where to write the table (OpenEXR).
+        #[arg(long, default_value = "luts/ltc.exr")]
+        out: PathBuf,
+    },
+    /// Evaluate the exact lobes and their LTC approximation for the cases of a CSV file.
+    ///
+    /// Input header: theta_o,alpha,lx,ly,lz,f0 — theta_o in degrees (0–90), alpha the GGX α in
+    /// (0, 1], l the unit light direction in the shading frame (n = +z, v in the xz-plane),
+    /// f0 in [0, 1]. Output on stdout: those columns plus brdf_spec,brdf_diffuse,ltc_spec,
+    /// ltc_diffuse — each f·cos for a unit-irradiance light and base colour 1, the LTC through
+    /// the LUT's bilinear sampler with both clipping rules (eq. 30).
+    Eval {
+        #[arg(long)]
+        cases: PathBuf,
+        /// A LUT file instead of the embedded one.
+        #[arg(long)]
+        lut: Option<PathBuf>,
+    },
+    /// Inspect a LUT.
+    Lut {
+        /// A LUT file instead of the embedded one.
+        #[arg(long)]
+        lut: Option<PathBuf>,
+        /// Print every cell as CSV: i,j,alpha,theta_o (degrees), then the channels.
+        #[arg(long)]
+        dump: bool,
+    },
+    /// Render a scene preset to PNG (tone-mapped) or EXR (linear radiance).
+    Render {
+        #[arg(long)]
+        scene: PathBuf,
+        #[arg(long, value_enum)]
+        method: Method,
+        /// Image size, WxH.
+        #[arg(long, default_value = "512x512", value_parser = parse_size)]
+        size: (usize, usize),
+        /// Output file (.png or .exr); default `<scene>-<method>.png`, never overwritten.
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Render on the CPU (the f64 reference).
+        #[arg(long)]
+        cpu: bool,
+        /// Light clipping rules (eq. 30): both, horizon (case 1 only), transformed (case 2
+        /// only) or none.
+        #[arg(long, value_enum, default_value_t = ClipArg::Both)]
+        clip: ClipArg,
+        /// corrected (DESIGN §1) or paper (eq. 25 as printed: no 1/π, no magnitudes).
+        #[arg(long, value_enum, default_value_t = NormalizationArg::Corrected)]
+        normalization: NormalizationArg,
+        /// Where the split view changes from LTC (left) to BRDF (right), 0–1 of the width.
+        #[arg(long, default_value_t = 0.5)]
+        divider: f64,
+        /// A LUT file instead of the embedded one.
+        #[arg(long)]
+        lut: Option<PathBuf>,
+    },
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum ClipArg {
+    Both,
+    Horizon,
+    Transformed,
+    None,
+}
+
+impl From<ClipArg> for Clipping {
+    fn from(c: ClipArg) -> Self {
+        match c {
+            ClipArg::Both => Clipping::BOTH,
+            ClipArg::Horizon => Clipping::HORIZON,
+            ClipArg::Transformed => Clipping::TRANSFORMED,
+            ClipArg::None => Clipping::NONE,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum NormalizationArg {
+    Corrected,
+    Paper,
+}
+
+impl From<NormalizationArg> for Normalization {
+    fn from(n: NormalizationArg) -> Self {
+        match n {
+            NormalizationArg::Corrected => Normalization::Corrected,
+            NormalizationArg::Paper => Normalization::PaperLiteral,
+        }
+    }
+}
+
+/// The largest image side `--size` accepts: 16K, beyond any display, small enough that a
+/// typo cannot ask for terabytes.
+const MAX_IMAGE_SIDE: usize = 16384;
+
+fn parse_size(s: &str) -> std::result::Result<(usize, usize), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("'{s}' is not WxH (e.g. 512x512)"))?;
+    let side = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|&n| (1..=MAX_IMAGE_SIDE).contains(&n))
+            .ok_or_else(|| {
+                format!("'{s}': each side must be a whole number in 1..={MAX_IMAGE_SIDE}")
+            })
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => {
+            eprintln!(
+                "ltc-lab: the interactive lab is not part of this build yet; the headless commands are:\n"
+            );
+            use clap::CommandFactory;
+            let _ = Cli::command().print_help();
+            Ok(())
+        }
+        Some(Command::Fit { size, out }) => run_fit(size, &out),
+        Some(Command::Eval { cases, lut }) => run_eval(&cases, lut.as_deref()),
+        Some(Command::Lut { lut, dump }) => run_lut(lut.as_deref(), dump),
+        Some(Command::Render {
+            scene,
+            method,
+            size,
+            out,
+            cpu,
+            clip,
+            normalization,
+            divider,
+            lut,
+        }) => {
+            let mut settings = RenderSettings::new(size.0, size.1, method);
+            settings.clipping = clip.into();
+            settings.normalization = normalization.into();
+            settings.divider = divider;
+            run_render(&scene, settings, out, cpu, lut.as_deref())
+        }
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("ltc-lab: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run_fit(size: usize, out: &Path) -> Result<()> {
+    if !(2..=1024).contains(&size) {
+        return Err(InputError::new(
+            "--size",
+            format!("must be in 2..=1024, got {size}"),
+        ));
+    }
+    let settings = FitSettings {
+        size,
+        ..FitSettings::default()
+    };
+    let bar = indicatif::ProgressBar::new((2 * size * size) as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "fitting {bar:40} {pos}/{len} cells  {elapsed_precise}",
+        )
+        .expect("a valid template"),
+    );
+    let start = Instant::now();
+    let lut = fit_table(&settings, &|| bar.inc(1));
+    let seconds = start.elapsed().as_secs_f64();
+    bar.finish_and_clear();
+    lut.write(out)?;
+    let stats = |c: Channel| {
+        let xs: Vec<f32> = lut.cells.iter().map(|cell| cell.get(c)).collect();
+        let mean = xs.iter().map(|&x| f64::from(x)).sum::<f64>() / xs.len() as f64;
+        let (k, max) =
+            xs.iter().enumerate().fold(
+                (0, f32::MIN),
+                |acc, (k, &x)| if x > acc.1 { (k, x) } else { acc },
+            );
+        (mean, max, k % size, k / size)
+    };
+    eprintln!(
+        "fitted {size}×{size} cells × 2 lobes in {seconds:.1} s on {} threads (α_min = {}); wrote {}",
+        rayon::current_num_threads(),
+        settings.alpha_min,
+        out.display()
+    );
+    for c in [Channel::SpecErr, Channel::DiffErr] {
+        let (mean, max, i, j) = stats(c);
+        eprintln!(
+            "  {:<9} mean {mean:.4}  max {max:.4} at i={i} (α={:.4}), j={j} (θo={:.1}°)",
+            CHANNEL_NAMES[c as usize],
+            lut.alpha(i),
+            lut.theta_o(j).to_degrees()
+        );
+    }
+    Ok(())
+}
+
+/// One validated row of an `eval` CSV.
+struct Case {
+    theta_o_degrees: f64,
+    alpha: f64,
+    l: DVec3,
+    f0: f64,
+}
+
+const EVAL_HEADER: &str = "theta_o,alpha,lx,ly,lz,f0";
+
+/// How far from unit length `l` may be: CSV values typed with 4 decimals are off by ~1e-4.
+const UNIT_TOLERANCE: f64 = 1e-3;
+
+fn parse_cases(text: &str, name: &str) -> Result<Vec<Case>> {
+    let mut lines = text.lines().enumerate();
+    let header = lines.next().map(|(_, h)| h.trim().replace(' ', ""));
+    if header.as_deref() != Some(EVAL_HEADER) {
+        return Err(InputError::new(
+            format!("{name} line 1"),
+            format!("the header must be '{EVAL_HEADER}'"),
+        ));
+    }
+    let mut cases = Vec::new();
+    for (k, line) in lines {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let at = format!("{name} line {}", k + 1);
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        if fields.len() != 6 {
+            return Err(InputError::new(
+                at,
+                format!("expected 6 values, found {}", fields.len()),
+            ));
+        }
+        let mut v = [0.0; 6];
+        for (x, f) in v.iter_mut().zip(&fields) {
+            *x = f
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| InputError::new(&at, format!("'{f}' is not a finite number")))?;
+        }
+        let [theta_o, alpha, lx, ly, lz, f0] = v;
+        if !(0.0..=90.0).contains(&theta_o) {
+            return Err(InputError::new(
+                at,
+                format!("theta_o must be in [0, 90] degrees, got {theta_o}"),
+            ));
+        }
+        if !(alpha > 0.0 && alpha <= 1.0) {
+            return Err(InputError::new(
+                at,
+                format!("alpha must be in (0, 1], got {alpha}"),
+            ));
+        }
+        if !(0.0..=1.0).contains(&f0) {
+            return Err(InputError::new(
+                at,
+                format!("f0 must be in [0, 1], got {f0}"),
+            ));
+        }
+        let l = DVec3::new(lx, ly, lz);
+        if (l.length() - 1.0).abs() > UNIT_TOLERANCE {
+            return Err(InputError::new(
+                at,
+                format!("l must be unit length, |l| = {}", l.length()),
+            ));
+        }
+        cases.push(Case {
+            theta_o_degrees: theta_o,
+            alpha,
+            l: l.normalize(),
+            f0,
+        });
+    }
+    Ok(cases)
+}
+
+fn run_eval(cases_path: &Path, lut_path: Option<&Path>) -> Result<()> {
+    let name = cases_path.display().to_string();
+    let text = std::fs::read_to_string(cases_path)
+        .map_err(|e| InputError::new(&name, format!("cannot read: {e}")))?;
+    let cases = parse_cases(&text, &name)?;
+    let lut = Lut::load(lut_path)?;
+    let mut out = String::from(EVAL_HEADER);
+    out.push_str(",brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse\n");
+    for c in &cases {
+        let theta = c
+            .theta_o_degrees
+            .to_radians()
+            .min(ltc_lab::ltc::fit::THETA_MAX);
+        let v = DVec3::from(view_from_theta(theta));
+        let exact = brdf_cos(v.to_array(), c.l.to_array(), c.alpha, c.f0);
+        let approx =
+            lut.ltc_pair(c.alpha, v)
+                .ltc_lobes(c.l, c.f0, Clipping::BOTH, Normalization::Corrected);
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{:e},{:e},{:e},{:e}\n",
+            c.theta_o_degrees,
+            c.alpha,
+            c.l.x,
+            c.l.y,
+            c.l.z,
+            c.f0,
+            exact.specular,
+            exact.diffuse,
+            approx.specular,
+            approx.diffuse
+        ));
+    }
+    print!("{out}");
+    Ok(())
+}
+
+fn run_lut(lut_path: Option<&Path>, dump: bool) -> Result<()> {
+    let lut = Lut::load(lut_path)?;
+    if !dump {
+        println!(
+            "{}: {}×{} cells, α_min = {}, channels: {}",
+            lut_path.map_or("embedded luts/ltc.exr".into(), |p| p.display().to_string()),
+            lut.size,
+            lut.size,
+            lut.alpha_min,
+            CHANNEL_NAMES.join(" ")
+        );
+        println!("pass --dump for every cell as CSV");
+        return Ok(());
+    }
+    let mut out = format!("i,j,alpha,theta_o,{}\n", CHANNEL_NAMES.join(","));
+    for j in 0..lut.size {
+        for i in 0..lut.size {
+            let values: Vec<String> = lut.cell(i, j).0.iter().map(f32::to_string).collect();
+            out.push_str(&format!(
+                "{i},{j},{},{},{}\n",
+                lut.alpha(i),
+                lut.theta_o(j).to_degrees(),
+                values.join(",")
+            ));
+        }
+    }
+    print!("{out}");
+    Ok(())
+}
+
+fn run_render(
+    scene_path: &Path,
+    settings: RenderSettings,
+    out: Option<PathBuf>,
+    cpu: bool,
+    lut_path: Option<&Path>,
+) -> Result<()> {
+    if !settings.divider.is_finite() || !(0.0..=1.0).contains(&settings.divider) {
+        return Err(InputError::new(
+            "--divider",
+            format!("must be in [0, 1], got {}", settings.divider),
+        ));
+    }
+    let scene = Scene::load(scene_path)?;
+    let lut = Lut::load(lut_path)?;
+    let out = match out {
+        Some(p) => p,
+        None => {
+            let stem = scene_path
+                .file_stem()
+                .map_or("render".into(), |s| s.to_string_lossy());
+            let method = settings
+                .method
+                .to_possible_value()
+                .expect("no skipped variants");
+            let p = PathBuf::from(format!("{stem}-{}.png", method.get_name()));
+            if p.exists() {
+                return Err(InputError::new(
+                    p.display().to_string(),
+                    "exists; name it with --out to overwrite it",
+                ));
+            }
+            p
+        }
+    };
+    if !cpu {
+        return Err(InputError::new(
+            "render",
+            "GPU rendering is not part of this build yet; pass --cpu for the CPU reference",
+        ));
+    }
+    let start = Instant::now();
+    let frame = render(&scene, &lut, &settings);
+    let seconds = start.elapsed().as_secs_f64();
+    write_frame(&frame, &out, scene.exposure)?;
+    eprintln!(
+        "rendered {} lights at {}×{} on the CPU ({} threads) in {seconds:.3} s; wrote {}",
+        scene.lights.len(),
+        settings.width,
+        settings.height,
+        rayon::current_num_threads(),
+        out.display()
+    );
+    Ok(())
+}
