@@ -53,12 +53,15 @@ impl<T: Real> Dots<T> {
 }
 
 /// GGX normal distribution, Walter et al. 2007 eq. 33 (DESIGN §1); zero for `n·h ≤ 0`.
+/// The denominator `(n·h)²(α² − 1) + 1` is evaluated as `(n·h)²α² + (1 − n·h)(1 + n·h)`:
+/// equal in exact arithmetic, but the first form cancels to 0 in f32 at `n·h = 1` for
+/// α < 2.4e-4 (Filament's `D_GGX` avoids the same cancellation with `|n × h|²`).
 pub fn d_ggx<T: Real>(n_h: T, alpha: T) -> T {
     if n_h <= T::zero() {
         return T::zero();
     }
     let a2 = alpha * alpha;
-    let k = n_h * n_h * (a2 - T::one()) + T::one();
+    let k = n_h * n_h * a2 + (T::one() - n_h) * (T::one() + n_h);
     a2 / (T::PI() * k * k)
 }
 

@@ -306,7 +306,9 @@ pub fn clip_counts(scene: &Scene, lut: &Lut, p: &SurfacePoint, lights: &[Light])
     let px = LtcPixel::new(lut, scene.material.alpha, p.view);
     let mut counts = ClipCounts::default();
     for light in lights {
-        let u = px.frame.tangent_from_world(DVec3::from(light.position) - p.position);
+        let u = px
+            .frame
+            .tangent_from_world(DVec3::from(light.position) - p.position);
         let d = u.length();
         if irradiance_scale(1.0, d, light.range_or_infinity()) <= 0.0 {
             continue;

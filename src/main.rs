@@ -207,7 +207,8 @@ fn run_fit(size: usize, out: &Path) -> Result<()> {
         .expect("a valid template"),
     );
     let start = Instant::now();
-    let lut = fit_table(&settings, &|| bar.inc(1));
+    let fitted = fit_table(&settings, &|| bar.inc(1));
+    let lut = fitted.lut;
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     lut.write(out)?;
@@ -226,6 +227,10 @@ fn run_fit(size: usize, out: &Path) -> Result<()> {
         rayon::current_num_threads(),
         settings.alpha_min,
         out.display()
+    );
+    eprintln!(
+        "  cells stopped at the {}-iteration limit: spec {}, diff {}",
+        settings.max_iterations, fitted.at_iteration_limit[0], fitted.at_iteration_limit[1]
     );
     for c in [Channel::SpecErr, Channel::DiffErr] {
         let (mean, max, i, j) = stats(c);

@@ -142,12 +142,10 @@ impl Scene {
 
     /// Why the scene cannot be rendered, if it cannot.
     pub fn validate(&self) -> std::result::Result<(), String> {
-        let finite = |what: &str, xs: &[f64]| {
-            if xs.iter().all(|x| x.is_finite()) {
-                Ok(())
-            } else {
-                Err(format!("{what} must be finite numbers, got {xs:?}"))
-            }
+        let finite = |what: &str, xs: &[f64]| match xs {
+            _ if xs.iter().all(|x| x.is_finite()) => Ok(()),
+            [x] => Err(format!("{what} must be a finite number, got {x}")),
+            _ => Err(format!("{what} must be finite numbers, got {xs:?}")),
         };
         finite("plane.half_size", &[self.plane.half_size])?;
         if self.plane.half_size <= 0.0 {

@@ -8,7 +8,12 @@ use ltc_lab::ltc::lut::Lut;
 use ltc_lab::scene::{Light, Scene};
 
 fn preset(name: &str) -> Scene {
-    Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes").join(name)).unwrap()
+    Scene::load(
+        &Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("assets/scenes")
+            .join(name),
+    )
+    .unwrap()
 }
 
 #[test]
@@ -17,7 +22,11 @@ fn paper_100_has_100_lights_at_alpha_0_27() {
     assert_eq!(s.lights.len(), 100);
     assert_eq!(s.material.alpha, 0.27);
     let h = s.plane.half_size;
-    assert!(s.lights.iter().all(|l| l.position[0].abs() <= h && l.position[1].abs() <= h && l.position[2] > 0.0));
+    assert!(
+        s.lights
+            .iter()
+            .all(|l| l.position[0].abs() <= h && l.position[1].abs() <= h && l.position[2] > 0.0)
+    );
 }
 
 #[test]
@@ -58,10 +67,15 @@ fn figure2_case2_light_is_the_search_optimum_and_shows_case_2() {
     let s = preset("figure2-case2.toml");
     let lut = Lut::embedded();
     let (position, count) = case2_search(&s, lut);
-    assert_eq!(s.lights[0].position, position, "the preset's light is not the search's optimum");
+    assert_eq!(
+        s.lights[0].position, position,
+        "the preset's light is not the search's optimum"
+    );
     // A tenth of the plane's pixels at 64×64 (~1700 of them) shows the case clearly.
     assert!(count > 170, "only {count} pixels in case 2");
     let counts = clip_counts_image(&s, lut, 64, 64);
-    assert_eq!(counts.below_horizon, 0, "the light is above the whole plane");
+    assert_eq!(
+        counts.below_horizon, 0,
+        "the light is above the whole plane"
+    );
 }
-

@@ -22,8 +22,9 @@ pub struct FitSettings {
     pub alpha_min: f64,
     /// Strata per side for the fit error (ltc_code: 32).
     pub fit_samples: usize,
-    /// Strata per side for the magnitudes and average direction. ltc_code uses 32; 256 brings
-    /// the f64 magnitudes within 1e-3 of quadrature (see the `magnitudes` tests).
+    /// Strata per side for the magnitudes and average direction (ltc_code: 32). With the
+    /// visible-normal sampling of `lobe_moments`, 256² keeps every magnitude within 1e-3 of
+    /// f64 quadrature (tests/fit.rs checks 12 cells, grazing ones included).
     pub moment_samples: usize,
     /// Strata per side for the pointwise error stored in the `err` channels.
     pub error_samples: usize,
@@ -112,13 +113,25 @@ pub fn frame_from_average(dir: DVec3) -> DMat3 {
 /// ltc_code's fit objective: `Σ |f cos − n D|³ / (pdf_ltc + pdf_brdf)` over `n × n` strata
 /// sampled from the LTC and from the lobe, divided by `n²`.
 pub fn fit_error(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, strata: &[Stratum]) -> f64 {
-    mis_sum(lobe, v, alpha, ltc, strata, |diff| diff.abs().powi(3))
+    mis_sum(lobe, v, alpha, ltc, strata, Density::LtcCode, |diff| {
+        diff.abs().powi(3)
+    })
 }
 
 /// The pointwise error of DESIGN §4: `∫ |n D − f cos| dω / ∫ f cos dω`, estimated by the
-/// same two-distribution (balance-heuristic) sampling with `n × n` strata each.
+/// same two-distribution (balance-heuristic) sampling with `n × n` strata each, weighted
+/// with the lobe's true sampling density (unbiased at grazing views, unlike the fit's).
 pub fn pointwise_error(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, n: usize) -> f64 {
-    mis_sum(lobe, v, alpha, ltc, &strata(n), f64::abs) / ltc.norm
+    mis_sum(lobe, v, alpha, ltc, &strata(n), Density::Exact, f64::abs) / ltc.norm
+}
+
+/// Which density of the lobe's sampling weights the samples.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Density {
+    /// ltc_code's `pdf` (the fit objective, kept faithful).
+    LtcCode,
+    /// `Lobe::sampling_density`.
+    Exact,
 }
 
 /// `(1/n²) Σ g(f cos − n D) / (pdf_ltc + pdf_lobe)` over both sample sets: an unbiased
@@ -129,10 +142,14 @@ fn mis_sum(
     alpha: f64,
     ltc: &Ltc,
     strata: &[Stratum],
+    density: Density,
     g: impl Fn(f64) -> f64,
 ) -> f64 {
     let term = |l: DVec3| {
-        let exact = lobe.eval(v, l, alpha);
+        let mut exact = lobe.eval(v, l, alpha);
+        if density == Density::Exact {
+            exact.pdf = lobe.sampling_density(v, l, alpha);
+        }
         // The fitted distribution covers the whole sphere: only the transformed cosine's own
         // clamp applies, never the horizon rule (light below the horizon is fit error).
         let d = ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
@@ -312,10 +329,21 @@ pub fn normalized_cos_from_brdf(ltc: &Ltc) -> [f64; 4] {
     [r[0][0] / s, r[0][2] / s, r[2][0] / s, r[2][2] / s]
 }
 
+/// A fitted table and how the fit went.
+#[derive(Clone, Debug)]
+pub struct FittedTable {
+    pub lut: Lut,
+    /// Cells whose Nelder–Mead stopped at the iteration limit, per lobe (spec, diff).
+    pub at_iteration_limit: [usize; 2],
+}
+
 /// Fits both lobes and assembles the LUT, with each cell's pointwise error.
-pub fn fit_table(settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> Lut {
+pub fn fit_table(settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> FittedTable {
     let spec = fit_lobe(Lobe::Specular, settings, on_cell);
     let diff = fit_lobe(Lobe::Diffuse, settings, on_cell);
+    let limited =
+        |fits: &[(CellFit, CellProblem)]| fits.iter().filter(|(f, _)| !f.converged).count();
+    let at_iteration_limit = [limited(&spec), limited(&diff)];
     let cells = spec
         .par_iter()
         .zip(diff.par_iter())
@@ -325,9 +353,12 @@ pub fn fit_table(settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> Lut {
             LutCell::from_fits(&s.ltc, s_err, &d.ltc, d_err)
         })
         .collect();
-    Lut {
-        size: settings.size,
-        alpha_min: settings.alpha_min,
-        cells,
+    FittedTable {
+        lut: Lut {
+            size: settings.size,
+            alpha_min: settings.alpha_min,
+            cells,
+        },
+        at_iteration_limit,
     }
 }

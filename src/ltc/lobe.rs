@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use crate::brdf::{Dots, d_ggx, diffuse_cos, specular_cos};
+use crate::brdf::{Dots, d_ggx, diffuse_cos, g2_correlated, lambda_ggx, specular_cos};
 use crate::ltc::cosine_sample;
 
 /// Which lobe of the BRDF.
@@ -53,6 +53,28 @@ impl Lobe {
                 value: diffuse_cos(&d, alpha),
                 pdf: l.z.max(0.0) / std::f64::consts::PI,
             },
+        }
+    }
+
+    /// The true density of `sample`'s directions at `l`. For the specular lobe it differs
+    /// from `eval`'s pdf (ltc_code's formula, kept by the fit): reflecting `v` about a sampled
+    /// normal with `v·h < 0` lands on a direction whose `normalize(v + l)` is `−h`, which that
+    /// formula gives density zero. Only grazing views sample such normals.
+    pub fn sampling_density(self, v: DVec3, l: DVec3, alpha: f64) -> f64 {
+        match self {
+            Self::Specular => {
+                let Some(h) = (v + l).try_normalize() else {
+                    return 0.0;
+                };
+                let h = if h.z < 0.0 { -h } else { h };
+                let v_h = v.dot(h).abs();
+                if v_h > 0.0 {
+                    d_ggx(h.z, alpha) * h.z / (4.0 * v_h)
+                } else {
+                    0.0
+                }
+            }
+            Self::Diffuse => l.z.max(0.0) / std::f64::consts::PI,
         }
     }
 
@@ -120,23 +142,44 @@ pub struct LobeMoments {
     pub average_dir: DVec3,
 }
 
-/// `norm`, `fresnel` and the average direction by the lobe's stratified importance sampling
-/// over `strata` (ltc_code's `computeAvgTerms`, in f64).
+/// `norm`, `fresnel` and the average direction (ltc_code's `computeAvgTerms`, in f64), by
+/// stratified importance sampling over `strata`. The diffuse lobe samples the cosine, as
+/// ltc_code does. The specular lobe samples GGX's *visible* normals (Heitz 2018) rather than
+/// ltc_code's plain normals: the weight `f cos / pdf = G2/G1(v)` is then bounded by 1,
+/// whereas with plain normals most samples leave below the horizon at grazing views and
+/// even 512² strata miss the norm by 1.6e-3 at θo = 85° (quadrature in tests/fit.rs).
 pub fn lobe_moments(lobe: Lobe, v: DVec3, alpha: f64, strata: &[Stratum]) -> LobeMoments {
     let mut norm = 0.0;
     let mut fresnel = 0.0;
     let mut dir = DVec3::ZERO;
     for s in strata {
-        let l = lobe.sample_stratum(v, alpha, s);
-        let s = lobe.eval(v, l, alpha);
-        if s.pdf > 0.0 {
-            let w = s.value / s.pdf;
-            norm += w;
+        let (l, weight) = match lobe {
+            Lobe::Specular => {
+                let h = visible_normal(v, alpha, s);
+                let l = 2.0 * h.dot(v) * h - v;
+                let g1 = 1.0 / (1.0 + lambda_ggx(v.z, alpha));
+                (l, g2_correlated(v.z, l.z, alpha) / g1)
+            }
+            Lobe::Diffuse => {
+                let l = s.cosine;
+                let sample = lobe.eval(v, l, alpha);
+                (
+                    l,
+                    if sample.pdf > 0.0 {
+                        sample.value / sample.pdf
+                    } else {
+                        0.0
+                    },
+                )
+            }
+        };
+        if weight > 0.0 {
+            norm += weight;
             if lobe == Lobe::Specular {
                 let h = (v + l).normalize_or_zero();
-                fresnel += w * (1.0 - v.dot(h).max(0.0)).powi(5);
+                fresnel += weight * (1.0 - v.dot(h).max(0.0)).powi(5);
             }
-            dir += w * l;
+            dir += weight * l;
         }
     }
     let count = strata.len() as f64;
@@ -146,4 +189,23 @@ pub fn lobe_moments(lobe: Lobe, v: DVec3, alpha: f64, strata: &[Stratum]) -> Lob
         fresnel: fresnel / count,
         average_dir: dir.try_normalize().unwrap_or(DVec3::Z),
     }
+}
+
+/// A GGX normal visible from `v`, distributed as `G1(v) max(v·h, 0) D(h) / v.z` (Heitz 2018,
+/// "Sampling the GGX Distribution of Visible Normals", JCGT 7(4), listing 1). The stratum's
+/// cosine sample supplies the disk point `(sqrt(u1) cos 2πu2, sqrt(u1) sin 2πu2)`.
+pub fn visible_normal(v: DVec3, alpha: f64, s: &Stratum) -> DVec3 {
+    let vh = DVec3::new(alpha * v.x, alpha * v.y, v.z).normalize();
+    let len2 = vh.x * vh.x + vh.y * vh.y;
+    let t1 = if len2 > 0.0 {
+        DVec3::new(-vh.y, vh.x, 0.0) / len2.sqrt()
+    } else {
+        DVec3::X
+    };
+    let t2 = vh.cross(t1);
+    let (p1, p2) = (s.cosine.x, s.cosine.y);
+    let blend = 0.5 * (1.0 + vh.z);
+    let p2 = (1.0 - blend) * (1.0 - p1 * p1).max(0.0).sqrt() + blend * p2;
+    let nh = p1 * t1 + p2 * t2 + (1.0 - p1 * p1 - p2 * p2).max(0.0).sqrt() * vh;
+    DVec3::new(alpha * nh.x, alpha * nh.y, nh.z.max(0.0)).normalize()
 }

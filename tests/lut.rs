@@ -1,0 +1,117 @@
+//! The LUT file and its sampler: bit-exact EXR round trip, cell values at cell centres,
+//! GPU-style clamping at the edges, and clear errors for broken files.
+
+use ltc_lab::ltc::fit::{FitSettings, fit_table};
+use ltc_lab::ltc::lut::{CHANNEL_COUNT, Channel, Lut, LutCell};
+
+#[test]
+fn embedded_lut_is_the_shipped_64x64_table() {
+    let lut = Lut::embedded();
+    assert_eq!(lut.size, 64);
+    let file =
+        Lut::read(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("luts/ltc.exr")).unwrap();
+    assert_eq!(&file, lut);
+}
+
+#[test]
+fn exr_round_trip_is_bit_exact() {
+    let lut = fit_table(
+        &FitSettings {
+            size: 4,
+            ..FitSettings::default()
+        },
+        &|| {},
+    )
+    .lut;
+    let back = Lut::from_exr_bytes(&lut.to_exr_bytes(), "memory").unwrap();
+    assert_eq!(back.size, lut.size);
+    assert_eq!(back.alpha_min.to_bits(), lut.alpha_min.to_bits());
+    for (a, b) in lut.cells.iter().zip(&back.cells) {
+        assert_eq!(a.0.map(f32::to_bits), b.0.map(f32::to_bits));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("t.exr");
+    lut.write(&path).unwrap();
+    assert_eq!(Lut::read(&path).unwrap(), lut);
+}
+
+#[test]
+fn sampler_returns_cell_values_at_cell_centres() {
+    let lut = Lut::embedded();
+    for j in 0..lut.size {
+        for i in 0..lut.size {
+            // The cell's own (α, cos θo) — the sampler's uv lands on the texel centre.
+            let cos = 1.0 - (j as f64 / (lut.size - 1) as f64).powi(2);
+            let r = i as f64 / (lut.size - 1) as f64;
+            let s = lut.sample(r * r, cos);
+            let cell = lut.cell(i, j);
+            for c in 0..CHANNEL_COUNT {
+                let want = f64::from(cell.0[c]);
+                // The uv arithmetic rounds (a few ulps of 1.0); the bilinear weight of the
+                // neighbour is then ~1e-15, times channel differences of order 1.
+                assert!(
+                    (s.0[c] - want).abs() <= 1e-12 * want.abs().max(1.0),
+                    "cell ({i},{j}) channel {c}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn sampler_interpolates_between_cells_and_clamps_outside() {
+    let mut lut = Lut {
+        size: 2,
+        alpha_min: 1e-4,
+        cells: vec![LutCell([0.0; CHANNEL_COUNT]); 4],
+    };
+    for (k, v) in [1.0f32, 2.0, 3.0, 5.0].iter().enumerate() {
+        lut.cells[k].0[Channel::SpecNorm as usize] = *v;
+    }
+    let at = |u: f64, v: f64| lut.sample_uv(u, v).get(Channel::SpecNorm);
+    // Texel centres of a 2×2 texture at 0.25 and 0.75.
+    assert_eq!(at(0.25, 0.25), 1.0);
+    assert_eq!(at(0.75, 0.75), 5.0);
+    assert!((at(0.5, 0.5) - 2.75).abs() < 1e-12);
+    assert!((at(0.5, 0.25) - 1.5).abs() < 1e-12);
+    // Clamp to edge: anything outside the centres takes the edge texels, as a GPU sampler
+    // with ClampToEdge addressing does; out-of-range and non-finite inputs stay in the table.
+    assert_eq!(at(-3.0, 0.0), 1.0);
+    assert_eq!(at(7.0, 7.0), 5.0);
+    assert!(at(f64::NAN, 0.75).is_finite());
+    // (α, cos θo) beyond the table map onto its edges.
+    assert_eq!(lut.sample(4.0, -1.0), lut.sample(1.0, 0.0));
+    assert_eq!(lut.sample(0.0, 2.0), lut.sample(0.0, 1.0));
+}
+
+#[test]
+fn broken_files_are_refused_with_their_name() {
+    let err = Lut::from_exr_bytes(b"not an exr at all", "bad.exr").unwrap_err();
+    assert!(err.to_string().starts_with("bad.exr: "), "{err}");
+
+    let mut lut = Lut::embedded().clone();
+    lut.cells[70].0[Channel::DiffNorm as usize] = f32::NAN;
+    let err = Lut::from_exr_bytes(&lut.to_exr_bytes(), "nan.exr").unwrap_err();
+    assert!(
+        err.to_string().contains("diff.norm") && err.to_string().contains("i=6, j=1"),
+        "{err}"
+    );
+
+    let mut lut = Lut::embedded().clone();
+    lut.cells[5].0[Channel::SpecM00 as usize] = 0.0;
+    lut.cells[5].0[Channel::SpecM02 as usize] = 1.0;
+    lut.cells[5].0[Channel::SpecM20 as usize] = 1.0;
+    let err = Lut::from_exr_bytes(&lut.to_exr_bytes(), "singular.exr").unwrap_err();
+    assert!(err.to_string().contains("determinant"), "{err}");
+
+    let bytes = Lut::embedded().to_exr_bytes();
+    let err = Lut::from_exr_bytes(&bytes[..bytes.len() / 2], "cut.exr").unwrap_err();
+    assert!(err.to_string().starts_with("cut.exr: "), "{err}");
+
+    let err = Lut::read(std::path::Path::new("/nonexistent/ltc.exr")).unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("/nonexistent/ltc.exr: cannot read"),
+        "{err}"
+    );
+}
