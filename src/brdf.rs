@@ -84,6 +84,19 @@ pub fn g2_correlated<T: Real>(n_v: T, n_l: T, alpha: T) -> T {
     T::one() / (T::one() + lambda_ggx(n_v, alpha) + lambda_ggx(n_l, alpha))
 }
 
+/// Filament's `V_SmithGGXCorrelated` (Lagarde 2014 eq. 72 rearranged): `G2 / (4 n·v n·l)`
+/// in one division, with the view factor `sqrt(n·v²(1 − α²) + α²)` passed in so that it is
+/// computed once per pixel. The `brdf-fast` GPU method's form; equal to `g2_correlated`'s.
+pub fn v_smith_ggx_correlated<T: Real>(n_v: T, n_l: T, a2: T, view_factor: T) -> T {
+    let light_factor = (n_l * n_l * (T::one() - a2) + a2).sqrt();
+    T::lit(0.5) / (n_l * view_factor + n_v * light_factor)
+}
+
+/// The view factor of `v_smith_ggx_correlated`.
+pub fn smith_view_factor<T: Real>(n_v: T, a2: T) -> T {
+    (n_v * n_v * (T::one() - a2) + a2).sqrt()
+}
+
 /// Schlick's Fresnel, Schlick 1994 eq. 15, with the exponent on `(1 − v·h)` — the paper's
 /// eq. 6 misprints it as `(1 − (v·h)⁵)` (DESIGN §1).
 pub fn f_schlick<T: Real>(f0: T, v_h: T) -> T {

@@ -5,6 +5,7 @@
 pub mod brdf;
 pub mod cpu;
 pub mod error;
+pub mod gpu;
 pub mod ltc;
 pub mod metrics;
 pub mod output;

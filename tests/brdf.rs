@@ -108,3 +108,16 @@ fn f32_and_f64_paths_agree() {
     // with some 30 operations in series: 6e-8 · 100 · 30 ≈ 2e-4.
     assert!(worst < 2e-4, "worst relative f32/f64 difference {worst}");
 }
+
+proptest! {
+    /// The `brdf-fast` visibility term is the literal G2 / (4 n·v n·l), rearranged.
+    #[test]
+    fn filament_visibility_equals_g2_over_cosines(n_v in 1e-3f64..=1.0, n_l in 1e-3f64..=1.0, alpha in 1e-4f64..=1.0) {
+        use ltc_lab::brdf::{g2_correlated, smith_view_factor, v_smith_ggx_correlated};
+        let a2 = alpha * alpha;
+        let v = v_smith_ggx_correlated(n_v, n_l, a2, smith_view_factor(n_v, a2));
+        let g = g2_correlated(n_v, n_l, alpha) / (4.0 * n_v * n_l);
+        // Two f64 evaluations of one rational function in different orders: 1e-10.
+        prop_assert!((v - g).abs() <= 1e-10 * g, "{v} vs {g}");
+    }
+}

@@ -1,0 +1,116 @@
+// LTC evaluation and the LUT sampler, mirroring src/ltc/mod.rs and src/ltc/lut.rs (same
+// names). Composed after brdf.wgsl (uses PI).
+
+// Clipping rule bits (src/ltc/mod.rs Clipping).
+const CLIP_HORIZON: u32 = 1u;
+const CLIP_TRANSFORMED: u32 = 2u;
+// src/ltc/mod.rs Normalization.
+const NORMALIZATION_CORRECTED: u32 = 0u;
+const NORMALIZATION_PAPER_LITERAL: u32 = 1u;
+
+// The LUT as GpuLut packs it (src/gpu/ltc.rs): per cell three vec4s —
+// [spec m00 m02 m20 m22], [diff m00 m02 m20 m22], [spec.norm spec.fresnel diff.norm 0].
+@group(0) @binding(2) var<storage, read> lut: array<vec4<f32>>;
+
+const LUT_VEC4S_PER_CELL: u32 = 3u;
+
+// One lobe: M⁻¹ (cos_from_brdf), |det M⁻¹| and its magnitudes.
+struct Ltc {
+    cos_from_brdf: mat3x3<f32>,
+    det_cos_from_brdf: f32,
+    norm: f32,
+    fresnel: f32,
+}
+
+struct LtcPair {
+    spec: Ltc,
+    diff: Ltc,
+}
+
+// Ltc::ltc_eval: D(l) = max(ω'.z, 0)|det M⁻¹| / (π (ω'·ω')²), ω' = M⁻¹ l, with the chosen
+// clipping rules; the paper-literal normalization drops the 1/π.
+fn ltc_eval(ltc: Ltc, l: vec3<f32>, clip: u32, normalization: u32) -> f32 {
+    if (clip & CLIP_HORIZON) != 0u && l.z <= 0.0 {
+        return 0.0;
+    }
+    let w = ltc.cos_from_brdf * l;
+    if (clip & CLIP_TRANSFORMED) != 0u && w.z <= 0.0 {
+        return 0.0;
+    }
+    let len2 = dot(w, w);
+    if len2 <= 0.0 {
+        return 0.0;
+    }
+    let d = w.z * ltc.det_cos_from_brdf / (len2 * len2);
+    if normalization == NORMALIZATION_PAPER_LITERAL {
+        return d;
+    }
+    return d / PI;
+}
+
+// M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]] from its four stored entries.
+fn cos_from_brdf_from_entries(m: vec4<f32>) -> mat3x3<f32> {
+    // WGSL matrices are built from columns.
+    return mat3x3<f32>(
+        vec3<f32>(m.x, 0.0, m.z),
+        vec3<f32>(0.0, 1.0, 0.0),
+        vec3<f32>(m.y, 0.0, m.w),
+    );
+}
+
+// One texel of the table: its three vec4s.
+struct LutTexel {
+    spec_m: vec4<f32>,
+    diff_m: vec4<f32>,
+    norms: vec4<f32>,
+}
+
+fn lut_texel(i: u32, j: u32, size: u32) -> LutTexel {
+    let base = (j * size + i) * LUT_VEC4S_PER_CELL;
+    return LutTexel(lut[base], lut[base + 1u], lut[base + 2u]);
+}
+
+// Lut::sample_uv: bilinear filtering with clamp-to-edge addressing, done in the shader so
+// that it is the CPU sampler exactly (hardware filtering uses 8-bit weights on many GPUs).
+fn lut_sample_uv(uv: vec2<f32>, size: u32) -> LutTexel {
+    let x = uv * f32(size) - 0.5;
+    let x0 = floor(x);
+    let f = x - x0;
+    let last = f32(size - 1u);
+    let i0 = u32(clamp(x0.x, 0.0, last));
+    let i1 = u32(clamp(x0.x + 1.0, 0.0, last));
+    let j0 = u32(clamp(x0.y, 0.0, last));
+    let j1 = u32(clamp(x0.y + 1.0, 0.0, last));
+    let a = lut_texel(i0, j0, size);
+    let b = lut_texel(i1, j0, size);
+    let c = lut_texel(i0, j1, size);
+    let d = lut_texel(i1, j1, size);
+    return LutTexel(
+        mix(mix(a.spec_m, b.spec_m, f.x), mix(c.spec_m, d.spec_m, f.x), f.y),
+        mix(mix(a.diff_m, b.diff_m, f.x), mix(c.diff_m, d.diff_m, f.x), f.y),
+        mix(mix(a.norms, b.norms, f.x), mix(c.norms, d.norms, f.x), f.y),
+    );
+}
+
+// Lut::uv: (r, sqrt(1 − cos θo)) · (N−1)/N + 0.5/N, r = sqrt(α).
+fn lut_uv(alpha: f32, cos_theta_o: f32, size: u32) -> vec2<f32> {
+    let n = f32(size);
+    let rs = vec2<f32>(sqrt(max(alpha, 0.0)), sqrt(1.0 - clamp(cos_theta_o, 0.0, 1.0)));
+    return rs * ((n - 1.0) / n) + 0.5 / n;
+}
+
+// Lut::ltc_pair: both lobes at (α, cos θo).
+fn lut_ltc_pair(alpha: f32, cos_theta_o: f32, size: u32) -> LtcPair {
+    let t = lut_sample_uv(lut_uv(alpha, cos_theta_o, size), size);
+    let spec = cos_from_brdf_from_entries(t.spec_m);
+    let diff = cos_from_brdf_from_entries(t.diff_m);
+    return LtcPair(
+        Ltc(spec, abs(determinant(spec)), t.norms.x, t.norms.y),
+        Ltc(diff, abs(determinant(diff)), t.norms.z, 0.0),
+    );
+}
+
+// LtcPair::spec_magnitude: F0 n_s + (1 − F0) f_s.
+fn spec_magnitude(pair: LtcPair, f0: f32) -> f32 {
+    return f0 * pair.spec.norm + (1.0 - f0) * pair.spec.fresnel;
+}

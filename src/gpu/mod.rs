@@ -1,0 +1,88 @@
+//! The GPU side: headless device set-up, one Rust module per WGSL file (`brdf`, `ltc`,
+//! `plane`), and timing. Shaders are composed from the embedded files at load time.
+
+pub mod brdf;
+pub mod ltc;
+pub mod plane;
+pub mod timing;
+
+use crate::error::InputError;
+
+/// The WGSL of the plane shader: brdf.wgsl, then ltc.wgsl, then plane.wgsl.
+pub fn plane_module_source() -> String {
+    [brdf::SOURCE, ltc::SOURCE, plane::SOURCE].join("\n")
+}
+
+/// A headless device and what was chosen.
+pub struct GpuContext {
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+    pub info: wgpu::AdapterInfo,
+    pub limits: wgpu::Limits,
+}
+
+impl GpuContext {
+    /// The default adapter without a window (`WGPU_BACKEND` picks the backend), with
+    /// timestamp queries where it has them and its own limits (for the largest light buffer).
+    pub fn new() -> Result<Self, InputError> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            compatible_surface: None,
+            // Bucketing hides the adapter's true limits (a fingerprinting defence for the
+            // web); a headless lab wants the real ones (the largest light buffer).
+            apply_limit_buckets: false,
+        }))
+        .map_err(|e| {
+            InputError::new(
+                "GPU",
+                format!("no adapter found ({e}); install a Vulkan driver (mesa-vulkan-drivers gives a CPU one) or render with --cpu"),
+            )
+        })?;
+        let info = adapter.get_info();
+        let limits = adapter.limits();
+        let required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+        let (device, queue) =
+            pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+                label: Some("ltc-lab"),
+                required_features,
+                required_limits: limits.clone(),
+                experimental_features: wgpu::ExperimentalFeatures::disabled(),
+                memory_hints: wgpu::MemoryHints::Performance,
+                trace: wgpu::Trace::Off,
+            }))
+            .map_err(|e| InputError::new(format!("GPU {}", info.name), format!("cannot open the device: {e}")))?;
+        Ok(Self {
+            device,
+            queue,
+            info,
+            limits,
+        })
+    }
+
+    /// One line for the log: name, backend, type, timestamps.
+    pub fn describe(&self) -> String {
+        format!(
+            "{} ({:?}, {:?}{})",
+            self.info.name,
+            self.info.backend,
+            self.info.device_type,
+            if self.has_timestamps() {
+                ", timestamp queries"
+            } else {
+                ", no timestamp queries: timing by wall clock"
+            }
+        )
+    }
+
+    pub fn has_timestamps(&self) -> bool {
+        self.device.features().contains(wgpu::Features::TIMESTAMP_QUERY)
+    }
+
+    /// Whether tests must fail rather than skip when there is no adapter.
+    pub fn required_by_environment() -> bool {
+        std::env::var_os("LTC_LAB_REQUIRE_GPU").is_some_and(|v| !v.is_empty() && v != "0")
+    }
+}
