@@ -8,12 +8,16 @@ use std::time::Instant;
 use clap::{Parser, Subcommand, ValueEnum};
 use glam::DVec3;
 
+use ltc_lab::bench::BenchRow;
 use ltc_lab::brdf::{brdf_cos, view_from_theta};
 use ltc_lab::cpu::{Method, RenderSettings, render};
 use ltc_lab::error::{InputError, Result};
+use ltc_lab::gpu::GpuContext;
+use ltc_lab::gpu::plane::{GpuMethod, GpuView, PlaneRenderer, PlaneSettings, ShaderChecks};
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut};
 use ltc_lab::ltc::{Clipping, Normalization};
+use ltc_lab::metrics::relative_floor;
 use ltc_lab::output::write_frame;
 use ltc_lab::scene::Scene;
 
@@ -62,19 +66,22 @@ enum Command {
         #[arg(long)]
         dump: bool,
     },
-    /// Render a scene preset to PNG (tone-mapped) or EXR (linear radiance).
+    /// Render a scene preset to PNG (tone-mapped) or EXR (linear radiance), on the GPU
+    /// (default) or the CPU reference.
     Render {
         #[arg(long)]
         scene: PathBuf,
+        /// brdf, brdf-fast, ltc, ltc-fast, split (LTC | BRDF) or diff (|LTC − BRDF| / BRDF).
+        /// On the CPU the fast forms are the same math as their literal twins.
         #[arg(long, value_enum)]
-        method: Method,
+        method: RenderMethod,
         /// Image size, WxH.
         #[arg(long, default_value = "512x512", value_parser = parse_size)]
         size: (usize, usize),
         /// Output file (.png or .exr); default `<scene>-<method>.png`, never overwritten.
         #[arg(long)]
         out: Option<PathBuf>,
-        /// Render on the CPU (the f64 reference).
+        /// Render on the CPU (the f64 reference) instead of the GPU.
         #[arg(long)]
         cpu: bool,
         /// Light clipping rules (eq. 30): both, horizon (case 1 only), transformed (case 2
@@ -91,6 +98,61 @@ enum Command {
         #[arg(long)]
         lut: Option<PathBuf>,
     },
+    /// The paper's Table 1 on this machine's GPU: every method at each light count.
+    Bench {
+        /// Light counts, comma-separated.
+        #[arg(long, value_delimiter = ',', default_value = "100,500,1000,5000")]
+        lights: Vec<usize>,
+        #[arg(long, default_value = "1920x1080", value_parser = parse_size)]
+        size: (usize, usize),
+        /// Timed frames per method and light count (after 5 warm-up frames).
+        #[arg(long, default_value_t = 30)]
+        frames: usize,
+        /// Also write the rows as CSV.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Keep wgpu's runtime bounds checks (the default benchmarks trusted shader modules).
+        #[arg(long)]
+        checked: bool,
+        /// A LUT file instead of the embedded one.
+        #[arg(long)]
+        lut: Option<PathBuf>,
+    },
+}
+
+/// What `render` draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum RenderMethod {
+    Brdf,
+    BrdfFast,
+    Ltc,
+    LtcFast,
+    Split,
+    Diff,
+}
+
+impl RenderMethod {
+    /// The CPU reference's method (it has one form of each).
+    fn cpu(self) -> Method {
+        match self {
+            Self::Brdf | Self::BrdfFast => Method::Brdf,
+            Self::Ltc | Self::LtcFast => Method::Ltc,
+            Self::Split => Method::Split,
+            Self::Diff => Method::Diff,
+        }
+    }
+
+    /// The GPU's methods and view: split and diff compare the literal forms, as the CPU does.
+    fn gpu(self) -> (GpuMethod, GpuView) {
+        match self {
+            Self::Brdf => (GpuMethod::Brdf, GpuView::Single),
+            Self::BrdfFast => (GpuMethod::BrdfFast, GpuView::Single),
+            Self::Ltc => (GpuMethod::Ltc, GpuView::Single),
+            Self::LtcFast => (GpuMethod::LtcFast, GpuView::Single),
+            Self::Split => (GpuMethod::Ltc, GpuView::Split),
+            Self::Diff => (GpuMethod::Ltc, GpuView::Diff),
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -172,12 +234,27 @@ fn main() -> ExitCode {
             divider,
             lut,
         }) => {
-            let mut settings = RenderSettings::new(size.0, size.1, method);
+            let mut settings = RenderSettings::new(size.0, size.1, method.cpu());
             settings.clipping = clip.into();
             settings.normalization = normalization.into();
             settings.divider = divider;
-            run_render(&scene, settings, out, cpu, lut.as_deref())
+            run_render(&scene, method, settings, out, cpu, lut.as_deref())
         }
+        Some(Command::Bench {
+            lights,
+            size,
+            frames,
+            csv,
+            checked,
+            lut,
+        }) => run_bench(
+            &lights,
+            size,
+            frames,
+            csv.as_deref(),
+            checked,
+            lut.as_deref(),
+        ),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -391,6 +468,7 @@ fn run_lut(lut_path: Option<&Path>, dump: bool) -> Result<()> {
 
 fn run_render(
     scene_path: &Path,
+    method: RenderMethod,
     settings: RenderSettings,
     out: Option<PathBuf>,
     cpu: bool,
@@ -410,11 +488,8 @@ fn run_render(
             let stem = scene_path
                 .file_stem()
                 .map_or("render".into(), |s| s.to_string_lossy());
-            let method = settings
-                .method
-                .to_possible_value()
-                .expect("no skipped variants");
-            let p = PathBuf::from(format!("{stem}-{}.png", method.get_name()));
+            let name = method.to_possible_value().expect("no skipped variants");
+            let p = PathBuf::from(format!("{stem}-{}.png", name.get_name()));
             if p.exists() {
                 return Err(InputError::new(
                     p.display().to_string(),
@@ -424,23 +499,133 @@ fn run_render(
             p
         }
     };
-    if !cpu {
+    if !matches!(
+        out.extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .as_deref(),
+        Some("png" | "exr")
+    ) {
         return Err(InputError::new(
-            "render",
-            "GPU rendering is not part of this build yet; pass --cpu for the CPU reference",
+            out.display().to_string(),
+            "the output must end in .png or .exr",
         ));
     }
     let start = Instant::now();
-    let frame = render(&scene, &lut, &settings);
+    let (frame, device) = if cpu {
+        let frame = render(&scene, &lut, &settings);
+        (
+            frame,
+            format!("the CPU ({} threads)", rayon::current_num_threads()),
+        )
+    } else {
+        render_gpu(&scene, &lut, method, &settings)?
+    };
     let seconds = start.elapsed().as_secs_f64();
     write_frame(&frame, &out, scene.exposure)?;
     eprintln!(
-        "rendered {} lights at {}×{} on the CPU ({} threads) in {seconds:.3} s; wrote {}",
+        "rendered {} lights at {}×{} on {device} in {seconds:.3} s; wrote {}",
         scene.lights.len(),
         settings.width,
         settings.height,
-        rayon::current_num_threads(),
         out.display()
     );
+    Ok(())
+}
+
+/// The GPU render of `render`: the diff view first renders the exact image for its floor.
+fn render_gpu(
+    scene: &Scene,
+    lut: &Lut,
+    method: RenderMethod,
+    s: &RenderSettings,
+) -> Result<(ltc_lab::cpu::Frame, String)> {
+    let ctx = GpuContext::new()?;
+    let mut renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked);
+    let (method_a, view) = method.gpu();
+    let mut settings = PlaneSettings::single(s.width, s.height, method_a);
+    settings.view = view;
+    settings.clipping = s.clipping;
+    settings.normalization = s.normalization;
+    settings.divider = s.divider;
+    if view == GpuView::Diff {
+        let exact = renderer.render(
+            &ctx,
+            scene,
+            &PlaneSettings::single(s.width, s.height, GpuMethod::Brdf),
+        )?;
+        settings.rel_floor = relative_floor(&exact.0);
+    }
+    let (frame, ms) = renderer.render(&ctx, scene, &settings)?;
+    Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))
+}
+
+fn run_bench(
+    lights: &[usize],
+    size: (usize, usize),
+    frames: usize,
+    csv: Option<&Path>,
+    checked: bool,
+    lut_path: Option<&Path>,
+) -> Result<()> {
+    if frames == 0 {
+        return Err(InputError::new("--frames", "must be at least 1"));
+    }
+    if let Some(&n) = lights
+        .iter()
+        .find(|&&n| n == 0 || n > ltc_lab::scene::MAX_LIGHTS)
+    {
+        return Err(InputError::new(
+            "--lights",
+            format!(
+                "each count must be in 1..={}, got {n}",
+                ltc_lab::scene::MAX_LIGHTS
+            ),
+        ));
+    }
+    if let Some(p) = csv {
+        // Refuse a bad path before minutes of measuring.
+        let dir = p
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        if !dir.is_dir() {
+            return Err(InputError::new(
+                p.display().to_string(),
+                "its directory does not exist",
+            ));
+        }
+    }
+    let lut = Lut::load(lut_path)?;
+    let ctx = GpuContext::new()?;
+    let device = ctx.describe();
+    eprintln!("benchmarking on {device}");
+    if !ctx.has_timestamps() {
+        eprintln!(
+            "warning: the adapter has no timestamp queries; times are wall clock (submit to done) and include driver overhead"
+        );
+    }
+    let checks = if checked {
+        ShaderChecks::Checked
+    } else {
+        ShaderChecks::Trusted
+    };
+    let rows = ltc_lab::bench::run(&ctx, &lut, lights, size, frames, checks, |r| {
+        eprintln!(
+            "  {:>9} {:>6} lights: {:.3} ms",
+            r.method.name(),
+            r.lights,
+            r.ms_median
+        );
+    })?;
+    print!("{}", ltc_lab::bench::markdown(&rows, &device));
+    if let Some(p) = csv {
+        let mut text = format!("{}\n", BenchRow::CSV_HEADER);
+        for r in &rows {
+            text.push_str(&r.csv());
+            text.push('\n');
+        }
+        ltc_lab::error::write_atomically(p, text.as_bytes())?;
+    }
     Ok(())
 }

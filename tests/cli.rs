@@ -1,6 +1,8 @@
 //! The command line: every subcommand on good input, and on a corrupt LUT, a malformed
 //! scene and a bad CSV row — one line on stderr naming the input, exit 2, no output file.
 
+mod gpu_common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -315,4 +317,87 @@ fn render_refuses_malformed_scenes_and_leaves_no_file() {
         assert!(stderr(&o).contains(what), "{all:?}: {}", stderr(&o));
     }
     assert!(!Path::new("/tmp/x.bmp").exists());
+}
+
+#[test]
+fn render_on_the_gpu_by_default() {
+    if gpu_common::gpu().is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for method in ["brdf", "brdf-fast", "ltc", "ltc-fast", "split", "diff"] {
+        let out = dir.path().join(format!("{method}.exr"));
+        let o = ltc_lab(&[
+            "render",
+            "--scene",
+            &preset("paper-100.toml"),
+            "--method",
+            method,
+            "--size",
+            "32x24",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{method}: {}", stderr(&o));
+        assert!(stderr(&o).contains("ms GPU"), "{method}: {}", stderr(&o));
+        assert!(std::fs::metadata(&out).unwrap().len() > 0);
+    }
+}
+
+#[test]
+fn bench_prints_the_table_and_writes_the_csv() {
+    if gpu_common::gpu().is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("bench.csv");
+    let o = ltc_lab(&[
+        "bench",
+        "--lights",
+        "10,20",
+        "--size",
+        "32x16",
+        "--frames",
+        "2",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = String::from_utf8(o.stdout).unwrap();
+    assert!(table.contains("| ltc-fast | 20 | 32×16 |"), "{table}");
+    assert!(table.contains("ltc-fast / brdf"), "{table}");
+    assert!(
+        table.contains("| 5000 | 2 | 5 |"),
+        "the paper's figures: {table}"
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "method,lights,width,height,frames,ms_median,ms_min,ms_max,fps,glightpx_per_s"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 8, "4 methods × 2 light counts");
+    for r in &rows {
+        assert_eq!(r.len(), 10);
+        let (median, min, max): (f64, f64, f64) = (
+            r[5].parse().unwrap(),
+            r[6].parse().unwrap(),
+            r[7].parse().unwrap(),
+        );
+        assert!(min > 0.0 && min <= median && median <= max, "{r:?}");
+        // fps and G light-px/s follow from the median.
+        let fps: f64 = r[8].parse().unwrap();
+        assert!((fps - 1e3 / median).abs() <= 1e-3 * fps + 1e-3, "{r:?}");
+    }
+}
+
+#[test]
+fn bench_refuses_bad_arguments() {
+    assert_refused(&ltc_lab(&["bench", "--frames", "0"]), "--frames");
+    assert_refused(&ltc_lab(&["bench", "--lights", "0"]), "--lights");
+    assert_refused(
+        &ltc_lab(&["bench", "--csv", "/nonexistent-dir/b.csv"]),
+        "/nonexistent-dir/b.csv",
+    );
 }

@@ -19,14 +19,24 @@ const W: usize = 48;
 const H: usize = 40;
 
 fn preset(name: &str) -> Scene {
-    Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes").join(name)).unwrap()
+    Scene::load(
+        &Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("assets/scenes")
+            .join(name),
+    )
+    .unwrap()
 }
 
 fn scenes() -> Vec<(String, Scene)> {
-    let mut v: Vec<(String, Scene)> = ["paper-100", "figure2-normal", "figure2-case1", "figure2-case2"]
-        .iter()
-        .map(|n| (n.to_string(), preset(&format!("{n}.toml"))))
-        .collect();
+    let mut v: Vec<(String, Scene)> = [
+        "paper-100",
+        "figure2-normal",
+        "figure2-case1",
+        "figure2-case2",
+    ]
+    .iter()
+    .map(|n| (n.to_string(), preset(&format!("{n}.toml"))))
+    .collect();
     let mut random = preset("paper-100.toml");
     random.lights = generate_lights(
         &RandomLights {
@@ -44,7 +54,12 @@ fn scenes() -> Vec<(String, Scene)> {
     v
 }
 
-const CLIPS: [Clipping; 4] = [Clipping::BOTH, Clipping::HORIZON, Clipping::TRANSFORMED, Clipping::NONE];
+const CLIPS: [Clipping; 4] = [
+    Clipping::BOTH,
+    Clipping::HORIZON,
+    Clipping::TRANSFORMED,
+    Clipping::NONE,
+];
 const NORMALIZATIONS: [Normalization; 2] = [Normalization::Corrected, Normalization::PaperLiteral];
 
 /// Per-pixel agreement of a GPU frame with the CPU reference.
@@ -76,9 +91,17 @@ fn assert_close(what: &str, gpu: &Frame, cpu: &Frame) {
             worst = (err, k);
         }
     }
-    assert!(silhouette * 100 <= cpu.pixels.len(), "{what}: {silhouette} pixels differ in coverage");
+    assert!(
+        silhouette * 100 <= cpu.pixels.len(),
+        "{what}: {silhouette} pixels differ in coverage"
+    );
     let (err, k) = worst;
-    assert!(err <= 2e-4, "{what}: pixel {k} differs by {err:.2e} (gpu {:?}, cpu {:?})", gpu.pixels[k], cpu.pixels[k]);
+    assert!(
+        err <= 2e-4,
+        "{what}: pixel {k} differs by {err:.2e} (gpu {:?}, cpu {:?})",
+        gpu.pixels[k],
+        cpu.pixels[k]
+    );
 }
 
 fn cpu_frame(scene: &Scene, method: Method, clip: Clipping, normalization: Normalization) -> Frame {
@@ -102,18 +125,29 @@ fn gpu_matches_cpu_for_every_method_clip_and_normalization() {
     for (name, scene) in scenes() {
         for method in GpuMethod::ALL {
             let combos: Vec<(Clipping, Normalization)> = if method.is_ltc() {
-                CLIPS.iter().flat_map(|&c| NORMALIZATIONS.map(|n| (c, n))).collect()
+                CLIPS
+                    .iter()
+                    .flat_map(|&c| NORMALIZATIONS.map(|n| (c, n)))
+                    .collect()
             } else {
                 vec![(Clipping::BOTH, Normalization::Corrected)]
             };
             for (clip, normalization) in combos {
-                let cpu_method = if method.is_ltc() { Method::Ltc } else { Method::Brdf };
+                let cpu_method = if method.is_ltc() {
+                    Method::Ltc
+                } else {
+                    Method::Brdf
+                };
                 let cpu = cpu_frame(&scene, cpu_method, clip, normalization);
                 let mut s = PlaneSettings::single(W, H, method);
                 s.clipping = clip;
                 s.normalization = normalization;
                 let gpu = gpu_frame(&scene, &s);
-                assert_close(&format!("{name} {} {clip:?} {normalization:?}", method.name()), &gpu, &cpu);
+                assert_close(
+                    &format!("{name} {} {clip:?} {normalization:?}", method.name()),
+                    &gpu,
+                    &cpu,
+                );
             }
         }
     }
@@ -136,17 +170,29 @@ fn gpu_split_and_diff_views_match_cpu() {
         assert_eq!(gpu.divider, cpu.divider);
         assert_close(&format!("{name} split"), &gpu, &cpu);
 
-        let exact = cpu_frame(&scene, Method::Brdf, Clipping::BOTH, Normalization::Corrected);
+        let exact = cpu_frame(
+            &scene,
+            Method::Brdf,
+            Clipping::BOTH,
+            Normalization::Corrected,
+        );
         s.view = GpuView::Diff;
         s.rel_floor = relative_floor(&exact);
-        let cpu = render(&scene, Lut::embedded(), &RenderSettings::new(W, H, Method::Diff));
+        let cpu = render(
+            &scene,
+            Lut::embedded(),
+            &RenderSettings::new(W, H, Method::Diff),
+        );
         let gpu = gpu_frame(&scene, &s);
         // Relative differences are ratios of f32 radiances, compared absolutely (plus
         // relatively above 1): 1e-5, against 8e-7 measured on lavapipe.
         for k in 0..cpu.pixels.len() {
             if gpu.on_plane[k] && cpu.on_plane[k] {
                 let (g, c) = (gpu.pixels[k].x, cpu.pixels[k].x);
-                assert!((g - c).abs() <= 1e-5 * (1.0 + c), "{name} diff pixel {k}: gpu {g} cpu {c}");
+                assert!(
+                    (g - c).abs() <= 1e-5 * (1.0 + c),
+                    "{name} diff pixel {k}: gpu {g} cpu {c}"
+                );
             }
         }
     }
@@ -173,7 +219,12 @@ fn ltc_and_ltc_fast_agree_to_f32_rounding() {
                 // lavapipe — except where (M⁻¹l).z = m20 lx + m22 lz nearly cancels, which
                 // amplifies rounding by |M⁻¹l| / (M⁻¹l).z: the case-1 glow without the horizon
                 // rule lives there (5e-5 measured). 1e-4 covers both.
-                assert!(err <= 1e-4, "{name} {clip:?} pixel {k}: {:?} vs {:?}", a.pixels[k], b.pixels[k]);
+                assert!(
+                    err <= 1e-4,
+                    "{name} {clip:?} pixel {k}: {:?} vs {:?}",
+                    a.pixels[k],
+                    b.pixels[k]
+                );
             }
         }
     }
@@ -217,9 +268,17 @@ fn no_nan_reaches_the_image() {
                         let mut r = g.renderer.lock().unwrap();
                         let frame = r.render(&g.ctx, &scene, &s).unwrap().0;
                         let bad = frame.pixels.iter().filter(|p| p.is_nan()).count();
-                        assert_eq!(bad, 0, "{} {view:?} {clip:?} α={alpha} base={base:?}: {bad} NaN pixels", method.name());
+                        assert_eq!(
+                            bad,
+                            0,
+                            "{} {view:?} {clip:?} α={alpha} base={base:?}: {bad} NaN pixels",
+                            method.name()
+                        );
                         if clip == Clipping::BOTH && view != GpuView::Diff {
-                            assert!(frame.pixels.iter().all(|p| p.min_element() >= 0.0), "negative radiance");
+                            assert!(
+                                frame.pixels.iter().all(|p| p.min_element() >= 0.0),
+                                "negative radiance"
+                            );
                         }
                     }
                 }
@@ -236,14 +295,21 @@ fn light_counts_zero_one_and_too_many() {
     let mut r = g.renderer.lock().unwrap();
     scene.lights.clear();
     let (frame, _) = r.render(&g.ctx, &scene, &s).unwrap();
-    assert!(frame.pixels.iter().all(|p| *p == DVec3::ZERO), "no lights, no light");
+    assert!(
+        frame.pixels.iter().all(|p| *p == DVec3::ZERO),
+        "no lights, no light"
+    );
     scene.lights = preset("figure2-normal.toml").lights;
     let (frame, _) = r.render(&g.ctx, &scene, &s).unwrap();
     assert!(frame.pixels.iter().any(|p| p.x > 0.0));
     use ltc_lab::gpu::plane::PlaneRenderer;
     let max = PlaneRenderer::max_lights(&g.ctx);
-    assert!(max >= 20_000, "the lab's 20 000-light slider must fit: {max}");
+    assert!(
+        max >= 20_000,
+        "the lab's 20 000-light slider must fit: {max}"
+    );
     PlaneRenderer::check_light_count(&g.ctx, max).unwrap();
-    let err = PlaneRenderer::check_light_count(&g.ctx, max + 1).expect_err("one light too many is refused");
+    let err = PlaneRenderer::check_light_count(&g.ctx, max + 1)
+        .expect_err("one light too many is refused");
     assert!(err.to_string().contains("do not fit"), "{err}");
 }

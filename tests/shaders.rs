@@ -8,16 +8,22 @@ use ltc_lab::gpu::{brdf, ltc, plane_module_source};
 fn validate(name: &str, src: &str) -> naga::Module {
     let module = naga::front::wgsl::parse_str(src)
         .unwrap_or_else(|e| panic!("{name} does not parse:\n{}", e.emit_to_string(src)));
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
-        .validate(&module)
-        .unwrap_or_else(|e| panic!("{name} does not validate:\n{}", e.emit_to_string(src)));
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::all(),
+    )
+    .validate(&module)
+    .unwrap_or_else(|e| panic!("{name} does not validate:\n{}", e.emit_to_string(src)));
     module
 }
 
 #[test]
 fn every_wgsl_file_validates() {
     validate("brdf.wgsl", brdf::SOURCE);
-    validate("brdf.wgsl + ltc.wgsl", &[brdf::SOURCE, ltc::SOURCE].join("\n"));
+    validate(
+        "brdf.wgsl + ltc.wgsl",
+        &[brdf::SOURCE, ltc::SOURCE].join("\n"),
+    );
     let module = validate("brdf.wgsl + ltc.wgsl + plane.wgsl", &plane_module_source());
     assert!(module.entry_points.iter().any(|e| e.name == "shade"));
 }
@@ -32,7 +38,10 @@ fn wgsl_layout(module: &naga::Module, name: &str) -> (Vec<(String, u32)>, u32) {
         .1;
     match &ty.inner {
         naga::TypeInner::Struct { members, span } => (
-            members.iter().map(|m| (m.name.clone().unwrap(), m.offset)).collect(),
+            members
+                .iter()
+                .map(|m| (m.name.clone().unwrap(), m.offset))
+                .collect(),
             *span,
         ),
         other => panic!("{name} is {other:?}"),
@@ -50,26 +59,70 @@ macro_rules! rust_layout {
 fn pod_types_match_the_wgsl_structs() {
     let module = validate("plane", &plane_module_source());
     assert_eq!(
-        rust_layout!(Params, eye, forward, right, up, base_color, alpha, f0, tan_half_fov, aspect,
-            half_size, divider, rel_floor, _pad0, width, height, light_count, lut_size, clip,
-            normalization, _pad1, _pad2),
+        rust_layout!(
+            Params,
+            eye,
+            forward,
+            right,
+            up,
+            base_color,
+            alpha,
+            f0,
+            tan_half_fov,
+            aspect,
+            half_size,
+            divider,
+            rel_floor,
+            _pad0,
+            width,
+            height,
+            light_count,
+            lut_size,
+            clip,
+            normalization,
+            _pad1,
+            _pad2
+        ),
         wgsl_layout(&module, "Params")
     );
-    assert_eq!(rust_layout!(GpuLight, position_range, intensity), wgsl_layout(&module, "GpuLight"));
+    assert_eq!(
+        rust_layout!(GpuLight, position_range, intensity),
+        wgsl_layout(&module, "GpuLight")
+    );
 }
 
 #[test]
 fn mirrored_functions_have_the_same_names() {
     let module = validate("plane", &plane_module_source());
-    let wgsl: Vec<&str> = module.functions.iter().filter_map(|(_, f)| f.name.as_deref()).collect();
+    let wgsl: Vec<&str> = module
+        .functions
+        .iter()
+        .filter_map(|(_, f)| f.name.as_deref())
+        .collect();
     // Each exists in Rust under this name (src/brdf.rs, src/ltc/mod.rs, src/ltc/lut.rs); the
     // `use` below fails to compile if one is renamed.
     #[allow(unused_imports)]
-    use ltc_lab::brdf::{d_ggx, diffuse_cos, f_schlick, fd_burley, g2_correlated, irradiance_scale,
-        lambda_ggx, specular_cos, v_smith_ggx_correlated};
-    for f in ["d_ggx", "lambda_ggx", "g2_correlated", "f_schlick", "fd_burley", "specular_cos",
-        "diffuse_cos", "irradiance_scale", "v_smith_ggx_correlated", "ltc_eval", "lut_sample_uv",
-        "lut_uv", "spec_magnitude", "surface_point", "luminance"] {
+    use ltc_lab::brdf::{
+        d_ggx, diffuse_cos, f_schlick, fd_burley, g2_correlated, irradiance_scale, lambda_ggx,
+        specular_cos, v_smith_ggx_correlated,
+    };
+    for f in [
+        "d_ggx",
+        "lambda_ggx",
+        "g2_correlated",
+        "f_schlick",
+        "fd_burley",
+        "specular_cos",
+        "diffuse_cos",
+        "irradiance_scale",
+        "v_smith_ggx_correlated",
+        "ltc_eval",
+        "lut_sample_uv",
+        "lut_uv",
+        "spec_magnitude",
+        "surface_point",
+        "luminance",
+    ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
     }
 }

@@ -15,8 +15,18 @@ pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
         .iter()
         .flat_map(|c| {
             [
-                [c.get(SpecM00), c.get(SpecM02), c.get(SpecM20), c.get(SpecM22)],
-                [c.get(DiffM00), c.get(DiffM02), c.get(DiffM20), c.get(DiffM22)],
+                [
+                    c.get(SpecM00),
+                    c.get(SpecM02),
+                    c.get(SpecM20),
+                    c.get(SpecM22),
+                ],
+                [
+                    c.get(DiffM00),
+                    c.get(DiffM02),
+                    c.get(DiffM20),
+                    c.get(DiffM22),
+                ],
                 [c.get(SpecNorm), c.get(SpecFresnel), c.get(DiffNorm), 0.0],
             ]
         })

@@ -44,16 +44,20 @@ impl GpuContext {
         let info = adapter.get_info();
         let limits = adapter.limits();
         let required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
-        let (device, queue) =
-            pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-                label: Some("ltc-lab"),
-                required_features,
-                required_limits: limits.clone(),
-                experimental_features: wgpu::ExperimentalFeatures::disabled(),
-                memory_hints: wgpu::MemoryHints::Performance,
-                trace: wgpu::Trace::Off,
-            }))
-            .map_err(|e| InputError::new(format!("GPU {}", info.name), format!("cannot open the device: {e}")))?;
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("ltc-lab"),
+            required_features,
+            required_limits: limits.clone(),
+            experimental_features: wgpu::ExperimentalFeatures::disabled(),
+            memory_hints: wgpu::MemoryHints::Performance,
+            trace: wgpu::Trace::Off,
+        }))
+        .map_err(|e| {
+            InputError::new(
+                format!("GPU {}", info.name),
+                format!("cannot open the device: {e}"),
+            )
+        })?;
         Ok(Self {
             device,
             queue,
@@ -78,7 +82,9 @@ impl GpuContext {
     }
 
     pub fn has_timestamps(&self) -> bool {
-        self.device.features().contains(wgpu::Features::TIMESTAMP_QUERY)
+        self.device
+            .features()
+            .contains(wgpu::Features::TIMESTAMP_QUERY)
     }
 
     /// Whether tests must fail rather than skip when there is no adapter.

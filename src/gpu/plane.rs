@@ -302,17 +302,18 @@ impl PlaneRenderer {
                 ("METHOD_B", f64::from(s.method_b as u32)),
                 ("VIEW", f64::from(s.view as u32)),
             ];
-            ctx.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some("plane"),
-                layout: Some(&self.pipeline_layout),
-                module: &self.module,
-                entry_point: Some("shade"),
-                compilation_options: wgpu::PipelineCompilationOptions {
-                    constants: &constants,
-                    zero_initialize_workgroup_memory: false,
-                },
-                cache: None,
-            })
+            ctx.device
+                .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                    label: Some("plane"),
+                    layout: Some(&self.pipeline_layout),
+                    module: &self.module,
+                    entry_point: Some("shade"),
+                    compilation_options: wgpu::PipelineCompilationOptions {
+                        constants: &constants,
+                        zero_initialize_workgroup_memory: false,
+                    },
+                    cache: None,
+                })
         })
     }
 
@@ -353,7 +354,10 @@ impl PlaneRenderer {
         if settings.width > max_side || settings.height > max_side {
             return Err(InputError::new(
                 "--size",
-                format!("{}×{} exceeds the GPU's largest texture side, {max_side}", settings.width, settings.height),
+                format!(
+                    "{}×{} exceeds the GPU's largest texture side, {max_side}",
+                    settings.width, settings.height
+                ),
             ));
         }
         let device = &ctx.device;
@@ -378,7 +382,11 @@ impl PlaneRenderer {
         if lights.is_empty() {
             lights.push(GpuLight::default());
         }
-        let lights_buffer = init("lights", bytemuck::cast_slice(&lights), wgpu::BufferUsages::STORAGE);
+        let lights_buffer = init(
+            "lights",
+            bytemuck::cast_slice(&lights),
+            wgpu::BufferUsages::STORAGE,
+        );
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("plane output"),
             size: wgpu::Extent3d {
@@ -429,10 +437,20 @@ impl PlaneRenderer {
     }
 
     /// Changes what a prepared frame shows (method, view, clipping…) without new buffers.
-    pub fn update(&self, ctx: &GpuContext, frame: &mut PreparedFrame, scene: &Scene, settings: &PlaneSettings) {
-        assert_eq!((settings.width, settings.height), (frame.settings.width, frame.settings.height));
+    pub fn update(
+        &self,
+        ctx: &GpuContext,
+        frame: &mut PreparedFrame,
+        scene: &Scene,
+        settings: &PlaneSettings,
+    ) {
+        assert_eq!(
+            (settings.width, settings.height),
+            (frame.settings.width, frame.settings.height)
+        );
         let params = settings.params(scene, frame.light_count, self.lut_size);
-        ctx.queue.write_buffer(&frame.params, 0, bytemuck::bytes_of(&params));
+        ctx.queue
+            .write_buffer(&frame.params, 0, bytemuck::bytes_of(&params));
         frame.settings = *settings;
     }
 
@@ -464,7 +482,9 @@ impl PlaneRenderer {
         let pipeline = &self.pipelines[&(settings.method_a, settings.method_b, settings.view)];
         let mut encoder = ctx
             .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("plane") });
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("plane"),
+            });
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                 label: Some("plane"),
@@ -503,7 +523,9 @@ impl PlaneRenderer {
         });
         let mut encoder = ctx
             .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback") });
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("readback"),
+            });
         encoder.copy_texture_to_buffer(
             frame.texture.as_image_copy(),
             wgpu::TexelCopyBufferInfo {
@@ -532,9 +554,13 @@ impl PlaneRenderer {
             let texels: &[[f32; 4]] =
                 bytemuck::cast_slice(&data[start..start + (w * TEXEL_BYTES) as usize]);
             for t in texels {
-                pixels.push(DVec3::new(f64::from(t[0]), f64::from(t[1]), f64::from(t[2])));
+                pixels.push(DVec3::new(
+                    f64::from(t[0]),
+                    f64::from(t[1]),
+                    f64::from(t[2]),
+                ));
                 // NaN (a poisoned, unwritten texel) counts as on the plane, so it is seen.
-                on_plane.push(!(t[3] < 0.5));
+                on_plane.push(t[3] >= 0.5 || t[3].is_nan());
             }
         }
         let s = frame.settings;
@@ -553,7 +579,12 @@ impl PlaneRenderer {
     }
 
     /// Prepares, poisons, shades and reads back one frame.
-    pub fn render(&mut self, ctx: &GpuContext, scene: &Scene, settings: &PlaneSettings) -> Result<(Frame, f64), InputError> {
+    pub fn render(
+        &mut self,
+        ctx: &GpuContext,
+        scene: &Scene,
+        settings: &PlaneSettings,
+    ) -> Result<(Frame, f64), InputError> {
         let frame = self.prepare(ctx, scene, settings)?;
         self.poison(ctx, &frame);
         let ms = self.run(ctx, &frame);
