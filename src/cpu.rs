@@ -112,6 +112,44 @@ impl ShadingFrame {
 }
 
 impl Scene {
+    /// The camera's position and orthonormal basis: eye, forward, right, up (`+z` is up).
+    pub fn camera_basis(&self) -> (DVec3, DVec3, DVec3, DVec3) {
+        let eye = DVec3::from(self.camera.position);
+        let forward = (DVec3::from(self.camera.target) - eye).normalize();
+        let right = forward.cross(DVec3::Z).normalize();
+        (eye, forward, right, right.cross(forward))
+    }
+
+    /// The camera ray through image position (x, y) in pixels (pixel centres at k + ½) of a
+    /// `width × height` image: origin and unit direction.
+    pub fn camera_ray(&self, x: f64, y: f64, width: usize, height: usize) -> (DVec3, DVec3) {
+        let (eye, forward, right, up) = self.camera_basis();
+        let tan_half = (self.camera.fov_y_degrees.to_radians() * 0.5).tan();
+        let aspect = width as f64 / height as f64;
+        let sx = (2.0 * x / width as f64 - 1.0) * tan_half * aspect;
+        let sy = (1.0 - 2.0 * y / height as f64) * tan_half;
+        (eye, (forward + sx * right + sy * up).normalize())
+    }
+
+    /// Where world point `p` appears in a `width × height` image, in pixels; `None` behind
+    /// the camera.
+    pub fn project(&self, p: DVec3, width: usize, height: usize) -> Option<(f64, f64)> {
+        let (eye, forward, right, up) = self.camera_basis();
+        let d = p - eye;
+        let z = d.dot(forward);
+        if z <= 1e-9 {
+            return None;
+        }
+        let tan_half = (self.camera.fov_y_degrees.to_radians() * 0.5).tan();
+        let aspect = width as f64 / height as f64;
+        let sx = d.dot(right) / (z * tan_half * aspect);
+        let sy = d.dot(up) / (z * tan_half);
+        Some((
+            (sx + 1.0) * 0.5 * width as f64,
+            (1.0 - sy) * 0.5 * height as f64,
+        ))
+    }
+
     /// The point of the plane seen through pixel (x, y) of a `width × height` image.
     pub fn surface_point(
         &self,
@@ -120,15 +158,18 @@ impl Scene {
         width: usize,
         height: usize,
     ) -> Option<SurfacePoint> {
-        let eye = DVec3::from(self.camera.position);
-        let forward = (DVec3::from(self.camera.target) - eye).normalize();
-        let right = forward.cross(DVec3::Z).normalize();
-        let up = right.cross(forward);
-        let tan_half = (self.camera.fov_y_degrees.to_radians() * 0.5).tan();
-        let aspect = width as f64 / height as f64;
-        let sx = (2.0 * (x as f64 + 0.5) / width as f64 - 1.0) * tan_half * aspect;
-        let sy = (1.0 - 2.0 * (y as f64 + 0.5) / height as f64) * tan_half;
-        let dir = (forward + sx * right + sy * up).normalize();
+        self.surface_point_at(x as f64 + 0.5, y as f64 + 0.5, width, height)
+    }
+
+    /// `surface_point` at a continuous image position.
+    pub fn surface_point_at(
+        &self,
+        x: f64,
+        y: f64,
+        width: usize,
+        height: usize,
+    ) -> Option<SurfacePoint> {
+        let (eye, dir) = self.camera_ray(x, y, width, height);
         if dir.z == 0.0 {
             return None;
         }

@@ -2,6 +2,7 @@
 //! diffuse) approximated by Linearly Transformed Cosines. The math (`brdf`, `ltc`) knows
 //! nothing of GPUs or windows; `cpu` is the reference renderer built on it.
 
+pub mod app;
 pub mod bench;
 pub mod brdf;
 pub mod cpu;

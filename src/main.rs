@@ -34,6 +34,24 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
+    /// Open the lab (the default with no subcommand).
+    Lab {
+        /// Render a few frames, save the window's pixels to this PNG and exit.
+        #[arg(long)]
+        screenshot: Option<PathBuf>,
+        /// Show one panel maximised (default: all five).
+        #[arg(long, value_enum, default_value_t = PanelArg::All)]
+        panel: PanelArg,
+        /// Window size, WxH.
+        #[arg(long, default_value = "1600x900", value_parser = parse_size)]
+        size: (usize, usize),
+        /// Start with this scene instead of the saved state.
+        #[arg(long)]
+        scene: Option<PathBuf>,
+        /// Fill the speed-vs-accuracy chart before showing (as its "measure" button does).
+        #[arg(long)]
+        measure: bool,
+    },
     /// Fit both lobes (GGX specular, Burley diffuse) over an N×N (θo, α) table and write the LUT.
     Fit {
         /// Cells per side.
@@ -118,6 +136,16 @@ enum Command {
         #[arg(long)]
         lut: Option<PathBuf>,
     },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum PanelArg {
+    Lobe,
+    Matrix,
+    Plane,
+    Clipping,
+    Chart,
+    All,
 }
 
 /// What `render` draws.
@@ -212,14 +240,14 @@ fn parse_size(s: &str) -> std::result::Result<(usize, usize), String> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => {
-            eprintln!(
-                "ltc-lab: the interactive lab is not part of this build yet; the headless commands are:\n"
-            );
-            use clap::CommandFactory;
-            let _ = Cli::command().print_help();
-            Ok(())
-        }
+        None => run_lab(None, PanelArg::All, (1600, 900), None, false),
+        Some(Command::Lab {
+            screenshot,
+            panel,
+            size,
+            scene,
+            measure,
+        }) => run_lab(screenshot, panel, size, scene.as_deref(), measure),
         Some(Command::Fit { size, out }) => run_fit(size, &out),
         Some(Command::Eval { cases, lut }) => run_eval(&cases, lut.as_deref()),
         Some(Command::Lut { lut, dump }) => run_lut(lut.as_deref(), dump),
@@ -628,4 +656,94 @@ fn run_bench(
         ltc_lab::error::write_atomically(p, text.as_bytes())?;
     }
     Ok(())
+}
+
+/// Opens the lab; with `screenshot`, saves the window after a few frames and exits.
+fn run_lab(
+    screenshot: Option<PathBuf>,
+    panel: PanelArg,
+    (w, h): (usize, usize),
+    scene: Option<&Path>,
+    measure: bool,
+) -> Result<()> {
+    use ltc_lab::app::{LabApp, LabState, PanelId, ScreenshotApp};
+    let scene = scene.map(Scene::load).transpose()?;
+    if let Some(p) = &screenshot
+        && !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
+    {
+        return Err(InputError::new(
+            p.display().to_string(),
+            "the screenshot must be a .png",
+        ));
+    }
+    let maximised = match panel {
+        PanelArg::Lobe => Some(PanelId::Lobe),
+        PanelArg::Matrix => Some(PanelId::Matrix),
+        PanelArg::Plane => Some(PanelId::Plane),
+        PanelArg::Clipping => Some(PanelId::Clipping),
+        PanelArg::Chart => Some(PanelId::Chart),
+        PanelArg::All => None,
+    };
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("LTC Lab")
+            .with_inner_size([w as f32, h as f32]),
+        renderer: eframe::Renderer::Wgpu,
+        // A screenshot shows the defaults, not whatever the last session left.
+        persist_window: screenshot.is_none(),
+        ..Default::default()
+    };
+    let configure = move |mut state: LabState| {
+        if let Some(sc) = &scene {
+            state.light_count = sc.lights.len();
+            state.scene = sc.clone();
+        }
+        if panel != PanelArg::All {
+            state.maximised = maximised;
+        }
+        state
+    };
+    let outcome = match screenshot {
+        Some(path) => {
+            let result = std::sync::Arc::new(std::sync::Mutex::new(None));
+            let slot = result.clone();
+            let run = eframe::run_native(
+                "LTC Lab (screenshot)",
+                options,
+                Box::new(move |_cc| {
+                    let mut app = LabApp::new(configure(LabState::default()));
+                    if measure {
+                        app.chart.measure_now(&app.state.shaded_scene());
+                    }
+                    Ok(Box::new(ScreenshotApp {
+                        app,
+                        path,
+                        frames: 0,
+                        result: slot,
+                    }))
+                }),
+            );
+            let taken = result.lock().expect("not poisoned").take();
+            match (run, taken) {
+                (Ok(()), Some(Ok(()))) => Ok(()),
+                (Ok(()), Some(Err(e))) => Err(e),
+                (Ok(()), None) => Err("the window closed before the screenshot".into()),
+                (Err(e), _) => Err(e.to_string()),
+            }
+        }
+        None => eframe::run_native(
+            "LTC Lab",
+            options,
+            Box::new(move |cc| {
+                let mut app = LabApp::from_creation_context(cc);
+                app.state = configure(app.state);
+                if measure {
+                    app.chart.measure_now(&app.state.shaded_scene());
+                }
+                Ok(Box::new(app))
+            }),
+        )
+        .map_err(|e| e.to_string()),
+    };
+    outcome.map_err(|e| InputError::new("lab", format!("cannot open the window: {e}")))
 }

@@ -19,7 +19,9 @@ use crate::scene::{Light, Scene};
 pub const SOURCE: &str = include_str!("../../shaders/plane.wgsl");
 
 /// How one pixel's lights are summed (`METHOD_*` in plane.wgsl).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum)]
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum, serde::Serialize, serde::Deserialize,
+)]
 pub enum GpuMethod {
     /// The exact BRDF as DESIGN §1 writes it.
     Brdf = 0,
@@ -50,7 +52,7 @@ impl GpuMethod {
 }
 
 /// What a pixel shows (`VIEW_*` in plane.wgsl).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub enum GpuView {
     /// Method A's radiance.
     Single = 0,
@@ -145,10 +147,7 @@ impl PlaneSettings {
     }
 
     pub fn params(&self, scene: &Scene, light_count: usize, lut_size: usize) -> Params {
-        let eye = DVec3::from(scene.camera.position);
-        let forward = (DVec3::from(scene.camera.target) - eye).normalize();
-        let right = forward.cross(DVec3::Z).normalize();
-        let up = right.cross(forward);
+        let (eye, forward, right, up) = scene.camera_basis();
         let v4 = |v: DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
         let m = &scene.material;
         Params {

@@ -8,7 +8,7 @@ use crate::brdf::{Dots, d_ggx, diffuse_cos, g2_correlated, lambda_ggx, specular_
 use crate::ltc::cosine_sample;
 
 /// Which lobe of the BRDF.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub enum Lobe {
     Specular,
     Diffuse,

@@ -1,0 +1,207 @@
+//! The speed-versus-accuracy panel: GPU time against image error for every method on the
+//! current scene, and fps against the number of lights (the paper's Table 1, with its own
+//! figures as a reference series) — measured on demand on this machine's GPU, on a worker
+//! thread with its own device so that the window stays live.
+
+use std::sync::mpsc;
+
+use egui::Color32;
+
+use crate::app::LabState;
+use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS, bench_scene};
+use crate::cpu::Frame;
+use crate::gpu::GpuContext;
+use crate::gpu::plane::{GpuMethod, PlaneRenderer, PlaneSettings, ShaderChecks};
+use crate::ltc::Normalization;
+use crate::ltc::lut::Lut;
+use crate::metrics::image_error;
+use crate::scene::Scene;
+
+/// Size of the measured frames: small enough for lavapipe to finish in seconds.
+pub const MEASURE_SIZE: (usize, usize) = (320, 180);
+/// Timed frames per point (median).
+const FRAMES: usize = 5;
+
+/// One measured method: GPU ms and relative RMSE against the exact BRDF.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    pub label: String,
+    pub ms: f64,
+    pub rel_rmse: f64,
+}
+
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Measurement {
+    pub points: Vec<Point>,
+    /// (lights, fps) per method.
+    pub scaling: Vec<(GpuMethod, Vec<[f64; 2]>)>,
+    pub device: String,
+}
+
+#[derive(Default)]
+pub struct ChartPanel {
+    pub measurement: Option<Measurement>,
+    pub error: Option<String>,
+    running: Option<mpsc::Receiver<Result<Measurement, String>>>,
+}
+
+impl ChartPanel {
+    pub fn show(&mut self, ui: &mut egui::Ui, s: &LabState) {
+        if let Some(rx) = &self.running {
+            match rx.try_recv() {
+                Ok(Ok(m)) => {
+                    self.measurement = Some(m);
+                    self.running = None;
+                }
+                Ok(Err(e)) => {
+                    self.error = Some(e);
+                    self.running = None;
+                }
+                Err(mpsc::TryRecvError::Empty) => ui.ctx().request_repaint(),
+                Err(mpsc::TryRecvError::Disconnected) => self.running = None,
+            }
+        }
+        ui.horizontal(|ui| {
+            let busy = self.running.is_some();
+            if ui
+                .add_enabled(!busy, egui::Button::new(if busy { "measuring…" } else { "measure" }))
+                .on_hover_text(format!("Times every method on the current scene at {}×{} (median of {FRAMES} frames, timestamp queries) and its error against the exact BRDF; then fps at 100–5000 lights", MEASURE_SIZE.0, MEASURE_SIZE.1))
+                .clicked()
+            {
+                self.start(s.shaded_scene());
+            }
+            if let Some(m) = &self.measurement {
+                ui.small(&m.device);
+            }
+        });
+        if let Some(e) = &self.error {
+            ui.colored_label(Color32::LIGHT_RED, e);
+        }
+        let half = (ui.available_width() / 2.0 - 6.0).max(80.0);
+        let height = ui.available_height().max(80.0);
+        ui.horizontal(|ui| {
+            ui.allocate_ui(egui::vec2(half, height), |ui| {
+                egui_plot::Plot::new("time vs error")
+                    .x_axis_label("GPU ms per frame")
+                    .y_axis_label("log10 relative RMSE")
+                    .legend(egui_plot::Legend::default().position(egui_plot::Corner::LeftBottom))
+                    .allow_scroll(false)
+                    .show(ui, |p| {
+                        for pt in self.measurement.iter().flat_map(|m| &m.points) {
+                            // The exact BRDF has error 0: drawn at the plot's floor, 1e-7.
+                            let y = pt.rel_rmse.max(1e-7).log10();
+                            p.points(
+                                egui_plot::Points::new(pt.label.clone(), vec![[pt.ms, y]])
+                                    .radius(5.0),
+                            );
+                        }
+                    });
+            });
+            ui.allocate_ui(egui::vec2(half, height), |ui| {
+                egui_plot::Plot::new("fps vs lights")
+                    .x_axis_label("lights")
+                    .y_axis_label("fps")
+                    .legend(egui_plot::Legend::default())
+                    .allow_scroll(false)
+                    .show(ui, |p| {
+                        let paper = |fps: [f64; 4]| -> Vec<[f64; 2]> {
+                            PAPER_LIGHTS
+                                .iter()
+                                .zip(fps)
+                                .map(|(&n, f)| [n as f64, f])
+                                .collect()
+                        };
+                        p.line(
+                            egui_plot::Line::new("paper BRDF (GTX 1060)", paper(PAPER_BRDF_FPS))
+                                .style(egui_plot::LineStyle::dashed_dense()),
+                        );
+                        p.line(
+                            egui_plot::Line::new("paper LTC (GTX 1060)", paper(PAPER_LTC_FPS))
+                                .style(egui_plot::LineStyle::dashed_dense()),
+                        );
+                        for (m, series) in self.measurement.iter().flat_map(|m| &m.scaling) {
+                            p.line(egui_plot::Line::new(m.name(), series.clone()));
+                        }
+                    });
+            });
+        });
+    }
+
+    fn start(&mut self, scene: Scene) {
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(measure(&scene));
+        });
+        self.error = None;
+        self.running = Some(rx);
+    }
+
+    /// Measures on this thread (the headless `lab --measure`).
+    pub fn measure_now(&mut self, scene: &Scene) {
+        match measure(scene) {
+            Ok(m) => self.measurement = Some(m),
+            Err(e) => self.error = Some(e),
+        }
+    }
+
+    /// Blocks until a running measurement is done (tests and headless use).
+    pub fn wait(&mut self) {
+        if let Some(rx) = self.running.take() {
+            match rx.recv() {
+                Ok(Ok(m)) => self.measurement = Some(m),
+                Ok(Err(e)) => self.error = Some(e),
+                Err(_) => {}
+            }
+        }
+    }
+}
+
+/// Every method on `scene`, then fps at the paper's light counts.
+pub fn measure(scene: &Scene) -> Result<Measurement, String> {
+    let ctx = GpuContext::new().map_err(|e| e.to_string())?;
+    let lut = Lut::embedded();
+    let mut renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked);
+    let (w, h) = MEASURE_SIZE;
+    let mut run = |scene: &Scene, s: &PlaneSettings| -> Result<(Frame, f64), String> {
+        let frame = renderer
+            .prepare(&ctx, scene, s)
+            .map_err(|e| e.to_string())?;
+        renderer.run(&ctx, &frame);
+        let mut ms: Vec<f64> = (0..FRAMES).map(|_| renderer.run(&ctx, &frame)).collect();
+        ms.sort_by(f64::total_cmp);
+        Ok((renderer.read(&ctx, &frame), ms[FRAMES / 2]))
+    };
+    let (exact, _) = run(scene, &PlaneSettings::single(w, h, GpuMethod::Brdf))?;
+    let mut points = Vec::new();
+    let variants = [
+        ("brdf", GpuMethod::Brdf, Normalization::Corrected),
+        ("brdf-fast", GpuMethod::BrdfFast, Normalization::Corrected),
+        ("ltc", GpuMethod::Ltc, Normalization::Corrected),
+        ("ltc-fast", GpuMethod::LtcFast, Normalization::Corrected),
+        ("ltc-paper", GpuMethod::Ltc, Normalization::PaperLiteral),
+    ];
+    for (label, method, normalization) in variants {
+        let mut s = PlaneSettings::single(w, h, method);
+        s.normalization = normalization;
+        let (frame, ms) = run(scene, &s)?;
+        points.push(Point {
+            label: label.into(),
+            ms,
+            rel_rmse: image_error(&frame, &exact).rel_rmse,
+        });
+    }
+    let mut scaling = Vec::new();
+    for method in GpuMethod::ALL {
+        let mut series = Vec::new();
+        for &n in &PAPER_LIGHTS {
+            let (_, ms) = run(&bench_scene(n), &PlaneSettings::single(w, h, method))?;
+            series.push([n as f64, 1e3 / ms]);
+        }
+        scaling.push((method, series));
+    }
+    Ok(Measurement {
+        points,
+        scaling,
+        device: format!("{} at {w}×{h}", ctx.describe()),
+    })
+}

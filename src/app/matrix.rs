@@ -1,0 +1,254 @@
+//! The matrix panel: for the chosen (θo, α), M⁻¹ as stored, M, the paper's form, |M⁻¹|, the
+//! magnitudes and the fit error; every LUT channel as a heat map with a crosshair on the
+//! chosen cell (click a cell to choose it); and "refit this cell", which runs the fitter live
+//! and plots the Nelder–Mead objective iteration by iteration.
+
+use std::sync::mpsc;
+
+use egui::{Color32, Vec2};
+use glam::DMat3;
+
+use crate::app::LabState;
+use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, cell_theta};
+use crate::ltc::lobe::Lobe;
+use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut};
+use crate::ltc::{Ltc, mat3_rows};
+use crate::output::false_colour;
+
+/// A live refit: the objective per iteration, then the fitted lobe.
+pub struct Refit {
+    pub lobe: Lobe,
+    pub cell: (usize, usize),
+    pub history: Vec<[f64; 2]>,
+    pub result: Option<Ltc>,
+    rx: mpsc::Receiver<RefitEvent>,
+}
+
+enum RefitEvent {
+    Iteration(usize, f64),
+    Done(Ltc),
+}
+
+pub struct MatrixPanel {
+    /// Each channel's heat map, made once from the LUT.
+    maps: Vec<egui::ColorImage>,
+    textures: Vec<Option<egui::TextureHandle>>,
+    pub refit: Option<Refit>,
+    /// The cell nearest the chosen (θo, α) at the last frame.
+    pub current_cell: (usize, usize),
+}
+
+impl MatrixPanel {
+    pub fn new(lut: &Lut) -> Self {
+        let n = lut.size;
+        let maps = (0..CHANNEL_COUNT)
+            .map(|c| {
+                let values: Vec<f64> = lut.cells.iter().map(|cell| f64::from(cell.0[c])).collect();
+                let (lo, hi) = values
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                        (a.min(x), b.max(x))
+                    });
+                let span = (hi - lo).max(1e-12);
+                // Row j = 0 (normal view) at the top, column i = 0 (α_min) at the left.
+                let pixels = values
+                    .iter()
+                    .map(|&x| {
+                        let [r, g, b] = false_colour((x - lo) / span);
+                        Color32::from_rgb(r, g, b)
+                    })
+                    .collect();
+                egui::ColorImage::new([n, n], pixels)
+            })
+            .collect();
+        Self {
+            maps,
+            textures: vec![None; CHANNEL_COUNT],
+            refit: None,
+            current_cell: (0, 0),
+        }
+    }
+
+    /// The refitted lobe, while the chosen cell is the one refitted.
+    pub fn refit_ltc(&self) -> Option<(Lobe, Ltc)> {
+        let r = self.refit.as_ref()?;
+        (r.cell == self.current_cell).then_some(())?;
+        r.result.map(|ltc| (r.lobe, ltc))
+    }
+
+    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
+        self.poll_refit(ui.ctx());
+        let n = lut.size;
+        let theta = s.theta_o_deg.to_radians().min(crate::ltc::fit::THETA_MAX);
+        let (u, v) = (s.alpha().sqrt(), (1.0 - theta.cos()).max(0.0).sqrt());
+        let col = (u * (n - 1) as f64).round() as usize;
+        let row = (v * (n - 1) as f64).round() as usize;
+        self.current_cell = (col.min(n - 1), row.min(n - 1));
+        let sample = lut.sample(s.alpha(), theta.cos());
+        let pair = sample.ltc_pair();
+        let (ltc, err) = match s.lobe {
+            Lobe::Specular => (pair.spec, sample.get(Channel::SpecErr)),
+            Lobe::Diffuse => (pair.diff, sample.get(Channel::DiffErr)),
+        };
+        egui::ScrollArea::vertical().auto_shrink([false; 2]).show(ui, |ui| {
+            ui.label(format!(
+                "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
+                if s.lobe == Lobe::Specular { "specular" } else { "diffuse" },
+                s.theta_o_deg,
+                s.alpha(),
+                s.alpha().sqrt(),
+                self.current_cell.0,
+                self.current_cell.1
+            ));
+            let inv = ltc.cos_from_brdf;
+            let m22 = mat3_rows(inv)[2][2];
+            let matrices = [
+                ("M^-1 as stored (÷ middle)", inv, "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it divided by its middle element"),
+                ("M", ltc.brdf_from_cos, "brdf_from_cos: maps the clamped cosine onto the lobe"),
+                ("paper's form (÷ m22)", inv * (1.0 / m22), "[[a,0,b],[0,c,0],[d,0,1]]: the same M^-1 divided by its bottom-right element"),
+            ];
+            // As many matrices per row as fit (each ~200 points wide in monospace).
+            let per_row = ((ui.available_width() / 200.0) as usize).clamp(1, 3);
+            for row in matrices.chunks(per_row) {
+                ui.horizontal(|ui| {
+                    for (title, m, hover) in row {
+                        matrix(ui, title, *m, hover);
+                        ui.add_space(12.0);
+                    }
+                });
+            }
+            ui.label(format!(
+                "|M^-1| = {:.4e}   norm = {:.4}   fresnel = {:.4}   pointwise error = {:.1}%",
+                ltc.det_cos_from_brdf,
+                ltc.norm,
+                if s.lobe == Lobe::Specular { ltc.fresnel } else { 0.0 },
+                100.0 * err
+            ))
+            .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; error = ∫|n·D − f·cos| / ∫ f·cos (DESIGN §4)");
+            ui.horizontal(|ui| {
+                let busy = self.refit.as_ref().is_some_and(|r| r.result.is_none());
+                if ui
+                    .add_enabled(!busy, egui::Button::new("refit this cell"))
+                    .on_hover_text("Runs ltc_code's fit (Nelder–Mead, 32×32 strata from both distributions, |·|³ error) on the nearest cell from the identity, live")
+                    .clicked()
+                {
+                    self.start_refit(s.lobe, self.current_cell, lut);
+                }
+                if let Some(r) = &self.refit {
+                    ui.label(match (r.result, r.history.last()) {
+                        (Some(_), Some(last)) => format!("refit ({}, {}): {} iterations, objective {:.3e}", r.cell.0, r.cell.1, r.history.len(), last[1]),
+                        (None, _) => format!("fitting… iteration {}", r.history.len()),
+                        _ => String::new(),
+                    });
+                }
+            });
+            if let Some(r) = &self.refit {
+                let points: Vec<[f64; 2]> = r.history.iter().map(|&[i, f]| [i, f.max(1e-300).log10()]).collect();
+                egui_plot::Plot::new("nelder-mead")
+                    .height(90.0)
+                    .x_axis_label("iteration")
+                    .y_axis_label("log10 objective")
+                    .allow_scroll(false)
+                    .show(ui, |p| p.line(egui_plot::Line::new("objective", points)));
+            }
+            ui.separator();
+            self.heat_maps(ui, s, lut, (u, v));
+        });
+    }
+
+    /// Every channel as an N×N heat map (min to max of the channel), crosshair on the chosen
+    /// (r, sqrt(1 − cos θo)); click to choose a cell.
+    fn heat_maps(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, (u, v): (f64, f64)) {
+        let n = lut.size;
+        let side = ((ui.available_width() - 30.0) / 5.0).clamp(40.0, 160.0);
+        ui.horizontal_wrapped(|ui| {
+            for (c, (slot, map)) in self.textures.iter_mut().zip(&self.maps).enumerate() {
+                let texture = slot.get_or_insert_with(|| {
+                    ui.ctx().load_texture(CHANNEL_NAMES[c], map.clone(), egui::TextureOptions::NEAREST)
+                });
+                ui.vertical(|ui| {
+                    ui.small(CHANNEL_NAMES[c]);
+                    let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::click());
+                    ui.painter().image(texture.id(), rect, egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)), Color32::WHITE);
+                    // Texel centres sit at (k + ½)/N, the LUT's own uv mapping (DESIGN §2).
+                    let to_screen = |t: f64| ((t * (n - 1) as f64 + 0.5) / n as f64) as f32 * side;
+                    let p = rect.min + Vec2::new(to_screen(u), to_screen(v));
+                    let stroke = egui::Stroke::new(1.0, Color32::WHITE);
+                    ui.painter().hline(rect.x_range(), p.y, stroke);
+                    ui.painter().vline(p.x, rect.y_range(), stroke);
+                    let name = format!("{} heat map", CHANNEL_NAMES[c]);
+                    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
+                    let response = response.on_hover_text(format!("{}: x = r = √α (column), y = sqrt(1 − cos θo) (row). Click to choose a cell", CHANNEL_NAMES[c]));
+                    if response.clicked()
+                        && let Some(pos) = response.interact_pointer_pos()
+                    {
+                        let cell = ((pos - rect.min) / side * n as f32).floor();
+                        let i = (cell.x.max(0.0) as usize).min(n - 1);
+                        let j = (cell.y.max(0.0) as usize).min(n - 1);
+                        s.scene.material.alpha = lut.alpha(i);
+                        s.theta_o_deg = cell_theta(j, n).to_degrees();
+                    }
+                });
+            }
+        });
+    }
+
+    fn start_refit(&mut self, lobe: Lobe, (i, j): (usize, usize), lut: &Lut) {
+        let (tx, rx) = mpsc::channel();
+        let settings = FitSettings {
+            size: lut.size,
+            alpha_min: lut.alpha_min,
+            ..FitSettings::default()
+        };
+        std::thread::spawn(move || {
+            let strata = FitStrata::new(&settings);
+            let problem = CellProblem::new(lobe, i, j, &settings, &strata);
+            let fit = problem.fit([1.0, 1.0, 0.0], &settings, &strata, |k, f| {
+                let _ = tx.send(RefitEvent::Iteration(k, f));
+            });
+            let _ = tx.send(RefitEvent::Done(fit.ltc));
+        });
+        self.refit = Some(Refit {
+            lobe,
+            cell: (i, j),
+            history: Vec::new(),
+            result: None,
+            rx,
+        });
+    }
+
+    fn poll_refit(&mut self, ctx: &egui::Context) {
+        let Some(r) = &mut self.refit else { return };
+        while let Ok(e) = r.rx.try_recv() {
+            match e {
+                RefitEvent::Iteration(k, f) => r.history.push([k as f64, f]),
+                RefitEvent::Done(ltc) => r.result = Some(ltc),
+            }
+        }
+        if r.result.is_none() {
+            ctx.request_repaint();
+        }
+    }
+
+    /// Blocks until a running refit is done (tests).
+    pub fn wait_for_refit(&mut self, ctx: &egui::Context) {
+        while self.refit.as_ref().is_some_and(|r| r.result.is_none()) {
+            std::thread::sleep(std::time::Duration::from_millis(5));
+            self.poll_refit(ctx);
+        }
+    }
+}
+
+fn matrix(ui: &mut egui::Ui, title: &str, m: DMat3, hover: &str) {
+    ui.vertical(|ui| {
+        ui.small(title).on_hover_text(hover);
+        egui::Grid::new(title).striped(true).show(ui, |ui| {
+            for row in mat3_rows(m) {
+                for x in row {
+                    ui.monospace(format!("{x:>9.4}"));
+                }
+                ui.end_row();
+            }
+        });
+    });
+}
