@@ -713,7 +713,7 @@ fn run_lab(
                 Box::new(move |_cc| {
                     let mut app = LabApp::new(configure(LabState::default()));
                     if measure {
-                        app.chart.measure_now(&app.state.shaded_scene());
+                        app.chart.measure_now(&app.state.shaded_scene(), &app.lut);
                     }
                     Ok(Box::new(ScreenshotApp {
                         app,
@@ -738,7 +738,7 @@ fn run_lab(
                 let mut app = LabApp::from_creation_context(cc);
                 app.state = configure(app.state);
                 if measure {
-                    app.chart.measure_now(&app.state.shaded_scene());
+                    app.chart.measure_now(&app.state.shaded_scene(), &app.lut);
                 }
                 Ok(Box::new(app))
             }),

@@ -236,3 +236,43 @@ fn refit_runs_the_fitter_live_and_the_lobe_panel_follows() {
     assert_eq!(lobe, app.state.lobe);
     assert!(ltc.det_cos_from_brdf.is_finite() && ltc.det_cos_from_brdf > 0.0);
 }
+
+#[test]
+fn a_broken_lut_file_is_reported_and_the_lab_keeps_its_table() {
+    let Some(mut h) = lab((1200.0, 700.0), LabState::default()) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let broken = dir.path().join("broken.exr");
+    std::fs::write(&broken, b"not an exr").unwrap();
+    h.state_mut().state.lut_path = broken.display().to_string();
+    h.run_steps(1);
+    h.get_by_label("use LUT").click();
+    h.run_steps(2);
+    let (is_error, text) = h.state().message.clone().expect("a message");
+    assert!(is_error && text.contains("broken.exr"), "{text}");
+    assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded());
+    assert!(
+        h.query_by_label_contains("still using the previous table")
+            .is_some(),
+        "not shown in the window"
+    );
+    // A good table is taken, and the plane renders with it.
+    let good = dir.path().join("small.exr");
+    ltc_lab::ltc::fit::fit_table(
+        &ltc_lab::ltc::fit::FitSettings {
+            size: 4,
+            ..Default::default()
+        },
+        &|| {},
+    )
+    .lut
+    .write(&good)
+    .unwrap();
+    h.state_mut().state.lut_path = good.display().to_string();
+    h.run_steps(1);
+    h.get_by_label("use LUT").click();
+    h.run_steps(3);
+    assert_eq!(h.state().lut.size, 4);
+    assert!(!h.state().message.as_ref().unwrap().0);
+}

@@ -46,7 +46,7 @@ pub struct ChartPanel {
 }
 
 impl ChartPanel {
-    pub fn show(&mut self, ui: &mut egui::Ui, s: &LabState) {
+    pub fn show(&mut self, ui: &mut egui::Ui, s: &LabState, lut: &Lut) {
         if let Some(rx) = &self.running {
             match rx.try_recv() {
                 Ok(Ok(m)) => {
@@ -68,7 +68,7 @@ impl ChartPanel {
                 .on_hover_text(format!("Times every method on the current scene at {}×{} (median of {FRAMES} frames, timestamp queries) and its error against the exact BRDF; then fps at 100–5000 lights", MEASURE_SIZE.0, MEASURE_SIZE.1))
                 .clicked()
             {
-                self.start(s.shaded_scene());
+                self.start(s.shaded_scene(), lut.clone());
             }
             if let Some(m) = &self.measurement {
                 ui.small(&m.device);
@@ -127,18 +127,18 @@ impl ChartPanel {
         });
     }
 
-    fn start(&mut self, scene: Scene) {
+    fn start(&mut self, scene: Scene, lut: Lut) {
         let (tx, rx) = mpsc::channel();
         std::thread::spawn(move || {
-            let _ = tx.send(measure(&scene));
+            let _ = tx.send(measure(&scene, &lut));
         });
         self.error = None;
         self.running = Some(rx);
     }
 
     /// Measures on this thread (the headless `lab --measure`).
-    pub fn measure_now(&mut self, scene: &Scene) {
-        match measure(scene) {
+    pub fn measure_now(&mut self, scene: &Scene, lut: &Lut) {
+        match measure(scene, lut) {
             Ok(m) => self.measurement = Some(m),
             Err(e) => self.error = Some(e),
         }
@@ -157,9 +157,8 @@ impl ChartPanel {
 }
 
 /// Every method on `scene`, then fps at the paper's light counts.
-pub fn measure(scene: &Scene) -> Result<Measurement, String> {
+pub fn measure(scene: &Scene, lut: &Lut) -> Result<Measurement, String> {
     let ctx = GpuContext::new().map_err(|e| e.to_string())?;
-    let lut = Lut::embedded();
     let mut renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked);
     let (w, h) = MEASURE_SIZE;
     let mut run = |scene: &Scene, s: &PlaneSettings| -> Result<(Frame, f64), String> {

@@ -108,6 +108,8 @@ pub struct LabState {
     pub maximised: Option<PanelId>,
     pub scene_path: String,
     pub screenshot_path: String,
+    /// A LUT file to shade with; empty: the embedded table.
+    pub lut_path: String,
 }
 
 /// What the plane panel shows.
@@ -164,6 +166,7 @@ impl Default for LabState {
             maximised: None,
             scene_path: "scene.toml".into(),
             screenshot_path: "ltc-lab.png".into(),
+            lut_path: String::new(),
         }
     }
 }
@@ -233,6 +236,8 @@ const STORAGE_KEY: &str = "ltc-lab-state";
 
 impl LabApp {
     pub fn new(state: LabState) -> Self {
+        // The embedded table; a persisted `lut_path` is loaded again only on request, so a
+        // file that vanished since cannot stop the lab from starting.
         let lut = Lut::embedded().clone();
         let shading = shading::Shading::new(&lut);
         Self {
@@ -334,9 +339,12 @@ impl LabApp {
                         .show(ui, &mut self.state, &self.lut, self.matrix.refit_ltc());
                 }
                 PanelId::Matrix => self.matrix.show(ui, &mut self.state, &self.lut),
-                PanelId::Plane => self.plane.show(ui, &mut self.state, &mut self.shading),
+                PanelId::Plane => {
+                    self.plane
+                        .show(ui, &mut self.state, &mut self.shading, &self.lut);
+                }
                 PanelId::Clipping => self.clipping.show(ui, &mut self.state, &self.lut),
-                PanelId::Chart => self.chart.show(ui, &self.state),
+                PanelId::Chart => self.chart.show(ui, &self.state, &self.lut),
             }
         });
     }
@@ -466,7 +474,7 @@ impl LabApp {
         ui.horizontal(|ui| {
             ui.add(egui::TextEdit::singleline(&mut s.scene_path).desired_width(120.0))
                 .on_hover_text("A scene TOML file to load, or to save to (only the file named here is written)");
-            if ui.small_button("load").clicked() {
+            if ui.small_button("load").on_hover_text("Read the scene file named on the left").clicked() {
                 self.message = Some(match Scene::load(std::path::Path::new(&s.scene_path)) {
                     Ok(scene) => {
                         s.light_count = scene.lights.len();
@@ -476,7 +484,7 @@ impl LabApp {
                     Err(e) => (true, e.to_string()),
                 });
             }
-            if ui.small_button("save").clicked() {
+            if ui.small_button("save").on_hover_text("Write the scene to the file named on the left (and no other)").clicked() {
                 let text = s.scene.to_toml();
                 self.message = Some(
                     match crate::error::write_atomically(std::path::Path::new(&s.scene_path), text.as_bytes()) {
@@ -484,6 +492,28 @@ impl LabApp {
                         Err(e) => (true, e.to_string()),
                     },
                 );
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.add(egui::TextEdit::singleline(&mut s.lut_path).desired_width(120.0).hint_text("embedded LUT"))
+                .on_hover_text("An LTC table (.exr, as `ltc-lab fit` writes it) to shade with; empty for the embedded one");
+            if ui.small_button("use LUT").on_hover_text("Load the table named on the left; a missing or broken file is reported here and the current table stays").clicked() {
+                let loaded = if s.lut_path.trim().is_empty() {
+                    Ok(Lut::embedded().clone())
+                } else {
+                    Lut::read(std::path::Path::new(s.lut_path.trim()))
+                };
+                self.message = Some(match loaded {
+                    Ok(lut) => {
+                        self.shading.set_lut(&lut);
+                        self.matrix = matrix::MatrixPanel::new(&lut);
+                        self.plane.invalidate();
+                        self.clipping = clipping::ClippingPanel::default();
+                        self.lut = lut;
+                        (false, format!("shading with {}", if s.lut_path.trim().is_empty() { "the embedded LUT" } else { s.lut_path.trim() }))
+                    }
+                    Err(e) => (true, format!("{e} — still using the previous table")),
+                });
             }
         });
         ui.horizontal(|ui| {

@@ -80,7 +80,7 @@ impl PlanePanel {
         p
     }
 
-    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, shading: &mut Shading) {
+    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, shading: &mut Shading, lut: &Lut) {
         ui.horizontal_wrapped(|ui| {
             for (v, name, hover) in [
                 (PlaneView::Split, "split", "LTC left of the divider, exact BRDF right of it; drag the divider"),
@@ -211,7 +211,7 @@ impl PlanePanel {
         if let Some(pos) = response.hover_pos() {
             let x = f64::from((pos.x - rect.min.x) / rect.width()) * width as f64;
             let y = f64::from((pos.y - rect.min.y) / rect.height()) * height as f64;
-            self.inspected = inspect(s, x, y, width, height);
+            self.inspected = inspect(s, lut, x, y, width, height);
         }
         match &self.inspected {
             Some(r) => ui.label(format!(
@@ -349,6 +349,11 @@ impl PlanePanel {
         self.times_due = None;
     }
 
+    /// Forgets the last render, so that the next frame renders again (a new LUT).
+    pub fn invalidate(&mut self) {
+        self.key = None;
+    }
+
     /// Writes the last frame's linear values as EXR (only the path the user named).
     pub fn save_exr(&self, path: &std::path::Path, exposure: f64) -> Result<(), String> {
         let frame = self.frame.as_ref().ok_or("nothing rendered yet")?;
@@ -392,10 +397,16 @@ fn colour_bar(ui: &mut egui::Ui) {
 }
 
 /// The exact and LTC radiance at an image position, computed on the CPU reference.
-fn inspect(s: &LabState, x: f64, y: f64, width: usize, height: usize) -> Option<PixelReading> {
+fn inspect(
+    s: &LabState,
+    lut: &Lut,
+    x: f64,
+    y: f64,
+    width: usize,
+    height: usize,
+) -> Option<PixelReading> {
     let scene = s.shaded_scene();
     let p = scene.surface_point_at(x, y, width, height)?;
-    let lut = Lut::embedded();
     let exact = shade_exact(&scene, &p, &scene.lights);
     let ltc = shade_ltc(&scene, lut, &p, &scene.lights, s.clipping, s.normalization);
     let counts = clip_counts(&scene, lut, &p, &scene.lights);

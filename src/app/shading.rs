@@ -10,6 +10,8 @@ use crate::scene::Scene;
 
 pub struct Shading {
     gpu: Option<(GpuContext, PlaneRenderer)>,
+    /// The table both paths shade with.
+    lut: Lut,
     /// Why the GPU is not used, for the window.
     pub gpu_error: Option<String>,
 }
@@ -32,11 +34,13 @@ impl Shading {
                 let renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked);
                 Self {
                     gpu: Some((ctx, renderer)),
+                    lut: lut.clone(),
                     gpu_error: None,
                 }
             }
             Err(e) => Self {
                 gpu: None,
+                lut: lut.clone(),
                 gpu_error: Some(e.to_string()),
             },
         }
@@ -53,6 +57,14 @@ impl Shading {
 
     pub fn has_gpu(&self) -> bool {
         self.gpu.is_some()
+    }
+
+    /// Shades with another table from now on.
+    pub fn set_lut(&mut self, lut: &Lut) {
+        if let Some((ctx, renderer)) = &mut self.gpu {
+            *renderer = PlaneRenderer::new(ctx, lut, ShaderChecks::Checked);
+        }
+        self.lut = lut.clone();
     }
 
     /// The GPU's light limit, or the scene limit on the CPU.
@@ -93,7 +105,7 @@ impl Shading {
                 s.normalization = settings.normalization;
                 s.divider = settings.divider;
                 Ok(Shaded {
-                    frame: render(scene, Lut::embedded(), &s),
+                    frame: render(scene, &self.lut, &s),
                     gpu_ms: None,
                 })
             }
