@@ -14,6 +14,9 @@ const NORMALIZATION_PAPER_LITERAL: u32 = 1u;
 
 const LUT_VEC4S_PER_CELL: u32 = 3u;
 
+// Read the nearest cell instead of filtering (the `ltc-nearest` variant; src/cpu.rs LutFilter).
+override LUT_NEAREST: bool = false;
+
 // One lobe: M⁻¹ (cos_from_brdf), |det M⁻¹| and its magnitudes.
 struct Ltc {
     cos_from_brdf: mat3x3<f32>,
@@ -92,6 +95,12 @@ fn lut_sample_uv(uv: vec2<f32>, size: u32) -> LutTexel {
     );
 }
 
+// Lut::sample_nearest: the cell whose texel contains uv.
+fn lut_sample_nearest(uv: vec2<f32>, size: u32) -> LutTexel {
+    let k = vec2<u32>(clamp(floor(uv * f32(size)), vec2<f32>(0.0), vec2<f32>(f32(size - 1u))));
+    return lut_texel(k.x, k.y, size);
+}
+
 // Lut::uv: (r, sqrt(1 − cos θo)) · (N−1)/N + 0.5/N, r = sqrt(α).
 fn lut_uv(alpha: f32, cos_theta_o: f32, size: u32) -> vec2<f32> {
     let n = f32(size);
@@ -101,7 +110,13 @@ fn lut_uv(alpha: f32, cos_theta_o: f32, size: u32) -> vec2<f32> {
 
 // Lut::ltc_pair: both lobes at (α, cos θo).
 fn lut_ltc_pair(alpha: f32, cos_theta_o: f32, size: u32) -> LtcPair {
-    let t = lut_sample_uv(lut_uv(alpha, cos_theta_o, size), size);
+    let uv = lut_uv(alpha, cos_theta_o, size);
+    var t: LutTexel;
+    if LUT_NEAREST {
+        t = lut_sample_nearest(uv, size);
+    } else {
+        t = lut_sample_uv(uv, size);
+    }
     let spec = cos_from_brdf_from_entries(t.spec_m);
     let diff = cos_from_brdf_from_entries(t.diff_m);
     return LtcPair(

@@ -36,6 +36,20 @@ pub struct RenderSettings {
     pub normalization: Normalization,
     /// Where `Split` changes method, as a fraction of the width.
     pub divider: f64,
+    /// How the LTC table is read.
+    pub lut_filter: LutFilter,
+}
+
+/// How the LTC table is read per pixel (the `ltc-nearest` study variant uses `Nearest`).
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
+pub enum LutFilter {
+    /// Bilinear, as a GPU sampler (DESIGN §2).
+    #[default]
+    Bilinear,
+    /// The nearest cell.
+    Nearest,
 }
 
 impl RenderSettings {
@@ -47,6 +61,7 @@ impl RenderSettings {
             clipping: Clipping::BOTH,
             normalization: Normalization::Corrected,
             divider: 0.5,
+            lut_filter: LutFilter::Bilinear,
         }
     }
 
@@ -197,11 +212,16 @@ pub struct LtcPixel {
 }
 
 impl LtcPixel {
-    pub fn new(lut: &Lut, alpha: f64, view: DVec3) -> Self {
+    pub fn new(lut: &Lut, alpha: f64, view: DVec3, filter: LutFilter) -> Self {
         let frame = ShadingFrame::new(view);
+        let cos_theta_o = frame.tangent_from_world(view).z;
+        let sample = match filter {
+            LutFilter::Bilinear => lut.sample(alpha, cos_theta_o),
+            LutFilter::Nearest => lut.sample_nearest(alpha, cos_theta_o),
+        };
         Self {
             frame,
-            pair: lut.ltc_pair(alpha, frame.tangent_from_world(view)),
+            pair: sample.ltc_pair(),
         }
     }
 }
@@ -236,12 +256,13 @@ pub fn shade_ltc(
     lights: &[Light],
     clipping: Clipping,
     normalization: Normalization,
+    filter: LutFilter,
 ) -> DVec3 {
     if p.view.z <= 0.0 {
         return DVec3::ZERO;
     }
     let m = &scene.material;
-    let px = LtcPixel::new(lut, m.alpha, p.view);
+    let px = LtcPixel::new(lut, m.alpha, p.view, filter);
     lights.iter().fold(DVec3::ZERO, |sum, light| {
         let u = px
             .frame
@@ -295,7 +316,15 @@ fn render_radiance(scene: &Scene, lut: &Lut, s: &RenderSettings, method: Method)
                             Method::Brdf | Method::Diff => false,
                         };
                         let radiance = if use_ltc {
-                            shade_ltc(scene, lut, &p, &scene.lights, s.clipping, s.normalization)
+                            shade_ltc(
+                                scene,
+                                lut,
+                                &p,
+                                &scene.lights,
+                                s.clipping,
+                                s.normalization,
+                                s.lut_filter,
+                            )
                         } else {
                             shade_exact(scene, &p, &scene.lights)
                         };
@@ -344,7 +373,7 @@ impl std::ops::Add for ClipCounts {
 /// Counts the lights that reach `p` (non-zero irradiance) in clipping cases 1 and 2.
 pub fn clip_counts(scene: &Scene, lut: &Lut, p: &SurfacePoint, lights: &[Light]) -> ClipCounts {
     use crate::ltc::ClipCase;
-    let px = LtcPixel::new(lut, scene.material.alpha, p.view);
+    let px = LtcPixel::new(lut, scene.material.alpha, p.view, LutFilter::Bilinear);
     let mut counts = ClipCounts::default();
     for light in lights {
         let u = px

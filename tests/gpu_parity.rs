@@ -154,6 +154,37 @@ fn gpu_matches_cpu_for_every_method_clip_and_normalization() {
 }
 
 #[test]
+fn gpu_nearest_lut_lookup_matches_cpu() {
+    if gpu().is_none() {
+        return;
+    }
+    for (name, scene) in scenes() {
+        let mut cs = RenderSettings::new(W, H, Method::Ltc);
+        cs.lut_filter = ltc_lab::cpu::LutFilter::Nearest;
+        let cpu = render(&scene, Lut::embedded(), &cs);
+        for method in [GpuMethod::Ltc, GpuMethod::LtcFast] {
+            let mut s = PlaneSettings::single(W, H, method);
+            s.lut_filter = ltc_lab::cpu::LutFilter::Nearest;
+            assert_close(
+                &format!("{name} {} nearest", method.name()),
+                &gpu_frame(&scene, &s),
+                &cpu,
+            );
+        }
+        // And the nearest lookup is a different image from the bilinear one.
+        let bilinear = cpu_frame(
+            &scene,
+            Method::Ltc,
+            Clipping::BOTH,
+            Normalization::Corrected,
+        );
+        if name == "paper-100" {
+            assert_ne!(bilinear.pixels, cpu.pixels);
+        }
+    }
+}
+
+#[test]
 fn gpu_split_and_diff_views_match_cpu() {
     if gpu().is_none() {
         return;

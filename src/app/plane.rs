@@ -408,7 +408,15 @@ fn inspect(
     let scene = s.shaded_scene();
     let p = scene.surface_point_at(x, y, width, height)?;
     let exact = shade_exact(&scene, &p, &scene.lights);
-    let ltc = shade_ltc(&scene, lut, &p, &scene.lights, s.clipping, s.normalization);
+    let ltc = shade_ltc(
+        &scene,
+        lut,
+        &p,
+        &scene.lights,
+        s.clipping,
+        s.normalization,
+        crate::cpu::LutFilter::Bilinear,
+    );
     let counts = clip_counts(&scene, lut, &p, &scene.lights);
     let le = luminance(exact);
     Some(PixelReading {

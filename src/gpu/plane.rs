@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 
-use crate::cpu::{Frame, FrameKind};
+use crate::cpu::{Frame, FrameKind, LutFilter};
 use crate::error::InputError;
 use crate::gpu::GpuContext;
 use crate::gpu::timing::PassTimer;
@@ -125,6 +125,8 @@ pub struct PlaneSettings {
     pub divider: f64,
     /// The diff view's floor under B's luminance (`metrics::relative_floor`).
     pub rel_floor: f64,
+    /// How the LTC table is read (`LUT_NEAREST` in ltc.wgsl).
+    pub lut_filter: LutFilter,
 }
 
 impl PlaneSettings {
@@ -139,6 +141,7 @@ impl PlaneSettings {
             normalization: Normalization::Corrected,
             divider: 0.5,
             rel_floor: f64::MIN_POSITIVE,
+            lut_filter: LutFilter::Bilinear,
         }
     }
 
@@ -192,12 +195,15 @@ const WORKGROUP: u32 = 16;
 const OUTPUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
 const TEXEL_BYTES: u32 = 16;
 
+/// What a pipeline is specialized for (its override constants).
+type PipelineKey = (GpuMethod, GpuMethod, GpuView, LutFilter);
+
 /// The plane shader's module, layout, pipelines and LUT buffer.
 pub struct PlaneRenderer {
     module: wgpu::ShaderModule,
     bind_group_layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
-    pipelines: HashMap<(GpuMethod, GpuMethod, GpuView), wgpu::ComputePipeline>,
+    pipelines: HashMap<PipelineKey, wgpu::ComputePipeline>,
     lut_buffer: wgpu::Buffer,
     lut_size: usize,
     timer: Option<PassTimer>,
@@ -294,12 +300,16 @@ impl PlaneRenderer {
 
     /// The pipeline of a method combination, compiled on first use.
     fn pipeline(&mut self, ctx: &GpuContext, s: &PlaneSettings) -> &wgpu::ComputePipeline {
-        let key = (s.method_a, s.method_b, s.view);
+        let key = (s.method_a, s.method_b, s.view, s.lut_filter);
         self.pipelines.entry(key).or_insert_with(|| {
             let constants = [
                 ("METHOD_A", f64::from(s.method_a as u32)),
                 ("METHOD_B", f64::from(s.method_b as u32)),
                 ("VIEW", f64::from(s.view as u32)),
+                (
+                    "LUT_NEAREST",
+                    f64::from(u8::from(s.lut_filter == LutFilter::Nearest)),
+                ),
             ];
             ctx.device
                 .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
@@ -478,7 +488,12 @@ impl PlaneRenderer {
     pub fn run(&mut self, ctx: &GpuContext, frame: &PreparedFrame) -> f64 {
         let settings = frame.settings;
         self.pipeline(ctx, &settings);
-        let pipeline = &self.pipelines[&(settings.method_a, settings.method_b, settings.view)];
+        let pipeline = &self.pipelines[&(
+            settings.method_a,
+            settings.method_b,
+            settings.view,
+            settings.lut_filter,
+        )];
         let mut encoder = ctx
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
