@@ -3,6 +3,7 @@
 //! nothing of GPUs or windows; `cpu` is the reference renderer built on it.
 
 pub mod app;
+pub mod atlas;
 pub mod bench;
 pub mod brdf;
 pub mod cpu;
@@ -11,4 +12,6 @@ pub mod gpu;
 pub mod ltc;
 pub mod metrics;
 pub mod output;
+pub mod plot;
 pub mod scene;
+pub mod study;

@@ -83,6 +83,25 @@ enum Command {
         /// Print every cell as CSV: i,j,alpha,theta_o (degrees), then the channels.
         #[arg(long)]
         dump: bool,
+        /// Write the error atlas into this directory: heat maps of spec.err and diff.err, the
+        /// error of one light orbiting a point, and their CSVs.
+        #[arg(long)]
+        atlas: Option<PathBuf>,
+    },
+    /// Speed against accuracy: every variant timed on the GPU and compared with the exact
+    /// image, per light count and roughness; writes study.csv and study.png (Pareto chart).
+    Study {
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+        #[arg(long, default_value = "320x180", value_parser = parse_size)]
+        size: (usize, usize),
+        #[arg(long, value_delimiter = ',', default_value = "100,1000")]
+        lights: Vec<usize>,
+        #[arg(long, value_delimiter = ',', default_value = "0.1,0.27,0.6")]
+        alpha: Vec<f64>,
+        /// Timed frames per variant (median, after one warm-up).
+        #[arg(long, default_value_t = 5)]
+        frames: usize,
     },
     /// Render a scene preset to PNG (tone-mapped) or EXR (linear radiance), on the GPU
     /// (default) or the CPU reference.
@@ -250,7 +269,14 @@ fn main() -> ExitCode {
         }) => run_lab(screenshot, panel, size, scene.as_deref(), measure),
         Some(Command::Fit { size, out }) => run_fit(size, &out),
         Some(Command::Eval { cases, lut }) => run_eval(&cases, lut.as_deref()),
-        Some(Command::Lut { lut, dump }) => run_lut(lut.as_deref(), dump),
+        Some(Command::Lut { lut, dump, atlas }) => run_lut(lut.as_deref(), dump, atlas.as_deref()),
+        Some(Command::Study {
+            out,
+            size,
+            lights,
+            alpha,
+            frames,
+        }) => run_study(&out, size, &lights, &alpha, frames),
         Some(Command::Render {
             scene,
             method,
@@ -464,8 +490,18 @@ fn run_eval(cases_path: &Path, lut_path: Option<&Path>) -> Result<()> {
     Ok(())
 }
 
-fn run_lut(lut_path: Option<&Path>, dump: bool) -> Result<()> {
+fn run_lut(lut_path: Option<&Path>, dump: bool, atlas: Option<&Path>) -> Result<()> {
     let lut = Lut::load(lut_path)?;
+    if let Some(dir) = atlas {
+        let summary = ltc_lab::atlas::write_atlas(&lut, dir)?;
+        for line in summary.lines {
+            println!("{line}");
+        }
+        eprintln!("wrote the atlas into {}", dir.display());
+        if !dump {
+            return Ok(());
+        }
+    }
     if !dump {
         println!(
             "{}: {}×{} cells, α_min = {}, channels: {}",
@@ -746,4 +782,56 @@ fn run_lab(
         .map_err(|e| e.to_string()),
     };
     outcome.map_err(|e| InputError::new("lab", format!("cannot open the window: {e}")))
+}
+
+fn run_study(
+    out: &Path,
+    size: (usize, usize),
+    lights: &[usize],
+    alphas: &[f64],
+    frames: usize,
+) -> Result<()> {
+    use ltc_lab::study;
+    if frames == 0 {
+        return Err(InputError::new("--frames", "must be at least 1"));
+    }
+    if let Some(&n) = lights
+        .iter()
+        .find(|&&n| n == 0 || n > ltc_lab::scene::MAX_LIGHTS)
+    {
+        return Err(InputError::new(
+            "--lights",
+            format!(
+                "each count must be in 1..={}, got {n}",
+                ltc_lab::scene::MAX_LIGHTS
+            ),
+        ));
+    }
+    if let Some(&a) = alphas.iter().find(|&&a| !(a > 0.0 && a <= 1.0)) {
+        return Err(InputError::new(
+            "--alpha",
+            format!("each α must be in (0, 1], got {a}"),
+        ));
+    }
+    std::fs::create_dir_all(out)
+        .map_err(|e| InputError::new(out.display().to_string(), format!("cannot create: {e}")))?;
+    let ctx = GpuContext::new()?;
+    let device = ctx.describe();
+    eprintln!("study on {device}");
+    let start = Instant::now();
+    let rows = study::run(&ctx, Lut::embedded(), size, lights, alphas, frames, |r| {
+        eprintln!(
+            "  α {:<5} {:>6} lights {:>12}: {:9.3} ms, rel RMSE {:.2e}, p99 {:.2e}",
+            r.alpha, r.lights, r.variant, r.ms_median, r.rel_rmse, r.p99_rel_err
+        );
+    })?;
+    ltc_lab::error::write_atomically(&out.join("study.csv"), study::csv(&rows).as_bytes())?;
+    study::pareto_png(&out.join("study.png"), &rows, &ctx.info.name)?;
+    print!("{}", study::csv(&rows));
+    eprintln!(
+        "study done in {:.0} s; wrote {}/study.csv and study.png",
+        start.elapsed().as_secs_f64(),
+        out.display()
+    );
+    Ok(())
 }

@@ -340,6 +340,7 @@ fn light_counts_zero_one_and_too_many() {
         "the lab's 20 000-light slider must fit: {max}"
     );
     PlaneRenderer::check_light_count(&g.ctx, max).unwrap();
+    assert!(max <= PlaneRenderer::buffer_max_lights(&g.ctx));
     let err = PlaneRenderer::check_light_count(&g.ctx, max + 1)
         .expect_err("one light too many is refused");
     assert!(err.to_string().contains("do not fit"), "{err}");

@@ -87,6 +87,17 @@ impl GpuContext {
             .contains(wgpu::Features::TIMESTAMP_QUERY)
     }
 
+    /// The most lights one invocation of plane.wgsl sums on this adapter, where the driver
+    /// caps shader loops: Mesa's llvmpipe (lavapipe) ends every loop of an invocation after
+    /// 65 535 iterations in all (`LP_MAX_TGSI_LOOP_ITERATIONS`, shared between loops), and the
+    /// light loop takes one iteration per light plus one per 256-light tile: 65 535 · 256/257
+    /// = 65 280 lights at most, less one tile of margin (at the limit itself invocations end
+    /// before writing their pixel).
+    pub fn light_loop_limit(&self) -> Option<usize> {
+        let llvmpipe = self.info.name.contains("llvmpipe") || self.info.driver.contains("llvmpipe");
+        llvmpipe.then_some(65_535 * 256 / 257 - 256)
+    }
+
     /// Whether tests must fail rather than skip when there is no adapter.
     pub fn required_by_environment() -> bool {
         std::env::var_os("LTC_LAB_REQUIRE_GPU").is_some_and(|v| !v.is_empty() && v != "0")

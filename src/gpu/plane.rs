@@ -327,7 +327,7 @@ impl PlaneRenderer {
     }
 
     /// The most lights one storage binding holds on this device.
-    pub fn max_lights(ctx: &GpuContext) -> usize {
+    pub fn buffer_max_lights(ctx: &GpuContext) -> usize {
         let bytes = ctx
             .limits
             .max_storage_buffer_binding_size
@@ -335,16 +335,32 @@ impl PlaneRenderer {
         (bytes / std::mem::size_of::<GpuLight>() as u64) as usize
     }
 
-    /// Refuses more lights than one storage binding holds.
+    /// The most lights this device shades: the buffer's capacity, or less where the driver
+    /// ends shader loops early (`GpuContext::light_loop_limit`).
+    pub fn max_lights(ctx: &GpuContext) -> usize {
+        let buffer = Self::buffer_max_lights(ctx);
+        ctx.light_loop_limit().map_or(buffer, |l| l.min(buffer))
+    }
+
+    /// Refuses more lights than one storage binding holds or the driver's loops can sum.
     pub fn check_light_count(ctx: &GpuContext, count: usize) -> Result<(), InputError> {
-        let max = Self::max_lights(ctx);
-        if count > max {
+        let buffer = Self::buffer_max_lights(ctx);
+        if count > buffer {
             return Err(InputError::new(
                 "scene",
                 format!(
-                    "{count} lights do not fit in one GPU storage buffer on {} (at most {max} of {} bytes)",
+                    "{count} lights do not fit in one GPU storage buffer on {} (at most {buffer} of {} bytes)",
                     ctx.info.name,
                     std::mem::size_of::<GpuLight>()
+                ),
+            ));
+        }
+        if let Some(limit) = ctx.light_loop_limit().filter(|&l| count > l) {
+            return Err(InputError::new(
+                "scene",
+                format!(
+                    "{count} lights do not fit in one shader invocation on {}: its driver ends shader loops after {limit} lights (use --cpu, or a hardware GPU)",
+                    ctx.info.name
                 ),
             ));
         }

@@ -1,0 +1,200 @@
+//! Charts written to PNG with plotters: the study's Pareto chart and the atlas's heat maps.
+//! Text uses egui's bundled Ubuntu-Light (nothing is read from the system's fonts).
+
+use std::sync::Once;
+
+use plotters::prelude::*;
+
+use crate::error::{InputError, Result};
+use crate::output::false_colour;
+
+/// Registers the bundled font under plotters' "sans-serif" once per process.
+fn register_font() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let defs = egui::FontDefinitions::default();
+        let data = defs
+            .font_data
+            .get("Ubuntu-Light")
+            .expect("egui bundles Ubuntu-Light");
+        // plotters keeps &'static bytes; one copy for the life of the process.
+        let bytes: &'static [u8] = Box::leak((*data.font).as_ref().to_vec().into_boxed_slice());
+        plotters::style::register_font("sans-serif", FontStyle::Normal, bytes)
+            .unwrap_or_else(|_| panic!("egui's Ubuntu-Light is a valid font"));
+    });
+}
+
+fn plot_error(path: &std::path::Path, e: impl std::fmt::Display) -> InputError {
+    InputError::new(
+        path.display().to_string(),
+        format!("cannot draw the chart: {e}"),
+    )
+}
+
+/// One labelled point of a Pareto chart; `highlight` points are drawn large and labelled.
+pub struct ParetoPoint {
+    pub label: String,
+    pub ms: f64,
+    pub error: f64,
+    pub highlight: bool,
+}
+
+/// The floor under errors on the log axis: the exact method's error 0 is drawn there.
+pub const ERROR_FLOOR: f64 = 1e-7;
+
+/// Time against error on log axes, one marker per point, highlighted ones labelled.
+pub fn pareto_png(path: &std::path::Path, title: &str, points: &[ParetoPoint]) -> Result<()> {
+    register_font();
+    let (w, h) = (1000u32, 640u32);
+    let mut buffer = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| plot_error(path, e))?;
+        let ms = |f: fn(f64, f64) -> f64, init| points.iter().map(|p| p.ms).fold(init, f);
+        let (x0, x1) = (ms(f64::min, f64::INFINITY) / 1.5, ms(f64::max, 0.0) * 1.5);
+        let (y0, y1) = (
+            ERROR_FLOOR / 2.0,
+            points.iter().map(|p| p.error).fold(1e-3, f64::max) * 3.0,
+        );
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 20))
+            .margin(16)
+            .x_label_area_size(44)
+            .y_label_area_size(70)
+            // x: log10 of the time on a linear axis (plotters' log axis has no ticks inside
+            // one decade, where a study's times usually fall), labelled with the times.
+            .build_cartesian_2d(x0.log10()..x1.log10(), (y0..y1).log_scale())
+            .map_err(|e| plot_error(path, e))?;
+        chart
+            .configure_mesh()
+            .x_desc("GPU ms per frame (log)")
+            .y_desc("relative RMSE against the exact BRDF (log; exact at 1e-7)")
+            .x_labels(10)
+            .x_label_formatter(&|v| {
+                let ms = 10f64.powf(*v);
+                match ms {
+                    m if m >= 10.0 => format!("{m:.0}"),
+                    m if m >= 1.0 => format!("{m:.1}"),
+                    m => format!("{m:.3}"),
+                }
+            })
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .label_style(("sans-serif", 14))
+            .draw()
+            .map_err(|e| plot_error(path, e))?;
+        let palette = |k: usize| Palette99::pick(k).to_rgba();
+        let mut names: Vec<&str> = points.iter().map(|p| p.label.as_str()).collect();
+        names.dedup();
+        names.sort_unstable();
+        names.dedup();
+        let mut labels: Vec<((i32, i32), String, RGBAColor)> = Vec::new();
+        for p in points {
+            let k = names.iter().position(|n| *n == p.label).unwrap_or(0);
+            let y = p.error.max(ERROR_FLOOR);
+            let (r, style) = if p.highlight {
+                (7, palette(k).filled())
+            } else {
+                (3, palette(k).mix(0.35).filled())
+            };
+            chart
+                .draw_series(std::iter::once(Circle::new((p.ms.log10(), y), r, style)))
+                .map_err(|e| plot_error(path, e))?;
+            if p.highlight {
+                labels.push((
+                    chart.backend_coord(&(p.ms.log10(), y)),
+                    p.label.clone(),
+                    palette(k),
+                ));
+            }
+        }
+        // Labels stacked 17 px apart beside their markers, with a leader line each: the
+        // variants of one method sit at nearly the same point.
+        labels.sort_by_key(|l| l.0.1);
+        let mut next_y = i32::MIN;
+        for ((x, y), label, colour) in labels {
+            let ly = y.max(next_y);
+            next_y = ly + 17;
+            let lx = x + 60;
+            root.draw(&PathElement::new(
+                vec![(x, y), (lx - 4, ly)],
+                colour.stroke_width(1),
+            ))
+            .map_err(|e| plot_error(path, e))?;
+            root.draw(&Text::new(label, (lx, ly - 8), ("sans-serif", 15)))
+                .map_err(|e| plot_error(path, e))?;
+        }
+        root.present().map_err(|e| plot_error(path, e))?;
+    }
+    write_rgb(path, w, h, buffer)
+}
+
+/// A heat map of `value(x, y)` on a grid of cells with the given edges, coloured on the
+/// relative-difference scale of `output::diff_scale_position` (log, 0.1% to 100%).
+pub fn heat_map_png(
+    path: &std::path::Path,
+    title: &str,
+    (x_desc, x_edges): (&str, &[f64]),
+    (y_desc, y_edges): (&str, &[f64]),
+    value: impl Fn(usize, usize) -> f64,
+) -> Result<()> {
+    register_font();
+    let (w, h) = (760u32, 640u32);
+    let mut buffer = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| plot_error(path, e))?;
+        let (main, bar) = root.split_vertically(h - 60);
+        let (xs, ys) = (x_edges, y_edges);
+        let mut chart = ChartBuilder::on(&main)
+            .caption(title, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(56)
+            .build_cartesian_2d(xs[0]..xs[xs.len() - 1], ys[0]..ys[ys.len() - 1])
+            .map_err(|e| plot_error(path, e))?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(x_desc)
+            .y_desc(y_desc)
+            .label_style(("sans-serif", 14))
+            .draw()
+            .map_err(|e| plot_error(path, e))?;
+        let cells = (0..xs.len() - 1).flat_map(|i| (0..ys.len() - 1).map(move |j| (i, j)));
+        chart
+            .draw_series(cells.map(|(i, j)| {
+                let [r, g, b] = false_colour(crate::output::diff_scale_position(value(i, j)));
+                Rectangle::new(
+                    [(xs[i], ys[j]), (xs[i + 1], ys[j + 1])],
+                    RGBColor(r, g, b).filled(),
+                )
+            }))
+            .map_err(|e| plot_error(path, e))?;
+        // The colour scale: log from 0.1% to 100%.
+        let bar = bar.margin(8, 16, 70, 24);
+        let (bw, _) = bar.dim_in_pixel();
+        for x in 0..bw {
+            let [r, g, b] = false_colour(f64::from(x) / f64::from(bw.max(2) - 1));
+            bar.draw(&Rectangle::new(
+                [(x as i32, 0), (x as i32 + 1, 16)],
+                RGBColor(r, g, b).filled(),
+            ))
+            .map_err(|e| plot_error(path, e))?;
+        }
+        for (k, label) in ["0.1%", "1%", "10%", "100%"].iter().enumerate() {
+            let x = (f64::from(bw) * k as f64 / 3.0) as i32 - 12;
+            bar.draw(&Text::new(*label, (x, 20), ("sans-serif", 14)))
+                .map_err(|e| plot_error(path, e))?;
+        }
+        root.present().map_err(|e| plot_error(path, e))?;
+    }
+    write_rgb(path, w, h, buffer)
+}
+
+fn write_rgb(path: &std::path::Path, w: u32, h: u32, buffer: Vec<u8>) -> Result<()> {
+    let img = image::RgbImage::from_raw(w, h, buffer).expect("the buffer has w × h × 3 bytes");
+    let mut out = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut out, image::ImageFormat::Png)
+        .map_err(|e| plot_error(path, e))?;
+    crate::error::write_atomically(path, &out.into_inner())
+}

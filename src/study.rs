@@ -1,0 +1,275 @@
+//! Speed against accuracy (DESIGN §4): every shading variant timed on the GPU in one run and
+//! compared with the exact BRDF image of the same scene, for the paper-100 set-up at several
+//! light counts and roughnesses.
+
+use crate::cpu::LutFilter;
+use crate::error::{InputError, Result};
+use crate::gpu::GpuContext;
+use crate::gpu::plane::{GpuMethod, PlaneRenderer, PlaneSettings, ShaderChecks};
+use crate::ltc::Normalization;
+use crate::ltc::fit::{FitSettings, fit_table};
+use crate::ltc::lut::Lut;
+use crate::metrics::image_error;
+use crate::scene::Scene;
+
+/// Which table a variant shades with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LutChoice {
+    /// The shipped 64×64 table.
+    Shipped,
+    /// A table of this size fitted by `ltc::fit` at the study's start.
+    Fitted(usize),
+}
+
+/// One shading variant of the study.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Variant {
+    pub name: &'static str,
+    pub method: GpuMethod,
+    pub normalization: Normalization,
+    pub filter: LutFilter,
+    pub lut: LutChoice,
+}
+
+/// The variants of issue 5, named exactly so; `brdf` is the reference (error 0).
+pub fn variants() -> Vec<Variant> {
+    let v = |name, method, normalization, filter, lut| Variant {
+        name,
+        method,
+        normalization,
+        filter,
+        lut,
+    };
+    use GpuMethod::*;
+    use LutChoice::*;
+    use LutFilter::*;
+    use Normalization::*;
+    vec![
+        v("brdf", Brdf, Corrected, Bilinear, Shipped),
+        v("brdf-fast", BrdfFast, Corrected, Bilinear, Shipped),
+        v("ltc", Ltc, Corrected, Bilinear, Shipped),
+        v("ltc-fast", LtcFast, Corrected, Bilinear, Shipped),
+        v("ltc-paper", Ltc, PaperLiteral, Bilinear, Shipped),
+        v("ltc-nearest", Ltc, Corrected, Nearest, Shipped),
+        v("ltc-lut16", Ltc, Corrected, Bilinear, Fitted(16)),
+        v("ltc-lut32", Ltc, Corrected, Bilinear, Fitted(32)),
+    ]
+}
+
+/// One row of `study.csv`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StudyRow {
+    pub variant: String,
+    pub alpha: f64,
+    pub lights: usize,
+    pub width: usize,
+    pub height: usize,
+    pub ms_median: f64,
+    pub rel_rmse: f64,
+    pub max_rel_err: f64,
+    pub p99_rel_err: f64,
+}
+
+impl StudyRow {
+    pub const CSV_HEADER: &'static str = "variant,alpha,lights,width,height,ms_median,glightpx_per_s,rel_rmse,max_rel_err,p99_rel_err";
+
+    /// Light-pixel evaluations per second, in billions (every pixel of the study scene sees
+    /// the plane).
+    pub fn glightpx_per_s(&self) -> f64 {
+        (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
+    }
+
+    pub fn csv(&self) -> String {
+        format!(
+            "{},{},{},{},{},{:.6},{:.4},{:.6e},{:.6e},{:.6e}",
+            self.variant,
+            self.alpha,
+            self.lights,
+            self.width,
+            self.height,
+            self.ms_median,
+            self.glightpx_per_s(),
+            self.rel_rmse,
+            self.max_rel_err,
+            self.p99_rel_err
+        )
+    }
+
+    /// Parses a row written by `csv` (the lab reads study.csv back); errors name the line.
+    pub fn parse(line: &str, at: &str) -> Result<Self> {
+        let f: Vec<&str> = line.split(',').map(str::trim).collect();
+        if f.len() != 10 {
+            return Err(InputError::new(
+                at,
+                format!("expected 10 values, found {}", f.len()),
+            ));
+        }
+        let num = |k: usize| -> Result<f64> {
+            f[k].parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite() && *x >= 0.0)
+                .ok_or_else(|| {
+                    InputError::new(at, format!("'{}' is not a finite number ≥ 0", f[k]))
+                })
+        };
+        let int = |k: usize| -> Result<usize> {
+            f[k].parse::<usize>()
+                .map_err(|_| InputError::new(at, format!("'{}' is not a whole number", f[k])))
+        };
+        Ok(Self {
+            variant: f[0].to_string(),
+            alpha: num(1)?,
+            lights: int(2)?,
+            width: int(3)?,
+            height: int(4)?,
+            ms_median: num(5)?,
+            rel_rmse: num(7)?,
+            max_rel_err: num(8)?,
+            p99_rel_err: num(9)?,
+        })
+    }
+}
+
+/// The study scene: paper-100's plane, material and light distribution with `lights`
+/// generated lights (100 gives paper-100's own) and GGX α = `alpha`, seen from above so
+/// that every pixel shades the plane.
+pub fn study_scene(lights: usize, alpha: f64) -> Scene {
+    let mut scene = crate::bench::bench_scene(lights);
+    scene.material.alpha = alpha;
+    scene
+}
+
+/// Reads `study.csv`; errors name the file and line.
+pub fn read_csv(path: &std::path::Path) -> Result<Vec<StudyRow>> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::new(&name, format!("cannot read: {e}")))?;
+    let mut lines = text.lines().enumerate();
+    match lines.next() {
+        Some((_, h)) if h.trim() == StudyRow::CSV_HEADER => {}
+        _ => {
+            return Err(InputError::new(
+                format!("{name} line 1"),
+                format!("the header must be '{}'", StudyRow::CSV_HEADER),
+            ));
+        }
+    }
+    lines
+        .filter(|(_, l)| !l.trim().is_empty())
+        .map(|(k, l)| StudyRow::parse(l, &format!("{name} line {}", k + 1)))
+        .collect()
+}
+
+/// Runs the study: for each α and light count, the exact image, then every variant, each
+/// timed (median of `frames` after one warm-up) and measured against the exact image.
+pub fn run(
+    ctx: &GpuContext,
+    shipped: &Lut,
+    (width, height): (usize, usize),
+    light_counts: &[usize],
+    alphas: &[f64],
+    frames: usize,
+    mut progress: impl FnMut(&StudyRow),
+) -> Result<Vec<StudyRow>> {
+    let variants = variants();
+    let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
+    for v in &variants {
+        if renderers.iter().any(|(c, _)| *c == v.lut) {
+            continue;
+        }
+        let lut = match v.lut {
+            LutChoice::Shipped => shipped.clone(),
+            LutChoice::Fitted(size) => {
+                fit_table(
+                    &FitSettings {
+                        size,
+                        ..FitSettings::default()
+                    },
+                    &|| {},
+                )
+                .lut
+            }
+        };
+        renderers.push((v.lut, PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)));
+    }
+    let mut rows = Vec::new();
+    for &alpha in alphas {
+        for &lights in light_counts {
+            let scene = study_scene(lights, alpha);
+            let mut exact = None;
+            for v in &variants {
+                let renderer = &mut renderers
+                    .iter_mut()
+                    .find(|(c, _)| *c == v.lut)
+                    .expect("made above")
+                    .1;
+                let mut s = PlaneSettings::single(width, height, v.method);
+                s.normalization = v.normalization;
+                s.lut_filter = v.filter;
+                let frame = renderer.prepare(ctx, &scene, &s)?;
+                renderer.run(ctx, &frame);
+                let mut ms: Vec<f64> = (0..frames.max(1))
+                    .map(|_| renderer.run(ctx, &frame))
+                    .collect();
+                ms.sort_by(f64::total_cmp);
+                let image = renderer.read(ctx, &frame);
+                let reference = exact.get_or_insert_with(|| image.clone());
+                let e = image_error(&image, reference);
+                let row = StudyRow {
+                    variant: v.name.into(),
+                    alpha,
+                    lights,
+                    width,
+                    height,
+                    ms_median: ms[ms.len() / 2],
+                    rel_rmse: e.rel_rmse,
+                    max_rel_err: e.max_rel,
+                    p99_rel_err: e.p99_rel,
+                };
+                progress(&row);
+                rows.push(row);
+            }
+        }
+    }
+    Ok(rows)
+}
+
+/// The rows as CSV text.
+pub fn csv(rows: &[StudyRow]) -> String {
+    let mut out = format!("{}\n", StudyRow::CSV_HEADER);
+    for r in rows {
+        out.push_str(&r.csv());
+        out.push('\n');
+    }
+    out
+}
+
+/// The Pareto chart: every row as a faint marker, the case closest to paper-100 (100
+/// lights, α = 0.27) as one large labelled marker per variant.
+pub fn pareto_png(path: &std::path::Path, rows: &[StudyRow], device: &str) -> Result<()> {
+    let key =
+        |r: &StudyRow| ((r.lights as f64).ln() - 100f64.ln()).abs() + (r.alpha - 0.27).abs() * 10.0;
+    let best = rows.iter().map(key).fold(f64::INFINITY, f64::min);
+    let (lights, alpha) = rows
+        .iter()
+        .find(|r| key(r) == best)
+        .map_or((0, 0.0), |r| (r.lights, r.alpha));
+    let points: Vec<crate::plot::ParetoPoint> = rows
+        .iter()
+        .map(|r| crate::plot::ParetoPoint {
+            label: r.variant.clone(),
+            ms: r.ms_median,
+            error: r.rel_rmse,
+            highlight: r.lights == lights && r.alpha == alpha,
+        })
+        .collect();
+    let size = rows.first().map_or((0, 0), |r| (r.width, r.height));
+    crate::plot::pareto_png(
+        path,
+        &format!(
+            "{lights} lights, α = {alpha} (large); all cases (small) — {}×{} on {device}",
+            size.0, size.1
+        ),
+        &points,
+    )
+}
