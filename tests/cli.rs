@@ -401,3 +401,106 @@ fn bench_refuses_bad_arguments() {
         "/nonexistent-dir/b.csv",
     );
 }
+
+#[test]
+fn study_writes_every_variant_and_the_pareto_chart() {
+    if gpu_common::gpu().is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let o = ltc_lab(&[
+        "study",
+        "--out",
+        dir.path().to_str().unwrap(),
+        "--size",
+        "24x16",
+        "--lights",
+        "8",
+        "--alpha",
+        "0.27",
+        "--frames",
+        "1",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows = ltc_lab::study::read_csv(&dir.path().join("study.csv")).unwrap();
+    let names: Vec<&str> = rows.iter().map(|r| r.variant.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "brdf",
+            "brdf-fast",
+            "ltc",
+            "ltc-fast",
+            "ltc-paper",
+            "ltc-nearest",
+            "ltc-lut16",
+            "ltc-lut32"
+        ]
+    );
+    for r in &rows {
+        assert!(
+            r.ms_median > 0.0 && (r.lights, r.width, r.height) == (8, 24, 16),
+            "{r:?}"
+        );
+    }
+    // The reference is the exact image itself; every LTC variant differs from it, the
+    // paper-literal one by far the most (it drops 1/π and the magnitudes).
+    assert_eq!(rows[0].rel_rmse, 0.0);
+    let err = |v: &str| rows.iter().find(|r| r.variant == v).unwrap().rel_rmse;
+    assert!(err("ltc") > 0.0 && err("ltc-paper") > 10.0 * err("ltc"));
+    // ltc and ltc-fast are the same approximation: the same error to f32 rounding.
+    assert!((err("ltc") - err("ltc-fast")).abs() <= 1e-3 * err("ltc"));
+    let png = image::open(dir.path().join("study.png")).unwrap().to_rgb8();
+    assert!(
+        png.width() >= 800 && png.pixels().filter(|p| p.0 != [255, 255, 255]).count() > 10_000,
+        "blank chart"
+    );
+}
+
+#[test]
+fn study_refuses_bad_arguments() {
+    for (args, what) in [
+        (vec!["--alpha", "0"], "--alpha"),
+        (vec!["--alpha", "1.5"], "--alpha"),
+        (vec!["--lights", "0"], "--lights"),
+        (vec!["--frames", "0"], "--frames"),
+    ] {
+        let mut all = vec!["study", "--out", "/tmp/never-study"];
+        all.extend(args);
+        assert_refused(&ltc_lab(&all), what);
+    }
+}
+
+#[test]
+fn atlas_writes_heat_maps_and_csvs() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = ltc_lab(&["lut", "--atlas", dir.path().to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        summary.contains("specular θo") && summary.contains("orbit θo = 70°"),
+        "{summary}"
+    );
+    for f in [
+        "spec_err.png",
+        "diff_err.png",
+        "orbit_20_0.1.png",
+        "orbit_45_0.27.png",
+        "orbit_70_0.27.png",
+        "orbit_85_0.5.png",
+    ] {
+        let img = image::open(dir.path().join(f)).unwrap().to_rgb8();
+        assert!(
+            img.pixels().filter(|p| p.0 != [255, 255, 255]).count() > 50_000,
+            "{f} is blank"
+        );
+    }
+    let cells = std::fs::read_to_string(dir.path().join("cells.csv")).unwrap();
+    assert_eq!(cells.lines().count(), 1 + 64 * 64);
+    let orbits = std::fs::read_to_string(dir.path().join("orbits.csv")).unwrap();
+    assert_eq!(orbits.lines().count(), 1 + 4 * 91 * 91);
+    assert_refused(
+        &ltc_lab(&["lut", "--atlas", "/nonexistent-atlas-dir"]),
+        "/nonexistent-atlas-dir",
+    );
+}

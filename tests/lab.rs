@@ -276,3 +276,55 @@ fn a_broken_lut_file_is_reported_and_the_lab_keeps_its_table() {
     assert_eq!(h.state().lut.size, 4);
     assert!(!h.state().message.as_ref().unwrap().0);
 }
+
+#[test]
+fn the_chart_reads_a_study_csv_and_reports_a_bad_row() {
+    let state = LabState {
+        maximised: Some(PanelId::Chart),
+        ..LabState::default()
+    };
+    let Some(mut h) = lab((1000.0, 600.0), state) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("study.csv");
+    std::fs::write(&good, format!("{}\nltc,0.27,100,320,180,25.3,0.23,1.06e-2,1.9e-1,4.2e-2\nbrdf,0.27,100,320,180,27.8,0.21,0,0,0\n", ltc_lab::study::StudyRow::CSV_HEADER)).unwrap();
+    h.state_mut().chart.study_path = good.display().to_string();
+    h.run_steps(1);
+    h.get_by_label("load study").click();
+    h.run_steps(2);
+    let m = h
+        .state()
+        .chart
+        .measurement
+        .clone()
+        .expect("the study was read");
+    assert_eq!(m.points.len(), 2);
+    assert_eq!(
+        (
+            m.points[0].label.as_str(),
+            m.points[0].ms,
+            m.points[0].rel_rmse
+        ),
+        ("ltc", 25.3, 1.06e-2)
+    );
+    let bad = dir.path().join("bad.csv");
+    std::fs::write(
+        &bad,
+        format!(
+            "{}\nltc,0.27,100,320,180,nan,0.23,1e-2,1e-1,1e-2\n",
+            ltc_lab::study::StudyRow::CSV_HEADER
+        ),
+    )
+    .unwrap();
+    h.state_mut().chart.study_path = bad.display().to_string();
+    h.run_steps(1);
+    h.get_by_label("load study").click();
+    h.run_steps(2);
+    let e = h.state().chart.error.clone().expect("an error");
+    assert!(e.contains("bad.csv line 2"), "{e}");
+    assert!(
+        h.query_by_label_contains("bad.csv line 2").is_some(),
+        "the error is not shown in the window"
+    );
+}

@@ -43,6 +43,27 @@ pub struct ChartPanel {
     pub measurement: Option<Measurement>,
     pub error: Option<String>,
     running: Option<mpsc::Receiver<Result<Measurement, String>>>,
+    /// A `study.csv` to read instead of measuring.
+    pub study_path: String,
+}
+
+impl Measurement {
+    /// The points of a `study.csv` (`ltc-lab study`): every row a point, labelled with its
+    /// variant, α and light count.
+    pub fn from_study(rows: &[crate::study::StudyRow], source: &str) -> Self {
+        Self {
+            points: rows
+                .iter()
+                .map(|r| Point {
+                    label: r.variant.clone(),
+                    ms: r.ms_median,
+                    rel_rmse: r.rel_rmse,
+                })
+                .collect(),
+            scaling: Vec::new(),
+            device: format!("{source}: {} rows", rows.len()),
+        }
+    }
 }
 
 impl ChartPanel {
@@ -70,6 +91,17 @@ impl ChartPanel {
             {
                 self.start(s.shaded_scene(), lut.clone());
             }
+            ui.add(egui::TextEdit::singleline(&mut self.study_path).desired_width(110.0).hint_text("study.csv"))
+                .on_hover_text("A study.csv written by `ltc-lab study`, to plot instead of a live measurement");
+            if ui.small_button("load study").on_hover_text("Plot the study.csv named on the left").clicked() {
+                match crate::study::read_csv(std::path::Path::new(self.study_path.trim())) {
+                    Ok(rows) => {
+                        self.measurement = Some(Measurement::from_study(&rows, self.study_path.trim()));
+                        self.error = None;
+                    }
+                    Err(e) => self.error = Some(e.to_string()),
+                }
+            }
             if let Some(m) = &self.measurement {
                 ui.small(&m.device);
             }
@@ -81,19 +113,40 @@ impl ChartPanel {
         let height = ui.available_height().max(80.0);
         ui.horizontal(|ui| {
             ui.allocate_ui(egui::vec2(half, height), |ui| {
+                // The axes of `study.png` (src/plot.rs): log time, log error, exact at 1e-7.
+                let power = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
+                    format!("{:.3}", 10f64.powf(mark.value))
+                };
+                let exponent = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
+                    format!("1e{:.0}", mark.value)
+                };
                 egui_plot::Plot::new("time vs error")
-                    .x_axis_label("GPU ms per frame")
-                    .y_axis_label("log10 relative RMSE")
+                    .x_axis_label("GPU ms per frame (log)")
+                    .y_axis_label("relative RMSE against the exact BRDF (log; exact at 1e-7)")
+                    .x_axis_formatter(power)
+                    .y_axis_formatter(exponent)
                     .legend(egui_plot::Legend::default().position(egui_plot::Corner::LeftBottom))
                     .allow_scroll(false)
                     .show(ui, |p| {
-                        for pt in self.measurement.iter().flat_map(|m| &m.points) {
-                            // The exact BRDF has error 0: drawn at the plot's floor, 1e-7.
-                            let y = pt.rel_rmse.max(1e-7).log10();
-                            p.points(
-                                egui_plot::Points::new(pt.label.clone(), vec![[pt.ms, y]])
-                                    .radius(5.0),
-                            );
+                        // One series per variant (every α and light count of a study).
+                        let points: Vec<&Point> =
+                            self.measurement.iter().flat_map(|m| &m.points).collect();
+                        let mut names: Vec<&str> =
+                            points.iter().map(|p| p.label.as_str()).collect();
+                        names.sort_unstable();
+                        names.dedup();
+                        for name in names {
+                            let series: Vec<[f64; 2]> = points
+                                .iter()
+                                .filter(|pt| pt.label == name)
+                                .map(|pt| {
+                                    [
+                                        pt.ms.log10(),
+                                        pt.rel_rmse.max(crate::plot::ERROR_FLOOR).log10(),
+                                    ]
+                                })
+                                .collect();
+                            p.points(egui_plot::Points::new(name.to_string(), series).radius(5.0));
                         }
                     });
             });
