@@ -7,6 +7,7 @@ const METHOD_BRDF: u32 = 0u;      // the exact BRDF as DESIGN §1 writes it
 const METHOD_BRDF_FAST: u32 = 1u; // the same, with Filament's V_SmithGGXCorrelated
 const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻¹ l per lobe
 const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnormalized u, eq. 27
+const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
 
 // What a pixel shows (src/gpu/plane.rs GpuView).
 const VIEW_SINGLE: u32 = 0u; // method A
@@ -213,6 +214,7 @@ fn add_light(method: u32, s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
         case METHOD_BRDF: { add_brdf(s, p, light); }
         case METHOD_BRDF_FAST: { add_brdf_fast(s, p, light); }
         case METHOD_LTC: { add_ltc(s, p, light); }
+        case METHOD_LTC_F16: { add_ltc_f16(s, p, light); }
         default: { add_ltc_fast(s, p, light); }
     }
 }
@@ -229,7 +231,7 @@ fn saturate_finite(x: vec3<f32>) -> vec3<f32> {
 // Radiance from the sums: ltc-fast applies the factors pulled out of its sum here.
 fn finish(method: u32, sums: Sums, p: Pixel) -> vec3<f32> {
     let s = Sums(saturate_finite(sums.spec), saturate_finite(sums.diff));
-    if method == METHOD_LTC_FAST {
+    if method == METHOD_LTC_FAST || method == METHOD_LTC_F16 {
         return saturate_finite(p.spec_factor * s.spec + params.base_color.rgb * (p.diff_factor * s.diff));
     }
     return saturate_finite(s.spec + params.base_color.rgb * s.diff);

@@ -108,7 +108,7 @@ enum Command {
     Render {
         #[arg(long)]
         scene: PathBuf,
-        /// brdf, brdf-fast, ltc, ltc-fast, split (LTC | BRDF) or diff (|LTC − BRDF| / BRDF).
+        /// brdf, brdf-fast, ltc, ltc-fast, ltc-f16, split (LTC | BRDF) or diff (|LTC − BRDF| / BRDF).
         /// On the CPU the fast forms are the same math as their literal twins.
         #[arg(long, value_enum)]
         method: RenderMethod,
@@ -174,6 +174,8 @@ enum RenderMethod {
     BrdfFast,
     Ltc,
     LtcFast,
+    /// ltc-fast with M⁻¹l and D in f16 (GPUs with SHADER_F16).
+    LtcF16,
     Split,
     Diff,
 }
@@ -183,7 +185,7 @@ impl RenderMethod {
     fn cpu(self) -> Method {
         match self {
             Self::Brdf | Self::BrdfFast => Method::Brdf,
-            Self::Ltc | Self::LtcFast => Method::Ltc,
+            Self::Ltc | Self::LtcFast | Self::LtcF16 => Method::Ltc,
             Self::Split => Method::Split,
             Self::Diff => Method::Diff,
         }
@@ -196,6 +198,7 @@ impl RenderMethod {
             Self::BrdfFast => (GpuMethod::BrdfFast, GpuView::Single),
             Self::Ltc => (GpuMethod::Ltc, GpuView::Single),
             Self::LtcFast => (GpuMethod::LtcFast, GpuView::Single),
+            Self::LtcF16 => (GpuMethod::LtcF16, GpuView::Single),
             Self::Split => (GpuMethod::Ltc, GpuView::Split),
             Self::Diff => (GpuMethod::Ltc, GpuView::Diff),
         }

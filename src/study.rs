@@ -53,6 +53,8 @@ pub fn variants() -> Vec<Variant> {
         v("ltc-nearest", Ltc, Corrected, Nearest, Shipped),
         v("ltc-lut16", Ltc, Corrected, Bilinear, Fitted(16)),
         v("ltc-lut32", Ltc, Corrected, Bilinear, Fitted(32)),
+        // Where the adapter has SHADER_F16 (`run` drops it elsewhere).
+        v("ltc-f16", LtcF16, Corrected, Bilinear, Shipped),
     ]
 }
 
@@ -171,7 +173,10 @@ pub fn run(
     frames: usize,
     mut progress: impl FnMut(&StudyRow),
 ) -> Result<Vec<StudyRow>> {
-    let variants = variants();
+    let variants: Vec<Variant> = variants()
+        .into_iter()
+        .filter(|v| v.method != GpuMethod::LtcF16 || ctx.has_f16())
+        .collect();
     let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
     for v in &variants {
         if renderers.iter().any(|(c, _)| *c == v.lut) {

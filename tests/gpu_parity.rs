@@ -153,6 +153,45 @@ fn gpu_matches_cpu_for_every_method_clip_and_normalization() {
     }
 }
 
+/// ltc-f16 against the f64 LTC: f16 keeps 11 significant bits (relative rounding 4.9e-4 per
+/// operation, ~10 operations in M⁻¹l and |w|⁴), so each term is good to ~5e-3; terms of one
+/// sign average out in the sum. 1e-2 of the reference luminance (floor: 1% of the mean).
+/// Scenes with α ≥ 0.12: at α near α_min, M⁻¹l spans more than f16's range (the study
+/// measures that).
+#[test]
+fn gpu_f16_ltc_matches_cpu_to_half_precision() {
+    let Some(g) = gpu() else { return };
+    if !g.ctx.has_f16() {
+        eprintln!(
+            "*** SKIPPED: {} has no SHADER_F16; ltc-f16 is not offered there ***",
+            g.ctx.info.name
+        );
+        return;
+    }
+    for (name, scene) in scenes() {
+        let cpu = cpu_frame(
+            &scene,
+            Method::Ltc,
+            Clipping::BOTH,
+            Normalization::Corrected,
+        );
+        let gpu = gpu_frame(&scene, &PlaneSettings::single(W, H, GpuMethod::LtcF16));
+        let floor = relative_floor(&cpu);
+        let worst = (0..cpu.pixels.len())
+            .filter(|&k| gpu.on_plane[k] && cpu.on_plane[k])
+            .map(|k| {
+                (gpu.pixels[k] - cpu.pixels[k]).abs().max_element()
+                    / luminance(cpu.pixels[k].abs()).max(floor)
+            })
+            .fold(0.0, f64::max);
+        assert!(worst <= 1e-2, "{name}: ltc-f16 differs by {worst:.2e}");
+        assert!(
+            worst > 0.0 || name == "figure2-case1",
+            "{name}: f16 identical to f64?"
+        );
+    }
+}
+
 #[test]
 fn gpu_nearest_lut_lookup_matches_cpu() {
     if gpu().is_none() {

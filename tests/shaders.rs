@@ -24,8 +24,13 @@ fn every_wgsl_file_validates() {
         "brdf.wgsl + ltc.wgsl",
         &[brdf::SOURCE, ltc::SOURCE].join("\n"),
     );
-    let module = validate("brdf.wgsl + ltc.wgsl + plane.wgsl", &plane_module_source());
-    assert!(module.entry_points.iter().any(|e| e.name == "shade"));
+    for f16 in [false, true] {
+        let module = validate(
+            &format!("brdf.wgsl + ltc.wgsl + plane.wgsl (f16: {f16})"),
+            &plane_module_source(f16),
+        );
+        assert!(module.entry_points.iter().any(|e| e.name == "shade"));
+    }
 }
 
 /// `(member name, byte offset)` of a WGSL struct, and its size, as naga lays it out.
@@ -57,7 +62,7 @@ macro_rules! rust_layout {
 
 #[test]
 fn pod_types_match_the_wgsl_structs() {
-    let module = validate("plane", &plane_module_source());
+    let module = validate("plane", &plane_module_source(false));
     assert_eq!(
         rust_layout!(
             Params,
@@ -93,7 +98,7 @@ fn pod_types_match_the_wgsl_structs() {
 
 #[test]
 fn mirrored_functions_have_the_same_names() {
-    let module = validate("plane", &plane_module_source());
+    let module = validate("plane", &plane_module_source(false));
     let wgsl: Vec<&str> = module
         .functions
         .iter()

@@ -3,14 +3,27 @@
 
 pub mod brdf;
 pub mod ltc;
+pub mod ltc_f16;
 pub mod plane;
 pub mod timing;
 
 use crate::error::InputError;
 
-/// The WGSL of the plane shader: brdf.wgsl, then ltc.wgsl, then plane.wgsl.
-pub fn plane_module_source() -> String {
-    [brdf::SOURCE, ltc::SOURCE, plane::SOURCE].join("\n")
+/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, plane.wgsl and ltc_f16.wgsl (behind
+/// `enable f16;`) — or, without f16, a stub in place of the last.
+pub fn plane_module_source(f16: bool) -> String {
+    if f16 {
+        [
+            ltc_f16::ENABLE,
+            brdf::SOURCE,
+            ltc::SOURCE,
+            plane::SOURCE,
+            ltc_f16::SOURCE,
+        ]
+        .join("\n")
+    } else {
+        [brdf::SOURCE, ltc::SOURCE, plane::SOURCE, ltc_f16::STUB].join("\n")
+    }
 }
 
 /// A headless device and what was chosen.
@@ -43,7 +56,8 @@ impl GpuContext {
         })?;
         let info = adapter.get_info();
         let limits = adapter.limits();
-        let required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+        let required_features =
+            adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("ltc-lab"),
             required_features,
@@ -79,6 +93,11 @@ impl GpuContext {
                 ", no timestamp queries: timing by wall clock"
             }
         )
+    }
+
+    /// Whether the device runs f16 shaders (the `ltc-f16` method).
+    pub fn has_f16(&self) -> bool {
+        self.device.features().contains(wgpu::Features::SHADER_F16)
     }
 
     pub fn has_timestamps(&self) -> bool {

@@ -32,6 +32,8 @@ pub enum GpuMethod {
     /// LTC with the rotation folded into `M⁻¹` per pixel, the unnormalized light vector and
     /// eq. 27's factoring: one square root per light.
     LtcFast = 3,
+    /// `LtcFast` with `M⁻¹l` and `D` in f16 (devices with `SHADER_F16` only).
+    LtcF16 = 4,
 }
 
 impl GpuMethod {
@@ -43,11 +45,12 @@ impl GpuMethod {
             Self::BrdfFast => "brdf-fast",
             Self::Ltc => "ltc",
             Self::LtcFast => "ltc-fast",
+            Self::LtcF16 => "ltc-f16",
         }
     }
 
     pub fn is_ltc(self) -> bool {
-        matches!(self, Self::Ltc | Self::LtcFast)
+        matches!(self, Self::Ltc | Self::LtcFast | Self::LtcF16)
     }
 }
 
@@ -207,6 +210,8 @@ pub struct PlaneRenderer {
     lut_buffer: wgpu::Buffer,
     lut_size: usize,
     timer: Option<PassTimer>,
+    /// Whether the module has the f16 method (the device has `SHADER_F16`).
+    f16: bool,
 }
 
 /// The resources of one render: uniforms, lights, the output texture and their bind group.
@@ -223,7 +228,7 @@ impl PlaneRenderer {
         let device = &ctx.device;
         let desc = wgpu::ShaderModuleDescriptor {
             label: Some("plane.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(super::plane_module_source().into()),
+            source: wgpu::ShaderSource::Wgsl(super::plane_module_source(ctx.has_f16()).into()),
         };
         let module = match checks {
             ShaderChecks::Checked => device.create_shader_module(desc),
@@ -295,7 +300,13 @@ impl PlaneRenderer {
             lut_buffer,
             lut_size: lut.size,
             timer: PassTimer::new(device, &ctx.queue),
+            f16: ctx.has_f16(),
         }
+    }
+
+    /// Whether this device can run `method` (`LtcF16` needs `SHADER_F16`).
+    pub fn supports(&self, method: GpuMethod) -> bool {
+        method != GpuMethod::LtcF16 || self.f16
     }
 
     /// The pipeline of a method combination, compiled on first use.
@@ -375,6 +386,14 @@ impl PlaneRenderer {
         settings: &PlaneSettings,
     ) -> Result<PreparedFrame, InputError> {
         Self::check_light_count(ctx, scene.lights.len())?;
+        for m in [settings.method_a, settings.method_b] {
+            if !self.supports(m) {
+                return Err(InputError::new(
+                    m.name(),
+                    format!("{} has no f16 shaders (SHADER_F16)", ctx.info.name),
+                ));
+            }
+        }
         let max_side = ctx.limits.max_texture_dimension_2d as usize;
         if settings.width > max_side || settings.height > max_side {
             return Err(InputError::new(
