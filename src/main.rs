@@ -15,7 +15,7 @@ use ltc_lab::error::{InputError, Result};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::{GpuMethod, GpuView, PlaneRenderer, PlaneSettings, ShaderChecks};
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
-use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut};
+use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut, Table};
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::metrics::relative_floor;
 use ltc_lab::output::write_frame;
@@ -57,9 +57,13 @@ enum Command {
         /// Cells per side.
         #[arg(long, default_value_t = 64)]
         size: usize,
-        /// Where to write the table (OpenEXR).
-        #[arg(long, default_value = "luts/ltc.exr")]
-        out: PathBuf,
+        /// classic: ltc_code's objective (luts/ltc.exr); point: the pointwise relative L1
+        /// error a point light sees, from the classic fit (luts/ltc_point.exr).
+        #[arg(long, value_enum, default_value_t = Objective::Classic)]
+        objective: Objective,
+        /// Where to write the table (OpenEXR); default luts/ltc.exr or luts/ltc_point.exr.
+        #[arg(long)]
+        out: Option<PathBuf>,
     },
     /// Evaluate the exact lobes and their LTC approximation for the cases of a CSV file.
     ///
@@ -74,12 +78,18 @@ enum Command {
         /// A LUT file instead of the embedded one.
         #[arg(long)]
         lut: Option<PathBuf>,
+        /// Which shipped table: classic (ltc_code's fit) or point (the point-light fit).
+        #[arg(long, value_enum, default_value_t = Table::Classic)]
+        table: Table,
     },
     /// Inspect a LUT.
     Lut {
         /// A LUT file instead of the embedded one.
         #[arg(long)]
         lut: Option<PathBuf>,
+        /// Which shipped table: classic (ltc_code's fit) or point (the point-light fit).
+        #[arg(long, value_enum, default_value_t = Table::Classic)]
+        table: Table,
         /// Print every cell as CSV: i,j,alpha,theta_o (degrees), then the channels.
         #[arg(long)]
         dump: bool,
@@ -134,6 +144,9 @@ enum Command {
         /// A LUT file instead of the embedded one.
         #[arg(long)]
         lut: Option<PathBuf>,
+        /// Which shipped table: classic (ltc_code's fit) or point (the point-light fit).
+        #[arg(long, value_enum, default_value_t = Table::Classic)]
+        table: Table,
     },
     /// The paper's Table 1 on this machine's GPU: every method at each light count.
     Bench {
@@ -154,6 +167,9 @@ enum Command {
         /// A LUT file instead of the embedded one.
         #[arg(long)]
         lut: Option<PathBuf>,
+        /// Which shipped table: classic (ltc_code's fit) or point (the point-light fit).
+        #[arg(long, value_enum, default_value_t = Table::Classic)]
+        table: Table,
     },
 }
 
@@ -165,6 +181,12 @@ enum PanelArg {
     Clipping,
     Chart,
     All,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Objective {
+    Classic,
+    Point,
 }
 
 /// What `render` draws.
@@ -270,9 +292,26 @@ fn main() -> ExitCode {
             scene,
             measure,
         }) => run_lab(screenshot, panel, size, scene.as_deref(), measure),
-        Some(Command::Fit { size, out }) => run_fit(size, &out),
-        Some(Command::Eval { cases, lut }) => run_eval(&cases, lut.as_deref()),
-        Some(Command::Lut { lut, dump, atlas }) => run_lut(lut.as_deref(), dump, atlas.as_deref()),
+        Some(Command::Fit {
+            size,
+            objective,
+            out,
+        }) => {
+            let out = out.unwrap_or_else(|| {
+                PathBuf::from(match objective {
+                    Objective::Classic => "luts/ltc.exr",
+                    Objective::Point => "luts/ltc_point.exr",
+                })
+            });
+            run_fit(size, objective, &out)
+        }
+        Some(Command::Eval { cases, lut, table }) => run_eval(&cases, lut.as_deref(), table),
+        Some(Command::Lut {
+            lut,
+            table,
+            dump,
+            atlas,
+        }) => run_lut(lut.as_deref(), table, dump, atlas.as_deref()),
         Some(Command::Study {
             out,
             size,
@@ -290,12 +329,13 @@ fn main() -> ExitCode {
             normalization,
             divider,
             lut,
+            table,
         }) => {
             let mut settings = RenderSettings::new(size.0, size.1, method.cpu());
             settings.clipping = clip.into();
             settings.normalization = normalization.into();
             settings.divider = divider;
-            run_render(&scene, method, settings, out, cpu, lut.as_deref())
+            run_render(&scene, method, settings, out, cpu, lut.as_deref(), table)
         }
         Some(Command::Bench {
             lights,
@@ -304,6 +344,7 @@ fn main() -> ExitCode {
             csv,
             checked,
             lut,
+            table,
         }) => run_bench(
             &lights,
             size,
@@ -311,6 +352,7 @@ fn main() -> ExitCode {
             csv.as_deref(),
             checked,
             lut.as_deref(),
+            table,
         ),
     };
     match result {
@@ -322,7 +364,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn run_fit(size: usize, out: &Path) -> Result<()> {
+fn run_fit(size: usize, objective: Objective, out: &Path) -> Result<()> {
     if !(2..=1024).contains(&size) {
         return Err(InputError::new(
             "--size",
@@ -341,8 +383,25 @@ fn run_fit(size: usize, out: &Path) -> Result<()> {
         .expect("a valid template"),
     );
     let start = Instant::now();
-    let fitted = fit_table(&settings, &|| bar.inc(1));
-    let lut = fitted.lut;
+    let (lut, at_limit) = match objective {
+        Objective::Classic => {
+            let fitted = fit_table(&settings, &|| bar.inc(1));
+            (fitted.lut, Some(fitted.at_iteration_limit))
+        }
+        Objective::Point => {
+            // Warm start: the classic fit of the same cells (the shipped one at its size).
+            let classic = if size == Lut::embedded().size {
+                Lut::embedded().clone()
+            } else {
+                bar.set_length((3 * size * size) as u64);
+                fit_table(&settings, &|| bar.inc(1)).lut
+            };
+            let lut = ltc_lab::ltc::fit_point::fit_point_table(&classic, &settings, &|| {
+                bar.inc(2);
+            });
+            (lut, None)
+        }
+    };
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     lut.write(out)?;
@@ -362,10 +421,12 @@ fn run_fit(size: usize, out: &Path) -> Result<()> {
         settings.alpha_min,
         out.display()
     );
-    eprintln!(
-        "  cells stopped at the {}-iteration limit: spec {}, diff {}",
-        settings.max_iterations, fitted.at_iteration_limit[0], fitted.at_iteration_limit[1]
-    );
+    if let Some([spec, diff]) = at_limit {
+        eprintln!(
+            "  cells stopped at the {}-iteration limit: spec {spec}, diff {diff}",
+            settings.max_iterations
+        );
+    }
     for c in [Channel::SpecErr, Channel::DiffErr] {
         let (mean, max, i, j) = stats(c);
         eprintln!(
@@ -457,12 +518,12 @@ fn parse_cases(text: &str, name: &str) -> Result<Vec<Case>> {
     Ok(cases)
 }
 
-fn run_eval(cases_path: &Path, lut_path: Option<&Path>) -> Result<()> {
+fn run_eval(cases_path: &Path, lut_path: Option<&Path>, table: Table) -> Result<()> {
     let name = cases_path.display().to_string();
     let text = std::fs::read_to_string(cases_path)
         .map_err(|e| InputError::new(&name, format!("cannot read: {e}")))?;
     let cases = parse_cases(&text, &name)?;
-    let lut = Lut::load(lut_path)?;
+    let lut = Lut::load(lut_path, table)?;
     let mut out = String::from(EVAL_HEADER);
     out.push_str(",brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse\n");
     for c in &cases {
@@ -493,8 +554,8 @@ fn run_eval(cases_path: &Path, lut_path: Option<&Path>) -> Result<()> {
     Ok(())
 }
 
-fn run_lut(lut_path: Option<&Path>, dump: bool, atlas: Option<&Path>) -> Result<()> {
-    let lut = Lut::load(lut_path)?;
+fn run_lut(lut_path: Option<&Path>, table: Table, dump: bool, atlas: Option<&Path>) -> Result<()> {
+    let lut = Lut::load(lut_path, table)?;
     if let Some(dir) = atlas {
         let summary = ltc_lab::atlas::write_atlas(&lut, dir)?;
         for line in summary.lines {
@@ -508,7 +569,9 @@ fn run_lut(lut_path: Option<&Path>, dump: bool, atlas: Option<&Path>) -> Result<
     if !dump {
         println!(
             "{}: {}×{} cells, α_min = {}, channels: {}",
-            lut_path.map_or("embedded luts/ltc.exr".into(), |p| p.display().to_string()),
+            lut_path.map_or(format!("embedded {table:?} table"), |p| p
+                .display()
+                .to_string()),
             lut.size,
             lut.size,
             lut.alpha_min,
@@ -540,6 +603,7 @@ fn run_render(
     out: Option<PathBuf>,
     cpu: bool,
     lut_path: Option<&Path>,
+    table: Table,
 ) -> Result<()> {
     if !settings.divider.is_finite() || !(0.0..=1.0).contains(&settings.divider) {
         return Err(InputError::new(
@@ -548,7 +612,7 @@ fn run_render(
         ));
     }
     let scene = Scene::load(scene_path)?;
-    let lut = Lut::load(lut_path)?;
+    let lut = Lut::load(lut_path, table)?;
     let out = match out {
         Some(p) => p,
         None => {
@@ -634,6 +698,7 @@ fn run_bench(
     csv: Option<&Path>,
     checked: bool,
     lut_path: Option<&Path>,
+    table: Table,
 ) -> Result<()> {
     if frames == 0 {
         return Err(InputError::new("--frames", "must be at least 1"));
@@ -663,7 +728,7 @@ fn run_bench(
             ));
         }
     }
-    let lut = Lut::load(lut_path)?;
+    let lut = Lut::load(lut_path, table)?;
     let ctx = GpuContext::new()?;
     let device = ctx.describe();
     eprintln!("benchmarking on {device}");

@@ -19,6 +19,8 @@ pub enum LutChoice {
     Shipped,
     /// A table of this size fitted by `ltc::fit` at the study's start.
     Fitted(usize),
+    /// The shipped point-light fit (`luts/ltc_point.exr`).
+    Point,
 }
 
 /// One shading variant of the study.
@@ -53,6 +55,8 @@ pub fn variants() -> Vec<Variant> {
         v("ltc-nearest", Ltc, Corrected, Nearest, Shipped),
         v("ltc-lut16", Ltc, Corrected, Bilinear, Fitted(16)),
         v("ltc-lut32", Ltc, Corrected, Bilinear, Fitted(32)),
+        v("ltc-point", Ltc, Corrected, Bilinear, Point),
+        v("ltc-fast-point", LtcFast, Corrected, Bilinear, Point),
         // Where the adapter has SHADER_F16 (`run` drops it elsewhere).
         v("ltc-f16", LtcF16, Corrected, Bilinear, Shipped),
     ]
@@ -184,6 +188,7 @@ pub fn run(
         }
         let lut = match v.lut {
             LutChoice::Shipped => shipped.clone(),
+            LutChoice::Point => Lut::embedded_point().clone(),
             LutChoice::Fitted(size) => {
                 fit_table(
                     &FitSettings {

@@ -433,6 +433,8 @@ fn study_writes_every_variant_and_the_pareto_chart() {
         "ltc-nearest",
         "ltc-lut16",
         "ltc-lut32",
+        "ltc-point",
+        "ltc-fast-point",
     ];
     if gpu_common::gpu().unwrap().ctx.has_f16() {
         expected.push("ltc-f16");

@@ -21,7 +21,12 @@ fn total(ltc: &Ltc) -> f64 {
 
 #[test]
 fn fitted_distributions_integrate_to_one() {
-    let lut = Lut::embedded();
+    for lut in [Lut::embedded(), Lut::embedded_point()] {
+        fitted_distributions_of(lut);
+    }
+}
+
+fn fitted_distributions_of(lut: &Lut) {
     // Cells with α ≥ 0.04 (column ≥ 13): narrower lobes need a finer quadrature than 600
     // steps. Grazing rows included.
     for j in (0..lut.size).step_by(9).chain([lut.size - 1]) {

@@ -91,7 +91,7 @@ proptest! {
     #[test]
     fn ltc_path_is_finite_and_non_negative(t in theta_o(), a in alpha(), e in elevation(),
             az in 0.0f64..std::f64::consts::TAU, f0 in 0.0f64..=1.0) {
-        let lut = Lut::embedded();
+        for lut in [Lut::embedded(), Lut::embedded_point()] {
         let v = DVec3::new(t.sin(), 0.0, t.cos());
         let pair = lut.ltc_pair(a, v);
         let l = direction(e, az);
@@ -106,6 +106,7 @@ proptest! {
         // Without clipping values may be negative (case 2), but never NaN or infinite.
         let x = pair.ltc_lobes(l, f0, Clipping::NONE, Normalization::Corrected);
         prop_assert!(x.specular.is_finite() && x.diffuse.is_finite());
+        }
     }
 }
 

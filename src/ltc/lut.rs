@@ -53,6 +53,30 @@ const ALPHA_MIN_ATTRIBUTE: &str = "ltc.alpha_min";
 /// The shipped table (`luts/ltc.exr`, made by `ltc-lab fit`), so the lab runs from anywhere.
 pub const EMBEDDED_EXR: &[u8] = include_bytes!("../../luts/ltc.exr");
 
+/// The shipped point-light fit (`luts/ltc_point.exr`, `ltc-lab fit --objective point`).
+pub const EMBEDDED_POINT_EXR: &[u8] = include_bytes!("../../luts/ltc_point.exr");
+
+/// Which shipped table.
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    Hash,
+    clap::ValueEnum,
+    serde::Serialize,
+    serde::Deserialize,
+)]
+pub enum Table {
+    /// ltc_code's objective (`luts/ltc.exr`).
+    #[default]
+    Classic,
+    /// The point-light objective (`luts/ltc_point.exr`).
+    Point,
+}
+
 /// One cell: the channels of `CHANNEL_NAMES`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LutCell(pub [f32; CHANNEL_COUNT]);
@@ -148,11 +172,28 @@ impl Lut {
         Lut::from_exr_bytes(&bytes, &name)
     }
 
-    /// The embedded table, or the file at `path` if one is given.
-    pub fn load(path: Option<&Path>) -> Result<std::borrow::Cow<'static, Lut>> {
+    /// The shipped point-light table (parsed once).
+    pub fn embedded_point() -> &'static Lut {
+        static LUT: OnceLock<Lut> = OnceLock::new();
+        LUT.get_or_init(|| {
+            Lut::from_exr_bytes(EMBEDDED_POINT_EXR, "embedded luts/ltc_point.exr")
+                .expect("the embedded point LUT is checked by the test suite")
+        })
+    }
+
+    /// One of the shipped tables.
+    pub fn shipped(table: Table) -> &'static Lut {
+        match table {
+            Table::Classic => Lut::embedded(),
+            Table::Point => Lut::embedded_point(),
+        }
+    }
+
+    /// The shipped `table`, or the file at `path` if one is given.
+    pub fn load(path: Option<&Path>, table: Table) -> Result<std::borrow::Cow<'static, Lut>> {
         match path {
             Some(p) => Ok(std::borrow::Cow::Owned(Lut::read(p)?)),
-            None => Ok(std::borrow::Cow::Borrowed(Lut::embedded())),
+            None => Ok(std::borrow::Cow::Borrowed(Lut::shipped(table))),
         }
     }
 
