@@ -328,3 +328,23 @@ fn the_chart_reads_a_study_csv_and_reports_a_bad_row() {
         "the error is not shown in the window"
     );
 }
+
+#[test]
+fn the_table_switch_shades_with_the_point_fit_and_both_fits_are_shown() {
+    let state = LabState {
+        maximised: Some(PanelId::Matrix),
+        ..LabState::default()
+    };
+    let Some(mut h) = lab((1100.0, 700.0), state) else {
+        return;
+    };
+    assert!(
+        h.query_by_label_contains("classic fit: M^-1").is_some()
+            && h.query_by_label_contains("point fit: M^-1").is_some()
+    );
+    assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded());
+    h.get_by_label("point").click();
+    h.run_steps(3);
+    assert_eq!(h.state().state.table, ltc_lab::ltc::lut::Table::Point);
+    assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded_point());
+}

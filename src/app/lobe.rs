@@ -39,12 +39,15 @@ impl LobePanel {
         s: &mut LabState,
         lut: &Lut,
         refit: Option<(Lobe, Ltc)>,
+        other: &Lut,
     ) {
         ui.horizontal(|ui| {
             ui.selectable_value(&mut s.lobe, Lobe::Specular, "specular")
                 .on_hover_text("GGX f_s·cos with F = 1 against n_s·D_s");
             ui.selectable_value(&mut s.lobe, Lobe::Diffuse, "diffuse")
                 .on_hover_text("Burley fd·cos with c = 1 against n_d·D_d");
+            ui.checkbox(&mut s.overlay_other_fit, "other fit")
+                .on_hover_text("Overlay the other shipped table's LTC (green): the point-light fit over the classic one, or the reverse");
             ui.checkbox(&mut s.colour_difference, "difference")
                 .on_hover_text("Colour the unit sphere by n·D − f·cos (red: LTC too bright, blue: too dark), relative to the lobe's peak");
         });
@@ -60,6 +63,17 @@ impl LobePanel {
             (_, Lobe::Diffuse) => pair.diff,
         };
         let ltc = morphed_ltc(&fitted, s.morph);
+        let other_pair = s.ltc_pair(other);
+        let other_ltc = s.overlay_other_fit.then(|| {
+            morphed_ltc(
+                if s.lobe == Lobe::Specular {
+                    &other_pair.spec
+                } else {
+                    &other_pair.diff
+                },
+                s.morph,
+            )
+        });
         let plot_h = (ui.available_height() * 0.3).clamp(60.0, 160.0);
         let size = Vec2::new(
             ui.available_width(),
@@ -73,8 +87,8 @@ impl LobePanel {
             s.orbit_yaw += d.x * 0.01;
             s.orbit_pitch = (s.orbit_pitch + d.y * 0.01).clamp(-1.5, 1.5);
         }
-        self.paint_sphere(ui, rect, s, v, alpha, &ltc);
-        slice_plot(ui, s.lobe, v, alpha, &ltc, plot_h);
+        self.paint_sphere(ui, rect, s, v, alpha, &ltc, other_ltc.as_ref());
+        slice_plot(ui, s.lobe, v, alpha, &ltc, other_ltc.as_ref(), plot_h);
     }
 
     fn paint_sphere(
@@ -85,6 +99,7 @@ impl LobePanel {
         v: DVec3,
         alpha: f64,
         ltc: &Ltc,
+        other: Option<&Ltc>,
     ) {
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 4.0, Color32::from_gray(18));
@@ -136,7 +151,7 @@ impl LobePanel {
                     .collect()
             };
             let n = dirs.len();
-            vec![
+            let mut surfaces = vec![
                 (
                     radial(|v| v.0),
                     vec![Color32::from_rgba_unmultiplied(240, 150, 60, 150); n],
@@ -145,7 +160,18 @@ impl LobePanel {
                     radial(|v| v.1),
                     vec![Color32::from_rgba_unmultiplied(70, 140, 255, 120); n],
                 ),
-            ]
+            ];
+            if let Some(o) = other {
+                let positions = dirs
+                    .iter()
+                    .map(|&l| l * (values(s.lobe, v, alpha, o, l).1 / peak))
+                    .collect();
+                surfaces.push((
+                    positions,
+                    vec![Color32::from_rgba_unmultiplied(80, 220, 120, 90); n],
+                ));
+            }
+            surfaces
         };
         for (position, colour) in &surfaces {
             let position = |n: usize| position[n];
@@ -249,15 +275,23 @@ fn shade(c: Color32, k: f32) -> Color32 {
 }
 
 /// Both lobes along the plane of incidence, θ from −90° (away from the view) to 90°.
-fn slice_plot(ui: &mut egui::Ui, lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, height: f32) {
+fn slice_plot(
+    ui: &mut egui::Ui,
+    lobe: Lobe,
+    v: DVec3,
+    alpha: f64,
+    ltc: &Ltc,
+    other: Option<&Ltc>,
+    height: f32,
+) {
     let samples = 361;
-    let points = |exact: bool| -> Vec<[f64; 2]> {
+    let points = |which: &Ltc, exact: bool| -> Vec<[f64; 2]> {
         (0..samples)
             .map(|k| {
                 let deg = -90.0 + 180.0 * k as f64 / (samples - 1) as f64;
                 let t = deg.to_radians();
                 let l = DVec3::new(t.sin(), 0.0, t.cos());
-                let (e, a) = values(lobe, v, alpha, ltc, l);
+                let (e, a) = values(lobe, v, alpha, which, l);
                 [deg, if exact { e } else { a }]
             })
             .collect()
@@ -269,12 +303,18 @@ fn slice_plot(ui: &mut egui::Ui, lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, he
         .allow_scroll(false)
         .show(ui, |p| {
             p.line(
-                egui_plot::Line::new("exact f·cos", points(true))
+                egui_plot::Line::new("exact f·cos", points(ltc, true))
                     .color(Color32::from_rgb(240, 150, 60)),
             );
             p.line(
-                egui_plot::Line::new("LTC n·D", points(false))
+                egui_plot::Line::new("LTC n·D", points(ltc, false))
                     .color(Color32::from_rgb(70, 140, 255)),
             );
+            if let Some(o) = other {
+                p.line(
+                    egui_plot::Line::new("other fit", points(o, false))
+                        .color(Color32::from_rgb(80, 220, 120)),
+                );
+            }
         });
 }

@@ -125,6 +125,25 @@ impl MatrixPanel {
                 100.0 * err
             ))
             .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; error = ∫|n·D − f·cos| / ∫ f·cos (DESIGN §4)");
+            // Both shipped fits of this (θo, α), side by side.
+            ui.horizontal_wrapped(|ui| {
+                for (name, table) in [("classic", crate::ltc::lut::Table::Classic), ("point", crate::ltc::lut::Table::Point)] {
+                    let t = Lut::shipped(table).sample(s.alpha(), theta.cos());
+                    let (m, e) = match s.lobe {
+                        Lobe::Specular => ([Channel::SpecM00, Channel::SpecM02, Channel::SpecM20, Channel::SpecM22], Channel::SpecErr),
+                        Lobe::Diffuse => ([Channel::DiffM00, Channel::DiffM02, Channel::DiffM20, Channel::DiffM22], Channel::DiffErr),
+                    };
+                    ui.label(format!(
+                        "{name} fit: M^-1 = [[{:.3}, 0, {:.3}], [0, 1, 0], [{:.3}, 0, {:.3}]], error {:.1}%",
+                        t.get(m[0]),
+                        t.get(m[1]),
+                        t.get(m[2]),
+                        t.get(m[3]),
+                        100.0 * t.get(e)
+                    ))
+                    .on_hover_text("The shipped tables at this (θo, α): ltc_code's classic fit and the point-light fit (luts/ltc_point.exr)");
+                }
+            });
             ui.horizontal(|ui| {
                 let busy = self.refit.as_ref().is_some_and(|r| r.result.is_none());
                 if ui

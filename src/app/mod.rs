@@ -110,6 +110,10 @@ pub struct LabState {
     pub screenshot_path: String,
     /// A LUT file to shade with; empty: the embedded table.
     pub lut_path: String,
+    /// Which shipped table shades (classic or the point-light fit).
+    pub table: crate::ltc::lut::Table,
+    /// Overlay the other shipped table's LTC in the lobe panel.
+    pub overlay_other_fit: bool,
 }
 
 /// What the plane panel shows.
@@ -167,6 +171,8 @@ impl Default for LabState {
             scene_path: "scene.toml".into(),
             screenshot_path: "ltc-lab.png".into(),
             lut_path: String::new(),
+            table: crate::ltc::lut::Table::Classic,
+            overlay_other_fit: true,
         }
     }
 }
@@ -236,9 +242,9 @@ const STORAGE_KEY: &str = "ltc-lab-state";
 
 impl LabApp {
     pub fn new(state: LabState) -> Self {
-        // The embedded table; a persisted `lut_path` is loaded again only on request, so a
-        // file that vanished since cannot stop the lab from starting.
-        let lut = Lut::embedded().clone();
+        // The chosen shipped table; a persisted `lut_path` is loaded again only on request,
+        // so a file that vanished since cannot stop the lab from starting.
+        let lut = Lut::shipped(state.table).clone();
         let shading = shading::Shading::new(&lut);
         Self {
             state,
@@ -335,8 +341,17 @@ impl LabApp {
             ui.separator();
             match id {
                 PanelId::Lobe => {
-                    self.lobe
-                        .show(ui, &mut self.state, &self.lut, self.matrix.refit_ltc());
+                    let other = Lut::shipped(match self.state.table {
+                        crate::ltc::lut::Table::Classic => crate::ltc::lut::Table::Point,
+                        crate::ltc::lut::Table::Point => crate::ltc::lut::Table::Classic,
+                    });
+                    self.lobe.show(
+                        ui,
+                        &mut self.state,
+                        &self.lut,
+                        self.matrix.refit_ltc(),
+                        other,
+                    );
                 }
                 PanelId::Matrix => self.matrix.show(ui, &mut self.state, &self.lut),
                 PanelId::Plane => {
@@ -492,6 +507,25 @@ impl LabApp {
                         Err(e) => (true, e.to_string()),
                     },
                 );
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("LTC table:");
+            let before = s.table;
+            for (t, name, hover) in [
+                (crate::ltc::lut::Table::Classic, "classic", "ltc_code's fit (luts/ltc.exr): made for area lights' integrals"),
+                (crate::ltc::lut::Table::Point, "point", "The point-light fit (luts/ltc_point.exr): minimizes ∫|n·D − f·cos| / ∫ f·cos, what one point light sees"),
+            ] {
+                ui.selectable_value(&mut s.table, t, name).on_hover_text(hover);
+            }
+            if s.table != before {
+                let lut = Lut::shipped(s.table).clone();
+                self.shading.set_lut(&lut);
+                self.matrix = matrix::MatrixPanel::new(&lut);
+                self.plane.invalidate();
+                self.clipping = clipping::ClippingPanel::default();
+                self.lut = lut;
+                s.lut_path.clear();
             }
         });
         ui.horizontal(|ui| {
