@@ -700,21 +700,7 @@ fn run_bench(
     lut_path: Option<&Path>,
     table: Table,
 ) -> Result<()> {
-    if frames == 0 {
-        return Err(InputError::new("--frames", "must be at least 1"));
-    }
-    if let Some(&n) = lights
-        .iter()
-        .find(|&&n| n == 0 || n > ltc_lab::scene::MAX_LIGHTS)
-    {
-        return Err(InputError::new(
-            "--lights",
-            format!(
-                "each count must be in 1..={}, got {n}",
-                ltc_lab::scene::MAX_LIGHTS
-            ),
-        ));
-    }
+    check_frames_and_lights(frames, lights)?;
     if let Some(p) = csv {
         // Refuse a bad path before minutes of measuring.
         let dir = p
@@ -852,6 +838,26 @@ fn run_lab(
     outcome.map_err(|e| InputError::new("lab", format!("cannot open the window: {e}")))
 }
 
+/// `--frames` and `--lights` of `bench` and `study`.
+fn check_frames_and_lights(frames: usize, lights: &[usize]) -> Result<()> {
+    if frames == 0 {
+        return Err(InputError::new("--frames", "must be at least 1"));
+    }
+    match lights
+        .iter()
+        .find(|&&n| n == 0 || n > ltc_lab::scene::MAX_LIGHTS)
+    {
+        Some(&n) => Err(InputError::new(
+            "--lights",
+            format!(
+                "each count must be in 1..={}, got {n}",
+                ltc_lab::scene::MAX_LIGHTS
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
 fn run_study(
     out: &Path,
     size: (usize, usize),
@@ -860,21 +866,7 @@ fn run_study(
     frames: usize,
 ) -> Result<()> {
     use ltc_lab::study;
-    if frames == 0 {
-        return Err(InputError::new("--frames", "must be at least 1"));
-    }
-    if let Some(&n) = lights
-        .iter()
-        .find(|&&n| n == 0 || n > ltc_lab::scene::MAX_LIGHTS)
-    {
-        return Err(InputError::new(
-            "--lights",
-            format!(
-                "each count must be in 1..={}, got {n}",
-                ltc_lab::scene::MAX_LIGHTS
-            ),
-        ));
-    }
+    check_frames_and_lights(frames, lights)?;
     if let Some(&a) = alphas.iter().find(|&&a| !(a > 0.0 && a <= 1.0)) {
         return Err(InputError::new(
             "--alpha",

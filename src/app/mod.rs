@@ -366,6 +366,23 @@ impl LabApp {
 
     /// The side panel: every global control, each with what it changes in the equations.
     fn controls(&mut self, ui: &mut egui::Ui) {
+        let mut new_lut = None;
+        self.controls_inner(ui, &mut new_lut);
+        if let Some(lut) = new_lut {
+            self.use_lut(lut);
+        }
+    }
+
+    /// Shades with `lut` from now on: every panel that holds the table starts again.
+    fn use_lut(&mut self, lut: Lut) {
+        self.shading.set_lut(&lut);
+        self.matrix = matrix::MatrixPanel::new(&lut);
+        self.plane.invalidate();
+        self.clipping = clipping::ClippingPanel::default();
+        self.lut = lut;
+    }
+
+    fn controls_inner(&mut self, ui: &mut egui::Ui, new_lut: &mut Option<Lut>) {
         let s = &mut self.state;
         ui.heading("LTC Lab");
         ui.label(egui::RichText::new(self.shading.describe()).small())
@@ -519,12 +536,7 @@ impl LabApp {
                 ui.selectable_value(&mut s.table, t, name).on_hover_text(hover);
             }
             if s.table != before {
-                let lut = Lut::shipped(s.table).clone();
-                self.shading.set_lut(&lut);
-                self.matrix = matrix::MatrixPanel::new(&lut);
-                self.plane.invalidate();
-                self.clipping = clipping::ClippingPanel::default();
-                self.lut = lut;
+                *new_lut = Some(Lut::shipped(s.table).clone());
                 s.lut_path.clear();
             }
         });
@@ -539,11 +551,7 @@ impl LabApp {
                 };
                 self.message = Some(match loaded {
                     Ok(lut) => {
-                        self.shading.set_lut(&lut);
-                        self.matrix = matrix::MatrixPanel::new(&lut);
-                        self.plane.invalidate();
-                        self.clipping = clipping::ClippingPanel::default();
-                        self.lut = lut;
+                        *new_lut = Some(lut);
                         (false, format!("shading with {}", if s.lut_path.trim().is_empty() { "the embedded LUT" } else { s.lut_path.trim() }))
                     }
                     Err(e) => (true, format!("{e} — still using the previous table")),
