@@ -118,7 +118,12 @@ impl ChartPanel {
                     format!("{:.3}", 10f64.powf(mark.value))
                 };
                 let exponent = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
-                    format!("1e{:.0}", mark.value)
+                    // Only whole exponents: finer grid marks would round to repeated labels.
+                    if (mark.value - mark.value.round()).abs() < 1e-9 {
+                        format!("1e{:.0}", mark.value)
+                    } else {
+                        String::new()
+                    }
                 };
                 egui_plot::Plot::new("time vs error")
                     .x_axis_label("GPU ms per frame (log)")
