@@ -163,11 +163,17 @@ pub const MIN_LIGHT_DISTANCE: f64 = 1e-6;
 /// Windowed inverse-square falloff `w(d) = clamp(1 − (d/R)⁴, 0, 1)²` (Karis 2013, "Real
 /// Shading in UE4", eq. 9; DESIGN §1). An infinite range gives `w = 1`.
 pub fn window_falloff<T: Real>(d: T, range: T) -> T {
+    window_falloff_d2(d * d, range)
+}
+
+/// `window_falloff` from `d²`, which needs no square root (the GPU's fast methods use it;
+/// WGSL encodes an infinite range as `range ≤ 0`, Rust as a non-finite one).
+pub fn window_falloff_d2<T: Real>(d2: T, range: T) -> T {
     if !range.is_finite() {
         return T::one();
     }
-    let x = d / range;
-    let w = (T::one() - x * x * x * x).max(T::zero()).min(T::one());
+    let x2 = d2 / (range * range);
+    let w = (T::one() - x2 * x2).max(T::zero()).min(T::one());
     w * w
 }
 

@@ -4,8 +4,6 @@
 
 mod gpu_common;
 
-use std::path::Path;
-
 use glam::DVec3;
 use gpu_common::gpu;
 use ltc_lab::cpu::{Frame, Method, RenderSettings, render};
@@ -18,13 +16,10 @@ use ltc_lab::scene::{Light, RandomLights, Scene, generate_lights};
 const W: usize = 48;
 const H: usize = 40;
 
+/// A shipped preset (embedded in the library from `assets/scenes/`; loading the files
+/// themselves is tests/presets.rs's subject).
 fn preset(name: &str) -> Scene {
-    Scene::load(
-        &Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("assets/scenes")
-            .join(name),
-    )
-    .unwrap()
+    ltc_lab::app::preset(name.trim_end_matches(".toml"))
 }
 
 fn scenes() -> Vec<(String, Scene)> {

@@ -109,7 +109,7 @@ fn mirrored_functions_have_the_same_names() {
     #[allow(unused_imports)]
     use ltc_lab::brdf::{
         d_ggx, diffuse_cos, f_schlick, fd_burley, g2_correlated, irradiance_scale, lambda_ggx,
-        specular_cos, v_smith_ggx_correlated,
+        specular_cos, v_smith_ggx_correlated, window_falloff_d2,
     };
     for f in [
         "d_ggx",
@@ -120,6 +120,7 @@ fn mirrored_functions_have_the_same_names() {
         "specular_cos",
         "diffuse_cos",
         "irradiance_scale",
+        "window_falloff_d2",
         "v_smith_ggx_correlated",
         "ltc_eval",
         "lut_sample_uv",
