@@ -9,7 +9,7 @@ const NORMALIZATION_CORRECTED: u32 = 0u;
 const NORMALIZATION_PAPER_LITERAL: u32 = 1u;
 
 // The LUT as GpuLut packs it (src/gpu/ltc.rs): per cell three vec4s —
-// [spec m00 m02 m20 m22], [diff m00 m02 m20 m22], [spec.norm spec.fresnel diff.norm 0].
+// [spec m00 m02 m20 m22], [diff m00 m02 m20 m22], [spec.norm spec.fresnel diff.norm spec.scale].
 @group(0) @binding(2) var<storage, read> lut: array<vec4<f32>>;
 
 const LUT_VEC4S_PER_CELL: u32 = 3u;
@@ -17,12 +17,13 @@ const LUT_VEC4S_PER_CELL: u32 = 3u;
 // Read the nearest cell instead of filtering (the `ltc-nearest` variant; src/cpu.rs LutFilter).
 override LUT_NEAREST: bool = false;
 
-// One lobe: M⁻¹ (cos_from_brdf), |det M⁻¹| and its magnitudes.
+// One lobe: M⁻¹ (cos_from_brdf), |det M⁻¹|, its magnitudes and the fitted scale on them.
 struct Ltc {
     cos_from_brdf: mat3x3<f32>,
     det_cos_from_brdf: f32,
     norm: f32,
     fresnel: f32,
+    scale: f32,
 }
 
 struct LtcPair {
@@ -120,12 +121,17 @@ fn lut_ltc_pair(alpha: f32, cos_theta_o: f32, size: u32) -> LtcPair {
     let spec = cos_from_brdf_from_entries(t.spec_m);
     let diff = cos_from_brdf_from_entries(t.diff_m);
     return LtcPair(
-        Ltc(spec, abs(determinant(spec)), t.norms.x, t.norms.y),
-        Ltc(diff, abs(determinant(diff)), t.norms.z, 0.0),
+        Ltc(spec, abs(determinant(spec)), t.norms.x, t.norms.y, t.norms.w),
+        Ltc(diff, abs(determinant(diff)), t.norms.z, 0.0, 1.0),
     );
 }
 
-// LtcPair::spec_magnitude: F0 n_s + (1 − F0) f_s.
+// LtcPair::spec_magnitude: F0 n_s + (1 − F0) f_s, times the fitted scale.
 fn spec_magnitude(pair: LtcPair, f0: f32) -> f32 {
-    return f0 * pair.spec.norm + (1.0 - f0) * pair.spec.fresnel;
+    return pair.spec.scale * (f0 * pair.spec.norm + (1.0 - f0) * pair.spec.fresnel);
+}
+
+// Ltc::magnitude: scale × norm (the diffuse lobe's magnitude).
+fn magnitude(ltc: Ltc) -> f32 {
+    return ltc.scale * ltc.norm;
 }

@@ -126,7 +126,7 @@ fn prepare(p_in: Pixel) -> Pixel {
         p.diff_factor = p.pair.diff.det_cos_from_brdf;
     } else {
         p.spec_factor = p.pair.spec.det_cos_from_brdf / PI * spec_magnitude(p.pair, params.f0);
-        p.diff_factor = p.pair.diff.det_cos_from_brdf / PI * p.pair.diff.norm;
+        p.diff_factor = p.pair.diff.det_cos_from_brdf / PI * magnitude(p.pair.diff);
     }
     p.a2 = params.alpha * params.alpha;
     p.view_factor = sqrt(p.v.z * p.v.z * (1.0 - p.a2) + p.a2);
@@ -178,7 +178,7 @@ fn add_ltc(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
     let lw = u / d;
     let l = vec3<f32>(dot(lw, p.t1), dot(lw, p.t2), lw.z);
     var spec_weight = spec_magnitude(p.pair, params.f0);
-    var diff_weight = p.pair.diff.norm;
+    var diff_weight = magnitude(p.pair.diff);
     if params.normalization == NORMALIZATION_PAPER_LITERAL {
         spec_weight = 1.0;
         diff_weight = 1.0;

@@ -389,11 +389,14 @@ fn run_fit(size: usize, objective: Objective, out: &Path) -> Result<()> {
             (fitted.lut, Some(fitted.at_iteration_limit))
         }
         Objective::Point => {
+            // Each point-fit sweep visits every cell (both lobes) once.
+            let sweeps = 1 + ltc_lab::ltc::fit_point::REFINEMENTS;
+            bar.set_length((2 * sweeps * size * size) as u64);
             // Warm start: the classic fit of the same cells (the shipped one at its size).
             let classic = if size == Lut::embedded().size {
                 Lut::embedded().clone()
             } else {
-                bar.set_length((3 * size * size) as u64);
+                bar.inc_length((2 * size * size) as u64);
                 fit_table(&settings, &|| bar.inc(1)).lut
             };
             let lut = ltc_lab::ltc::fit_point::fit_point_table(&classic, &settings, &|| {

@@ -171,7 +171,10 @@ fn lut_dump_lists_every_cell() {
     let mut lines = text.lines();
     let header = lines.next().unwrap();
     assert!(header.starts_with("i,j,alpha,theta_o,spec.m00,spec.m02,spec.m20,spec.m22,spec.norm"));
-    assert_eq!(header.split(',').count(), 4 + 13);
+    assert_eq!(
+        header.split(',').count(),
+        4 + ltc_lab::ltc::lut::CHANNEL_COUNT
+    );
     assert_eq!(lines.clone().count(), 64 * 64);
     let last: Vec<f64> = lines
         .last()

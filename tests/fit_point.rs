@@ -1,13 +1,14 @@
 //! The point-light fit: on a coarse grid it is never worse than the classic fit at any cell
-//! and lower on average; its quadrature is fine enough on the hardest cells; the shipped
-//! table is what the file holds.
+//! and lower on average; its quadrature is fine enough on the hardest cells and measures
+//! what the table's error metric measures; the shipped table is what the file holds, never
+//! worse than the classic one, and halves its error where the metric is re-measured
+//! independently.
 
-use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata, fit_table};
+use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata, fit_table, pointwise_error};
 use ltc_lab::ltc::fit_point::{
-    CellQuadrature, QUADRATURE_STEPS, entries, fit_point_table, normalized_matrix,
-    quadrature_centre,
+    CellQuadrature, PointFit, QUADRATURE_STRATA, SCALE_MIN, fit_point_table,
 };
-use ltc_lab::ltc::lobe::Lobe;
+use ltc_lab::ltc::lobe::{Lobe, strata};
 use ltc_lab::ltc::lut::{Channel, Lut};
 
 #[test]
@@ -26,12 +27,11 @@ fn point_fit_is_never_worse_and_better_on_average_on_a_coarse_grid() {
             c_sum += c;
             p_sum += p;
         }
-        // The 64² table halves the specular error at mid view angles and gains less at
-        // normal and grazing views (0.61× overall); on this 8² grid the measured ratio is
-        // 0.6–0.7, so 0.8 states a margin that a broken fit (ratio → 1) cannot meet.
+        // The 64² table's ratio is 0.54; on this 8² grid it is 0.58; 0.75 states a margin
+        // that a broken fit (ratio → 1) cannot meet.
         if ch == Channel::SpecErr {
             assert!(
-                p_sum <= 0.8 * c_sum,
+                p_sum <= 0.75 * c_sum,
                 "mean spec.err ratio {}",
                 p_sum / c_sum
             );
@@ -41,45 +41,69 @@ fn point_fit_is_never_worse_and_better_on_average_on_a_coarse_grid() {
     }
 }
 
-/// The objective by the fit's 48-step quadrature against a 4× finer one, at the shipped
-/// point fit of the hardest cells where it holds: the smallest α at normal and oblique
-/// views, α = 0.004 to 76°, α = 0.036 at 85°, and the grazing row from α = 0.036 up. (At
-/// grazing with α ≤ 0.016 it does not: 3.6 against 1.2 at α = 0.004 — see QUADRATURE_STEPS.)
-/// 5%: the largest difference measured on these cells is 2.9%, at (12, 60).
+/// The hardest cells: the smallest α at normal, oblique and grazing views, small α toward
+/// grazing, the grazing row across α (the exact lobe a sliver along the horizon there).
+const HARDEST: [(usize, usize); 12] = [
+    (0, 0),
+    (1, 30),
+    (0, 56),
+    (2, 50),
+    (4, 55),
+    (8, 58),
+    (12, 60),
+    (0, 63),
+    (4, 63),
+    (12, 63),
+    (20, 63),
+    (63, 63),
+];
+
+/// The shipped point fit of a cell's specular lobe and its problem.
+fn shipped(i: usize, j: usize, settings: &FitSettings) -> (CellProblem, PointFit) {
+    let strata = FitStrata::new(settings);
+    let problem = CellProblem::new(Lobe::Specular, i, j, settings, &strata);
+    let fit = PointFit::stored(Lut::embedded_point().cell(i, j), Lobe::Specular);
+    (problem, fit)
+}
+
+/// The fit's objective by its 64² quadrature against a 4× finer one (256² nodes) at the
+/// shipped fit of the hardest cells. 4% (+1e-4): measured at most 3.9%, at cells whose error
+/// is below 0.01 (1e-4 absolute); 1% at every cell above 0.05, the grazing row included.
 #[test]
 fn quadrature_is_fine_enough_on_the_hardest_cells() {
-    let lut = Lut::embedded_point();
     let settings = FitSettings::default();
-    let strata = FitStrata::new(&settings);
-    for (i, j) in [
-        (1, 0),
-        (1, 30),
-        (2, 50),
-        (4, 55),
-        (8, 58),
-        (12, 60),
-        (12, 63),
-        (16, 63),
-        (20, 63),
-        (63, 63),
-    ] {
-        let problem = CellProblem::new(Lobe::Specular, i, j, &settings, &strata);
-        let m = normalized_matrix(entries(lut.cell(i, j), Lobe::Specular));
-        let at = |steps| {
-            CellQuadrature::new(
-                Lobe::Specular,
-                problem.view,
-                problem.alpha,
-                quadrature_centre(Lobe::Specular, problem.view),
-                steps,
-            )
-            .relative_l1(m, problem.norm)
+    let (coarse_nodes, fine_nodes) = (strata(QUADRATURE_STRATA), strata(4 * QUADRATURE_STRATA));
+    for (i, j) in HARDEST {
+        let (p, fit) = shipped(i, j, &settings);
+        let at = |nodes| {
+            CellQuadrature::new(Lobe::Specular, p.view, p.alpha, nodes).relative_l1(&fit, p.norm)
         };
-        let (coarse, fine) = (at(QUADRATURE_STEPS), at(4 * QUADRATURE_STEPS));
+        let (coarse, fine) = (at(&coarse_nodes), at(&fine_nodes));
         assert!(
-            (coarse - fine).abs() <= 0.05 * fine + 1e-3,
-            "cell ({i}, {j}): {coarse} by {QUADRATURE_STEPS} steps, {fine} by {}",
-            4 * QUADRATURE_STEPS
+            (coarse - fine).abs() <= 0.04 * fine + 1e-4,
+            "cell ({i}, {j}): {coarse} by {QUADRATURE_STRATA}² nodes, {fine} by 4× finer"
+        );
+    }
+}
+
+/// The fit's quadrature (the lobe's own importance sampling, overlap form) and the table's
+/// error metric (`pointwise_error`: two-density MIS, the L1 integrand directly) are
+/// independent estimators of the same integral. The MIS one converges slowly from below on
+/// the grazing row (at (4, 63): 0.550 at 256², 0.560 at 1024², where the quadrature gives
+/// 0.569 at 256² and at 1024² alike), so it runs at 1024² here. 4% (+1e-4): measured at most
+/// 2.3%, at (63, 63).
+#[test]
+fn quadrature_measures_what_the_error_metric_measures() {
+    let settings = FitSettings::default();
+    let nodes = strata(256);
+    for (i, j) in HARDEST {
+        let (p, fit) = shipped(i, j, &settings);
+        let q =
+            CellQuadrature::new(Lobe::Specular, p.view, p.alpha, &nodes).relative_l1(&fit, p.norm);
+        let mis = pointwise_error(Lobe::Specular, p.view, p.alpha, &fit.ltc(p.norm, 0.0), 1024);
+        assert!(
+            (q - mis).abs() <= 0.04 * mis + 1e-4,
+            "cell ({i}, {j}): quadrature {q}, MIS {mis}"
         );
     }
 }
@@ -99,9 +123,41 @@ fn shipped_point_table_is_the_file_and_never_worse_than_the_classic_one() {
         for ch in [Channel::SpecErr, Channel::DiffErr] {
             assert!(p.get(ch) <= c.get(ch));
         }
-        // Same albedos: the point fit changes the shape only.
+        // Same albedos: the point fit changes the shape and the scale only.
         for ch in [Channel::SpecNorm, Channel::SpecFresnel, Channel::DiffNorm] {
             assert_eq!(p.get(ch), c.get(ch));
         }
+        assert_eq!(c.get(Channel::SpecScale), 1.0);
+        let scale = f64::from(p.get(Channel::SpecScale));
+        // At most halved (SCALE_MIN); above 1 only by a little (measured max 1.003), as the
+        // L1 optimum of an imperfect shape undershoots rather than overshoots.
+        assert!(
+            (SCALE_MIN as f32 as f64..=1.05).contains(&scale),
+            "scale {scale}"
+        );
     }
+}
+
+/// The target of the issue, re-measured without the tables' own `err` channels: on every
+/// fourth cell of both axes the specular error of each table by `pointwise_error` at 128²
+/// (twice the resolution the channels were written with). The point table's mean is below
+/// 0.55× the classic one's (0.51 measured here; 0.54 over the whole table).
+#[test]
+fn point_table_halves_the_mean_specular_error() {
+    let settings = FitSettings::default();
+    let strata = FitStrata::new(&settings);
+    let (mut classic_sum, mut point_sum) = (0.0, 0.0);
+    for j in (0..settings.size).step_by(4) {
+        for i in (0..settings.size).step_by(4) {
+            let p = CellProblem::new(Lobe::Specular, i, j, &settings, &strata);
+            let err = |lut: &Lut| {
+                let fit = PointFit::stored(lut.cell(i, j), Lobe::Specular);
+                pointwise_error(Lobe::Specular, p.view, p.alpha, &fit.ltc(p.norm, 0.0), 128)
+            };
+            classic_sum += err(Lut::embedded());
+            point_sum += err(Lut::embedded_point());
+        }
+    }
+    let ratio = point_sum / classic_sum;
+    assert!(ratio <= 0.55, "mean spec.err ratio {ratio}");
 }

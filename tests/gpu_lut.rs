@@ -30,7 +30,8 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
 fn gpu_lut_filtering_matches_the_cpu_sampler() {
     let Some(g) = gpu() else { return };
     let (device, queue) = (&g.ctx.device, &g.ctx.queue);
-    let lut = Lut::embedded();
+    // The point table: every channel varies there, the fitted spec.scale included.
+    let lut = Lut::embedded_point();
     // Random points over the table and 10% beyond each edge (clamp-to-edge), plus centres.
     let mut rng = SplitMix64(11);
     let mut uv: Vec<[f32; 2]> = (0..4096)
@@ -134,6 +135,7 @@ fn gpu_lut_filtering_matches_the_cpu_sampler() {
         check(got[3 * k + 2][0], SpecNorm);
         check(got[3 * k + 2][1], SpecFresnel);
         check(got[3 * k + 2][2], DiffNorm);
+        check(got[3 * k + 2][3], SpecScale);
     }
     eprintln!(
         "GPU LUT filtering: worst difference from the CPU sampler {worst:.2e} (relative, or absolute below 1)"

@@ -22,13 +22,13 @@ const SEGMENTS: usize = 128;
 /// The LTC shown: M morphed from I to the fitted M, with the lobe's magnitude.
 pub fn morphed_ltc(ltc: &Ltc, t: f64) -> Ltc {
     let m = DMat3::IDENTITY * (1.0 - t) + ltc.brdf_from_cos * t;
-    Ltc::from_brdf_from_cos(m, ltc.norm, ltc.fresnel)
+    Ltc::from_brdf_from_cos(m, ltc.norm, ltc.fresnel).with_scale(ltc.scale)
 }
 
 /// `f cos` of the lobe (F = 1, c = 1) and `n D` of the LTC toward `l`.
 fn values(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, l: DVec3) -> (f64, f64) {
     let exact = lobe.eval(v, l, alpha).value;
-    let approx = ltc.norm * ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
+    let approx = ltc.magnitude() * ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
     (exact, approx)
 }
 

@@ -15,6 +15,9 @@ use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut};
 use crate::ltc::{Ltc, mat3_rows};
 use crate::output::false_colour;
 
+/// Heat maps per row (14 channels: three rows).
+const MAPS_PER_ROW: usize = 5;
+
 /// A live refit: the objective per iteration, then the fitted lobe.
 pub struct Refit {
     pub lobe: Lobe,
@@ -118,27 +121,30 @@ impl MatrixPanel {
                 });
             }
             ui.label(format!(
-                "|M^-1| = {:.4e}   norm = {:.4}   fresnel = {:.4}   pointwise error = {:.1}%",
+                "|M^-1| = {:.4e}   norm = {:.4}   fresnel = {:.4}   scale = {:.3}   pointwise error = {:.1}%",
                 ltc.det_cos_from_brdf,
                 ltc.norm,
                 if s.lobe == Lobe::Specular { ltc.fresnel } else { 0.0 },
+                ltc.scale,
                 100.0 * err
             ))
-            .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; error = ∫|n·D − f·cos| / ∫ f·cos (DESIGN §4)");
+            .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (DESIGN §4)");
             // Both shipped fits of this (θo, α), side by side.
-            ui.horizontal_wrapped(|ui| {
+            ui.vertical(|ui| {
                 for (name, table) in [("classic", crate::ltc::lut::Table::Classic), ("point", crate::ltc::lut::Table::Point)] {
                     let t = Lut::shipped(table).sample(s.alpha(), theta.cos());
                     let (m, e) = match s.lobe {
                         Lobe::Specular => ([Channel::SpecM00, Channel::SpecM02, Channel::SpecM20, Channel::SpecM22], Channel::SpecErr),
                         Lobe::Diffuse => ([Channel::DiffM00, Channel::DiffM02, Channel::DiffM20, Channel::DiffM22], Channel::DiffErr),
                     };
+                    let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
                     ui.label(format!(
-                        "{name} fit: M^-1 = [[{:.3}, 0, {:.3}], [0, 1, 0], [{:.3}, 0, {:.3}]], error {:.1}%",
+                        "{name} fit: M^-1 = [[{:.3}, 0, {:.3}], [0, 1, 0], [{:.3}, 0, {:.3}]], scale {:.3}, error {:.1}%",
                         t.get(m[0]),
                         t.get(m[1]),
                         t.get(m[2]),
                         t.get(m[3]),
+                        scale,
                         100.0 * t.get(e)
                     ))
                     .on_hover_text("The shipped tables at this (θo, α): ltc_code's classic fit and the point-light fit (luts/ltc_point.exr)");
@@ -179,11 +185,15 @@ impl MatrixPanel {
     /// (r, sqrt(1 − cos θo)); click to choose a cell.
     fn heat_maps(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, (u, v): (f64, f64)) {
         let n = lut.size;
-        let side = ((ui.available_width() - 30.0) / 5.0).clamp(40.0, 160.0);
-        ui.horizontal_wrapped(|ui| {
-            for (c, (slot, map)) in self.textures.iter_mut().zip(&self.maps).enumerate() {
-                let texture = slot.get_or_insert_with(|| {
-                    ui.ctx().load_texture(CHANNEL_NAMES[c], map.clone(), egui::TextureOptions::NEAREST)
+        let side = ((ui.available_width() - 30.0) / MAPS_PER_ROW as f32).clamp(40.0, 160.0);
+        let channels: Vec<usize> = (0..CHANNEL_COUNT).collect();
+        // Rows of fixed length: a wrapping layout cannot know a column's size before it is
+        // drawn, and ran the last map off the panel's edge.
+        for row in channels.chunks(MAPS_PER_ROW) {
+            ui.horizontal(|ui| {
+            for &c in row {
+                let texture = self.textures[c].get_or_insert_with(|| {
+                    ui.ctx().load_texture(CHANNEL_NAMES[c], self.maps[c].clone(), egui::TextureOptions::NEAREST)
                 });
                 ui.vertical(|ui| {
                     ui.small(CHANNEL_NAMES[c]);
@@ -209,7 +219,8 @@ impl MatrixPanel {
                     }
                 });
             }
-        });
+            });
+        }
     }
 
     fn start_refit(&mut self, lobe: Lobe, (i, j): (usize, usize), lut: &Lut) {

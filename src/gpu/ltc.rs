@@ -7,7 +7,7 @@ use crate::ltc::lut::{Channel, Lut};
 pub const SOURCE: &str = include_str!("../../shaders/ltc.wgsl");
 
 /// Three vec4s per cell, as `lut_texel` in ltc.wgsl reads them:
-/// `[spec m00 m02 m20 m22] [diff m00 m02 m20 m22] [spec.norm spec.fresnel diff.norm 0]`.
+/// `[spec m00 m02 m20 m22] [diff m00 m02 m20 m22] [spec.norm spec.fresnel diff.norm spec.scale]`.
 /// The `err` channels are not needed for shading and stay on the CPU.
 pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
     use Channel::*;
@@ -27,7 +27,12 @@ pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
                     c.get(DiffM20),
                     c.get(DiffM22),
                 ],
-                [c.get(SpecNorm), c.get(SpecFresnel), c.get(DiffNorm), 0.0],
+                [
+                    c.get(SpecNorm),
+                    c.get(SpecFresnel),
+                    c.get(DiffNorm),
+                    c.get(SpecScale),
+                ],
             ]
         })
         .collect()

@@ -118,7 +118,8 @@ pub fn fit_error(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, strata: &[Stratum]
     })
 }
 
-/// The pointwise error of DESIGN §4: `∫ |n D − f cos| dω / ∫ f cos dω`, estimated by the
+/// The pointwise error of DESIGN §4: `∫ |s n D − f cos| dω / ∫ f cos dω` (`s` the fitted
+/// scale, 1 but in the point table; `n = ∫ f cos`, the true albedo), estimated by the
 /// same two-distribution (balance-heuristic) sampling with `n × n` strata each, weighted
 /// with the lobe's true sampling density (unbiased at grazing views, unlike the fit's).
 pub fn pointwise_error(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, n: usize) -> f64 {
@@ -155,7 +156,7 @@ fn mis_sum(
         let d = ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
         let pdf = d + exact.pdf;
         if pdf > 0.0 {
-            g(exact.value - ltc.norm * d) / pdf
+            g(exact.value - ltc.magnitude() * d) / pdf
         } else {
             0.0
         }

@@ -1,122 +1,171 @@
 //! The point-light fit (issue 6): the same isotropic family, fitted to what a point light
 //! sees. The objective is the pointwise relative L1 error of DESIGN §4,
-//! `∫ |n·D − f cos| dω / ∫ f cos dω`, by a deterministic quadrature centred on the lobe;
-//! free are all four entries `m00, m02, m20, m22` of the normalized `M⁻¹` (middle element 1,
-//! `det > 0` kept). Each cell starts from the better of its classic fit and its neighbour's
-//! point fit, and keeps whichever of the classic and the point fit the table's own error
-//! metric rates lower — so no cell is worse than the classic table.
+//! `∫ |s n D − f cos| dω / ∫ f cos dω`, by a deterministic quadrature that follows the lobe
+//! (`CellQuadrature`). Free are all four entries `m00, m02, m20, m22` of the normalized
+//! `M⁻¹` (middle element 1, `det > 0` kept) and, for the specular lobe, the scale `s` on its
+//! magnitude (`spec.scale`; `n` stays the true albedo). Each cell starts from its classic fit
+//! and its neighbours' point fits, and keeps whichever of the classic and the point fit the
+//! table's own error metric (`pointwise_error`) rates lower — so no cell is worse than the
+//! classic table.
 
 use glam::{DMat3, DVec3};
 use rayon::prelude::*;
 
+use crate::brdf::{d_ggx, g2_correlated, lambda_ggx};
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
-use crate::ltc::lobe::Lobe;
+use crate::ltc::lobe::{Lobe, Stratum, visible_normal};
 use crate::ltc::lut::{Channel, Lut, LutCell};
 use crate::ltc::nelder_mead::nelder_mead;
 use crate::ltc::{Clipping, Ltc, Normalization, mat3_from_rows};
 
-/// Quadrature steps in the polar parameter t (θ = π t³ about the lobe's centre); φ gets
-/// twice as many. 48 × 96 nodes: the objective stays within 5% (+1e-3) of a 4× finer grid on
-/// every cell but the grazing row at α ≤ 0.02, where the exact lobe is a sliver under 1°
-/// wide along the horizon (tests/fit_point.rs; there the classic cell stays unless the
-/// table's own error metric rates the point fit better).
-pub const QUADRATURE_STEPS: usize = 48;
+/// Strata per axis of the fit's quadrature (64² nodes); tests/fit_point.rs compares it with
+/// a 4× finer one on the hardest cells.
+pub const QUADRATURE_STRATA: usize = 64;
 
-/// The fixed quadrature of one cell: directions, solid-angle weights, the exact lobe there.
+/// One node of a cell's quadrature: a direction drawn by the exact lobe's own sampling.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    l: DVec3,
+    /// The sampling density at `l`.
+    pdf: f64,
+    /// `f cos / pdf` (for the specular lobe `G2/G1(v)`, at most 1).
+    weight: f64,
+}
+
+/// The fixed quadrature of one cell: midpoint strata mapped through the exact lobe's
+/// importance sampling (visible GGX normals for the specular lobe, the cosine for the
+/// diffuse one), so that the nodes follow the lobe however narrow or grazing it is.
+///
+/// The L1 distance is taken in its overlap form, `∫ |n D − f| = n + ∫ f − 2 ∫ min(n D, f)`,
+/// which holds because `∫ D = 1` over the sphere exactly: only the overlap needs the
+/// quadrature, and it lives where `f` does — where the nodes are. Each node's term
+/// `min(n D, f) / pdf` is bounded by the lobe's weight, so an LTC lobe far narrower than the
+/// node spacing can neither hide between the nodes nor blow up on one of them.
 pub struct CellQuadrature {
-    dirs: Vec<DVec3>,
-    weights: Vec<f64>,
-    exact: Vec<f64>,
-    /// `∫ f cos dω` by the same quadrature.
+    /// The nodes where `f > 0` (the others add nothing to the overlap).
+    nodes: Vec<Node>,
+    count: usize,
+    /// `∫ f cos dω` by the same nodes.
     exact_total: f64,
 }
 
 impl CellQuadrature {
-    /// Nodes of `θ = π t³` (t midpoints) and φ midpoints about `centre`, so that they crowd
-    /// where a narrow lobe lives while still covering the whole sphere.
-    pub fn new(lobe: Lobe, view: DVec3, alpha: f64, centre: DVec3, steps: usize) -> Self {
-        let z = centre.normalize();
-        let x0 = if z.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
-        let x = (x0 - z * z.dot(x0)).normalize();
-        let frame = DMat3::from_cols(x, z.cross(x), z);
-        let n_phi = 2 * steps;
-        let dphi = std::f64::consts::TAU / n_phi as f64;
-        let mut dirs = Vec::with_capacity(steps * n_phi);
-        let mut weights = Vec::with_capacity(steps * n_phi);
-        for i in 0..steps {
-            let t = (i as f64 + 0.5) / steps as f64;
-            let theta = std::f64::consts::PI * t * t * t;
-            let dtheta = 3.0 * std::f64::consts::PI * t * t / steps as f64;
-            let (st, ct) = theta.sin_cos();
-            for k in 0..n_phi {
-                let phi = (k as f64 + 0.5) * dphi;
-                dirs.push(frame * DVec3::new(st * phi.cos(), st * phi.sin(), ct));
-                weights.push(st * dtheta * dphi);
-            }
-        }
-        let exact: Vec<f64> = dirs
+    pub fn new(lobe: Lobe, view: DVec3, alpha: f64, strata: &[Stratum]) -> Self {
+        let nodes: Vec<Node> = strata
             .iter()
-            .map(|&l| lobe.eval(view, l, alpha).value)
+            .filter_map(|s| lobe_node(lobe, view, alpha, s))
             .collect();
-        let exact_total = exact.iter().zip(&weights).map(|(f, w)| f * w).sum();
+        let count = strata.len();
+        let exact_total = nodes.iter().map(|n| n.weight).sum::<f64>() / count as f64;
         Self {
-            dirs,
-            weights,
-            exact,
+            nodes,
+            count,
             exact_total,
         }
     }
 
-    /// The relative L1 error of `norm · D` for the LTC with this normalized `M⁻¹`.
-    pub fn relative_l1(&self, cos_from_brdf: DMat3, norm: f64) -> f64 {
-        let ltc = Ltc::from_cos_from_brdf(cos_from_brdf, norm, 0.0);
-        let mut sum = 0.0;
-        for ((l, w), f) in self.dirs.iter().zip(&self.weights).zip(&self.exact) {
-            let d = ltc.ltc_eval(*l, Clipping::TRANSFORMED, Normalization::Corrected);
-            sum += w * (norm * d - f).abs();
+    /// The relative L1 error of `scale · norm · D` for this fit, relative to `norm` (the
+    /// stored albedo), as the table's `err` channels are.
+    pub fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64 {
+        let ltc = fit.ltc(norm, 0.0);
+        let magnitude = ltc.magnitude();
+        let mut overlap = 0.0;
+        for node in &self.nodes {
+            let d = ltc.ltc_eval(node.l, Clipping::TRANSFORMED, Normalization::Corrected);
+            overlap += (magnitude * d / node.pdf).min(node.weight);
         }
-        sum / self.exact_total.max(f64::MIN_POSITIVE)
+        overlap /= self.count as f64;
+        (magnitude + self.exact_total - 2.0 * overlap) / norm
     }
 }
 
-/// Where the quadrature crowds its nodes: the mirror direction for the specular lobe (a
-/// narrow lobe peaks there, also at grazing views, where the lobe's average direction sits
-/// degrees above the sliver the horizon leaves), the normal for the diffuse one.
-pub fn quadrature_centre(lobe: Lobe, view: DVec3) -> DVec3 {
-    match lobe {
-        Lobe::Specular => DVec3::new(-view.x, -view.y, view.z),
-        Lobe::Diffuse => DVec3::Z,
-    }
-}
-
-/// `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
-pub fn normalized_matrix(m: [f64; 4]) -> DMat3 {
-    mat3_from_rows([[m[0], 0.0, m[1]], [0.0, 1.0, 0.0], [m[2], 0.0, m[3]]])
-}
-
-/// The stored entries of one lobe of a cell.
-pub fn entries(cell: &LutCell, lobe: Lobe) -> [f64; 4] {
-    use Channel::*;
-    let c = match lobe {
-        Lobe::Specular => [SpecM00, SpecM02, SpecM20, SpecM22],
-        Lobe::Diffuse => [DiffM00, DiffM02, DiffM20, DiffM22],
+/// The lobe's sample for stratum `s` where the lobe is non-zero.
+fn lobe_node(lobe: Lobe, v: DVec3, alpha: f64, s: &Stratum) -> Option<Node> {
+    let (l, pdf, weight) = match lobe {
+        Lobe::Specular => {
+            // Visible normals have density G1(v) max(v·h, 0) D(h) / v.z (Heitz 2018 eq. 3);
+            // reflecting about h divides it by 4 v·h.
+            let h = visible_normal(v, alpha, s);
+            let l = 2.0 * h.dot(v) * h - v;
+            let g1 = 1.0 / (1.0 + lambda_ggx(v.z, alpha));
+            let pdf = g1 * d_ggx(h.z, alpha) / (4.0 * v.z);
+            (l, pdf, g2_correlated(v.z, l.z, alpha) / g1)
+        }
+        Lobe::Diffuse => {
+            let l = s.cosine;
+            let pdf = l.z / std::f64::consts::PI;
+            (l, pdf, lobe.eval(v, l, alpha).value / pdf)
+        }
     };
-    c.map(|ch| f64::from(cell.get(ch)))
+    (weight > 0.0 && pdf > 0.0 && l.z > 0.0).then_some(Node { l, pdf, weight })
 }
 
-/// Fits one cell from `starts` (the best of them by the objective), returning the entries.
+/// One lobe of a point-fit cell: the free entries `m00, m02, m20, m22` of the normalized
+/// `M⁻¹` and the scale on its magnitude.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointFit {
+    pub entries: [f64; 4],
+    pub scale: f64,
+}
+
+impl PointFit {
+    /// `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
+    pub fn cos_from_brdf(&self) -> DMat3 {
+        let m = self.entries;
+        mat3_from_rows([[m[0], 0.0, m[1]], [0.0, 1.0, 0.0], [m[2], 0.0, m[3]]])
+    }
+
+    pub fn ltc(&self, norm: f64, fresnel: f64) -> Ltc {
+        Ltc::from_cos_from_brdf(self.cos_from_brdf(), norm, fresnel).with_scale(self.scale)
+    }
+
+    /// What a cell of a table stores for `lobe`.
+    pub fn stored(cell: &LutCell, lobe: Lobe) -> Self {
+        use Channel::*;
+        let (m, scale) = match lobe {
+            Lobe::Specular => ([SpecM00, SpecM02, SpecM20, SpecM22], Some(SpecScale)),
+            Lobe::Diffuse => ([DiffM00, DiffM02, DiffM20, DiffM22], None),
+        };
+        Self {
+            entries: m.map(|ch| f64::from(cell.get(ch))),
+            scale: scale.map_or(1.0, |ch| f64::from(cell.get(ch))),
+        }
+    }
+
+    /// `det M⁻¹ > 0` and a scale of at least `SCALE_MIN`.
+    fn is_valid(&self) -> bool {
+        let m = self.entries;
+        let det = m[0] * m[3] - m[1] * m[2];
+        m.iter().all(|x| x.is_finite()) && det > 1e-12 && self.scale >= SCALE_MIN
+    }
+}
+
+/// The smallest scale the fit may choose. Where no lobe of the family overlaps the exact
+/// one (α = 1e-4 at θo = 90°) the L1 optimum is to switch the lobe off (error 1 instead of
+/// 2); bilinear filtering would then dim the neighbouring cells' highlights too, so the fit
+/// may at most halve the light.
+pub const SCALE_MIN: f64 = 0.5;
+
+/// Which parameters the point fit frees for a lobe: the magnitude's scale only for the
+/// specular lobe (the diffuse fit is within 2% already; DESIGN keeps its magnitude `n_d`).
+pub fn fits_scale(lobe: Lobe) -> bool {
+    lobe == Lobe::Specular
+}
+
+/// Fits one lobe of a cell from `starts` (the best of them by the objective).
 pub fn fit_cell(
     q: &CellQuadrature,
     norm: f64,
-    starts: &[[f64; 4]],
+    starts: &[PointFit],
+    free_scale: bool,
     settings: &FitSettings,
-) -> [f64; 4] {
-    let objective = |m: &[f64; 4]| {
-        let det = m[0] * m[3] - m[1] * m[2];
-        if det.is_nan() || det <= 1e-12 || m.iter().any(|x| !x.is_finite()) {
-            return f64::INFINITY;
+) -> PointFit {
+    let objective = |fit: &PointFit| {
+        if fit.is_valid() {
+            q.relative_l1(fit, norm)
+        } else {
+            f64::INFINITY
         }
-        q.relative_l1(normalized_matrix(*m), norm)
     };
     // From every start, Nelder–Mead restarted from its own result (a collapsed simplex
     // stalls in 4D); the best point wins.
@@ -127,20 +176,11 @@ pub fn fit_cell(
     for &first in starts {
         let mut start = first;
         for _ in 0..RESTARTS {
-            // Relative moves: each entry scaled by its own size (entries span 1e-4..2).
-            let largest = start.iter().fold(0.0f64, |a, y| a.max(y.abs()));
-            let scale: [f64; 4] = start.map(|x| x.abs().max(1e-3 * largest));
-            let to_entries =
-                |p: &[f64; 4]| -> [f64; 4] { std::array::from_fn(|k| start[k] + p[k] * scale[k]) };
-            let m = nelder_mead(
-                [0.0; 4],
-                settings.simplex_delta,
-                settings.tolerance,
-                settings.max_iterations,
-                |p| objective(&to_entries(p)),
-                |_, _| {},
-            );
-            start = to_entries(&m.point);
+            start = if free_scale {
+                descend::<5>(start, &objective, settings)
+            } else {
+                descend::<4>(start, &objective, settings)
+            };
         }
         if objective(&start) < objective(&best) {
             best = start;
@@ -149,30 +189,66 @@ pub fn fit_cell(
     best
 }
 
+/// One Nelder–Mead run from `start` over the entries (relative moves: each scaled by its own
+/// size, as they span 1e-4..2) and, with `D = 5`, the log of the scale.
+fn descend<const D: usize>(
+    start: PointFit,
+    objective: &impl Fn(&PointFit) -> f64,
+    settings: &FitSettings,
+) -> PointFit {
+    let largest = start.entries.iter().fold(0.0f64, |a, y| a.max(y.abs()));
+    let step = start.entries.map(|x| x.abs().max(1e-3 * largest));
+    let at = |p: &[f64; D]| PointFit {
+        entries: std::array::from_fn(|k| start.entries[k] + p[k] * step[k]),
+        // Clamped rather than walled off: a simplex that meets a plateau keeps moving the
+        // other coordinates, one that meets an infinite wall collapses against it.
+        scale: if D == 5 {
+            (start.scale * p[D - 1].exp()).max(SCALE_MIN)
+        } else {
+            start.scale
+        },
+    };
+    let m = nelder_mead(
+        [0.0; D],
+        settings.simplex_delta,
+        settings.tolerance,
+        settings.max_iterations,
+        |p| objective(&at(p)),
+        |_, _| {},
+    );
+    at(&m.point)
+}
+
 /// Nelder–Mead runs per start (each from the previous one's result).
 const RESTARTS: usize = 3;
 
-/// A cell of the point table: the classic cell, with each lobe the point fit improved
-/// replaced (its four entries and error; the magnitudes are the same albedos).
-fn merge(classic: &LutCell, fits: [Option<(Ltc, f64)>; 2]) -> LutCell {
+/// A cell of the point table: `current`, with each lobe the point fit improved replaced
+/// (entries, scale, error; `norm` and `fresnel` stay the true albedos).
+fn merge(current: &LutCell, fits: [Option<(PointFit, f64)>; 2]) -> LutCell {
     use Channel::*;
-    let mut cell = *classic;
+    let mut cell = *current;
     let spec = [SpecM00, SpecM02, SpecM20, SpecM22, SpecErr];
     let diff = [DiffM00, DiffM02, DiffM20, DiffM22, DiffErr];
-    for (fit, channels) in fits.iter().zip([spec, diff]) {
-        if let Some((ltc, err)) = fit {
-            let m = crate::ltc::fit::normalized_cos_from_brdf(ltc);
+    for ((fit, channels), lobe) in fits.iter().zip([spec, diff]).zip(Lobe::BOTH) {
+        if let Some((fit, err)) = fit {
+            let m = fit.entries;
             for (c, v) in channels.iter().zip([m[0], m[1], m[2], m[3], *err]) {
                 cell.0[*c as usize] = v as f32;
+            }
+            if lobe == Lobe::Specular {
+                cell.0[SpecScale as usize] = fit.scale as f32;
             }
         }
     }
     cell
 }
 
-/// The point-fit table from a classic one: every cell of both lobes refitted, columns (fixed
-/// α) in parallel, each column from normal to grazing view so that a cell's neighbour is
-/// fitted before it.
+/// The point-fit table from a classic one. A first sweep fits every cell of both lobes,
+/// columns (fixed α) in parallel, each column from normal to grazing view so that a cell's
+/// neighbour along θo is fitted before it; then `REFINEMENTS` sweeps restart every cell from
+/// the fits of all four of its neighbours (the L1 objective has many local minima, and a
+/// neighbour often sits in a deeper one). Each sweep reads only the previous table, so the
+/// result does not depend on the thread count.
 pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> Lut {
     let n = classic.size;
     assert_eq!(
@@ -180,61 +256,86 @@ pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn(
         "the classic table and the settings disagree on the size"
     );
     let strata = FitStrata::new(settings);
+    let quadrature = crate::ltc::lobe::strata(QUADRATURE_STRATA);
+    let refit = |current: &LutCell, lobe: Lobe, i: usize, j: usize, starts: &[PointFit]| {
+        let problem = CellProblem::new(lobe, i, j, settings, &strata);
+        let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &quadrature);
+        let point = fit_cell(&q, problem.norm, starts, fits_scale(lobe), settings);
+        let err = pointwise_error(
+            lobe,
+            problem.view,
+            problem.alpha,
+            &point.ltc(problem.norm, problem.fresnel),
+            settings.error_samples,
+        );
+        // Kept only where the table's own error metric rates it below the current cell's
+        // stored error (at first the classic one), so that no cell gets worse.
+        let stored = f64::from(current.get(err_channel(lobe)));
+        (point, (err < stored).then_some((point, err)))
+    };
     let columns: Vec<Vec<LutCell>> = (0..n)
         .into_par_iter()
         .map(|i| {
-            let mut previous: [Option<[f64; 4]>; 2] = [None, None];
+            let mut previous: [Option<PointFit>; 2] = [None, None];
             (0..n)
                 .map(|j| {
                     let classic_cell = classic.cell(i, j);
-                    let mut fits: [Option<(Ltc, f64)>; 2] = [None, None];
-                    for (k, lobe) in Lobe::BOTH.into_iter().enumerate() {
-                        let problem = CellProblem::new(lobe, i, j, settings, &strata);
-                        let centre = quadrature_centre(lobe, problem.view);
-                        let q = CellQuadrature::new(
-                            lobe,
-                            problem.view,
-                            problem.alpha,
-                            centre,
-                            QUADRATURE_STEPS,
-                        );
-                        let classic_entries = entries(classic_cell, lobe);
-                        let mut starts = vec![classic_entries];
+                    let fits = std::array::from_fn(|k| {
+                        let lobe = Lobe::BOTH[k];
+                        let mut starts = vec![PointFit::stored(classic_cell, lobe)];
                         starts.extend(previous[k]);
-                        let point = fit_cell(&q, problem.norm, &starts, settings);
+                        let (point, fit) = refit(classic_cell, lobe, i, j, &starts);
                         previous[k] = Some(point);
-                        // Keep the point fit only where the table's own error metric rates it
-                        // below the classic cell's stored error; else the classic cell, as is.
-                        let ltc = Ltc::from_cos_from_brdf(
-                            normalized_matrix(point),
-                            problem.norm,
-                            problem.fresnel,
-                        );
-                        let err = pointwise_error(
-                            lobe,
-                            problem.view,
-                            problem.alpha,
-                            &ltc,
-                            settings.error_samples,
-                        );
-                        let stored = f64::from(classic_cell.get(match lobe {
-                            Lobe::Specular => Channel::SpecErr,
-                            Lobe::Diffuse => Channel::DiffErr,
-                        }));
-                        fits[k] = (err < stored).then_some((ltc, err));
-                    }
+                        fit
+                    });
                     on_cell();
                     merge(classic_cell, fits)
                 })
                 .collect()
         })
         .collect();
-    Lut {
+    let mut table = Lut {
         size: n,
         alpha_min: classic.alpha_min,
         cells: (0..n)
             .flat_map(|j| (0..n).map(move |i| (i, j)))
             .map(|(i, j)| columns[i][j])
             .collect(),
+    };
+    for _ in 0..REFINEMENTS {
+        let cells = (0..n * n)
+            .into_par_iter()
+            .map(|k| {
+                let (i, j) = (k % n, k / n);
+                let current = table.cell(i, j);
+                let neighbours: Vec<&LutCell> = [(-1, 0), (1, 0), (0, -1), (0, 1)]
+                    .into_iter()
+                    .filter_map(|(di, dj)| {
+                        let (i, j) = (i.checked_add_signed(di)?, j.checked_add_signed(dj)?);
+                        (i < n && j < n).then(|| table.cell(i, j))
+                    })
+                    .collect();
+                let fits = std::array::from_fn(|k| {
+                    let lobe = Lobe::BOTH[k];
+                    let mut starts = vec![PointFit::stored(current, lobe)];
+                    starts.extend(neighbours.iter().map(|c| PointFit::stored(c, lobe)));
+                    refit(current, lobe, i, j, &starts).1
+                });
+                on_cell();
+                merge(current, fits)
+            })
+            .collect();
+        table = Lut { cells, ..table };
+    }
+    table
+}
+
+/// Sweeps from all four neighbours after the first one.
+pub const REFINEMENTS: usize = 1;
+
+fn err_channel(lobe: Lobe) -> Channel {
+    match lobe {
+        Lobe::Specular => Channel::SpecErr,
+        Lobe::Diffuse => Channel::DiffErr,
     }
 }

@@ -1,5 +1,5 @@
 //! The LTC look-up table of DESIGN §2: an N×N f32 EXR (x = column i ↔ roughness, y = row j ↔
-//! view angle) with 13 named channels, its bilinear sampler (exactly the GPU's addressing),
+//! view angle) with 14 named channels, its bilinear sampler (exactly the GPU's addressing),
 //! and the shipped 64×64 table embedded in the binary.
 
 use std::io::Cursor;
@@ -27,8 +27,9 @@ pub const CHANNEL_NAMES: [&str; CHANNEL_COUNT] = [
     "diff.m22",
     "diff.norm",
     "diff.err",
+    "spec.scale",
 ];
-pub const CHANNEL_COUNT: usize = 13;
+pub const CHANNEL_COUNT: usize = 14;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Channel {
@@ -45,6 +46,8 @@ pub enum Channel {
     DiffM22,
     DiffNorm,
     DiffErr,
+    /// The fitted factor on the specular magnitude (`Ltc::scale`): 1 in the classic table.
+    SpecScale,
 }
 
 /// The header attribute that records α_min (the `alpha` of column 0).
@@ -100,6 +103,7 @@ impl LutCell {
             d[3],
             diff.norm,
             diff_err,
+            spec.scale,
         ];
         Self(values.map(|x| x as f32))
     }
@@ -140,7 +144,8 @@ impl LutSample {
                 SpecM22,
                 SpecNorm,
                 self.get(SpecFresnel),
-            ),
+            )
+            .with_scale(self.get(SpecScale)),
             diff: lobe(DiffM00, DiffM02, DiffM20, DiffM22, DiffNorm, 0.0),
         }
     }
@@ -254,11 +259,15 @@ impl Lut {
         Ok(lut)
     }
 
-    /// Values no fit produces: a non-positive albedo or a singular or reflecting `M⁻¹`.
+    /// Values no fit produces: a non-positive albedo or scale, or a singular or reflecting
+    /// `M⁻¹`.
     fn validate(&self) -> std::result::Result<(), String> {
         use Channel::*;
         for (k, cell) in self.cells.iter().enumerate() {
             let at = format!("cell (i={}, j={})", k % self.size, k / self.size);
+            if cell.get(SpecScale) <= 0.0 {
+                return Err(format!("spec.scale at {at} is not positive"));
+            }
             for (norm, m00, m02, m20, m22) in [
                 (SpecNorm, SpecM00, SpecM02, SpecM20, SpecM22),
                 (DiffNorm, DiffM00, DiffM02, DiffM20, DiffM22),

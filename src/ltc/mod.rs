@@ -75,6 +75,10 @@ pub struct Ltc {
     pub norm: f64,
     /// The Schlick part `∫ (1 − v·h)⁵ f cos dω` (specular; zero for diffuse).
     pub fresnel: f64,
+    /// A fitted factor on the magnitude: the lobe is shaded as `scale × magnitude × D`. One,
+    /// but in the point-light table's specular lobe, where it is fitted with the matrix
+    /// (`crate::ltc::fit_point`) while `norm` stays the true albedo.
+    pub scale: f64,
 }
 
 impl Ltc {
@@ -86,6 +90,7 @@ impl Ltc {
             det_cos_from_brdf: cos_from_brdf.determinant().abs(),
             norm,
             fresnel,
+            scale: 1.0,
         }
     }
 
@@ -98,7 +103,18 @@ impl Ltc {
             det_cos_from_brdf: cos_from_brdf.determinant().abs(),
             norm,
             fresnel,
+            scale: 1.0,
         }
+    }
+
+    /// The same lobe with its magnitude scaled by `scale`.
+    pub fn with_scale(self, scale: f64) -> Self {
+        Self { scale, ..self }
+    }
+
+    /// `scale × norm`: the diffuse lobe's magnitude, the specular one's at F0 = 1.
+    pub fn magnitude(&self) -> f64 {
+        self.scale * self.norm
     }
 
     /// The clamped cosine itself (`M = I`).
@@ -154,9 +170,10 @@ pub struct LtcPair {
 }
 
 impl LtcPair {
-    /// The specular magnitude for a material with `F0` (DESIGN §1): `F0 n_s + (1 − F0) f_s`.
+    /// The specular magnitude for a material with `F0` (DESIGN §1): `F0 n_s + (1 − F0) f_s`,
+    /// times the fitted scale.
     pub fn spec_magnitude(&self, f0: f64) -> f64 {
-        f0 * self.spec.norm + (1.0 - f0) * self.spec.fresnel
+        self.spec.scale * (f0 * self.spec.norm + (1.0 - f0) * self.spec.fresnel)
     }
 
     /// The LTC approximation of both cosine-weighted lobes for a unit-irradiance light in
@@ -169,7 +186,7 @@ impl LtcPair {
         normalization: Normalization,
     ) -> Lobes<f64> {
         let (spec_weight, diff_weight) = match normalization {
-            Normalization::Corrected => (self.spec_magnitude(f0), self.diff.norm),
+            Normalization::Corrected => (self.spec_magnitude(f0), self.diff.magnitude()),
             Normalization::PaperLiteral => (1.0, 1.0),
         };
         Lobes {
