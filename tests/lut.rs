@@ -115,3 +115,63 @@ fn broken_files_are_refused_with_their_name() {
         "{err}"
     );
 }
+
+/// The table's channels but `skip`, as an EXR (what an older or a foreign writer makes).
+fn exr_without(lut: &Lut, skip: &str) -> Vec<u8> {
+    use exr::prelude::*;
+    let channels = ltc_lab::ltc::lut::CHANNEL_NAMES
+        .iter()
+        .enumerate()
+        .filter(|(_, name)| **name != skip)
+        .map(|(c, name)| {
+            AnyChannel::new(
+                *name,
+                FlatSamples::F32(lut.cells.iter().map(|cell| cell.0[c]).collect()),
+            )
+        })
+        .collect();
+    let mut attributes = LayerAttributes::named("ltc");
+    attributes.other.insert(
+        Text::from("ltc.alpha_min"),
+        AttributeValue::F64(lut.alpha_min),
+    );
+    let layer = Layer::new(
+        (lut.size, lut.size),
+        attributes,
+        Encoding::default(),
+        AnyChannels::sort(channels),
+    );
+    let mut out = std::io::Cursor::new(Vec::new());
+    Image::from_layer(layer)
+        .write()
+        .to_buffered(&mut out)
+        .unwrap();
+    out.into_inner()
+}
+
+/// DESIGN §2's 13 channels make a complete table: without `spec.scale` (the point fit's
+/// addition) the magnitudes are used as they are; any other missing channel is refused, and a
+/// scale that is not positive too.
+#[test]
+fn design_layout_without_the_scale_reads_with_scale_one() {
+    let point = Lut::embedded_point();
+    let read = Lut::from_exr_bytes(&exr_without(point, "spec.scale"), "design.exr").unwrap();
+    for (a, b) in point.cells.iter().zip(&read.cells) {
+        assert_eq!(b.get(Channel::SpecScale), 1.0);
+        for c in 0..CHANNEL_COUNT {
+            if c != Channel::SpecScale as usize {
+                assert_eq!(a.0[c].to_bits(), b.0[c].to_bits());
+            }
+        }
+    }
+    let err = Lut::from_exr_bytes(&exr_without(point, "diff.err"), "short.exr").unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("short.exr: channel diff.err is missing"),
+        "{err}"
+    );
+    let mut lut = point.clone();
+    lut.cells[9].0[Channel::SpecScale as usize] = 0.0;
+    let err = Lut::from_exr_bytes(&lut.to_exr_bytes(), "zero.exr").unwrap_err();
+    assert!(err.to_string().contains("spec.scale"), "{err}");
+}

@@ -230,12 +230,20 @@ impl Lut {
         };
         let mut cells = vec![LutCell([0.0; CHANNEL_COUNT]); w * h];
         for (c, channel_name) in CHANNEL_NAMES.iter().enumerate() {
-            let channel = layer
+            let Some(channel) = layer
                 .channel_data
                 .list
                 .iter()
                 .find(|ch| ch.name == **channel_name)
-                .ok_or_else(|| bad(format!("channel {channel_name} is missing")))?;
+            else {
+                // DESIGN §2's 13 channels make a complete table: without the point fit's
+                // scale, the magnitudes are used as they are.
+                if c == Channel::SpecScale as usize {
+                    cells.iter_mut().for_each(|cell| cell.0[c] = 1.0);
+                    continue;
+                }
+                return Err(bad(format!("channel {channel_name} is missing")));
+            };
             let FlatSamples::F32(samples) = &channel.sample_data else {
                 return Err(bad(format!("channel {channel_name} is not 32-bit float")));
             };
