@@ -111,6 +111,8 @@ fn mirrored_functions_have_the_same_names() {
         d_ggx, diffuse_cos, f_schlick, fd_burley, g2_correlated, irradiance_scale, lambda_ggx,
         specular_cos, v_smith_ggx_correlated, window_falloff_d2,
     };
+    #[allow(unused_imports)]
+    use ltc_lab::ltc::cos_from_brdf_from_entries;
     for f in [
         "d_ggx",
         "lambda_ggx",
@@ -123,6 +125,7 @@ fn mirrored_functions_have_the_same_names() {
         "window_falloff_d2",
         "v_smith_ggx_correlated",
         "ltc_eval",
+        "cos_from_brdf_from_entries",
         "lut_sample_uv",
         "lut_uv",
         "spec_magnitude",

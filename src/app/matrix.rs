@@ -89,10 +89,11 @@ impl MatrixPanel {
         self.current_cell = (col.min(n - 1), row.min(n - 1));
         let sample = lut.sample(s.alpha(), theta.cos());
         let pair = sample.ltc_pair();
-        let (ltc, err) = match s.lobe {
-            Lobe::Specular => (pair.spec, sample.get(Channel::SpecErr)),
-            Lobe::Diffuse => (pair.diff, sample.get(Channel::DiffErr)),
+        let ltc = match s.lobe {
+            Lobe::Specular => pair.spec,
+            Lobe::Diffuse => pair.diff,
         };
+        let err = sample.get(Channel::err(s.lobe));
         egui::ScrollArea::vertical().auto_shrink([false; 2]).show(ui, |ui| {
             ui.label(format!(
                 "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
@@ -133,10 +134,7 @@ impl MatrixPanel {
             ui.vertical(|ui| {
                 for (name, table) in [("classic", crate::ltc::lut::Table::Classic), ("point", crate::ltc::lut::Table::Point)] {
                     let t = Lut::shipped(table).sample(s.alpha(), theta.cos());
-                    let (m, e) = match s.lobe {
-                        Lobe::Specular => ([Channel::SpecM00, Channel::SpecM02, Channel::SpecM20, Channel::SpecM22], Channel::SpecErr),
-                        Lobe::Diffuse => ([Channel::DiffM00, Channel::DiffM02, Channel::DiffM20, Channel::DiffM22], Channel::DiffErr),
-                    };
+                    let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
                     let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
                     ui.label(format!(
                         "{name} fit: M^-1 = [[{:.3}, 0, {:.3}], [0, 1, 0], [{:.3}, 0, {:.3}]], scale {:.3}, error {:.1}%",

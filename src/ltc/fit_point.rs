@@ -8,7 +8,7 @@
 //! table's own error metric (`pointwise_error`) rates lower — so no cell is worse than the
 //! classic table.
 
-use glam::{DMat3, DVec3};
+use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{d_ggx, g2_correlated, lambda_ggx};
@@ -16,7 +16,7 @@ use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
 use crate::ltc::lobe::{Lobe, Stratum, visible_normal};
 use crate::ltc::lut::{Channel, Lut, LutCell};
 use crate::ltc::nelder_mead::nelder_mead;
-use crate::ltc::{Clipping, Ltc, Normalization, mat3_from_rows};
+use crate::ltc::{Clipping, Ltc, Normalization, cos_from_brdf_from_entries};
 
 /// Strata per axis of the fit's quadrature (64² nodes); tests/fit_point.rs compares it with
 /// a 4× finer one on the hardest cells.
@@ -109,26 +109,19 @@ pub struct PointFit {
 }
 
 impl PointFit {
-    /// `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
-    pub fn cos_from_brdf(&self) -> DMat3 {
-        let m = self.entries;
-        mat3_from_rows([[m[0], 0.0, m[1]], [0.0, 1.0, 0.0], [m[2], 0.0, m[3]]])
-    }
-
     pub fn ltc(&self, norm: f64, fresnel: f64) -> Ltc {
-        Ltc::from_cos_from_brdf(self.cos_from_brdf(), norm, fresnel).with_scale(self.scale)
+        Ltc::from_cos_from_brdf(cos_from_brdf_from_entries(self.entries), norm, fresnel)
+            .with_scale(self.scale)
     }
 
     /// What a cell of a table stores for `lobe`.
     pub fn stored(cell: &LutCell, lobe: Lobe) -> Self {
-        use Channel::*;
-        let (m, scale) = match lobe {
-            Lobe::Specular => ([SpecM00, SpecM02, SpecM20, SpecM22], Some(SpecScale)),
-            Lobe::Diffuse => ([DiffM00, DiffM02, DiffM20, DiffM22], None),
-        };
         Self {
-            entries: m.map(|ch| f64::from(cell.get(ch))),
-            scale: scale.map_or(1.0, |ch| f64::from(cell.get(ch))),
+            entries: Channel::entries(lobe).map(|ch| f64::from(cell.get(ch))),
+            scale: match lobe {
+                Lobe::Specular => f64::from(cell.get(Channel::SpecScale)),
+                Lobe::Diffuse => 1.0,
+            },
         }
     }
 
@@ -225,18 +218,15 @@ const RESTARTS: usize = 3;
 /// A cell of the point table: `current`, with each lobe the point fit improved replaced
 /// (entries, scale, error; `norm` and `fresnel` stay the true albedos).
 fn merge(current: &LutCell, fits: [Option<(PointFit, f64)>; 2]) -> LutCell {
-    use Channel::*;
     let mut cell = *current;
-    let spec = [SpecM00, SpecM02, SpecM20, SpecM22, SpecErr];
-    let diff = [DiffM00, DiffM02, DiffM20, DiffM22, DiffErr];
-    for ((fit, channels), lobe) in fits.iter().zip([spec, diff]).zip(Lobe::BOTH) {
+    for (fit, lobe) in fits.iter().zip(Lobe::BOTH) {
         if let Some((fit, err)) = fit {
-            let m = fit.entries;
-            for (c, v) in channels.iter().zip([m[0], m[1], m[2], m[3], *err]) {
+            for (c, v) in Channel::entries(lobe).iter().zip(fit.entries) {
                 cell.0[*c as usize] = v as f32;
             }
+            cell.0[Channel::err(lobe) as usize] = *err as f32;
             if lobe == Lobe::Specular {
-                cell.0[SpecScale as usize] = fit.scale as f32;
+                cell.0[Channel::SpecScale as usize] = fit.scale as f32;
             }
         }
     }
@@ -270,7 +260,7 @@ pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn(
         );
         // Kept only where the table's own error metric rates it below the current cell's
         // stored error (at first the classic one), so that no cell gets worse.
-        let stored = f64::from(current.get(err_channel(lobe)));
+        let stored = f64::from(current.get(Channel::err(lobe)));
         (point, (err < stored).then_some((point, err)))
     };
     let columns: Vec<Vec<LutCell>> = (0..n)
@@ -332,10 +322,3 @@ pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn(
 
 /// Sweeps from all four neighbours after the first one.
 pub const REFINEMENTS: usize = 1;
-
-fn err_channel(lobe: Lobe) -> Channel {
-    match lobe {
-        Lobe::Specular => Channel::SpecErr,
-        Lobe::Diffuse => Channel::DiffErr,
-    }
-}

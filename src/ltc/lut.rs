@@ -10,7 +10,8 @@ use exr::prelude::*;
 use glam::DVec3;
 
 use crate::error::{InputError, Result, write_atomically};
-use crate::ltc::{Ltc, LtcPair, mat3_from_rows};
+use crate::ltc::lobe::Lobe;
+use crate::ltc::{Ltc, LtcPair, cos_from_brdf_from_entries};
 
 /// The channels in DESIGN §2's order; `Channel as usize` indexes a cell.
 pub const CHANNEL_NAMES: [&str; CHANNEL_COUNT] = [
@@ -48,6 +49,25 @@ pub enum Channel {
     DiffErr,
     /// The fitted factor on the specular magnitude (`Ltc::scale`): 1 in the classic table.
     SpecScale,
+}
+
+impl Channel {
+    /// A lobe's four stored entries of `M⁻¹`: `m00, m02, m20, m22`.
+    pub fn entries(lobe: Lobe) -> [Self; 4] {
+        use Channel::*;
+        match lobe {
+            Lobe::Specular => [SpecM00, SpecM02, SpecM20, SpecM22],
+            Lobe::Diffuse => [DiffM00, DiffM02, DiffM20, DiffM22],
+        }
+    }
+
+    /// A lobe's pointwise error.
+    pub fn err(lobe: Lobe) -> Self {
+        match lobe {
+            Lobe::Specular => Self::SpecErr,
+            Lobe::Diffuse => Self::DiffErr,
+        }
+    }
 }
 
 /// The header attribute that records α_min (the `alpha` of column 0).
@@ -125,28 +145,14 @@ impl LutSample {
     /// Both lobes as `Ltc`s: `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
     pub fn ltc_pair(&self) -> LtcPair {
         use Channel::*;
-        let lobe = |m00, m02, m20, m22, norm, fresnel| {
-            Ltc::from_cos_from_brdf(
-                mat3_from_rows([
-                    [self.get(m00), 0.0, self.get(m02)],
-                    [0.0, 1.0, 0.0],
-                    [self.get(m20), 0.0, self.get(m22)],
-                ]),
-                self.get(norm),
-                fresnel,
-            )
+        let lobe = |lobe: Lobe, norm: Channel, fresnel: f64| {
+            let m = cos_from_brdf_from_entries(Channel::entries(lobe).map(|c| self.get(c)));
+            Ltc::from_cos_from_brdf(m, self.get(norm), fresnel)
         };
         LtcPair {
-            spec: lobe(
-                SpecM00,
-                SpecM02,
-                SpecM20,
-                SpecM22,
-                SpecNorm,
-                self.get(SpecFresnel),
-            )
-            .with_scale(self.get(SpecScale)),
-            diff: lobe(DiffM00, DiffM02, DiffM20, DiffM22, DiffNorm, 0.0),
+            spec: lobe(Lobe::Specular, SpecNorm, self.get(SpecFresnel))
+                .with_scale(self.get(SpecScale)),
+            diff: lobe(Lobe::Diffuse, DiffNorm, 0.0),
         }
     }
 }

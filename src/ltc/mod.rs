@@ -219,6 +219,12 @@ impl Ltc {
     }
 }
 
+/// `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]` from the four entries a LUT cell stores,
+/// in the channels' order `m00, m02, m20, m22` (DESIGN §2).
+pub fn cos_from_brdf_from_entries(m: [f64; 4]) -> DMat3 {
+    mat3_from_rows([[m[0], 0.0, m[1]], [0.0, 1.0, 0.0], [m[2], 0.0, m[3]]])
+}
+
 /// A 3×3 matrix from its rows (glam stores columns).
 pub fn mat3_from_rows(rows: [[f64; 3]; 3]) -> DMat3 {
     DMat3::from_cols_array_2d(&rows).transpose()
