@@ -14,7 +14,7 @@ const NORMALIZATION_PAPER_LITERAL: u32 = 1u;
 
 const LUT_VEC4S_PER_CELL: u32 = 3u;
 
-// Read the nearest cell instead of filtering (the `ltc-nearest` variant; src/cpu.rs LutFilter).
+// Read the nearest cell instead of filtering (the `ltc-nearest` variant; src/render.rs LutFilter).
 override LUT_NEAREST: bool = false;
 
 // One lobe: M⁻¹ (cos_from_brdf), |det M⁻¹|, its magnitudes and the fitted scale on them.

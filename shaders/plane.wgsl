@@ -2,14 +2,14 @@
 // lights read in workgroup-shared tiles of 256 (DESIGN §4). Composed after brdf.wgsl and
 // ltc.wgsl. The CPU reference is src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
 
-// Shading methods (src/gpu/plane.rs GpuMethod).
+// Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
 const METHOD_BRDF: u32 = 0u;      // the exact BRDF as DESIGN §1 writes it
 const METHOD_BRDF_FAST: u32 = 1u; // the same, with Filament's V_SmithGGXCorrelated
 const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻¹ l per lobe
 const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnormalized u, eq. 27
 const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
 
-// What a pixel shows (src/gpu/plane.rs GpuView).
+// What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
 const VIEW_SPLIT: u32 = 1u;  // A left of the divider, B right of it
 const VIEW_DIFF: u32 = 2u;   // |A − B| / max(B, floor) on luminance
@@ -20,7 +20,7 @@ override METHOD_A: u32 = METHOD_LTC;
 override METHOD_B: u32 = METHOD_BRDF;
 override VIEW: u32 = VIEW_SINGLE;
 
-// Must match src/gpu/plane.rs Params (checked by tests/gpu_layout.rs).
+// Must match src/gpu/plane.rs Params (checked by tests/shaders.rs).
 struct Params {
     eye: vec4<f32>,        // xyz camera position
     forward: vec4<f32>,    // xyz unit view direction
@@ -63,7 +63,7 @@ struct Pixel {
     on_plane: bool,
     x: vec3<f32>,          // world position
     v: vec3<f32>,          // unit, toward the camera (world; n = +z)
-    t1: vec3<f32>,         // shading frame (src/cpu.rs ShadingFrame)
+    t1: vec3<f32>,         // shading frame (src/render.rs ShadingFrame)
     t2: vec3<f32>,
     pair: LtcPair,
     // ltc-fast: M⁻¹ · tangent_from_world per lobe, and the factors pulled out of the sum.
@@ -104,7 +104,7 @@ fn surface_point(px: vec2<u32>) -> Pixel {
     p.v = normalize(params.eye.xyz - x);
     let tangential = vec2<f32>(p.v.x, p.v.y);
     let len = length(tangential);
-    // At normal view any tangent will do (src/cpu.rs ShadingFrame::new).
+    // At normal view any tangent will do (src/render.rs ShadingFrame::new).
     p.t1 = select(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(tangential / len, 0.0), len > 0.0);
     p.t2 = cross(vec3<f32>(0.0, 0.0, 1.0), p.t1);
     return p;
@@ -262,7 +262,8 @@ fn shade(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocatio
         }
         workgroupBarrier();
         let n = min(TILE, params.light_count - base);
-        if p.on_plane {
+        // Seen from below (v.z ≤ 0) the one-sided plane is black, as on the CPU.
+        if p.on_plane && p.v.z > 0.0 {
             for (var k = 0u; k < n; k++) {
                 if use_a {
                     add_light(METHOD_A, &a, p, tile[k]);
@@ -283,7 +284,7 @@ fn shade(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocatio
         let lb = finish(METHOD_B, b, p);
         if VIEW == VIEW_DIFF {
             let ref_lum = luminance(lb);
-            let rel = abs(luminance(la) - ref_lum) / max(ref_lum, params.rel_floor);
+            let rel = min(abs(luminance(la) - ref_lum) / max(ref_lum, params.rel_floor), F32_MAX);
             out = vec4<f32>(rel, rel, rel, 1.0);
         } else {
             out = vec4<f32>(select(lb, la, use_a), 1.0);

@@ -7,7 +7,8 @@ use std::path::Path;
 use glam::DVec3;
 
 use crate::brdf::brdf_cos;
-use crate::error::{Result, write_atomically};
+use crate::error::Result;
+use crate::files::Outputs;
 use crate::ltc::lut::{Channel, Lut};
 use crate::ltc::{Clipping, Normalization};
 
@@ -38,7 +39,7 @@ pub struct OrbitSample {
 /// of `metrics::RELATIVE_FLOOR` in spirit: directions that barely light the point would
 /// otherwise dominate with huge ratios of tiny numbers.
 pub fn orbit(lut: &Lut, theta_o_deg: f64, alpha: f64) -> Vec<OrbitSample> {
-    let t = theta_o_deg.to_radians().min(crate::ltc::fit::THETA_MAX);
+    let t = theta_o_deg.to_radians().min(crate::ltc::lut::THETA_MAX);
     let v = DVec3::new(t.sin(), 0.0, t.cos());
     let pair = lut.ltc_pair(alpha, v);
     let mut samples: Vec<OrbitSample> = (0..ELEVATIONS)
@@ -72,15 +73,24 @@ pub struct AtlasSummary {
     pub lines: Vec<String>,
 }
 
+/// The files of the atlas.
+pub fn atlas_files() -> Vec<String> {
+    let mut names: Vec<String> = ["spec_err.png", "diff_err.png", "cells.csv", "orbits.csv"]
+        .map(String::from)
+        .into();
+    names.extend(ORBITS.map(|(theta, alpha)| orbit_file(theta, alpha)));
+    names
+}
+
+fn orbit_file(theta: f64, alpha: f64) -> String {
+    format!("orbit_{theta:.0}_{alpha}.png")
+}
+
 /// Writes `spec_err.png`, `diff_err.png`, `cells.csv`, and per orbit `orbit_T_A.png` plus
-/// `orbits.csv` into `dir`.
+/// `orbits.csv` into `dir` (made if missing), all of them or none.
 pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
-    if !dir.is_dir() {
-        return Err(crate::error::InputError::new(
-            dir.display().to_string(),
-            "not a directory",
-        ));
-    }
+    let names = atlas_files();
+    let mut out = Outputs::new(dir, &names.iter().map(String::as_str).collect::<Vec<_>>())?;
     let n = lut.size;
     // Cell edges halfway between the centres, in the LUT's own axes mapped to r and θo.
     let mid = |k: f64| (k / (n - 1) as f64).clamp(0.0, 1.0);
@@ -96,13 +106,14 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
         (Channel::SpecErr, "spec_err.png", "specular"),
         (Channel::DiffErr, "diff_err.png", "diffuse"),
     ] {
-        crate::plot::heat_map_png(
-            &dir.join(file),
+        let png = crate::plot::heat_map_png(
+            file,
             &format!("{name} pointwise error ∫|n·D − f·cos| / ∫ f·cos per cell"),
             ("r = √α", &r_edges),
             ("θo (degrees)", &theta_edges),
             |i, j| f64::from(lut.cell(i, j).get(channel)),
         )?;
+        out.stage(file, &png)?;
         // The worst view-angle bands, for the summary.
         for (lo, hi) in [
             (0.0, 30.0),
@@ -141,7 +152,7 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
             ));
         }
     }
-    write_atomically(&dir.join("cells.csv"), cells.as_bytes())?;
+    out.stage("cells.csv", cells.as_bytes())?;
     let az_edges: Vec<f64> = (0..=AZIMUTHS)
         .map(|k| (k as f64 - 0.5) * 360.0 / (AZIMUTHS - 1) as f64)
         .collect();
@@ -151,13 +162,15 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
     let mut orbits = String::from("theta_o,alpha,elevation,azimuth,brdf,ltc,rel_err\n");
     for (theta, alpha) in ORBITS {
         let samples = orbit(lut, theta, alpha);
-        crate::plot::heat_map_png(
-            &dir.join(format!("orbit_{theta:.0}_{alpha}.png")),
+        let file = orbit_file(theta, alpha);
+        let png = crate::plot::heat_map_png(
+            &file,
             &format!("one light orbiting a point: θo = {theta}°, α = {alpha} (v toward azimuth 0)"),
             ("light azimuth (degrees)", &az_edges),
             ("light elevation (degrees)", &el_edges),
             |a, e| samples[e * AZIMUTHS + a].rel_err,
         )?;
+        out.stage(&file, &png)?;
         for s in &samples {
             orbits.push_str(&format!(
                 "{theta},{alpha},{},{},{:e},{:e},{:e}\n",
@@ -179,6 +192,7 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
             ));
         }
     }
-    write_atomically(&dir.join("orbits.csv"), orbits.as_bytes())?;
+    out.stage("orbits.csv", orbits.as_bytes())?;
+    out.commit()?;
     Ok(AtlasSummary { lines })
 }

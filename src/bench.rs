@@ -1,11 +1,13 @@
 //! The paper's Table 1 on this machine's GPU: GPU time per frame of every method at several
 //! light counts, measured in one run, with the ratios between the LTC and BRDF forms.
 
-use crate::error::InputError;
+use crate::error::Result;
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{GpuMethod, PlaneRenderer, PlaneSettings, ShaderChecks};
+use crate::gpu::limits::check_image_size;
+use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
 use crate::ltc::lut::Lut;
-use crate::scene::{RandomLights, Scene, generate_lights};
+use crate::render::{Method, RenderSettings};
+use crate::scene::{RandomLights, Scene, generate_lights, preset};
 
 /// The paper's Table 1 (GTX 1060, its resolution unstated): fps at 100, 500, 1000, 5000
 /// lights.
@@ -16,7 +18,7 @@ pub const PAPER_LTC_FPS: [f64; 4] = [285.0, 56.0, 28.0, 5.0];
 /// One measured cell of the table.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BenchRow {
-    pub method: GpuMethod,
+    pub method: Method,
     pub lights: usize,
     pub width: usize,
     pub height: usize,
@@ -60,8 +62,7 @@ impl BenchRow {
 /// above a plane large enough that every pixel shades it, so that light-pixels = lights ×
 /// width × height.
 pub fn bench_scene(lights: usize) -> Scene {
-    let text = include_str!("../assets/scenes/paper-100.toml");
-    let mut scene = Scene::from_toml(text, "paper-100.toml").expect("the preset is valid");
+    let mut scene = preset("paper-100");
     let spread = scene.plane.half_size;
     scene.plane.half_size = 1e3;
     scene.camera.position = [0.0, -2.0, 2.5];
@@ -93,6 +94,19 @@ fn median(xs: &mut [f64]) -> f64 {
 /// Frames shaded before timing starts (pipeline compilation, caches, clocks).
 pub const WARM_UP_FRAMES: usize = 5;
 
+/// Every light count and the size against the adapter's limits: nothing is measured for a
+/// run that cannot finish (`study` checks the same).
+pub fn check(
+    ctx: &GpuContext,
+    light_counts: &[usize],
+    (width, height): (usize, usize),
+) -> Result<()> {
+    for &n in light_counts {
+        PlaneRenderer::check_light_count(ctx, "--lights", n)?;
+    }
+    check_image_size(ctx, width, height, crate::gpu::plane::TEXEL_BYTES)
+}
+
 /// Measures every method at every light count: `frames` timed frames after warm-up each.
 pub fn run(
     ctx: &GpuContext,
@@ -102,18 +116,19 @@ pub fn run(
     frames: usize,
     checks: ShaderChecks,
     mut progress: impl FnMut(&BenchRow),
-) -> Result<Vec<BenchRow>, InputError> {
-    let mut renderer = PlaneRenderer::new(ctx, lut, checks);
+) -> Result<Vec<BenchRow>> {
+    check(ctx, light_counts, (width, height))?;
+    let mut renderer = PlaneRenderer::new(ctx, lut, checks)?;
     let mut rows = Vec::new();
     for &lights in light_counts {
         let scene = bench_scene(lights);
         let mut frame = renderer.prepare(
             ctx,
             &scene,
-            &PlaneSettings::single(width, height, GpuMethod::Brdf),
+            &RenderSettings::single(width, height, Method::Brdf),
         )?;
-        for method in GpuMethod::ALL {
-            let settings = PlaneSettings::single(width, height, method);
+        for method in Method::F32 {
+            let settings = RenderSettings::single(width, height, method);
             renderer.update(ctx, &mut frame, &scene, &settings);
             for _ in 0..WARM_UP_FRAMES {
                 renderer.run(ctx, &frame);
@@ -160,21 +175,21 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
     let mut counts: Vec<usize> = rows.iter().map(|r| r.lights).collect();
     counts.dedup();
     for n in counts {
-        let ms = |m: GpuMethod| {
+        let ms = |m: Method| {
             rows.iter()
                 .find(|r| r.lights == n && r.method == m)
                 .map(|r| r.ms_median)
         };
-        let ratio = |b: GpuMethod, l: GpuMethod| match (ms(b), ms(l)) {
+        let ratio = |b: Method, l: Method| match (ms(b), ms(l)) {
             (Some(b), Some(l)) => format!("{:.2}×", b / l),
             _ => "–".into(),
         };
         out.push_str(&format!(
             "| {n} | {} | {} | {} | {} |\n",
-            ratio(GpuMethod::Brdf, GpuMethod::Ltc),
-            ratio(GpuMethod::Brdf, GpuMethod::LtcFast),
-            ratio(GpuMethod::BrdfFast, GpuMethod::Ltc),
-            ratio(GpuMethod::BrdfFast, GpuMethod::LtcFast)
+            ratio(Method::Brdf, Method::Ltc),
+            ratio(Method::Brdf, Method::LtcFast),
+            ratio(Method::BrdfFast, Method::Ltc),
+            ratio(Method::BrdfFast, Method::LtcFast)
         ));
     }
     out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");

@@ -9,200 +9,10 @@ use crate::brdf::{Lobes, irradiance_scale, point_light_exact};
 use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::metrics::relative_difference;
+use crate::render::{
+    Frame, FrameKind, LutFilter, Method, RenderSettings, ShadingFrame, SurfacePoint, View,
+};
 use crate::scene::{Light, Scene};
-
-/// What a render shows.
-#[derive(
-    Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Serialize, serde::Deserialize,
-)]
-pub enum Method {
-    /// The exact BRDF (eq. 28).
-    Brdf,
-    /// The LTC approximation (eq. 30).
-    Ltc,
-    /// LTC left of the divider, exact BRDF right of it.
-    Split,
-    /// The per-pixel relative difference |LTC − BRDF| / BRDF as a false-colour map.
-    Diff,
-}
-
-/// Everything about a render that is not the scene.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RenderSettings {
-    pub width: usize,
-    pub height: usize,
-    pub method: Method,
-    pub clipping: Clipping,
-    pub normalization: Normalization,
-    /// Where `Split` changes method, as a fraction of the width.
-    pub divider: f64,
-    /// How the LTC table is read.
-    pub lut_filter: LutFilter,
-}
-
-/// How the LTC table is read per pixel (the `ltc-nearest` study variant uses `Nearest`).
-#[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
-)]
-pub enum LutFilter {
-    /// Bilinear, as a GPU sampler (DESIGN §2).
-    #[default]
-    Bilinear,
-    /// The nearest cell.
-    Nearest,
-}
-
-impl RenderSettings {
-    pub fn new(width: usize, height: usize, method: Method) -> Self {
-        Self {
-            width,
-            height,
-            method,
-            clipping: Clipping::BOTH,
-            normalization: Normalization::Corrected,
-            divider: 0.5,
-            lut_filter: LutFilter::Bilinear,
-        }
-    }
-
-    /// The first pixel column of the exact side of a split image.
-    pub fn divider_column(&self) -> usize {
-        ((self.divider.clamp(0.0, 1.0) * self.width as f64).round() as usize).min(self.width)
-    }
-}
-
-/// What the pixels of a `Frame` hold.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FrameKind {
-    /// Linear RGB radiance.
-    Radiance,
-    /// The relative difference of `metrics::relative_difference`, in all three channels.
-    RelativeDifference,
-}
-
-/// A rendered image, row-major from the top-left, in f64.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Frame {
-    pub width: usize,
-    pub height: usize,
-    pub kind: FrameKind,
-    pub pixels: Vec<DVec3>,
-    /// Whether the pixel's ray hit the plane (the rest is background).
-    pub on_plane: Vec<bool>,
-    /// The split column, for split renders.
-    pub divider: Option<usize>,
-}
-
-/// A camera ray's hit on the plane, with what shading needs there.
-#[derive(Clone, Copy, Debug)]
-pub struct SurfacePoint {
-    pub position: DVec3,
-    /// Unit vector toward the camera, world space.
-    pub view: DVec3,
-}
-
-/// The shading frame of DESIGN §1 at a point with normal `+z`: `t1` along the view's
-/// tangential part, `t2 = n × t1`. Maps world vectors to frame coordinates.
-#[derive(Clone, Copy, Debug)]
-pub struct ShadingFrame {
-    pub t1: DVec3,
-    pub t2: DVec3,
-}
-
-impl ShadingFrame {
-    pub fn new(view: DVec3) -> Self {
-        let tangential = DVec3::new(view.x, view.y, 0.0);
-        // At normal view any tangent will do: the lobes are rotationally symmetric there.
-        let t1 = tangential.try_normalize().unwrap_or(DVec3::X);
-        Self {
-            t1,
-            t2: DVec3::Z.cross(t1),
-        }
-    }
-
-    /// `tangent_from_world` applied to `w`.
-    pub fn tangent_from_world(&self, w: DVec3) -> DVec3 {
-        DVec3::new(w.dot(self.t1), w.dot(self.t2), w.z)
-    }
-}
-
-impl Scene {
-    /// The camera's position and orthonormal basis: eye, forward, right, up (`+z` is up).
-    pub fn camera_basis(&self) -> (DVec3, DVec3, DVec3, DVec3) {
-        let eye = DVec3::from(self.camera.position);
-        let forward = (DVec3::from(self.camera.target) - eye).normalize();
-        let right = forward.cross(DVec3::Z).normalize();
-        (eye, forward, right, right.cross(forward))
-    }
-
-    /// The camera ray through image position (x, y) in pixels (pixel centres at k + ½) of a
-    /// `width × height` image: origin and unit direction.
-    pub fn camera_ray(&self, x: f64, y: f64, width: usize, height: usize) -> (DVec3, DVec3) {
-        let (eye, forward, right, up) = self.camera_basis();
-        let tan_half = (self.camera.fov_y_degrees.to_radians() * 0.5).tan();
-        let aspect = width as f64 / height as f64;
-        let sx = (2.0 * x / width as f64 - 1.0) * tan_half * aspect;
-        let sy = (1.0 - 2.0 * y / height as f64) * tan_half;
-        (eye, (forward + sx * right + sy * up).normalize())
-    }
-
-    /// Where world point `p` appears in a `width × height` image, in pixels; `None` behind
-    /// the camera.
-    pub fn project(&self, p: DVec3, width: usize, height: usize) -> Option<(f64, f64)> {
-        let (eye, forward, right, up) = self.camera_basis();
-        let d = p - eye;
-        let z = d.dot(forward);
-        if z <= 1e-9 {
-            return None;
-        }
-        let tan_half = (self.camera.fov_y_degrees.to_radians() * 0.5).tan();
-        let aspect = width as f64 / height as f64;
-        let sx = d.dot(right) / (z * tan_half * aspect);
-        let sy = d.dot(up) / (z * tan_half);
-        Some((
-            (sx + 1.0) * 0.5 * width as f64,
-            (1.0 - sy) * 0.5 * height as f64,
-        ))
-    }
-
-    /// The point of the plane seen through pixel (x, y) of a `width × height` image.
-    pub fn surface_point(
-        &self,
-        x: usize,
-        y: usize,
-        width: usize,
-        height: usize,
-    ) -> Option<SurfacePoint> {
-        self.surface_point_at(x as f64 + 0.5, y as f64 + 0.5, width, height)
-    }
-
-    /// `surface_point` at a continuous image position.
-    pub fn surface_point_at(
-        &self,
-        x: f64,
-        y: f64,
-        width: usize,
-        height: usize,
-    ) -> Option<SurfacePoint> {
-        let (eye, dir) = self.camera_ray(x, y, width, height);
-        if dir.z == 0.0 {
-            return None;
-        }
-        let t = -eye.z / dir.z;
-        if t <= 0.0 {
-            return None;
-        }
-        let position = eye + t * dir;
-        let h = self.plane.half_size;
-        if position.x.abs() > h || position.y.abs() > h {
-            return None;
-        }
-        Some(SurfacePoint {
-            position,
-            view: (eye - position).normalize(),
-        })
-    }
-}
 
 /// The per-pixel state of LTC shading: the frame and the two looked-up lobes.
 #[derive(Clone, Copy, Debug)]
@@ -282,54 +92,64 @@ fn combine(lobes: Lobes<f64>, base_color: [f64; 3]) -> DVec3 {
     DVec3::splat(lobes.specular) + lobes.diffuse * DVec3::from(base_color)
 }
 
-/// Renders the scene. `Diff` holds the relative difference, the others radiance.
+/// Renders the scene as `s.view` shows it: one method's radiance, both split at the divider,
+/// or their relative difference.
 pub fn render(scene: &Scene, lut: &Lut, s: &RenderSettings) -> Frame {
-    let shade = |method: Method| render_radiance(scene, lut, s, method);
-    match s.method {
-        Method::Brdf | Method::Ltc => shade(s.method),
-        Method::Split => {
-            let mut frame = shade(Method::Split);
-            frame.divider = Some(s.divider_column());
+    let divider = s.divider_column();
+    let shade = |pick: &(dyn Fn(usize) -> Method + Sync)| render_radiance(scene, lut, s, pick);
+    match s.view {
+        View::A => shade(&|_| s.method_a),
+        View::B => shade(&|_| s.method_b),
+        View::Split => {
+            let mut frame = shade(&|x| if x < divider { s.method_a } else { s.method_b });
+            frame.divider = Some(divider);
             frame
         }
-        Method::Diff => {
-            let ltc = shade(Method::Ltc);
-            let exact = shade(Method::Brdf);
-            relative_difference(&ltc, &exact)
+        View::Diff => {
+            let a = shade(&|_| s.method_a);
+            let b = shade(&|_| s.method_b);
+            relative_difference(&a, &b)
         }
     }
 }
 
-/// Radiance of one method (`Split`: LTC left of the divider, exact right of it).
-fn render_radiance(scene: &Scene, lut: &Lut, s: &RenderSettings, method: Method) -> Frame {
-    let divider = s.divider_column();
+/// The radiance at one surface point by `method` (its literal form: the CPU has one of each).
+pub fn shade(
+    scene: &Scene,
+    lut: &Lut,
+    p: &SurfacePoint,
+    s: &RenderSettings,
+    method: Method,
+) -> DVec3 {
+    if method.is_ltc() {
+        shade_ltc(
+            scene,
+            lut,
+            p,
+            &scene.lights,
+            s.clipping,
+            s.normalization,
+            s.lut_filter,
+        )
+    } else {
+        shade_exact(scene, p, &scene.lights)
+    }
+}
+
+/// Radiance with the method `pick` gives for each pixel column.
+fn render_radiance(
+    scene: &Scene,
+    lut: &Lut,
+    s: &RenderSettings,
+    pick: &(dyn Fn(usize) -> Method + Sync),
+) -> Frame {
     let rows: Vec<(Vec<DVec3>, Vec<bool>)> = (0..s.height)
         .into_par_iter()
         .map(|y| {
             (0..s.width)
                 .map(|x| match scene.surface_point(x, y, s.width, s.height) {
                     None => (DVec3::ZERO, false),
-                    Some(p) => {
-                        let use_ltc = match method {
-                            Method::Ltc => true,
-                            Method::Split => x < divider,
-                            Method::Brdf | Method::Diff => false,
-                        };
-                        let radiance = if use_ltc {
-                            shade_ltc(
-                                scene,
-                                lut,
-                                &p,
-                                &scene.lights,
-                                s.clipping,
-                                s.normalization,
-                                s.lut_filter,
-                            )
-                        } else {
-                            shade_exact(scene, &p, &scene.lights)
-                        };
-                        (radiance, true)
-                    }
+                    Some(p) => (shade(scene, lut, &p, s, pick(x)), true),
                 })
                 .unzip()
         })

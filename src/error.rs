@@ -1,48 +1,79 @@
-//! One error type for bad input: every message names the input it is about.
+//! One error type: every message names the input it is about, and says whether the input was
+//! at fault (exit code 2) or the machine (exit code 1: no adapter, a GPU or I/O failure).
 
-/// An input that cannot be used, and why. The CLI prints it on one line and exits with 2.
+/// Who is at fault.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// A file, argument or value that cannot be used.
+    Input,
+    /// The machine failed on good input: no adapter, a GPU error, a full disk.
+    Machine,
+}
+
+/// What went wrong, and with what. The CLI prints it on one line.
 #[derive(Debug, thiserror::Error)]
 #[error("{input}: {message}")]
-pub struct InputError {
+pub struct Error {
+    pub kind: ErrorKind,
     /// The file, argument or value at fault (`scene.toml`, `--size`, `cases.csv line 3`).
     pub input: String,
     pub message: String,
 }
 
-impl InputError {
-    pub fn new(input: impl Into<String>, message: impl Into<String>) -> Self {
+impl Error {
+    /// Bad input.
+    pub fn input(input: impl Into<String>, message: impl Into<String>) -> Self {
         Self {
+            kind: ErrorKind::Input,
             input: input.into(),
             message: message.into(),
         }
     }
+
+    /// A failure of the machine on good input.
+    pub fn machine(input: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            kind: ErrorKind::Machine,
+            ..Self::input(input, message)
+        }
+    }
+
+    /// An I/O error while `doing` something with `input`: the path's fault where it names
+    /// something that is missing, forbidden or of the wrong kind; the machine's otherwise
+    /// (a full disk, a device error).
+    pub fn io(input: impl Into<String>, doing: &str, e: &std::io::Error) -> Self {
+        use std::io::ErrorKind as K;
+        let message = format!("cannot {doing}: {}", io_reason(e));
+        match e.kind() {
+            K::NotFound
+            | K::PermissionDenied
+            | K::AlreadyExists
+            | K::IsADirectory
+            | K::NotADirectory
+            | K::InvalidInput
+            | K::InvalidFilename
+            | K::ReadOnlyFilesystem
+            | K::InvalidData => Self::input(input, message),
+            _ => Self::machine(input, message),
+        }
+    }
+
+    /// The process exit code of DESIGN §6: 2 for bad input, 1 for the machine.
+    pub fn exit_code(&self) -> u8 {
+        match self.kind {
+            ErrorKind::Input => 2,
+            ErrorKind::Machine => 1,
+        }
+    }
 }
 
-pub type Result<T, E = InputError> = std::result::Result<T, E>;
-
-/// Writes `bytes` to `path` through a temporary file beside it, so that a failure leaves no
-/// partial output behind and an existing file is replaced only by a complete one.
-pub fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
-    let name = path.display().to_string();
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
-    };
-    if !dir.is_dir() {
-        return Err(InputError::new(name, "its directory does not exist"));
+/// The OS's words without Rust's "(os error 28)" suffix.
+fn io_reason(e: &std::io::Error) -> String {
+    let text = e.to_string();
+    match text.find(" (os error") {
+        Some(k) => text[..k].to_lowercase(),
+        None => text,
     }
-    let file_name = path
-        .file_name()
-        .ok_or_else(|| InputError::new(&name, "not a file path"))?;
-    let tmp = dir.join(format!(
-        ".{}.{}.partial",
-        file_name.to_string_lossy(),
-        std::process::id()
-    ));
-    let result = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
-    if let Err(e) = result {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(InputError::new(name, format!("cannot write: {e}")));
-    }
-    Ok(())
 }
+
+pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -1,6 +1,8 @@
 //! LTC Lab: shading many point lights with a physically based BRDF (GGX specular + Burley
 //! diffuse) approximated by Linearly Transformed Cosines. The math (`brdf`, `ltc`) knows
-//! nothing of GPUs or windows; `cpu` is the reference renderer built on it.
+//! nothing of GPUs or windows; `render` says what a render is for every renderer; `cpu` is
+//! the reference renderer, `gpu` the wgpu one, `app` the lab. The command line is the
+//! binary's (`src/main.rs`, `src/cli/`).
 
 pub mod app;
 pub mod atlas;
@@ -8,10 +10,13 @@ pub mod bench;
 pub mod brdf;
 pub mod cpu;
 pub mod error;
+pub mod eval;
+pub mod files;
 pub mod gpu;
 pub mod ltc;
 pub mod metrics;
 pub mod output;
 pub mod plot;
+pub mod render;
 pub mod scene;
 pub mod study;

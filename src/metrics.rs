@@ -2,7 +2,7 @@
 
 use glam::DVec3;
 
-use crate::cpu::{Frame, FrameKind};
+use crate::render::{Frame, FrameKind};
 
 /// Rec. 709 / sRGB luminance weights (ITU-R BT.709-6, item 3.3).
 pub fn luminance(c: DVec3) -> f64 {
@@ -14,12 +14,27 @@ pub fn luminance(c: DVec3) -> f64 {
 /// black after tone mapping, and their relative error would only measure noise.
 pub const RELATIVE_FLOOR: f64 = 1e-2;
 
-/// The floor of `RELATIVE_FLOOR` for a reference image (never zero).
-pub fn relative_floor(exact: &Frame) -> f64 {
-    let (sum, count) =
-        plane_pixels(exact).fold((0.0, 0usize), |(s, n), (_, c)| (s + luminance(c), n + 1));
-    let mean = if count > 0 { sum / count as f64 } else { 0.0 };
+/// The floor of `RELATIVE_FLOOR` for a reference image, never zero. Where the reference is
+/// black all over (figure2-case1: the light is below the plane) the approximation stands in,
+/// so that the glow of an unclipped LTC reads as a finite ratio (≤ 100 × the number of
+/// pixels), not as infinity. Magnitudes: without the case-2 rule the approximation holds
+/// negative light, and its plain mean can be ≤ 0.
+pub fn relative_floor(exact: &Frame, approx: &Frame) -> f64 {
+    let exact_mean = mean_abs_luminance(exact);
+    let mean = if exact_mean > 0.0 {
+        exact_mean
+    } else {
+        mean_abs_luminance(approx)
+    };
     (RELATIVE_FLOOR * mean).max(f64::MIN_POSITIVE)
+}
+
+/// The mean of |luminance| over the plane's pixels (0 without any).
+pub fn mean_abs_luminance(frame: &Frame) -> f64 {
+    let (sum, count) = plane_pixels(frame).fold((0.0, 0usize), |(s, n), (_, c)| {
+        (s + luminance(c).abs(), n + 1)
+    });
+    if count > 0 { sum / count as f64 } else { 0.0 }
 }
 
 fn plane_pixels(frame: &Frame) -> impl Iterator<Item = (usize, DVec3)> + '_ {
@@ -33,7 +48,7 @@ fn plane_pixels(frame: &Frame) -> impl Iterator<Item = (usize, DVec3)> + '_ {
 
 /// Per pixel `|L_ltc − L_exact| / max(L_exact, floor)` on luminance; zero off the plane.
 pub fn relative_difference(approx: &Frame, exact: &Frame) -> Frame {
-    let floor = relative_floor(exact);
+    let floor = relative_floor(exact, approx);
     let pixels = approx
         .pixels
         .iter()
@@ -43,8 +58,7 @@ pub fn relative_difference(approx: &Frame, exact: &Frame) -> Frame {
             if !on {
                 return DVec3::ZERO;
             }
-            let le = luminance(*e);
-            DVec3::splat((luminance(*a) - le).abs() / le.max(floor))
+            DVec3::splat(relative_error(luminance(*a), luminance(*e), floor))
         })
         .collect();
     Frame {
@@ -53,6 +67,11 @@ pub fn relative_difference(approx: &Frame, exact: &Frame) -> Frame {
         divider: None,
         ..exact.clone()
     }
+}
+
+/// `|a − e| / max(e, floor)`: one pixel of the difference map.
+pub fn relative_error(a: f64, e: f64, floor: f64) -> f64 {
+    (a - e).abs() / e.max(floor)
 }
 
 /// The image error of DESIGN §4.

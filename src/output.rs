@@ -6,8 +6,9 @@ use std::path::Path;
 
 use glam::DVec3;
 
-use crate::cpu::{Frame, FrameKind};
-use crate::error::{InputError, Result, write_atomically};
+use crate::error::{Error, Result};
+use crate::files::write_atomically;
+use crate::render::{Frame, FrameKind};
 
 /// The tone map of every PNG: radiance × exposure, then Reinhard's `x / (1 + x)` per channel
 /// (Reinhard et al. 2002 eq. 3: keeps hues, never clips highlights), then the sRGB transfer
@@ -171,31 +172,57 @@ pub fn to_exr_bytes(frame: &Frame) -> Vec<u8> {
     let mut out = Cursor::new(Vec::new());
     image
         .write()
+        // Parallel compression writes chunks in the order they finish: the same image would
+        // give different bytes run to run.
+        .non_parallel()
         .to_buffered(&mut out)
         .expect("writing an EXR to memory cannot fail");
     out.into_inner()
 }
 
-/// Writes `frame` to `path`: `.exr` linear, `.png` tone-mapped; atomically.
-pub fn write_frame(frame: &Frame, path: &Path, exposure: f64) -> Result<()> {
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let bytes = match ext.as_deref() {
-        Some("exr") => to_exr_bytes(frame),
-        Some("png") => {
+/// The file format an output path asks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImageFormat {
+    /// Tone-mapped 8-bit sRGB.
+    Png,
+    /// Linear f32 radiance.
+    Exr,
+}
+
+impl ImageFormat {
+    /// From the path's extension; anything but `.png` and `.exr` is refused, naming the path.
+    pub fn of(path: &Path) -> Result<Self> {
+        let ext = path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        match ext.as_deref() {
+            Some("png") => Ok(Self::Png),
+            Some("exr") => Ok(Self::Exr),
+            _ => Err(Error::input(
+                path.display().to_string(),
+                "the output must end in .png or .exr",
+            )),
+        }
+    }
+}
+
+/// The frame encoded as `format`.
+pub fn frame_bytes(frame: &Frame, format: ImageFormat, exposure: f64) -> Vec<u8> {
+    match format {
+        ImageFormat::Exr => to_exr_bytes(frame),
+        ImageFormat::Png => {
             let mut out = Cursor::new(Vec::new());
             to_rgb8(frame, exposure)
                 .write_to(&mut out, image::ImageFormat::Png)
-                .map_err(|e| InputError::new(path.display().to_string(), e.to_string()))?;
+                .expect("encoding a PNG in memory cannot fail");
             out.into_inner()
         }
-        _ => {
-            return Err(InputError::new(
-                path.display().to_string(),
-                "the output must end in .png or .exr",
-            ));
-        }
-    };
+    }
+}
+
+/// Writes `frame` to `path` (a file the user named): `.exr` linear, `.png` tone-mapped;
+/// atomically.
+pub fn write_frame(frame: &Frame, path: &Path, exposure: f64) -> Result<()> {
+    let bytes = frame_bytes(frame, ImageFormat::of(path)?, exposure);
     write_atomically(path, &bytes)
 }

@@ -5,7 +5,7 @@ use std::sync::Once;
 
 use plotters::prelude::*;
 
-use crate::error::{InputError, Result};
+use crate::error::{Error, Result};
 use crate::output::false_colour;
 
 /// Registers the bundled font under plotters' "sans-serif" once per process.
@@ -24,11 +24,9 @@ fn register_font() {
     });
 }
 
-fn plot_error(path: &std::path::Path, e: impl std::fmt::Display) -> InputError {
-    InputError::new(
-        path.display().to_string(),
-        format!("cannot draw the chart: {e}"),
-    )
+/// A drawing failure of plotters (a font or a backend): the machine's fault, not the input's.
+fn plot_error(name: &str, e: impl std::fmt::Display) -> Error {
+    Error::machine(name, format!("cannot draw the chart: {e}"))
 }
 
 /// One labelled point of a Pareto chart; `highlight` points are drawn large and labelled.
@@ -43,13 +41,14 @@ pub struct ParetoPoint {
 pub const ERROR_FLOOR: f64 = 1e-7;
 
 /// Time against error on log axes, one marker per point, highlighted ones labelled.
-pub fn pareto_png(path: &std::path::Path, title: &str, points: &[ParetoPoint]) -> Result<()> {
+/// Returns the PNG's bytes; `name` is for errors.
+pub fn pareto_png(name: &str, title: &str, points: &[ParetoPoint]) -> Result<Vec<u8>> {
     register_font();
     let (w, h) = (1000u32, 640u32);
     let mut buffer = vec![0u8; (w * h * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| plot_error(path, e))?;
+        root.fill(&WHITE).map_err(|e| plot_error(name, e))?;
         let ms = |f: fn(f64, f64) -> f64, init| points.iter().map(|p| p.ms).fold(init, f);
         let (x0, x1) = (ms(f64::min, f64::INFINITY) / 1.5, ms(f64::max, 0.0) * 1.5);
         let (y0, y1) = (
@@ -64,7 +63,7 @@ pub fn pareto_png(path: &std::path::Path, title: &str, points: &[ParetoPoint]) -
             // x: log10 of the time on a linear axis (plotters' log axis has no ticks inside
             // one decade, where a study's times usually fall), labelled with the times.
             .build_cartesian_2d(x0.log10()..x1.log10(), (y0..y1).log_scale())
-            .map_err(|e| plot_error(path, e))?;
+            .map_err(|e| plot_error(name, e))?;
         chart
             .configure_mesh()
             .x_desc("GPU ms per frame (log)")
@@ -81,7 +80,7 @@ pub fn pareto_png(path: &std::path::Path, title: &str, points: &[ParetoPoint]) -
             .y_label_formatter(&|v| format!("{v:.0e}"))
             .label_style(("sans-serif", 14))
             .draw()
-            .map_err(|e| plot_error(path, e))?;
+            .map_err(|e| plot_error(name, e))?;
         let palette = |k: usize| Palette99::pick(k).to_rgba();
         let mut names: Vec<&str> = points.iter().map(|p| p.label.as_str()).collect();
         names.dedup();
@@ -98,7 +97,7 @@ pub fn pareto_png(path: &std::path::Path, title: &str, points: &[ParetoPoint]) -
             };
             chart
                 .draw_series(std::iter::once(Circle::new((p.ms.log10(), y), r, style)))
-                .map_err(|e| plot_error(path, e))?;
+                .map_err(|e| plot_error(name, e))?;
             if p.highlight {
                 labels.push((
                     chart.backend_coord(&(p.ms.log10(), y)),
@@ -119,30 +118,30 @@ pub fn pareto_png(path: &std::path::Path, title: &str, points: &[ParetoPoint]) -
                 vec![(x, y), (lx - 4, ly)],
                 colour.stroke_width(1),
             ))
-            .map_err(|e| plot_error(path, e))?;
+            .map_err(|e| plot_error(name, e))?;
             root.draw(&Text::new(label, (lx, ly - 8), ("sans-serif", 15)))
-                .map_err(|e| plot_error(path, e))?;
+                .map_err(|e| plot_error(name, e))?;
         }
-        root.present().map_err(|e| plot_error(path, e))?;
+        root.present().map_err(|e| plot_error(name, e))?;
     }
-    write_rgb(path, w, h, buffer)
+    encode_png(name, w, h, buffer)
 }
 
 /// A heat map of `value(x, y)` on a grid of cells with the given edges, coloured on the
 /// relative-difference scale of `output::diff_scale_position` (log, 0.1% to 100%).
 pub fn heat_map_png(
-    path: &std::path::Path,
+    name: &str,
     title: &str,
     (x_desc, x_edges): (&str, &[f64]),
     (y_desc, y_edges): (&str, &[f64]),
     value: impl Fn(usize, usize) -> f64,
-) -> Result<()> {
+) -> Result<Vec<u8>> {
     register_font();
     let (w, h) = (760u32, 640u32);
     let mut buffer = vec![0u8; (w * h * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| plot_error(path, e))?;
+        root.fill(&WHITE).map_err(|e| plot_error(name, e))?;
         let (main, bar) = root.split_vertically(h - 60);
         let (xs, ys) = (x_edges, y_edges);
         let mut chart = ChartBuilder::on(&main)
@@ -151,7 +150,7 @@ pub fn heat_map_png(
             .x_label_area_size(40)
             .y_label_area_size(56)
             .build_cartesian_2d(xs[0]..xs[xs.len() - 1], ys[0]..ys[ys.len() - 1])
-            .map_err(|e| plot_error(path, e))?;
+            .map_err(|e| plot_error(name, e))?;
         chart
             .configure_mesh()
             .disable_mesh()
@@ -159,7 +158,7 @@ pub fn heat_map_png(
             .y_desc(y_desc)
             .label_style(("sans-serif", 14))
             .draw()
-            .map_err(|e| plot_error(path, e))?;
+            .map_err(|e| plot_error(name, e))?;
         let cells = (0..xs.len() - 1).flat_map(|i| (0..ys.len() - 1).map(move |j| (i, j)));
         chart
             .draw_series(cells.map(|(i, j)| {
@@ -169,7 +168,7 @@ pub fn heat_map_png(
                     RGBColor(r, g, b).filled(),
                 )
             }))
-            .map_err(|e| plot_error(path, e))?;
+            .map_err(|e| plot_error(name, e))?;
         // The colour scale: log from 0.1% to 100%.
         let bar = bar.margin(8, 16, 70, 24);
         let (bw, _) = bar.dim_in_pixel();
@@ -179,22 +178,22 @@ pub fn heat_map_png(
                 [(x as i32, 0), (x as i32 + 1, 16)],
                 RGBColor(r, g, b).filled(),
             ))
-            .map_err(|e| plot_error(path, e))?;
+            .map_err(|e| plot_error(name, e))?;
         }
         for (k, label) in ["0.1%", "1%", "10%", "100%"].iter().enumerate() {
             let x = (f64::from(bw) * k as f64 / 3.0) as i32 - 12;
             bar.draw(&Text::new(*label, (x, 20), ("sans-serif", 14)))
-                .map_err(|e| plot_error(path, e))?;
+                .map_err(|e| plot_error(name, e))?;
         }
-        root.present().map_err(|e| plot_error(path, e))?;
+        root.present().map_err(|e| plot_error(name, e))?;
     }
-    write_rgb(path, w, h, buffer)
+    encode_png(name, w, h, buffer)
 }
 
-fn write_rgb(path: &std::path::Path, w: u32, h: u32, buffer: Vec<u8>) -> Result<()> {
+fn encode_png(name: &str, w: u32, h: u32, buffer: Vec<u8>) -> Result<Vec<u8>> {
     let img = image::RgbImage::from_raw(w, h, buffer).expect("the buffer has w × h × 3 bytes");
     let mut out = std::io::Cursor::new(Vec::new());
     img.write_to(&mut out, image::ImageFormat::Png)
-        .map_err(|e| plot_error(path, e))?;
-    crate::error::write_atomically(path, &out.into_inner())
+        .map_err(|e| plot_error(name, e))?;
+    Ok(out.into_inner())
 }

@@ -1,12 +1,50 @@
-//! The scene of DESIGN §3 and no more: a plane `z = 0`, its material, a camera and point
-//! lights, read from small TOML presets (`assets/scenes/`), with a seeded light generator.
+//! The scene of DESIGN §3 and no more: a plane `z = 0`, its material, a camera (and its
+//! rays) and point lights, read from small TOML presets (`assets/scenes/`), with a seeded
+//! light generator.
 
 use std::path::Path;
 
 use glam::DVec3;
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize};
 
-use crate::error::{InputError, Result};
+use crate::error::{Error, Result};
+use crate::render::SurfacePoint;
+
+/// The shipped presets, embedded so that the lab and the benchmarks run from anywhere.
+pub const PRESETS: [(&str, &str); 4] = [
+    ("paper-100", include_str!("../assets/scenes/paper-100.toml")),
+    (
+        "figure2-normal",
+        include_str!("../assets/scenes/figure2-normal.toml"),
+    ),
+    (
+        "figure2-case1",
+        include_str!("../assets/scenes/figure2-case1.toml"),
+    ),
+    (
+        "figure2-case2",
+        include_str!("../assets/scenes/figure2-case2.toml"),
+    ),
+];
+
+/// A shipped preset by name (`paper-100`, `figure2-normal`, `figure2-case1`, `figure2-case2`).
+pub fn preset(name: &str) -> Scene {
+    let (_, text) = PRESETS
+        .iter()
+        .find(|(n, _)| *n == name)
+        .expect("a shipped preset");
+    Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")
+}
+
+/// Exactly `N` numbers. serde's fixed-size arrays take the first `N` elements of a longer
+/// TOML list and drop the rest without a word (a 4-element colour, a 5-element position).
+fn exactly<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<[f64; N], D::Error> {
+    let v = Vec::<f64>::deserialize(d)?;
+    let len = v.len();
+    v.try_into().map_err(|_| {
+        serde::de::Error::invalid_length(len, &format!("a list of exactly {N} numbers").as_str())
+    })
+}
 
 /// The square plane `|x|, |y| ≤ half_size`, `z = 0`, normal `+z`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -20,6 +58,7 @@ pub struct Plane {
 #[serde(deny_unknown_fields)]
 pub struct Material {
     /// Diffuse albedo `c`, linear RGB.
+    #[serde(deserialize_with = "exactly")]
     pub base_color: [f64; 3],
     /// Specular reflectance at normal incidence (Schlick's `F0`).
     pub f0: f64,
@@ -31,7 +70,9 @@ pub struct Material {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Camera {
+    #[serde(deserialize_with = "exactly")]
     pub position: [f64; 3],
+    #[serde(deserialize_with = "exactly")]
     pub target: [f64; 3],
     /// Vertical field of view in degrees.
     pub fov_y_degrees: f64,
@@ -41,8 +82,9 @@ pub struct Camera {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Light {
+    #[serde(deserialize_with = "exactly")]
     pub position: [f64; 3],
-    #[serde(default = "white")]
+    #[serde(default = "white", deserialize_with = "exactly")]
     pub color: [f64; 3],
     pub intensity: f64,
     /// Range `R` of the windowed falloff; absent means infinite.
@@ -72,8 +114,10 @@ pub struct RandomLights {
     pub count: usize,
     pub seed: u64,
     /// Heights above the plane, `[min, max]`.
+    #[serde(deserialize_with = "exactly")]
     pub height: [f64; 2],
     /// Intensities, `[min, max]`.
+    #[serde(deserialize_with = "exactly")]
     pub intensity: [f64; 2],
     /// Range of every generated light; absent means infinite.
     #[serde(default)]
@@ -107,8 +151,7 @@ impl Scene {
     /// Reads, validates and expands a scene file; every error names the file.
     pub fn load(path: &Path) -> Result<Scene> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| InputError::new(&name, format!("cannot read: {e}")))?;
+        let text = crate::files::read_text(path)?;
         Scene::from_toml(&text, &name)
     }
 
@@ -118,12 +161,12 @@ impl Scene {
             let line = e
                 .span()
                 .map(|s| format!(" (line {})", text[..s.start].lines().count().max(1)));
-            InputError::new(
+            Error::input(
                 name,
                 format!("{}{}", e.message().trim(), line.unwrap_or_default()),
             )
         })?;
-        scene.validate().map_err(|m| InputError::new(name, m))?;
+        scene.validate().map_err(|m| Error::input(name, m))?;
         Ok(scene.expanded())
     }
 
@@ -142,37 +185,35 @@ impl Scene {
 
     /// Why the scene cannot be rendered, if it cannot.
     pub fn validate(&self) -> std::result::Result<(), String> {
-        let finite = |what: &str, xs: &[f64]| match xs {
-            _ if xs.iter().all(|x| x.is_finite()) => Ok(()),
-            [x] => Err(format!("{what} must be a finite number, got {x}")),
-            _ => Err(format!("{what} must be finite numbers, got {xs:?}")),
-        };
-        finite("plane.half_size", &[self.plane.half_size])?;
-        if self.plane.half_size <= 0.0 {
-            return Err(format!(
-                "plane.half_size must be > 0, got {}",
-                self.plane.half_size
-            ));
-        }
+        within(
+            "plane.half_size",
+            &[self.plane.half_size],
+            f64::MIN_POSITIVE,
+            MAX_COORDINATE,
+        )?;
         let m = &self.material;
-        finite("material.base_color", &m.base_color)?;
-        finite("material.f0", &[m.f0])?;
-        finite("material.alpha", &[m.alpha])?;
-        if m.base_color.iter().any(|c| !(0.0..=1.0).contains(c)) {
+        within("material.base_color", &m.base_color, 0.0, 1.0)?;
+        within("material.f0", &[m.f0], 0.0, 1.0)?;
+        within(
+            "material.alpha",
+            &[m.alpha],
+            crate::ltc::lut::ALPHA_MIN,
+            1.0,
+        )?;
+        let c = &self.camera;
+        within(
+            "camera.position",
+            &c.position,
+            -MAX_COORDINATE,
+            MAX_COORDINATE,
+        )?;
+        within("camera.target", &c.target, -MAX_COORDINATE, MAX_COORDINATE)?;
+        if c.position[2] <= 0.0 {
             return Err(format!(
-                "material.base_color must be in [0, 1], got {:?}",
-                m.base_color
+                "camera.position must be above the plane (z > 0), got z = {}: the plane is lit from above and one-sided",
+                c.position[2]
             ));
         }
-        if !(0.0..=1.0).contains(&m.f0) {
-            return Err(format!("material.f0 must be in [0, 1], got {}", m.f0));
-        }
-        if !(m.alpha > 0.0 && m.alpha <= 1.0) {
-            return Err(format!("material.alpha must be in (0, 1], got {}", m.alpha));
-        }
-        let c = &self.camera;
-        finite("camera.position", &c.position)?;
-        finite("camera.target", &c.target)?;
         finite("camera.fov_y_degrees", &[c.fov_y_degrees])?;
         if !(c.fov_y_degrees > 0.0 && c.fov_y_degrees < 180.0) {
             return Err(format!(
@@ -192,13 +233,15 @@ impl Scene {
             check_light(&format!("lights[{k}]"), l)?;
         }
         if let Some(r) = &self.random_lights {
-            finite("random_lights.height", &r.height)?;
-            finite("random_lights.intensity", &r.intensity)?;
+            within(
+                "random_lights.height",
+                &r.height,
+                -MAX_COORDINATE,
+                MAX_COORDINATE,
+            )?;
+            within("random_lights.intensity", &r.intensity, 0.0, MAX_INTENSITY)?;
             if r.height[0] > r.height[1] || r.intensity[0] > r.intensity[1] {
                 return Err("random_lights: each [min, max] must have min ≤ max".into());
-            }
-            if r.intensity[0] < 0.0 {
-                return Err("random_lights.intensity must be ≥ 0".into());
             }
             check_range("random_lights.range", r.range)?;
         }
@@ -212,6 +255,118 @@ impl Scene {
     }
 }
 
+/// The camera's rays: the geometry every renderer shares.
+impl Scene {
+    /// The camera's position and orthonormal basis: eye, forward, right, up (`+z` is up).
+    pub fn camera_basis(&self) -> (DVec3, DVec3, DVec3, DVec3) {
+        let eye = DVec3::from(self.camera.position);
+        let forward = (DVec3::from(self.camera.target) - eye).normalize();
+        let right = forward.cross(DVec3::Z).normalize();
+        (eye, forward, right, right.cross(forward))
+    }
+
+    /// The camera ray through image position (x, y) in pixels (pixel centres at k + ½) of a
+    /// `width × height` image: origin and unit direction.
+    pub fn camera_ray(&self, x: f64, y: f64, width: usize, height: usize) -> (DVec3, DVec3) {
+        let (eye, forward, right, up) = self.camera_basis();
+        let tan_half = (self.camera.fov_y_degrees.to_radians() * 0.5).tan();
+        let aspect = width as f64 / height as f64;
+        let sx = (2.0 * x / width as f64 - 1.0) * tan_half * aspect;
+        let sy = (1.0 - 2.0 * y / height as f64) * tan_half;
+        (eye, (forward + sx * right + sy * up).normalize())
+    }
+
+    /// Where world point `p` appears in a `width × height` image, in pixels; `None` behind
+    /// the camera.
+    pub fn project(&self, p: DVec3, width: usize, height: usize) -> Option<(f64, f64)> {
+        let (eye, forward, right, up) = self.camera_basis();
+        let d = p - eye;
+        let z = d.dot(forward);
+        if z <= 1e-9 {
+            return None;
+        }
+        let tan_half = (self.camera.fov_y_degrees.to_radians() * 0.5).tan();
+        let aspect = width as f64 / height as f64;
+        let sx = d.dot(right) / (z * tan_half * aspect);
+        let sy = d.dot(up) / (z * tan_half);
+        Some((
+            (sx + 1.0) * 0.5 * width as f64,
+            (1.0 - sy) * 0.5 * height as f64,
+        ))
+    }
+
+    /// The point of the plane seen through pixel (x, y) of a `width × height` image.
+    pub fn surface_point(
+        &self,
+        x: usize,
+        y: usize,
+        width: usize,
+        height: usize,
+    ) -> Option<SurfacePoint> {
+        self.surface_point_at(x as f64 + 0.5, y as f64 + 0.5, width, height)
+    }
+
+    /// `surface_point` at a continuous image position.
+    pub fn surface_point_at(
+        &self,
+        x: f64,
+        y: f64,
+        width: usize,
+        height: usize,
+    ) -> Option<SurfacePoint> {
+        let (eye, dir) = self.camera_ray(x, y, width, height);
+        if dir.z == 0.0 {
+            return None;
+        }
+        let t = -eye.z / dir.z;
+        if t <= 0.0 {
+            return None;
+        }
+        let position = eye + t * dir;
+        let h = self.plane.half_size;
+        if position.x.abs() > h || position.y.abs() > h {
+            return None;
+        }
+        Some(SurfacePoint {
+            position,
+            view: (eye - position).normalize(),
+        })
+    }
+}
+
+/// The largest coordinate (and plane half-size) a scene may use. The GPU shades in f32, whose
+/// spacing at 1e6 is 0.06 (positions beyond it cannot be told apart at the plane's metre
+/// scale), and whose range still holds the fourth power of any distance within it
+/// (`(2√3·1e6)⁴ ≈ 1.4e26 < 3.4e38`, ltc-fast's `|M⁻¹u|⁴` scaled by the matrix).
+pub const MAX_COORDINATE: f64 = 1e6;
+
+/// The largest `color × intensity` per channel of a light. With a light no nearer than
+/// `brdf::MIN_LIGHT_DISTANCE` (E ≤ 1e6 / 1e-12), a lobe no sharper than α_min's (f·cos ≲ 2e11
+/// at any view: D ≤ 1/(π α_min²), G/(4 n·v) ≤ 1/(2α)) and `MAX_LIGHTS` lights, a pixel's
+/// radiance stays below 2e35, inside f32's range with a margin of 1000: the CPU and the GPU
+/// render the same finite image.
+pub const MAX_INTENSITY: f64 = 1e6;
+
+fn finite(what: &str, xs: &[f64]) -> std::result::Result<(), String> {
+    match xs {
+        _ if xs.iter().all(|x| x.is_finite()) => Ok(()),
+        [x] => Err(format!("{what} must be a finite number, got {x}")),
+        _ => Err(format!("{what} must be finite numbers, got {xs:?}")),
+    }
+}
+
+/// Every value of `xs` finite and in `[lo, hi]`.
+fn within(what: &str, xs: &[f64], lo: f64, hi: f64) -> std::result::Result<(), String> {
+    finite(what, xs)?;
+    match xs.iter().find(|x| !(lo..=hi).contains(*x)) {
+        None => Ok(()),
+        Some(_) if xs.len() == 1 => Err(format!("{what} must be in [{lo}, {hi}], got {}", xs[0])),
+        Some(_) => Err(format!("{what} must be in [{lo}, {hi}], got {xs:?}")),
+    }
+}
+
+/// A range is `> 0`; any positive value works the same on the CPU and the GPU (`GpuLight`
+/// keeps a range too small for f32 positive rather than let it round to 0, "infinite").
 fn check_range(what: &str, range: Option<f64>) -> std::result::Result<(), String> {
     match range {
         Some(r) if r.is_nan() || r <= 0.0 => Err(format!("{what} must be > 0, got {r}")),
@@ -220,13 +375,22 @@ fn check_range(what: &str, range: Option<f64>) -> std::result::Result<(), String
 }
 
 fn check_light(what: &str, l: &Light) -> std::result::Result<(), String> {
-    if !l.position.iter().chain(&l.color).all(|x| x.is_finite()) || !l.intensity.is_finite() {
-        return Err(format!(
-            "{what}: position, color and intensity must be finite"
-        ));
-    }
+    within(
+        &format!("{what}.position"),
+        &l.position,
+        -MAX_COORDINATE,
+        MAX_COORDINATE,
+    )?;
+    finite(&format!("{what}.color"), &l.color)?;
+    finite(&format!("{what}.intensity"), &[l.intensity])?;
     if l.intensity < 0.0 || l.color.iter().any(|&c| c < 0.0) {
         return Err(format!("{what}: color and intensity must be ≥ 0"));
+    }
+    let peak = l.color.iter().fold(0.0f64, |m, &c| m.max(c)) * l.intensity;
+    if peak > MAX_INTENSITY {
+        return Err(format!(
+            "{what}: color × intensity must be ≤ {MAX_INTENSITY:e} per channel, got {peak:e} (beyond it f32 radiance overflows on the GPU)"
+        ));
     }
     check_range(&format!("{what}.range"), l.range)
 }

@@ -2,14 +2,14 @@
 //! compared with the exact BRDF image of the same scene, for the paper-100 set-up at several
 //! light counts and roughnesses.
 
-use crate::cpu::LutFilter;
-use crate::error::{InputError, Result};
+use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{GpuMethod, PlaneRenderer, PlaneSettings, ShaderChecks};
+use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
 use crate::ltc::Normalization;
 use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::Lut;
 use crate::metrics::image_error;
+use crate::render::{LutFilter, Method, RenderSettings};
 use crate::scene::Scene;
 
 /// Which table a variant shades with.
@@ -27,7 +27,7 @@ pub enum LutChoice {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Variant {
     pub name: &'static str,
-    pub method: GpuMethod,
+    pub method: Method,
     pub normalization: Normalization,
     pub filter: LutFilter,
     pub lut: LutChoice,
@@ -42,9 +42,9 @@ pub fn variants() -> Vec<Variant> {
         filter,
         lut,
     };
-    use GpuMethod::*;
     use LutChoice::*;
     use LutFilter::*;
+    use Method::*;
     use Normalization::*;
     vec![
         v("brdf", Brdf, Corrected, Bilinear, Shipped),
@@ -105,7 +105,7 @@ impl StudyRow {
     pub fn parse(line: &str, at: &str) -> Result<Self> {
         let f: Vec<&str> = line.split(',').map(str::trim).collect();
         if f.len() != 10 {
-            return Err(InputError::new(
+            return Err(Error::input(
                 at,
                 format!("expected 10 values, found {}", f.len()),
             ));
@@ -114,13 +114,11 @@ impl StudyRow {
             f[k].parse::<f64>()
                 .ok()
                 .filter(|x| x.is_finite() && *x >= 0.0)
-                .ok_or_else(|| {
-                    InputError::new(at, format!("'{}' is not a finite number ≥ 0", f[k]))
-                })
+                .ok_or_else(|| Error::input(at, format!("'{}' is not a finite number ≥ 0", f[k])))
         };
         let int = |k: usize| -> Result<usize> {
             f[k].parse::<usize>()
-                .map_err(|_| InputError::new(at, format!("'{}' is not a whole number", f[k])))
+                .map_err(|_| Error::input(at, format!("'{}' is not a whole number", f[k])))
         };
         Ok(Self {
             variant: f[0].to_string(),
@@ -148,13 +146,12 @@ pub fn study_scene(lights: usize, alpha: f64) -> Scene {
 /// Reads `study.csv`; errors name the file and line.
 pub fn read_csv(path: &std::path::Path) -> Result<Vec<StudyRow>> {
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::new(&name, format!("cannot read: {e}")))?;
+    let text = crate::files::read_text(path)?;
     let mut lines = text.lines().enumerate();
     match lines.next() {
         Some((_, h)) if h.trim() == StudyRow::CSV_HEADER => {}
         _ => {
-            return Err(InputError::new(
+            return Err(Error::input(
                 format!("{name} line 1"),
                 format!("the header must be '{}'", StudyRow::CSV_HEADER),
             ));
@@ -177,9 +174,10 @@ pub fn run(
     frames: usize,
     mut progress: impl FnMut(&StudyRow),
 ) -> Result<Vec<StudyRow>> {
+    crate::bench::check(ctx, light_counts, (width, height))?;
     let variants: Vec<Variant> = variants()
         .into_iter()
-        .filter(|v| v.method != GpuMethod::LtcF16 || ctx.has_f16())
+        .filter(|v| v.method != Method::LtcF16 || ctx.has_f16())
         .collect();
     let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
     for v in &variants {
@@ -200,7 +198,7 @@ pub fn run(
                 .lut
             }
         };
-        renderers.push((v.lut, PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)));
+        renderers.push((v.lut, PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)?));
     }
     let mut rows = Vec::new();
     for &alpha in alphas {
@@ -213,7 +211,7 @@ pub fn run(
                     .find(|(c, _)| *c == v.lut)
                     .expect("made above")
                     .1;
-                let mut s = PlaneSettings::single(width, height, v.method);
+                let mut s = RenderSettings::single(width, height, v.method);
                 s.normalization = v.normalization;
                 s.lut_filter = v.filter;
                 let frame = renderer.prepare(ctx, &scene, &s)?;
@@ -254,9 +252,9 @@ pub fn csv(rows: &[StudyRow]) -> String {
     out
 }
 
-/// The Pareto chart: every row as a faint marker, the case closest to paper-100 (100
-/// lights, α = 0.27) as one large labelled marker per variant.
-pub fn pareto_png(path: &std::path::Path, rows: &[StudyRow], device: &str) -> Result<()> {
+/// The Pareto chart as PNG bytes: every row as a faint marker, the case closest to
+/// paper-100 (100 lights, α = 0.27) as one large labelled marker per variant.
+pub fn pareto_png(rows: &[StudyRow], device: &str) -> Result<Vec<u8>> {
     let key =
         |r: &StudyRow| ((r.lights as f64).ln() - 100f64.ln()).abs() + (r.alpha - 0.27).abs() * 10.0;
     let best = rows.iter().map(key).fold(f64::INFINITY, f64::min);
@@ -275,7 +273,7 @@ pub fn pareto_png(path: &std::path::Path, rows: &[StudyRow], device: &str) -> Re
         .collect();
     let size = rows.first().map_or((0, 0), |r| (r.width, r.height));
     crate::plot::pareto_png(
-        path,
+        "study.png",
         &format!(
             "{lights} lights, α = {alpha} (large); all cases (small) — {}×{} on {device}",
             size.0, size.1

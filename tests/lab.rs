@@ -6,7 +6,8 @@ mod gpu_common;
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use egui_kittest::{Harness, SnapshotOptions, SnapshotResults};
-use ltc_lab::app::{LabApp, LabState, PanelId, PlaneView};
+use ltc_lab::app::{LabApp, LabState, PanelId};
+use ltc_lab::render::View;
 
 /// A harness showing the lab at `size`, with the live GPU times hidden (they change run to
 /// run), or `None` (loudly) without an adapter.
@@ -173,7 +174,7 @@ fn case_1_rule_off_makes_the_glow_appear() {
 fn dragging_the_divider_moves_it() {
     let state = LabState {
         maximised: Some(PanelId::Plane),
-        view: PlaneView::Split,
+        view: View::Split,
         ..LabState::default()
     };
     let Some(mut h) = lab((1000.0, 700.0), state) else {
@@ -249,8 +250,8 @@ fn a_broken_lut_file_is_reported_and_the_lab_keeps_its_table() {
     h.run_steps(1);
     h.get_by_label("use LUT").click();
     h.run_steps(2);
-    let (is_error, text) = h.state().message.clone().expect("a message");
-    assert!(is_error && text.contains("broken.exr"), "{text}");
+    let m = h.state().message.clone().expect("a message");
+    assert!(m.is_error && m.text.contains("broken.exr"), "{}", m.text);
     assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded());
     assert!(
         h.query_by_label_contains("still using the previous table")
@@ -274,7 +275,7 @@ fn a_broken_lut_file_is_reported_and_the_lab_keeps_its_table() {
     h.get_by_label("use LUT").click();
     h.run_steps(3);
     assert_eq!(h.state().lut.size, 4);
-    assert!(!h.state().message.as_ref().unwrap().0);
+    assert!(!h.state().message.as_ref().unwrap().is_error);
 }
 
 #[test]

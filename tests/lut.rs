@@ -118,6 +118,11 @@ fn broken_files_are_refused_with_their_name() {
 
 /// The table's channels but `skip`, as an EXR (what an older or a foreign writer makes).
 fn exr_without(lut: &Lut, skip: &str) -> Vec<u8> {
+    exr_written(lut, skip, exr::prelude::AttributeValue::F64(lut.alpha_min))
+}
+
+/// The table as another writer might make it: without channel `skip`, α_min as `alpha_min`.
+fn exr_written(lut: &Lut, skip: &str, alpha_min: exr::prelude::AttributeValue) -> Vec<u8> {
     use exr::prelude::*;
     let channels = ltc_lab::ltc::lut::CHANNEL_NAMES
         .iter()
@@ -131,10 +136,9 @@ fn exr_without(lut: &Lut, skip: &str) -> Vec<u8> {
         })
         .collect();
     let mut attributes = LayerAttributes::named("ltc");
-    attributes.other.insert(
-        Text::from("ltc.alpha_min"),
-        AttributeValue::F64(lut.alpha_min),
-    );
+    attributes
+        .other
+        .insert(Text::from("ltc.alpha_min"), alpha_min);
     let layer = Layer::new(
         (lut.size, lut.size),
         attributes,
@@ -174,4 +178,20 @@ fn design_layout_without_the_scale_reads_with_scale_one() {
     lut.cells[9].0[Channel::SpecScale as usize] = 0.0;
     let err = Lut::from_exr_bytes(&lut.to_exr_bytes(), "zero.exr").unwrap_err();
     assert!(err.to_string().contains("spec.scale"), "{err}");
+}
+
+/// α_min written as f32 (1e-4 is not exactly representable there) reads as that f32 value;
+/// out of (0, 1), or not a number, it is refused with the attribute's name.
+#[test]
+fn alpha_min_may_be_written_as_f32() {
+    use exr::prelude::AttributeValue;
+    let lut = Lut::embedded();
+    let read =
+        Lut::from_exr_bytes(&exr_written(lut, "", AttributeValue::F32(1e-4)), "f32.exr").unwrap();
+    assert_eq!(read.alpha_min, f64::from(1e-4f32));
+    assert_eq!(read.cells, lut.cells);
+    for bad in [AttributeValue::F32(0.0), AttributeValue::F64(1.5)] {
+        let err = Lut::from_exr_bytes(&exr_written(lut, "", bad), "bad.exr").unwrap_err();
+        assert!(err.to_string().contains("ltc.alpha_min"), "{err}");
+    }
 }

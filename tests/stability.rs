@@ -4,10 +4,11 @@
 
 use glam::DVec3;
 use ltc_lab::brdf::{brdf_cos, point_light_exact};
-use ltc_lab::cpu::{Method, RenderSettings, render};
-use ltc_lab::ltc::fit::ALPHA_MIN;
+use ltc_lab::cpu::render;
+use ltc_lab::ltc::lut::ALPHA_MIN;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{Clipping, Normalization};
+use ltc_lab::render::{Method, RenderSettings, View};
 use ltc_lab::scene::{Camera, Light, Material, Plane, Scene};
 use proptest::prelude::*;
 
@@ -162,10 +163,10 @@ proptest! {
     fn renderer_is_finite_and_non_negative(a in alpha(), lights in proptest::collection::vec(light(), 0..4)) {
         let s = scene(a, lights);
         let lut = Lut::embedded();
-        for method in [Method::Brdf, Method::Ltc, Method::Split, Method::Diff] {
-            let frame = render(&s, lut, &RenderSettings::new(12, 12, method));
+        for view in [View::A, View::B, View::Split, View::Diff] {
+            let frame = render(&s, lut, &RenderSettings::compare(12, 12, view));
             for p in &frame.pixels {
-                prop_assert!(ok(p.x) && ok(p.y) && ok(p.z), "{method:?}: {p:?}");
+                prop_assert!(ok(p.x) && ok(p.y) && ok(p.z), "{view:?}: {p:?}");
             }
         }
     }
@@ -175,7 +176,7 @@ proptest! {
             y in -2.0f64..2.0, depth in prop_oneof![Just(0.158731), 1e-9f64..10.0]) {
         let s = scene(a, vec![Light { position: [x, y, -depth], color: [1.0; 3], intensity: 1e3, range: None }]);
         for method in [Method::Brdf, Method::Ltc] {
-            let frame = render(&s, Lut::embedded(), &RenderSettings::new(10, 10, method));
+            let frame = render(&s, Lut::embedded(), &RenderSettings::single(10, 10, method));
             prop_assert!(frame.pixels.iter().all(|p| *p == DVec3::ZERO), "{method:?}");
         }
     }

@@ -9,11 +9,13 @@ mod gpu_common;
 
 use glam::DVec3;
 use ltc_lab::brdf::{irradiance_scale, point_light_exact};
-use ltc_lab::gpu::plane::{GpuMethod, GpuView, PlaneRenderer, PlaneSettings};
-use ltc_lab::ltc::fit::{ALPHA_MIN, CellProblem, FitSettings, FitStrata};
+use ltc_lab::gpu::plane::PlaneRenderer;
+use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata};
 use ltc_lab::ltc::lobe::Lobe;
+use ltc_lab::ltc::lut::ALPHA_MIN;
 use ltc_lab::ltc::lut::{CHANNEL_COUNT, Lut};
 use ltc_lab::ltc::{Clipping, Normalization};
+use ltc_lab::render::{Method, RenderSettings, View};
 use ltc_lab::scene::{Camera, Light, Material, Plane, Scene};
 
 fn sweep(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f64> + Clone {
@@ -192,9 +194,9 @@ fn gpu_sweep_is_finite_non_negative_and_dark_below() {
     for alpha in log_sweep(ALPHA_MIN, 1.0, 4) {
         for camera_height in [3.0, 0.5, 0.02] {
             let scene = gpu_scene(alpha, camera_height, lights.clone());
-            for method in GpuMethod::ALL {
-                let mut s = PlaneSettings::single(32, 24, method);
-                for view in [GpuView::Single, GpuView::Diff] {
+            for method in Method::F32 {
+                let mut s = RenderSettings::single(32, 24, method);
+                for view in [View::A, View::Diff] {
                     s.view = view;
                     let frame = r.render(&g.ctx, &scene, &s).unwrap().0;
                     for p in &frame.pixels {
@@ -213,9 +215,9 @@ fn gpu_sweep_is_finite_non_negative_and_dark_below() {
                 .copied()
                 .collect();
             let scene = gpu_scene(alpha, camera_height, below);
-            for method in [GpuMethod::Ltc, GpuMethod::LtcFast] {
+            for method in [Method::Ltc, Method::LtcFast] {
                 let frame = r
-                    .render(&g.ctx, &scene, &PlaneSettings::single(32, 24, method))
+                    .render(&g.ctx, &scene, &RenderSettings::single(32, 24, method))
                     .unwrap()
                     .0;
                 assert!(
@@ -249,7 +251,7 @@ fn gpu_light_counts_zero_one_and_the_maximum() {
             .render(
                 &g.ctx,
                 &scene,
-                &PlaneSettings::single(4, 3, GpuMethod::LtcFast),
+                &RenderSettings::single(4, 3, Method::LtcFast),
             )
             .unwrap()
             .0;
@@ -273,8 +275,12 @@ fn gpu_light_counts_zero_one_and_the_maximum() {
         "{max} lights give {many}, one gives {one}"
     );
     if PlaneRenderer::max_lights(&g.ctx) < 1 << 22 {
-        let err = PlaneRenderer::check_light_count(&g.ctx, PlaneRenderer::max_lights(&g.ctx) + 1)
-            .unwrap_err();
+        let err = PlaneRenderer::check_light_count(
+            &g.ctx,
+            "scene",
+            PlaneRenderer::max_lights(&g.ctx) + 1,
+        )
+        .unwrap_err();
         assert!(err.to_string().contains("lights do not fit"), "{err}");
     }
 }

@@ -7,14 +7,14 @@ use std::sync::mpsc;
 
 use egui::Color32;
 
-use crate::app::LabState;
+use crate::app::state::LabState;
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS, bench_scene};
-use crate::cpu::Frame;
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{GpuMethod, PlaneRenderer, PlaneSettings, ShaderChecks};
+use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
 use crate::ltc::Normalization;
 use crate::ltc::lut::Lut;
 use crate::metrics::image_error;
+use crate::render::{Frame, Method, RenderSettings};
 use crate::scene::Scene;
 
 /// Size of the measured frames: small enough for lavapipe to finish in seconds.
@@ -34,7 +34,7 @@ pub struct Point {
 pub struct Measurement {
     pub points: Vec<Point>,
     /// (lights, fps) per method.
-    pub scaling: Vec<(GpuMethod, Vec<[f64; 2]>)>,
+    pub scaling: Vec<(Method, Vec<[f64; 2]>)>,
     pub device: String,
 }
 
@@ -217,9 +217,10 @@ impl ChartPanel {
 /// Every method on `scene`, then fps at the paper's light counts.
 pub fn measure(scene: &Scene, lut: &Lut) -> Result<Measurement, String> {
     let ctx = GpuContext::new().map_err(|e| e.to_string())?;
-    let mut renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked);
+    let mut renderer =
+        PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
     let (w, h) = MEASURE_SIZE;
-    let mut run = |scene: &Scene, s: &PlaneSettings| -> Result<(Frame, f64), String> {
+    let mut run = |scene: &Scene, s: &RenderSettings| -> Result<(Frame, f64), String> {
         let frame = renderer
             .prepare(&ctx, scene, s)
             .map_err(|e| e.to_string())?;
@@ -228,17 +229,17 @@ pub fn measure(scene: &Scene, lut: &Lut) -> Result<Measurement, String> {
         ms.sort_by(f64::total_cmp);
         Ok((renderer.read(&ctx, &frame), ms[FRAMES / 2]))
     };
-    let (exact, _) = run(scene, &PlaneSettings::single(w, h, GpuMethod::Brdf))?;
+    let (exact, _) = run(scene, &RenderSettings::single(w, h, Method::Brdf))?;
     let mut points = Vec::new();
     let variants = [
-        ("brdf", GpuMethod::Brdf, Normalization::Corrected),
-        ("brdf-fast", GpuMethod::BrdfFast, Normalization::Corrected),
-        ("ltc", GpuMethod::Ltc, Normalization::Corrected),
-        ("ltc-fast", GpuMethod::LtcFast, Normalization::Corrected),
-        ("ltc-paper", GpuMethod::Ltc, Normalization::PaperLiteral),
+        ("brdf", Method::Brdf, Normalization::Corrected),
+        ("brdf-fast", Method::BrdfFast, Normalization::Corrected),
+        ("ltc", Method::Ltc, Normalization::Corrected),
+        ("ltc-fast", Method::LtcFast, Normalization::Corrected),
+        ("ltc-paper", Method::Ltc, Normalization::PaperLiteral),
     ];
     for (label, method, normalization) in variants {
-        let mut s = PlaneSettings::single(w, h, method);
+        let mut s = RenderSettings::single(w, h, method);
         s.normalization = normalization;
         let (frame, ms) = run(scene, &s)?;
         points.push(Point {
@@ -248,10 +249,10 @@ pub fn measure(scene: &Scene, lut: &Lut) -> Result<Measurement, String> {
         });
     }
     let mut scaling = Vec::new();
-    for method in GpuMethod::ALL {
+    for method in Method::F32 {
         let mut series = Vec::new();
         for &n in &PAPER_LIGHTS {
-            let (_, ms) = run(&bench_scene(n), &PlaneSettings::single(w, h, method))?;
+            let (_, ms) = run(&bench_scene(n), &RenderSettings::single(w, h, method))?;
             series.push([n as f64, 1e3 / ms]);
         }
         scaling.push((method, series));

@@ -6,12 +6,14 @@
 use egui::{Color32, Vec2};
 use glam::DVec3;
 
-use crate::app::{ClipScene, LabState, preset};
-use crate::cpu::{ClipCounts, Frame, Method, RenderSettings, clip_counts, render};
+use crate::app::state::{ClipScene, LabState};
+use crate::cpu::{ClipCounts, clip_counts, render};
 use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, Normalization};
 use crate::metrics::luminance;
 use crate::output::tone_map;
+use crate::render::{Frame, Method, RenderSettings};
+use crate::scene::preset;
 
 /// Size of each small picture: the CPU reference renders all of them (one light each).
 pub const PICTURE: (usize, usize) = (192, 108);
@@ -102,7 +104,7 @@ impl ClippingPanel {
         }
         let (w, h) = PICTURE;
         let shot = |scene: &str, method: Method, clip: Clipping| {
-            let mut r = RenderSettings::new(w, h, method);
+            let mut r = RenderSettings::single(w, h, method);
             r.clipping = clip;
             r.normalization = s.normalization;
             render(&preset(scene), lut, &r)

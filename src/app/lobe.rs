@@ -6,7 +6,7 @@
 use egui::{Color32, Pos2, Vec2};
 use glam::{DMat3, DVec3};
 
-use crate::app::LabState;
+use crate::app::state::LabState;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, Ltc, Normalization};
@@ -53,7 +53,7 @@ impl LobePanel {
         });
         ui.add(egui::Slider::new(&mut s.morph, 0.0..=1.0).text("M: I -> fitted"))
             .on_hover_text("D is the clamped cosine pushed through M_t = (1−t)·I + t·M: at 0 the cosine, at 1 the fitted LTC (the transformed lobe)");
-        let theta = s.theta_o_deg.to_radians().min(crate::ltc::fit::THETA_MAX);
+        let theta = s.theta_o_deg.to_radians().min(crate::ltc::lut::THETA_MAX);
         let v = DVec3::new(theta.sin(), 0.0, theta.cos());
         let alpha = s.alpha();
         let pair = s.ltc_pair(lut);

@@ -8,10 +8,10 @@ use std::sync::mpsc;
 use egui::{Color32, Vec2};
 use glam::DMat3;
 
-use crate::app::LabState;
-use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, cell_theta};
+use crate::app::state::LabState;
+use crate::ltc::fit::{CellProblem, FitSettings, FitStrata};
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut};
+use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut, Table, cell_theta};
 use crate::ltc::{Ltc, mat3_rows};
 use crate::output::false_colour;
 
@@ -82,7 +82,7 @@ impl MatrixPanel {
     pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
         self.poll_refit(ui.ctx());
         let n = lut.size;
-        let theta = s.theta_o_deg.to_radians().min(crate::ltc::fit::THETA_MAX);
+        let theta = s.theta_o_deg.to_radians().min(crate::ltc::lut::THETA_MAX);
         let (u, v) = (s.alpha().sqrt(), (1.0 - theta.cos()).max(0.0).sqrt());
         let col = (u * (n - 1) as f64).round() as usize;
         let row = (v * (n - 1) as f64).round() as usize;
@@ -132,7 +132,8 @@ impl MatrixPanel {
             .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (DESIGN §4)");
             // Both shipped fits of this (θo, α), side by side.
             ui.vertical(|ui| {
-                for (name, table) in [("classic", crate::ltc::lut::Table::Classic), ("point", crate::ltc::lut::Table::Point)] {
+                for table in Table::ALL {
+                    let name = table.name();
                     let t = Lut::shipped(table).sample(s.alpha(), theta.cos());
                     let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
                     let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };

@@ -7,12 +7,12 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use crate::app::shading::Shading;
-use crate::app::{LabState, PlaneView};
-use crate::cpu::{Frame, FrameKind, clip_counts, shade_exact, shade_ltc};
-use crate::gpu::plane::{GpuView, PlaneSettings};
+use crate::app::state::LabState;
+use crate::cpu::{clip_counts, shade_exact, shade_ltc};
 use crate::ltc::lut::Lut;
 use crate::metrics::luminance;
 use crate::output::{diff_scale_position, false_colour, tone_map};
+use crate::render::{Frame, FrameKind, LutFilter, RenderSettings, View};
 use crate::scene::{Light, Scene};
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide keeps a
@@ -23,7 +23,7 @@ pub const MAX_RENDER_WIDTH: f32 = 960.0;
 #[derive(Clone, Debug, PartialEq)]
 struct RenderKey {
     scene: Scene,
-    settings: PlaneSettings,
+    settings: RenderSettings,
 }
 
 enum Drag {
@@ -63,30 +63,24 @@ pub struct PixelReading {
 }
 
 impl PlanePanel {
-    pub fn settings(s: &LabState, width: usize, height: usize) -> PlaneSettings {
-        let mut p = PlaneSettings::single(width, height, s.method_ltc);
-        p.method_b = s.method_brdf;
-        p.view = match s.view {
-            PlaneView::Split => GpuView::Split,
-            PlaneView::Difference => GpuView::Diff,
-            PlaneView::LtcOnly | PlaneView::BrdfOnly => GpuView::Single,
-        };
-        if s.view == PlaneView::BrdfOnly {
-            p.method_a = s.method_brdf;
+    pub fn settings(s: &LabState, width: usize, height: usize) -> RenderSettings {
+        RenderSettings {
+            method_b: s.method_brdf,
+            view: s.view,
+            clipping: s.clipping,
+            normalization: s.normalization,
+            divider: s.divider,
+            ..RenderSettings::single(width, height, s.method_ltc)
         }
-        p.clipping = s.clipping;
-        p.normalization = s.normalization;
-        p.divider = s.divider;
-        p
     }
 
     pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, shading: &mut Shading, lut: &Lut) {
         ui.horizontal_wrapped(|ui| {
             for (v, name, hover) in [
-                (PlaneView::Split, "split", "LTC left of the divider, exact BRDF right of it; drag the divider"),
-                (PlaneView::Difference, "difference", "|L_ltc − L_brdf| / max(L_brdf, 1% of the mean), log colour scale 0.1%–100%"),
-                (PlaneView::LtcOnly, "LTC", "The LTC form alone"),
-                (PlaneView::BrdfOnly, "BRDF", "The BRDF form alone"),
+                (View::Split, "split", "LTC left of the divider, exact BRDF right of it; drag the divider"),
+                (View::Diff, "difference", "|L_ltc − L_brdf| / max(L_brdf, 1% of the mean), log colour scale 0.1%–100%"),
+                (View::A, "LTC", "The LTC form alone"),
+                (View::B, "BRDF", "The BRDF form alone"),
             ] {
                 ui.selectable_value(&mut s.view, v, name).on_hover_text(hover);
             }
@@ -153,7 +147,7 @@ impl PlanePanel {
                 )
         };
         let divider_x = rect.min.x + rect.width() * s.divider as f32;
-        if s.view == PlaneView::Split {
+        if s.view == View::Split {
             painter.vline(
                 divider_x,
                 rect.y_range(),
@@ -204,7 +198,7 @@ impl PlanePanel {
             );
         }
         self.interact(&response, s, rect, width, height, &markers, divider_x);
-        if s.view == PlaneView::Difference {
+        if s.view == View::Diff {
             colour_bar(ui);
         }
         let response = response.on_hover_text("Drag a light's marker to move it over the plane, Shift-drag to change its height; drag the divider; hover a pixel to inspect it");
@@ -250,7 +244,7 @@ impl PlanePanel {
                     s.selected_light = Some(k);
                     Some(Drag::Light(k))
                 }
-                None if s.view == PlaneView::Split && (pos.x - divider_x).abs() < 8.0 => {
+                None if s.view == View::Split && (pos.x - divider_x).abs() < 8.0 => {
                     Some(Drag::Divider)
                 }
                 None => None,
@@ -415,7 +409,7 @@ fn inspect(
         &scene.lights,
         s.clipping,
         s.normalization,
-        crate::cpu::LutFilter::Bilinear,
+        LutFilter::Bilinear,
     );
     let counts = clip_counts(&scene, lut, &p, &scene.lights);
     let le = luminance(exact);

@@ -2,10 +2,10 @@
 //! a `Frame`, or — where no adapter exists — the CPU reference at a smaller size, with the
 //! reason kept for the window to show.
 
-use crate::cpu::{Frame, Method, RenderSettings, render};
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{GpuMethod, GpuView, PlaneRenderer, PlaneSettings, ShaderChecks};
+use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
 use crate::ltc::lut::Lut;
+use crate::render::{Frame, Method, RenderSettings};
 use crate::scene::Scene;
 
 pub struct Shading {
@@ -29,15 +29,16 @@ pub struct Shaded {
 
 impl Shading {
     pub fn new(lut: &Lut) -> Self {
-        match GpuContext::new() {
-            Ok(ctx) => {
-                let renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked);
-                Self {
-                    gpu: Some((ctx, renderer)),
-                    lut: lut.clone(),
-                    gpu_error: None,
-                }
-            }
+        let gpu = GpuContext::new().and_then(|ctx| {
+            let renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked)?;
+            Ok((ctx, renderer))
+        });
+        match gpu {
+            Ok(gpu) => Self {
+                gpu: Some(gpu),
+                lut: lut.clone(),
+                gpu_error: None,
+            },
             Err(e) => Self {
                 gpu: None,
                 lut: lut.clone(),
@@ -59,10 +60,16 @@ impl Shading {
         self.gpu.is_some()
     }
 
-    /// Shades with another table from now on.
+    /// Shades with another table from now on (on the CPU where the GPU cannot hold it).
     pub fn set_lut(&mut self, lut: &Lut) {
         if let Some((ctx, renderer)) = &mut self.gpu {
-            *renderer = PlaneRenderer::new(ctx, lut, ShaderChecks::Checked);
+            match PlaneRenderer::new(ctx, lut, ShaderChecks::Checked) {
+                Ok(r) => *renderer = r,
+                Err(e) => {
+                    self.gpu = None;
+                    self.gpu_error = Some(e.to_string());
+                }
+            }
         }
         self.lut = lut.clone();
     }
@@ -78,7 +85,7 @@ impl Shading {
 
     /// Renders `settings` (the CPU draws the literal form of each method, at most
     /// `CPU_FALLBACK_SIDE` pixels wide).
-    pub fn render(&mut self, scene: &Scene, settings: &PlaneSettings) -> Result<Shaded, String> {
+    pub fn render(&mut self, scene: &Scene, settings: &RenderSettings) -> Result<Shaded, String> {
         match &mut self.gpu {
             Some((ctx, renderer)) => {
                 let (frame, ms) = renderer
@@ -92,20 +99,13 @@ impl Shading {
             None => {
                 let scale = (CPU_FALLBACK_SIDE as f64 / settings.width.max(settings.height) as f64)
                     .min(1.0);
-                let w = ((settings.width as f64 * scale).round() as usize).max(1);
-                let h = ((settings.height as f64 * scale).round() as usize).max(1);
-                let method = match settings.view {
-                    GpuView::Split => Method::Split,
-                    GpuView::Diff => Method::Diff,
-                    GpuView::Single if settings.method_a.is_ltc() => Method::Ltc,
-                    GpuView::Single => Method::Brdf,
+                let s = RenderSettings {
+                    width: ((settings.width as f64 * scale).round() as usize).max(1),
+                    height: ((settings.height as f64 * scale).round() as usize).max(1),
+                    ..*settings
                 };
-                let mut s = RenderSettings::new(w, h, method);
-                s.clipping = settings.clipping;
-                s.normalization = settings.normalization;
-                s.divider = settings.divider;
                 Ok(Shaded {
-                    frame: render(scene, &self.lut, &s),
+                    frame: crate::cpu::render(scene, &self.lut, &s),
                     gpu_ms: None,
                 })
             }
@@ -117,15 +117,12 @@ impl Shading {
     pub fn time_method(
         &mut self,
         scene: &Scene,
-        settings: &PlaneSettings,
-        method: GpuMethod,
+        settings: &RenderSettings,
+        method: Method,
         frames: usize,
     ) -> Option<f64> {
         let (ctx, renderer) = self.gpu.as_mut()?;
-        let mut s = *settings;
-        s.method_a = method;
-        s.view = GpuView::Single;
-        let frame = renderer.prepare(ctx, scene, &s).ok()?;
+        let frame = renderer.prepare(ctx, scene, &settings.alone(method)).ok()?;
         let mut ms: Vec<f64> = (0..frames.max(1))
             .map(|_| renderer.run(ctx, &frame))
             .collect();

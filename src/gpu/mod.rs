@@ -2,12 +2,13 @@
 //! `plane`), and timing. Shaders are composed from the embedded files at load time.
 
 pub mod brdf;
+pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
 pub mod plane;
 pub mod timing;
 
-use crate::error::InputError;
+use crate::error::Error;
 
 /// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, plane.wgsl and ltc_f16.wgsl (behind
 /// `enable f16;`) — or, without f16, a stub in place of the last.
@@ -37,7 +38,7 @@ pub struct GpuContext {
 impl GpuContext {
     /// The default adapter without a window (`WGPU_BACKEND` picks the backend), with
     /// timestamp queries where it has them and its own limits (for the largest light buffer).
-    pub fn new() -> Result<Self, InputError> {
+    pub fn new() -> Result<Self, Error> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
@@ -49,7 +50,7 @@ impl GpuContext {
             apply_limit_buckets: false,
         }))
         .map_err(|e| {
-            InputError::new(
+            Error::machine(
                 "GPU",
                 format!("no adapter found ({e}); install a Vulkan driver (mesa-vulkan-drivers gives a CPU one) or render with --cpu"),
             )
@@ -67,7 +68,7 @@ impl GpuContext {
             trace: wgpu::Trace::Off,
         }))
         .map_err(|e| {
-            InputError::new(
+            Error::machine(
                 format!("GPU {}", info.name),
                 format!("cannot open the device: {e}"),
             )
@@ -104,17 +105,6 @@ impl GpuContext {
         self.device
             .features()
             .contains(wgpu::Features::TIMESTAMP_QUERY)
-    }
-
-    /// The most lights one invocation of plane.wgsl sums on this adapter, where the driver
-    /// caps shader loops: Mesa's llvmpipe (lavapipe) ends every loop of an invocation after
-    /// 65 535 iterations in all (`LP_MAX_TGSI_LOOP_ITERATIONS`, shared between loops), and the
-    /// light loop takes one iteration per light plus one per 256-light tile: 65 535 · 256/257
-    /// = 65 280 lights at most, less one tile of margin (at the limit itself invocations end
-    /// before writing their pixel).
-    pub fn light_loop_limit(&self) -> Option<usize> {
-        let llvmpipe = self.info.name.contains("llvmpipe") || self.info.driver.contains("llvmpipe");
-        llvmpipe.then_some(65_535 * 256 / 257 - 256)
     }
 
     /// Whether tests must fail rather than skip when there is no adapter.

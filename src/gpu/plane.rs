@@ -1,68 +1,50 @@
 //! `shaders/plane.wgsl`: the compute shader that shades the plane into a storage texture;
 //! here its buffer types (Pod, with the WGSL structs' explicit padding), its pipelines (one
-//! per method combination, as override constants) and the dispatch and read-back.
+//! per method combination, as override constants) and the dispatch and read-back. What it
+//! renders is `render::RenderSettings`, as for the CPU reference.
 
 use std::collections::HashMap;
 
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 
-use crate::cpu::{Frame, FrameKind, LutFilter};
-use crate::error::InputError;
+use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
+use crate::gpu::limits;
 use crate::gpu::timing::PassTimer;
+use crate::ltc::Normalization;
 use crate::ltc::lut::Lut;
-use crate::ltc::{Clipping, Normalization};
+use crate::metrics::relative_floor;
+use crate::render::{Frame, FrameKind, LutFilter, Method, RenderSettings, View};
 use crate::scene::{Light, Scene};
 
 /// The shader text (composed after `ltc::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/plane.wgsl");
 
-/// How one pixel's lights are summed (`METHOD_*` in plane.wgsl).
-#[derive(
-    Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum, serde::Serialize, serde::Deserialize,
-)]
-pub enum GpuMethod {
-    /// The exact BRDF as DESIGN §1 writes it.
-    Brdf = 0,
-    /// The exact BRDF with Filament's `V_SmithGGXCorrelated` and no root for `E`.
-    BrdfFast = 1,
-    /// The paper's LTC: normalize `l`, rotate into the frame, `M⁻¹ l` per lobe.
-    Ltc = 2,
-    /// LTC with the rotation folded into `M⁻¹` per pixel, the unnormalized light vector and
-    /// eq. 27's factoring: one square root per light.
-    LtcFast = 3,
-    /// `LtcFast` with `M⁻¹l` and `D` in f16 (devices with `SHADER_F16` only).
-    LtcF16 = 4,
-}
-
-impl GpuMethod {
-    pub const ALL: [Self; 4] = [Self::Brdf, Self::BrdfFast, Self::Ltc, Self::LtcFast];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Brdf => "brdf",
-            Self::BrdfFast => "brdf-fast",
-            Self::Ltc => "ltc",
-            Self::LtcFast => "ltc-fast",
-            Self::LtcF16 => "ltc-f16",
-        }
-    }
-
-    pub fn is_ltc(self) -> bool {
-        matches!(self, Self::Ltc | Self::LtcFast | Self::LtcF16)
+/// `METHOD_*` of plane.wgsl.
+pub fn method_constant(m: Method) -> u32 {
+    match m {
+        Method::Brdf => 0,
+        Method::BrdfFast => 1,
+        Method::Ltc => 2,
+        Method::LtcFast => 3,
+        Method::LtcF16 => 4,
     }
 }
 
-/// What a pixel shows (`VIEW_*` in plane.wgsl).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-pub enum GpuView {
-    /// Method A's radiance.
-    Single = 0,
-    /// A left of the divider, B right of it.
-    Split = 1,
-    /// `|A − B| / max(B, floor)` on luminance.
-    Diff = 2,
+/// `VIEW_*` of plane.wgsl: method A alone, A | B split, or their difference.
+const VIEW_SINGLE: u32 = 0;
+const VIEW_SPLIT: u32 = 1;
+const VIEW_DIFF: u32 = 2;
+
+/// The pipeline's methods A and B and its `VIEW_*`: `View::B` is B shaded as the single A.
+fn shader_view(s: &RenderSettings) -> (Method, Method, u32) {
+    match s.view {
+        View::A => (s.method_a, s.method_b, VIEW_SINGLE),
+        View::B => (s.method_b, s.method_b, VIEW_SINGLE),
+        View::Split => (s.method_a, s.method_b, VIEW_SPLIT),
+        View::Diff => (s.method_a, s.method_b, VIEW_DIFF),
+    }
 }
 
 /// The uniform block; must match `Params` in plane.wgsl (tests/gpu_layout.rs checks it
@@ -107,79 +89,52 @@ impl From<&Light> for GpuLight {
     fn from(l: &Light) -> Self {
         let p = l.position.map(|x| x as f32);
         let i = l.radiant_intensity().as_vec3();
+        // A range below f32's smallest normal would round to 0, which encodes "infinite":
+        // kept positive, it lights nothing, as on the CPU.
+        let range = l.range.map_or(0.0, |r| (r as f32).max(f32::MIN_POSITIVE));
         Self {
-            position_range: [p[0], p[1], p[2], l.range.unwrap_or(0.0) as f32],
+            position_range: [p[0], p[1], p[2], range],
             intensity: [i.x, i.y, i.z, 0.0],
         }
     }
 }
 
-/// What to render, beyond the scene.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PlaneSettings {
-    pub width: usize,
-    pub height: usize,
-    pub method_a: GpuMethod,
-    pub method_b: GpuMethod,
-    pub view: GpuView,
-    pub clipping: Clipping,
-    pub normalization: Normalization,
-    /// Where the split view changes from A to B, as a fraction of the width.
-    pub divider: f64,
-    /// The diff view's floor under B's luminance (`metrics::relative_floor`).
-    pub rel_floor: f64,
-    /// How the LTC table is read (`LUT_NEAREST` in ltc.wgsl).
-    pub lut_filter: LutFilter,
-}
-
-impl PlaneSettings {
-    pub fn single(width: usize, height: usize, method: GpuMethod) -> Self {
-        Self {
-            width,
-            height,
-            method_a: method,
-            method_b: GpuMethod::Brdf,
-            view: GpuView::Single,
-            clipping: Clipping::BOTH,
-            normalization: Normalization::Corrected,
-            divider: 0.5,
-            rel_floor: f64::MIN_POSITIVE,
-            lut_filter: LutFilter::Bilinear,
-        }
-    }
-
-    pub fn divider_column(&self) -> usize {
-        ((self.divider.clamp(0.0, 1.0) * self.width as f64).round() as usize).min(self.width)
-    }
-
-    pub fn params(&self, scene: &Scene, light_count: usize, lut_size: usize) -> Params {
-        let (eye, forward, right, up) = scene.camera_basis();
-        let v4 = |v: DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
-        let m = &scene.material;
-        Params {
-            eye: v4(eye),
-            forward: v4(forward),
-            right: v4(right),
-            up: v4(up),
-            base_color: v4(DVec3::from(m.base_color)),
-            alpha: m.alpha as f32,
-            f0: m.f0 as f32,
-            tan_half_fov: (scene.camera.fov_y_degrees.to_radians() * 0.5).tan() as f32,
-            aspect: (self.width as f64 / self.height as f64) as f32,
-            half_size: scene.plane.half_size as f32,
-            divider: self.divider_column() as f32,
-            rel_floor: (self.rel_floor as f32).max(f32::MIN_POSITIVE),
-            width: self.width as u32,
-            height: self.height as u32,
-            light_count: light_count as u32,
-            lut_size: lut_size as u32,
-            clip: u32::from(self.clipping.horizon) | (u32::from(self.clipping.transformed) << 1),
-            normalization: match self.normalization {
-                Normalization::Corrected => 0,
-                Normalization::PaperLiteral => 1,
-            },
-            ..Params::default()
-        }
+/// The uniforms of one render; `rel_floor` is the diff view's floor under B's luminance
+/// (`metrics::relative_floor`).
+pub fn params(
+    settings: &RenderSettings,
+    scene: &Scene,
+    light_count: usize,
+    lut_size: usize,
+    rel_floor: f64,
+) -> Params {
+    let (eye, forward, right, up) = scene.camera_basis();
+    let v4 = |v: DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
+    let m = &scene.material;
+    Params {
+        eye: v4(eye),
+        forward: v4(forward),
+        right: v4(right),
+        up: v4(up),
+        base_color: v4(DVec3::from(m.base_color)),
+        alpha: m.alpha as f32,
+        f0: m.f0 as f32,
+        tan_half_fov: (scene.camera.fov_y_degrees.to_radians() * 0.5).tan() as f32,
+        aspect: (settings.width as f64 / settings.height as f64) as f32,
+        half_size: scene.plane.half_size as f32,
+        divider: settings.divider_column() as f32,
+        rel_floor: (rel_floor as f32).max(f32::MIN_POSITIVE),
+        width: settings.width as u32,
+        height: settings.height as u32,
+        light_count: light_count as u32,
+        lut_size: lut_size as u32,
+        clip: u32::from(settings.clipping.horizon)
+            | (u32::from(settings.clipping.transformed) << 1),
+        normalization: match settings.normalization {
+            Normalization::Corrected => 0,
+            Normalization::PaperLiteral => 1,
+        },
+        ..Params::default()
     }
 }
 
@@ -196,10 +151,17 @@ pub enum ShaderChecks {
 /// Size of a workgroup side in plane.wgsl (`@workgroup_size(16, 16)`).
 const WORKGROUP: u32 = 16;
 const OUTPUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
-const TEXEL_BYTES: u32 = 16;
+/// Bytes per texel of `OUTPUT_FORMAT`.
+pub const TEXEL_BYTES: u32 = 16;
 
-/// What a pipeline is specialized for (its override constants).
-type PipelineKey = (GpuMethod, GpuMethod, GpuView, LutFilter);
+/// What a pipeline is specialized for (its override constants): methods A and B, the
+/// `VIEW_*`, the LUT filter.
+type PipelineKey = (Method, Method, u32, LutFilter);
+
+fn pipeline_key(s: &RenderSettings) -> PipelineKey {
+    let (a, b, view) = shader_view(s);
+    (a, b, view, s.lut_filter)
+}
 
 /// The plane shader's module, layout, pipelines and LUT buffer.
 pub struct PlaneRenderer {
@@ -216,15 +178,24 @@ pub struct PlaneRenderer {
 
 /// The resources of one render: uniforms, lights, the output texture and their bind group.
 pub struct PreparedFrame {
-    pub settings: PlaneSettings,
+    pub settings: RenderSettings,
     pub light_count: usize,
+    /// The diff view's floor (`metrics::relative_floor`); set by `render`.
+    pub rel_floor: f64,
     params: wgpu::Buffer,
     texture: wgpu::Texture,
     bind_group: wgpu::BindGroup,
 }
 
 impl PlaneRenderer {
-    pub fn new(ctx: &GpuContext, lut: &Lut, checks: ShaderChecks) -> Self {
+    /// The module, layout and LUT buffer; refused where the LUT exceeds the device's storage.
+    pub fn new(ctx: &GpuContext, lut: &Lut, checks: ShaderChecks) -> Result<Self> {
+        let packed = super::ltc::pack_lut(lut);
+        limits::check_lut_size(
+            ctx,
+            lut.size,
+            std::mem::size_of_val(packed.as_slice()) as u64,
+        )?;
         let device = &ctx.device;
         let desc = wgpu::ShaderModuleDescriptor {
             label: Some("plane.wgsl"),
@@ -283,7 +254,6 @@ impl PlaneRenderer {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        let packed = super::ltc::pack_lut(lut);
         let lut_buffer = wgpu::util::DeviceExt::create_buffer_init(
             device,
             &wgpu::util::BufferInitDescriptor {
@@ -292,7 +262,7 @@ impl PlaneRenderer {
                 usage: wgpu::BufferUsages::STORAGE,
             },
         );
-        Self {
+        Ok(Self {
             module,
             bind_group_layout,
             pipeline_layout,
@@ -301,25 +271,25 @@ impl PlaneRenderer {
             lut_size: lut.size,
             timer: PassTimer::new(device, &ctx.queue),
             f16: ctx.has_f16(),
-        }
+        })
     }
 
     /// Whether this device can run `method` (`LtcF16` needs `SHADER_F16`).
-    pub fn supports(&self, method: GpuMethod) -> bool {
-        method != GpuMethod::LtcF16 || self.f16
+    pub fn supports(&self, method: Method) -> bool {
+        method != Method::LtcF16 || self.f16
     }
 
     /// The pipeline of a method combination, compiled on first use.
-    fn pipeline(&mut self, ctx: &GpuContext, s: &PlaneSettings) -> &wgpu::ComputePipeline {
-        let key = (s.method_a, s.method_b, s.view, s.lut_filter);
+    fn pipeline(&mut self, ctx: &GpuContext, key: PipelineKey) -> &wgpu::ComputePipeline {
         self.pipelines.entry(key).or_insert_with(|| {
+            let (a, b, view, filter) = key;
             let constants = [
-                ("METHOD_A", f64::from(s.method_a as u32)),
-                ("METHOD_B", f64::from(s.method_b as u32)),
-                ("VIEW", f64::from(s.view as u32)),
+                ("METHOD_A", f64::from(method_constant(a))),
+                ("METHOD_B", f64::from(method_constant(b))),
+                ("VIEW", f64::from(view)),
                 (
                     "LUT_NEAREST",
-                    f64::from(u8::from(s.lut_filter == LutFilter::Nearest)),
+                    f64::from(u8::from(filter == LutFilter::Nearest)),
                 ),
             ];
             ctx.device
@@ -337,45 +307,27 @@ impl PlaneRenderer {
         })
     }
 
-    /// The most lights one storage binding holds on this device.
-    pub fn buffer_max_lights(ctx: &GpuContext) -> usize {
-        let bytes = ctx
-            .limits
-            .max_storage_buffer_binding_size
-            .min(ctx.limits.max_buffer_size);
-        (bytes / std::mem::size_of::<GpuLight>() as u64) as usize
-    }
-
-    /// The most lights this device shades: the buffer's capacity, or less where the driver
-    /// ends shader loops early (`GpuContext::light_loop_limit`).
+    /// The most lights this device shades (`limits::max_lights`).
     pub fn max_lights(ctx: &GpuContext) -> usize {
-        let buffer = Self::buffer_max_lights(ctx);
-        ctx.light_loop_limit().map_or(buffer, |l| l.min(buffer))
+        limits::max_lights(ctx, std::mem::size_of::<GpuLight>())
     }
 
-    /// Refuses more lights than one storage binding holds or the driver's loops can sum.
-    pub fn check_light_count(ctx: &GpuContext, count: usize) -> Result<(), InputError> {
-        let buffer = Self::buffer_max_lights(ctx);
-        if count > buffer {
-            return Err(InputError::new(
-                "scene",
-                format!(
-                    "{count} lights do not fit in one GPU storage buffer on {} (at most {buffer} of {} bytes)",
-                    ctx.info.name,
-                    std::mem::size_of::<GpuLight>()
-                ),
+    /// Refuses more lights than this device shades; `input` names the count's source.
+    pub fn check_light_count(ctx: &GpuContext, input: &str, count: usize) -> Result<()> {
+        limits::check_light_count(ctx, input, count, std::mem::size_of::<GpuLight>())
+    }
+
+    /// Refuses what this device cannot render, before any work: the lights, a method it has
+    /// no shaders for, the image and its read-back.
+    pub fn check(&self, ctx: &GpuContext, scene: &Scene, settings: &RenderSettings) -> Result<()> {
+        Self::check_light_count(ctx, "scene", scene.lights.len())?;
+        if let Some(m) = settings.methods().into_iter().find(|&m| !self.supports(m)) {
+            return Err(Error::input(
+                m.name(),
+                format!("{} has no f16 shaders (SHADER_F16)", ctx.info.name),
             ));
         }
-        if let Some(limit) = ctx.light_loop_limit().filter(|&l| count > l) {
-            return Err(InputError::new(
-                "scene",
-                format!(
-                    "{count} lights do not fit in one shader invocation on {}: its driver ends shader loops after {limit} lights (use --cpu, or a hardware GPU)",
-                    ctx.info.name
-                ),
-            ));
-        }
-        Ok(())
+        limits::check_image_size(ctx, settings.width, settings.height, TEXEL_BYTES)
     }
 
     /// Uploads a frame's uniforms and lights and makes its output texture.
@@ -383,27 +335,9 @@ impl PlaneRenderer {
         &self,
         ctx: &GpuContext,
         scene: &Scene,
-        settings: &PlaneSettings,
-    ) -> Result<PreparedFrame, InputError> {
-        Self::check_light_count(ctx, scene.lights.len())?;
-        for m in [settings.method_a, settings.method_b] {
-            if !self.supports(m) {
-                return Err(InputError::new(
-                    m.name(),
-                    format!("{} has no f16 shaders (SHADER_F16)", ctx.info.name),
-                ));
-            }
-        }
-        let max_side = ctx.limits.max_texture_dimension_2d as usize;
-        if settings.width > max_side || settings.height > max_side {
-            return Err(InputError::new(
-                "--size",
-                format!(
-                    "{}×{} exceeds the GPU's largest texture side, {max_side}",
-                    settings.width, settings.height
-                ),
-            ));
-        }
+        settings: &RenderSettings,
+    ) -> Result<PreparedFrame> {
+        self.check(ctx, scene, settings)?;
         let device = &ctx.device;
         let init = |label, contents: &[u8], usage| {
             wgpu::util::DeviceExt::create_buffer_init(
@@ -415,7 +349,7 @@ impl PlaneRenderer {
                 },
             )
         };
-        let params = settings.params(scene, scene.lights.len(), self.lut_size);
+        let params = params(settings, scene, scene.lights.len(), self.lut_size, 0.0);
         let params_buffer = init(
             "params",
             bytemuck::bytes_of(&params),
@@ -474,6 +408,7 @@ impl PlaneRenderer {
         Ok(PreparedFrame {
             settings: *settings,
             light_count: scene.lights.len(),
+            rel_floor: 0.0,
             params: params_buffer,
             texture,
             bind_group,
@@ -486,13 +421,19 @@ impl PlaneRenderer {
         ctx: &GpuContext,
         frame: &mut PreparedFrame,
         scene: &Scene,
-        settings: &PlaneSettings,
+        settings: &RenderSettings,
     ) {
         assert_eq!(
             (settings.width, settings.height),
             (frame.settings.width, frame.settings.height)
         );
-        let params = settings.params(scene, frame.light_count, self.lut_size);
+        let params = params(
+            settings,
+            scene,
+            frame.light_count,
+            self.lut_size,
+            frame.rel_floor,
+        );
         ctx.queue
             .write_buffer(&frame.params, 0, bytemuck::bytes_of(&params));
         frame.settings = *settings;
@@ -522,13 +463,9 @@ impl PlaneRenderer {
     /// the wall-clock milliseconds of submit-to-done where the adapter has none.
     pub fn run(&mut self, ctx: &GpuContext, frame: &PreparedFrame) -> f64 {
         let settings = frame.settings;
-        self.pipeline(ctx, &settings);
-        let pipeline = &self.pipelines[&(
-            settings.method_a,
-            settings.method_b,
-            settings.view,
-            settings.lut_filter,
-        )];
+        let key = pipeline_key(&settings);
+        self.pipeline(ctx, key);
+        let pipeline = &self.pipelines[&key];
         let mut encoder = ctx
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
@@ -616,25 +553,36 @@ impl PlaneRenderer {
         Frame {
             width: s.width,
             height: s.height,
-            kind: if s.view == GpuView::Diff {
+            kind: if s.view == View::Diff {
                 FrameKind::RelativeDifference
             } else {
                 FrameKind::Radiance
             },
             pixels,
             on_plane,
-            divider: (s.view == GpuView::Split).then(|| s.divider_column()),
+            divider: (s.view == View::Split).then(|| s.divider_column()),
         }
     }
 
-    /// Prepares, poisons, shades and reads back one frame.
+    /// Prepares, poisons, shades and reads back one frame. The diff view first renders A
+    /// and B alone for its floor (`metrics::relative_floor`), as the CPU does.
     pub fn render(
         &mut self,
         ctx: &GpuContext,
         scene: &Scene,
-        settings: &PlaneSettings,
-    ) -> Result<(Frame, f64), InputError> {
-        let frame = self.prepare(ctx, scene, settings)?;
+        settings: &RenderSettings,
+    ) -> Result<(Frame, f64)> {
+        let mut frame = self.prepare(ctx, scene, settings)?;
+        if settings.view == View::Diff {
+            let mut alone = |method| {
+                self.update(ctx, &mut frame, scene, &settings.alone(method));
+                self.run(ctx, &frame);
+                self.read(ctx, &frame)
+            };
+            let (b, a) = (alone(settings.method_b), alone(settings.method_a));
+            frame.rel_floor = relative_floor(&b, &a);
+            self.update(ctx, &mut frame, scene, settings);
+        }
         self.poison(ctx, &frame);
         let ms = self.run(ctx, &frame);
         Ok((self.read(ctx, &frame), ms))

@@ -9,9 +9,9 @@ use glam::{DMat3, DVec3};
 use rayon::prelude::*;
 
 use crate::ltc::lobe::{Lobe, Stratum, lobe_moments, strata};
-use crate::ltc::lut::{Lut, LutCell};
+use crate::ltc::lut::{ALPHA_MIN, Lut, LutCell, cell_alpha, cell_theta};
 use crate::ltc::nelder_mead::{Minimum, nelder_mead};
-use crate::ltc::{Clipping, Ltc, Normalization, mat3_rows};
+use crate::ltc::{Clipping, Ltc, Normalization};
 
 /// How a table is fitted. The defaults are ltc_code's where it has one.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,13 +35,6 @@ pub struct FitSettings {
     /// Iteration limit (ltc_code: 100).
     pub max_iterations: usize,
 }
-
-/// α_min = 1e-4, the `MIN_ALPHA` of ltc_code's published fit. Smaller (ltc_code's later 1e-5)
-/// makes the r = 0 lobe a near-delta whose `M⁻¹` entries grow like 1/α (1e5) — an f32
-/// bilinear blend with the next column is then meaningless; larger (a fork's 5e-4, Unity's
-/// 1e-3) clamps the r = 1/63 column (α = r² = 2.5e-4) onto the r = 0 one, so the table loses
-/// a column of its resolution. Any value below 2.5e-4 keeps every column distinct.
-pub const ALPHA_MIN: f64 = 1e-4;
 
 impl Default for FitSettings {
     fn default() -> Self {
@@ -72,21 +65,6 @@ impl FitStrata {
             moments: strata(settings.moment_samples),
         }
     }
-}
-
-/// ltc_code clamps θo just below 90° (1.57 rad) so that the grazing row has `n·v > 0`.
-pub const THETA_MAX: f64 = 1.57;
-
-/// The LUT axes of DESIGN §2: column `i` ↔ `r = i/(N−1)`, `α = max(r², α_min)`.
-pub fn cell_alpha(i: usize, size: usize, alpha_min: f64) -> f64 {
-    let r = i as f64 / (size - 1) as f64;
-    (r * r).max(alpha_min)
-}
-
-/// Row `j` ↔ `sqrt(1 − cos θo) = j/(N−1)`, θo clamped to `THETA_MAX`.
-pub fn cell_theta(j: usize, size: usize) -> f64 {
-    let x = j as f64 / (size - 1) as f64;
-    (1.0 - x * x).clamp(-1.0, 1.0).acos().min(THETA_MAX)
 }
 
 /// The free parameters `m00, m11, m02` and the frame they act in.
@@ -320,14 +298,6 @@ pub fn fit_lobe(
         .flat_map(|j| (0..n).map(move |i| (i, j)))
         .map(|(i, j)| columns[i][j])
         .collect()
-}
-
-/// The stored form of DESIGN §2: `M⁻¹` divided by its middle element, as
-/// `[m00, m02, m20, m22]` of `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
-pub fn normalized_cos_from_brdf(ltc: &Ltc) -> [f64; 4] {
-    let r = mat3_rows(ltc.cos_from_brdf);
-    let s = r[1][1];
-    [r[0][0] / s, r[0][2] / s, r[2][0] / s, r[2][2] / s]
 }
 
 /// A fitted table and how the fit went.

@@ -9,9 +9,40 @@ use std::sync::OnceLock;
 use exr::prelude::*;
 use glam::DVec3;
 
-use crate::error::{InputError, Result, write_atomically};
+use crate::error::{Error, Result};
+use crate::files::write_atomically;
 use crate::ltc::lobe::Lobe;
-use crate::ltc::{Ltc, LtcPair, cos_from_brdf_from_entries};
+use crate::ltc::{Ltc, LtcPair, cos_from_brdf_from_entries, mat3_rows};
+
+/// α_min = 1e-4, the `MIN_ALPHA` of ltc_code's published fit. Smaller (ltc_code's later 1e-5)
+/// makes the r = 0 lobe a near-delta whose `M⁻¹` entries grow like 1/α (1e5) — an f32
+/// bilinear blend with the next column is then meaningless; larger (a fork's 5e-4, Unity's
+/// 1e-3) clamps the r = 1/63 column (α = r² = 2.5e-4) onto the r = 0 one, so the table loses
+/// a column of its resolution. Any value below 2.5e-4 keeps every column distinct.
+pub const ALPHA_MIN: f64 = 1e-4;
+
+/// ltc_code clamps θo just below 90° (1.57 rad) so that the grazing row has `n·v > 0`.
+pub const THETA_MAX: f64 = 1.57;
+
+/// The LUT axes of DESIGN §2: column `i` ↔ `r = i/(N−1)`, `α = max(r², α_min)`.
+pub fn cell_alpha(i: usize, size: usize, alpha_min: f64) -> f64 {
+    let r = i as f64 / (size - 1) as f64;
+    (r * r).max(alpha_min)
+}
+
+/// Row `j` ↔ `sqrt(1 − cos θo) = j/(N−1)`, θo clamped to `THETA_MAX`.
+pub fn cell_theta(j: usize, size: usize) -> f64 {
+    let x = j as f64 / (size - 1) as f64;
+    (1.0 - x * x).clamp(-1.0, 1.0).acos().min(THETA_MAX)
+}
+
+/// The stored form of DESIGN §2: `M⁻¹` divided by its middle element, as
+/// `[m00, m02, m20, m22]` of `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
+pub fn normalized_cos_from_brdf(ltc: &Ltc) -> [f64; 4] {
+    let r = mat3_rows(ltc.cos_from_brdf);
+    let s = r[1][1];
+    [r[0][0] / s, r[0][2] / s, r[2][0] / s, r[2][2] / s]
+}
 
 /// The channels in DESIGN §2's order; `Channel as usize` indexes a cell.
 pub const CHANNEL_NAMES: [&str; CHANNEL_COUNT] = [
@@ -70,6 +101,75 @@ impl Channel {
     }
 }
 
+/// The values a channel may hold in a table that any fit could have made, and why.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChannelLimits {
+    pub min: f64,
+    /// Whether `min` itself is refused (albedos and scales divide and multiply).
+    pub min_excluded: bool,
+    pub max: f64,
+    pub why: &'static str,
+}
+
+impl ChannelLimits {
+    pub fn contains(&self, x: f64) -> bool {
+        (if self.min_excluded {
+            x > self.min
+        } else {
+            x >= self.min
+        }) && x <= self.max
+    }
+
+    /// `[a, b]` or `(a, b]`.
+    pub fn interval(&self) -> String {
+        let open = if self.min_excluded { '(' } else { '[' };
+        format!("{open}{}, {}]", self.min, self.max)
+    }
+}
+
+/// The limits of channel `c` (an index into `CHANNEL_NAMES`).
+pub fn channel_limits(c: usize) -> ChannelLimits {
+    use Channel::*;
+    let limits = |min, min_excluded, max, why| ChannelLimits {
+        min,
+        min_excluded,
+        max,
+        why,
+    };
+    match c {
+        c if c == SpecNorm as usize || c == SpecFresnel as usize => limits(
+            0.0,
+            c == SpecNorm as usize,
+            1.05,
+            "GGX's directional albedo is at most 1 (single scattering only loses energy); 5% for estimation noise",
+        ),
+        c if c == DiffNorm as usize => limits(
+            0.0,
+            true,
+            6.25,
+            "Burley's fd·cos integrates to at most FD² = (0.5 + 2α)² ≤ 6.25; the shipped fits reach 1.56 at α = 1",
+        ),
+        c if c == SpecScale as usize => limits(
+            0.0,
+            true,
+            1.05,
+            "a fitted factor on the albedo: 1 in the classic fit, 0.5–1.004 in the point fit",
+        ),
+        c if c == SpecErr as usize || c == DiffErr as usize => limits(
+            0.0,
+            false,
+            4.0,
+            "a relative L1 distance of two lobes of near-equal mass, at most 2.05; twice that for estimation noise",
+        ),
+        _ => limits(
+            -100.0,
+            false,
+            100.0,
+            "M⁻¹ divided by its middle element: ltc_code's and this project's fits stay below 2 in magnitude",
+        ),
+    }
+}
+
 /// The header attribute that records α_min (the `alpha` of column 0).
 const ALPHA_MIN_ATTRIBUTE: &str = "ltc.alpha_min";
 
@@ -79,18 +179,9 @@ pub const EMBEDDED_EXR: &[u8] = include_bytes!("../../luts/ltc.exr");
 /// The shipped point-light fit (`luts/ltc_point.exr`, `ltc-lab fit --objective point`).
 pub const EMBEDDED_POINT_EXR: &[u8] = include_bytes!("../../luts/ltc_point.exr");
 
-/// Which shipped table.
+/// Which shipped table (and the objective that fitted it).
 #[derive(
-    Clone,
-    Copy,
-    Debug,
-    Default,
-    PartialEq,
-    Eq,
-    Hash,
-    clap::ValueEnum,
-    serde::Serialize,
-    serde::Deserialize,
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
 )]
 pub enum Table {
     /// ltc_code's objective (`luts/ltc.exr`).
@@ -100,6 +191,33 @@ pub enum Table {
     Point,
 }
 
+impl Table {
+    pub const ALL: [Self; 2] = [Self::Classic, Self::Point];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Classic => "classic",
+            Self::Point => "point",
+        }
+    }
+
+    /// The shipped file's path in the repository.
+    pub fn path(self) -> &'static str {
+        match self {
+            Self::Classic => "luts/ltc.exr",
+            Self::Point => "luts/ltc_point.exr",
+        }
+    }
+
+    /// The other shipped table.
+    pub fn other(self) -> Self {
+        match self {
+            Self::Classic => Self::Point,
+            Self::Point => Self::Classic,
+        }
+    }
+}
+
 /// One cell: the channels of `CHANNEL_NAMES`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LutCell(pub [f32; CHANNEL_COUNT]);
@@ -107,8 +225,8 @@ pub struct LutCell(pub [f32; CHANNEL_COUNT]);
 impl LutCell {
     /// From fitted lobes: `M⁻¹` normalized by its middle element (DESIGN §2).
     pub fn from_fits(spec: &Ltc, spec_err: f64, diff: &Ltc, diff_err: f64) -> Self {
-        let s = crate::ltc::fit::normalized_cos_from_brdf(spec);
-        let d = crate::ltc::fit::normalized_cos_from_brdf(diff);
+        let s = normalized_cos_from_brdf(spec);
+        let d = normalized_cos_from_brdf(diff);
         let values = [
             s[0],
             s[1],
@@ -178,8 +296,7 @@ impl Lut {
     /// Reads and validates a LUT file; errors name the file.
     pub fn read(path: &Path) -> Result<Lut> {
         let name = path.display().to_string();
-        let bytes =
-            std::fs::read(path).map_err(|e| InputError::new(&name, format!("cannot read: {e}")))?;
+        let bytes = std::fs::read(path).map_err(|e| Error::io(&name, "read", &e))?;
         Lut::from_exr_bytes(&bytes, &name)
     }
 
@@ -209,7 +326,7 @@ impl Lut {
     }
 
     pub fn from_exr_bytes(bytes: &[u8], name: &str) -> Result<Lut> {
-        let bad = |m: String| InputError::new(name, m);
+        let bad = |m: String| Error::input(name, m);
         let image = read()
             .no_deep_data()
             .largest_resolution_level()
@@ -225,15 +342,22 @@ impl Lut {
                 "the table must be square, at least 2×2; it is {w}×{h}"
             )));
         }
+        // Written as f64 by this project; another writer may use f32.
         let alpha_min = match layer.attributes.other.get(&Text::from(ALPHA_MIN_ATTRIBUTE)) {
-            Some(AttributeValue::F64(a)) if a.is_finite() && *a > 0.0 && *a < 1.0 => *a,
-            Some(_) => {
+            Some(AttributeValue::F64(a)) => *a,
+            Some(AttributeValue::F32(a)) => f64::from(*a),
+            Some(other) => {
                 return Err(bad(format!(
-                    "attribute {ALPHA_MIN_ATTRIBUTE} is not in (0, 1)"
+                    "attribute {ALPHA_MIN_ATTRIBUTE} is not a number ({other:?})"
                 )));
             }
             None => return Err(bad(format!("attribute {ALPHA_MIN_ATTRIBUTE} is missing"))),
         };
+        if !(alpha_min > 0.0 && alpha_min < 1.0) {
+            return Err(bad(format!(
+                "attribute {ALPHA_MIN_ATTRIBUTE} must be in (0, 1), got {alpha_min}"
+            )));
+        }
         let mut cells = vec![LutCell([0.0; CHANNEL_COUNT]); w * h];
         for (c, channel_name) in CHANNEL_NAMES.iter().enumerate() {
             let Some(channel) = layer
@@ -273,31 +397,29 @@ impl Lut {
         Ok(lut)
     }
 
-    /// Values no fit produces: a non-positive albedo or scale, or a singular or reflecting
-    /// `M⁻¹`.
+    /// Values no fit produces: a channel outside `channel_limits`, or a singular or
+    /// reflecting `M⁻¹`.
     fn validate(&self) -> std::result::Result<(), String> {
-        use Channel::*;
         for (k, cell) in self.cells.iter().enumerate() {
             let at = format!("cell (i={}, j={})", k % self.size, k / self.size);
-            if cell.get(SpecScale) <= 0.0 {
-                return Err(format!("spec.scale at {at} is not positive"));
-            }
-            for (norm, m00, m02, m20, m22) in [
-                (SpecNorm, SpecM00, SpecM02, SpecM20, SpecM22),
-                (DiffNorm, DiffM00, DiffM02, DiffM20, DiffM22),
-            ] {
-                if cell.get(norm) <= 0.0 {
+            for (c, name) in CHANNEL_NAMES.iter().enumerate() {
+                let x = f64::from(cell.0[c]);
+                let limits = channel_limits(c);
+                if !limits.contains(x) {
                     return Err(format!(
-                        "{} at {at} is not positive",
-                        CHANNEL_NAMES[norm as usize]
+                        "{name} at {at} is {x}, outside {} ({})",
+                        limits.interval(),
+                        limits.why
                     ));
                 }
-                let det = f64::from(cell.get(m00)) * f64::from(cell.get(m22))
-                    - f64::from(cell.get(m02)) * f64::from(cell.get(m20));
+            }
+            for lobe in Lobe::BOTH {
+                let [m00, m02, m20, m22] = Channel::entries(lobe).map(|c| f64::from(cell.get(c)));
+                let det = m00 * m22 - m02 * m20;
                 if det <= 0.0 {
                     return Err(format!(
                         "the {} matrix at {at} has determinant {det} (must be > 0)",
-                        &CHANNEL_NAMES[norm as usize][..4]
+                        &CHANNEL_NAMES[Channel::entries(lobe)[0] as usize][..4]
                     ));
                 }
             }
@@ -331,6 +453,9 @@ impl Lut {
         let mut out = Cursor::new(Vec::new());
         Image::from_layer(layer)
             .write()
+            // Parallel compression writes chunks in the order they finish: the same table
+            // would give different bytes run to run.
+            .non_parallel()
             .to_buffered(&mut out)
             .expect("writing an EXR to memory cannot fail");
         out.into_inner()
@@ -407,11 +532,11 @@ impl Lut {
 
     /// α of column `i` (DESIGN §2).
     pub fn alpha(&self, i: usize) -> f64 {
-        crate::ltc::fit::cell_alpha(i, self.size, self.alpha_min)
+        cell_alpha(i, self.size, self.alpha_min)
     }
 
     /// θo (radians) of row `j` (DESIGN §2).
     pub fn theta_o(&self, j: usize) -> f64 {
-        crate::ltc::fit::cell_theta(j, self.size)
+        cell_theta(j, self.size)
     }
 }

@@ -45,6 +45,21 @@ impl Clipping {
     };
 }
 
+impl Clipping {
+    /// Every combination, named as on the command line.
+    pub const ALL: [Self; 4] = [Self::BOTH, Self::HORIZON, Self::TRANSFORMED, Self::NONE];
+
+    /// `both`, `horizon` (case 1's rule only), `transformed` (case 2's only) or `none`.
+    pub fn name(self) -> &'static str {
+        match (self.horizon, self.transformed) {
+            (true, true) => "both",
+            (true, false) => "horizon",
+            (false, true) => "transformed",
+            (false, false) => "none",
+        }
+    }
+}
+
 impl Default for Clipping {
     fn default() -> Self {
         Self::BOTH
@@ -60,6 +75,18 @@ pub enum Normalization {
     Corrected,
     /// The paper's eq. 25/30 as printed: no 1/π and no magnitudes (kept to show the cost).
     PaperLiteral,
+}
+
+impl Normalization {
+    pub const ALL: [Self; 2] = [Self::Corrected, Self::PaperLiteral];
+
+    /// `corrected` or `paper`, as on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Corrected => "corrected",
+            Self::PaperLiteral => "paper",
+        }
+    }
 }
 
 /// One fitted lobe: its matrix both ways, `|det M⁻¹|`, and its magnitudes.

@@ -19,7 +19,10 @@ pub fn gpu() -> Option<&'static Gpu> {
     GPU.get_or_init(|| match GpuContext::new() {
         Ok(ctx) => {
             eprintln!("GPU tests on {}", ctx.describe());
-            let renderer = Mutex::new(PlaneRenderer::new(&ctx, Lut::embedded(), ShaderChecks::Checked));
+            let renderer = Mutex::new(
+                PlaneRenderer::new(&ctx, Lut::embedded(), ShaderChecks::Checked)
+                    .expect("the shipped LUT fits every adapter"),
+            );
             Some(Gpu { ctx, renderer })
         }
         Err(e) if GpuContext::required_by_environment() => {

@@ -1,0 +1,168 @@
+//! What the user set in the lab, persisted by eframe between runs, and the panels' names.
+
+use serde::{Deserialize, Serialize};
+
+use crate::ltc::lobe::Lobe;
+use crate::ltc::lut::{Lut, THETA_MAX, Table};
+use crate::ltc::{Clipping, LtcPair, Normalization};
+use crate::render::{Method, View};
+use crate::scene::{Scene, preset};
+
+/// The panels, for maximising one and for headless screenshots.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum PanelId {
+    Lobe,
+    Matrix,
+    Plane,
+    Clipping,
+    Chart,
+}
+
+impl PanelId {
+    pub const ALL: [Self; 5] = [
+        Self::Lobe,
+        Self::Matrix,
+        Self::Plane,
+        Self::Clipping,
+        Self::Chart,
+    ];
+
+    /// The name on the command line (`lab --panel`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Lobe => "lobe",
+            Self::Matrix => "matrix",
+            Self::Plane => "plane",
+            Self::Clipping => "clipping",
+            Self::Chart => "chart",
+        }
+    }
+
+    pub fn title(self) -> &'static str {
+        match self {
+            Self::Lobe => "Lobe on the sphere",
+            Self::Matrix => "Matrix and LUT",
+            Self::Plane => "Plane: LTC | BRDF",
+            Self::Clipping => "Clipping (Figure 2)",
+            Self::Chart => "Speed vs accuracy",
+        }
+    }
+}
+
+/// Everything the user set; persisted by eframe between runs.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct LabState {
+    pub scene: Scene,
+    /// θo of the lobe and matrix panels, degrees.
+    pub theta_o_deg: f64,
+    /// The LTC and BRDF forms compared in the plane panel.
+    pub method_ltc: Method,
+    pub method_brdf: Method,
+    /// Split (LTC | BRDF), difference map, or one method alone (A: the LTC form, B: the
+    /// BRDF form).
+    pub view: View,
+    pub divider: f64,
+    pub clipping: Clipping,
+    pub normalization: Normalization,
+    /// Multiplies every light's intensity when shading.
+    pub intensity_scale: f64,
+    /// Replaces every light's range when > 0.
+    pub range_override: f64,
+    pub light_count: usize,
+    pub seed: u64,
+    pub selected_light: Option<usize>,
+    pub lobe: Lobe,
+    /// 0: the clamped cosine (M = I); 1: the fitted LTC.
+    pub morph: f64,
+    pub orbit_yaw: f32,
+    pub orbit_pitch: f32,
+    pub colour_difference: bool,
+    pub clip_panel: Clipping,
+    pub clip_scene: ClipScene,
+    pub maximised: Option<PanelId>,
+    pub scene_path: String,
+    pub screenshot_path: String,
+    /// A LUT file to shade with; empty: the embedded table.
+    pub lut_path: String,
+    /// Which shipped table shades (classic or the point-light fit).
+    pub table: Table,
+    /// Overlay the other shipped table's LTC in the lobe panel.
+    pub overlay_other_fit: bool,
+}
+
+/// The Figure-2 scene whose case map and profile the clipping panel shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum ClipScene {
+    Normal,
+    Case1,
+    Case2,
+}
+
+impl ClipScene {
+    pub fn preset(self) -> &'static str {
+        match self {
+            Self::Normal => "figure2-normal",
+            Self::Case1 => "figure2-case1",
+            Self::Case2 => "figure2-case2",
+        }
+    }
+}
+
+impl Default for LabState {
+    fn default() -> Self {
+        let scene = preset("paper-100");
+        Self {
+            light_count: scene.lights.len(),
+            scene,
+            theta_o_deg: 45.0,
+            method_ltc: Method::LtcFast,
+            method_brdf: Method::Brdf,
+            view: View::Split,
+            divider: 0.5,
+            clipping: Clipping::BOTH,
+            normalization: Normalization::Corrected,
+            intensity_scale: 1.0,
+            range_override: 0.0,
+            seed: 27,
+            selected_light: None,
+            lobe: Lobe::Specular,
+            morph: 1.0,
+            orbit_yaw: 0.6,
+            orbit_pitch: 0.35,
+            colour_difference: false,
+            clip_panel: Clipping::BOTH,
+            clip_scene: ClipScene::Case1,
+            maximised: None,
+            scene_path: "scene.toml".into(),
+            screenshot_path: "ltc-lab.png".into(),
+            lut_path: String::new(),
+            table: Table::Classic,
+            overlay_other_fit: true,
+        }
+    }
+}
+
+impl LabState {
+    pub fn alpha(&self) -> f64 {
+        self.scene.material.alpha
+    }
+
+    /// The scene as shaded: global intensity and range applied.
+    pub fn shaded_scene(&self) -> Scene {
+        let mut s = self.scene.clone();
+        for l in &mut s.lights {
+            l.intensity *= self.intensity_scale;
+            if self.range_override > 0.0 {
+                l.range = Some(self.range_override);
+            }
+        }
+        s
+    }
+
+    /// The LTC pair of the lobe and matrix panels' (θo, α).
+    pub fn ltc_pair(&self, lut: &Lut) -> LtcPair {
+        let theta = self.theta_o_deg.to_radians().min(THETA_MAX);
+        lut.sample(self.alpha(), theta.cos()).ltc_pair()
+    }
+}

@@ -1,0 +1,71 @@
+//! `ltc-lab bench`: the paper's Table 1 on this machine's GPU, both methods in one run.
+
+use std::path::PathBuf;
+
+use ltc_lab::bench::BenchRow;
+use ltc_lab::error::Result;
+use ltc_lab::files::{check_writable, write_atomically};
+use ltc_lab::gpu::GpuContext;
+use ltc_lab::gpu::plane::ShaderChecks;
+
+use super::{LutArgs, check_frames_and_lights, parse_size, print};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Light counts, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "100,500,1000,5000")]
+    lights: Vec<usize>,
+    #[arg(long, default_value = "1920x1080", value_parser = parse_size)]
+    size: (usize, usize),
+    /// Timed frames per method and light count (after 5 warm-up frames).
+    #[arg(long, default_value_t = 30)]
+    frames: usize,
+    /// Also write the rows as CSV.
+    #[arg(long)]
+    csv: Option<PathBuf>,
+    /// Keep wgpu's runtime bounds checks (the default benchmarks trusted shader modules).
+    #[arg(long)]
+    checked: bool,
+    #[command(flatten)]
+    lut: LutArgs,
+}
+
+pub fn run(a: &Args) -> Result<()> {
+    check_frames_and_lights(a.frames, &a.lights)?;
+    if let Some(p) = &a.csv {
+        // Refuse a bad path before minutes of measuring.
+        check_writable(p)?;
+    }
+    let lut = a.lut.load()?;
+    let ctx = GpuContext::new()?;
+    ltc_lab::bench::check(&ctx, &a.lights, a.size)?;
+    let device = ctx.describe();
+    eprintln!("benchmarking on {device}");
+    if !ctx.has_timestamps() {
+        eprintln!(
+            "warning: the adapter has no timestamp queries; times are wall clock (submit to done) and include driver overhead"
+        );
+    }
+    let checks = if a.checked {
+        ShaderChecks::Checked
+    } else {
+        ShaderChecks::Trusted
+    };
+    let rows = ltc_lab::bench::run(&ctx, &lut, &a.lights, a.size, a.frames, checks, |r| {
+        eprintln!(
+            "  {:>9} {:>6} lights: {:.3} ms",
+            r.method.name(),
+            r.lights,
+            r.ms_median
+        );
+    })?;
+    if let Some(p) = &a.csv {
+        let mut text = format!("{}\n", BenchRow::CSV_HEADER);
+        for r in &rows {
+            text.push_str(&r.csv());
+            text.push('\n');
+        }
+        write_atomically(p, text.as_bytes())?;
+    }
+    print(&ltc_lab::bench::markdown(&rows, &device))
+}

@@ -1,0 +1,34 @@
+//! `ltc-lab eval`: the exact lobes and their LTC approximation for the cases of a CSV file.
+
+use std::path::PathBuf;
+
+use ltc_lab::error::Result;
+use ltc_lab::eval::{HEADER, OUTPUT_COLUMNS, evaluate, parse_cases};
+use ltc_lab::files::read_text;
+
+use super::{LutArgs, print};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// A CSV with the header theta_o,alpha,lx,ly,lz,f0: theta_o in degrees (0–90), alpha the
+    /// GGX α in (0, 1], l the unit light direction in the shading frame (n = +z, v in the
+    /// xz-plane), f0 in [0, 1]. Output on stdout: those columns plus brdf_spec,brdf_diffuse,
+    /// ltc_spec,ltc_diffuse — each f·cos for a unit-irradiance light and base colour 1, the
+    /// LTC through the LUT's bilinear sampler with both clipping rules (eq. 30).
+    #[arg(long)]
+    cases: PathBuf,
+    #[command(flatten)]
+    lut: LutArgs,
+}
+
+pub fn run(a: &Args) -> Result<()> {
+    let text = read_text(&a.cases)?;
+    let cases = parse_cases(&text, &a.cases.display().to_string())?;
+    let lut = a.lut.load()?;
+    let mut out = format!("{HEADER},{OUTPUT_COLUMNS}\n");
+    for c in &cases {
+        out.push_str(&evaluate(c, &lut));
+        out.push('\n');
+    }
+    print(&out)
+}

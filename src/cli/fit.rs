@@ -1,0 +1,146 @@
+//! `ltc-lab fit`: both lobes over an N×N (θo, α) table, written as the LUT (DESIGN §2).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use ltc_lab::error::{Error, Result};
+use ltc_lab::files::check_writable;
+use ltc_lab::ltc::fit::{FitSettings, fit_table};
+use ltc_lab::ltc::fit_point::{REFINEMENTS, fit_point_table};
+use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut, Table};
+
+use super::one_of;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Cells per side.
+    #[arg(long, default_value_t = 64)]
+    size: usize,
+    /// classic: ltc_code's objective (luts/ltc.exr); point: the pointwise relative L1
+    /// error a point light sees, from the classic fit (luts/ltc_point.exr).
+    #[arg(long, value_parser = one_of(&Table::ALL, Table::name), default_value = "classic")]
+    objective: Table,
+    /// Where to write the table (OpenEXR, .exr); default luts/ltc.exr or luts/ltc_point.exr.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Replace the default output file if it exists (a file named with --out is replaced
+    /// anyway: you named it).
+    #[arg(long)]
+    force: bool,
+}
+
+/// The table sizes `fit` accepts: at least 2 cells per axis (the axes divide by N − 1), at
+/// most 1024 (a 1024² fit already takes hours on two cores).
+const SIZES: std::ops::RangeInclusive<usize> = 2..=1024;
+
+pub fn run(a: &Args) -> Result<()> {
+    if !SIZES.contains(&a.size) {
+        return Err(Error::input(
+            "--size",
+            format!(
+                "must be in {}..={}, got {}",
+                SIZES.start(),
+                SIZES.end(),
+                a.size
+            ),
+        ));
+    }
+    let out = output_path(a)?;
+    let settings = FitSettings {
+        size: a.size,
+        ..FitSettings::default()
+    };
+    let n = a.size;
+    let bar = indicatif::ProgressBar::new((2 * n * n) as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "fitting {bar:40} {pos}/{len} cells  {elapsed_precise}",
+        )
+        .expect("a valid template"),
+    );
+    let start = Instant::now();
+    let (lut, at_limit) = match a.objective {
+        Table::Classic => {
+            let fitted = fit_table(&settings, &|| bar.inc(1));
+            (fitted.lut, Some(fitted.at_iteration_limit))
+        }
+        Table::Point => {
+            // Each point-fit sweep visits every cell (both lobes) once.
+            bar.set_length((2 * (1 + REFINEMENTS) * n * n) as u64);
+            // Warm start: the classic fit of the same cells (the shipped one at its size).
+            let classic = if n == Lut::embedded().size {
+                Lut::embedded().clone()
+            } else {
+                bar.inc_length((2 * n * n) as u64);
+                fit_table(&settings, &|| bar.inc(1)).lut
+            };
+            let lut = fit_point_table(&classic, &settings, &|| bar.inc(2));
+            (lut, None)
+        }
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    bar.finish_and_clear();
+    lut.write(&out)?;
+    eprintln!(
+        "fitted {n}×{n} cells × 2 lobes in {seconds:.1} s on {} threads (α_min = {}); wrote {}",
+        rayon::current_num_threads(),
+        settings.alpha_min,
+        out.display()
+    );
+    if let Some([spec, diff]) = at_limit {
+        eprintln!(
+            "  cells stopped at the {}-iteration limit: spec {spec}, diff {diff}",
+            settings.max_iterations
+        );
+    }
+    for c in [Channel::SpecErr, Channel::DiffErr] {
+        let (mean, max, i, j) = channel_stats(&lut, c);
+        eprintln!(
+            "  {:<9} mean {mean:.4}  max {max:.4} at i={i} (α={:.4}), j={j} (θo={:.1}°)",
+            CHANNEL_NAMES[c as usize],
+            lut.alpha(i),
+            lut.theta_o(j).to_degrees()
+        );
+    }
+    Ok(())
+}
+
+/// The output, checked before the fit: an `.exr` in an existing directory; the default
+/// file is replaced only with `--force`.
+fn output_path(a: &Args) -> Result<PathBuf> {
+    let (out, named) = match &a.out {
+        Some(p) => (p.clone(), true),
+        None => (PathBuf::from(a.objective.path()), false),
+    };
+    if !is_exr(&out) {
+        return Err(Error::input(
+            out.display().to_string(),
+            "the table is written as OpenEXR: the output must end in .exr",
+        ));
+    }
+    check_writable(&out)?;
+    if !named && out.exists() && !a.force {
+        return Err(Error::input(
+            out.display().to_string(),
+            "exists: name it with --out to replace it, or pass --force",
+        ));
+    }
+    Ok(out)
+}
+
+fn is_exr(p: &Path) -> bool {
+    p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"))
+}
+
+/// Mean and maximum of a channel, with the maximum's cell.
+fn channel_stats(lut: &Lut, c: Channel) -> (f64, f32, usize, usize) {
+    let xs: Vec<f32> = lut.cells.iter().map(|cell| cell.get(c)).collect();
+    let mean = xs.iter().map(|&x| f64::from(x)).sum::<f64>() / xs.len() as f64;
+    let (k, max) = xs.iter().enumerate().fold(
+        (0, f32::MIN),
+        |acc, (k, &x)| {
+            if x > acc.1 { (k, x) } else { acc }
+        },
+    );
+    (mean, max, k % lut.size, k / lut.size)
+}

@@ -1,0 +1,137 @@
+//! The command line of DESIGN §6, one module per subcommand; here what they share: the
+//! argument parsers built from the library's own names (the library knows no clap), the LUT
+//! choice, and standard output that ends quietly on a closed pipe.
+
+pub mod bench;
+pub mod eval;
+pub mod fit;
+pub mod lab;
+pub mod lut;
+pub mod render;
+pub mod study;
+
+use std::borrow::Cow;
+use std::io::Write;
+use std::path::PathBuf;
+
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::{Parser, Subcommand};
+
+use ltc_lab::error::{Error, Result};
+use ltc_lab::ltc::lut::{Lut, Table};
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "ltc-lab",
+    version,
+    about = "Point lights shaded with Linearly Transformed Cosines: fit, evaluate, render, measure.",
+    after_help = "Exit codes: 0 done; 1 the machine failed (no GPU adapter, a GPU or I/O error); 2 bad input (a file, an argument or a value, named on stderr)."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Open the lab (the default with no subcommand).
+    Lab(lab::Args),
+    /// Fit both lobes (GGX specular, Burley diffuse) over an N×N (θo, α) table and write the LUT.
+    Fit(fit::Args),
+    /// Evaluate the exact lobes and their LTC approximation for the cases of a CSV file.
+    Eval(eval::Args),
+    /// Inspect a LUT: a summary, every cell as CSV, or the error atlas.
+    Lut(lut::Args),
+    /// Render a scene to PNG (tone-mapped) or EXR (linear radiance), on the GPU (default) or
+    /// the CPU reference.
+    Render(render::Args),
+    /// The paper's Table 1 on this machine's GPU: every method at each light count.
+    Bench(bench::Args),
+    /// Speed against accuracy: every variant timed on the GPU and compared with the exact
+    /// image, per light count and roughness; writes study.csv and study.png (Pareto chart).
+    Study(study::Args),
+}
+
+/// A clap parser for one of a library enum's values, by the name the library gives it.
+pub fn one_of<T: Copy + Send + Sync + 'static>(
+    all: &'static [T],
+    name: fn(T) -> &'static str,
+) -> impl TypedValueParser<Value = T> {
+    PossibleValuesParser::new(all.iter().map(|&t| name(t))).map(move |s| {
+        *all.iter()
+            .find(|&&t| name(t) == s)
+            .expect("clap accepted one of the names")
+    })
+}
+
+/// The largest image side `--size` accepts: 16K, beyond any display, small enough that a
+/// typo cannot ask for terabytes.
+pub const MAX_IMAGE_SIDE: usize = 16384;
+
+/// `--size WxH`.
+pub fn parse_size(s: &str) -> std::result::Result<(usize, usize), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("'{s}' is not WxH (e.g. 512x512)"))?;
+    let side = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|&n| (1..=MAX_IMAGE_SIDE).contains(&n))
+            .ok_or_else(|| {
+                format!("'{s}': each side must be a whole number in 1..={MAX_IMAGE_SIDE}")
+            })
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+/// The LTC table a command shades with: a file, or one of the shipped ones.
+#[derive(clap::Args, Debug, Clone)]
+pub struct LutArgs {
+    /// A LUT file instead of the embedded one.
+    #[arg(long)]
+    pub lut: Option<PathBuf>,
+    /// Which shipped table: classic (ltc_code's fit) or point (the point-light fit).
+    #[arg(long, value_parser = one_of(&Table::ALL, Table::name), default_value = "classic")]
+    pub table: Table,
+}
+
+impl LutArgs {
+    pub fn load(&self) -> Result<Cow<'static, Lut>> {
+        Lut::load(self.lut.as_deref(), self.table)
+    }
+
+    /// What the table is, for messages.
+    pub fn describe(&self) -> String {
+        match &self.lut {
+            Some(p) => p.display().to_string(),
+            None => format!("the embedded {} table", self.table.name()),
+        }
+    }
+}
+
+/// `--frames` and `--lights` of `bench` and `study`.
+pub fn check_frames_and_lights(frames: usize, lights: &[usize]) -> Result<()> {
+    if frames == 0 {
+        return Err(Error::input("--frames", "must be at least 1"));
+    }
+    let max = ltc_lab::scene::MAX_LIGHTS;
+    match lights.iter().find(|&&n| n == 0 || n > max) {
+        Some(&n) => Err(Error::input(
+            "--lights",
+            format!("each count must be in 1..={max}, got {n}"),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Writes `text` to standard output. A closed pipe (`| head -1`) ends the output quietly: the
+/// reader has what it wanted. Any other failure (`> /dev/full`) is the machine's.
+pub fn print(text: &str) -> Result<()> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(Error::io("standard output", "write", &e)),
+        Ok(()) => Ok(()),
+    }
+}

@@ -1,0 +1,158 @@
+//! `ltc-lab render`: a scene to PNG (tone-mapped) or EXR (linear radiance), on the GPU or
+//! the CPU reference. A default output name never replaces a file.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use ltc_lab::cpu;
+use ltc_lab::error::{Error, Result};
+use ltc_lab::files::{check_writable, write_atomically, write_new};
+use ltc_lab::gpu::GpuContext;
+use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
+use ltc_lab::ltc::lut::Lut;
+use ltc_lab::ltc::{Clipping, Normalization};
+use ltc_lab::output::{ImageFormat, frame_bytes};
+use ltc_lab::render::{Frame, Method, RenderSettings, View};
+use ltc_lab::scene::Scene;
+
+use super::{LutArgs, one_of, parse_size};
+
+/// What `--method` names: one method alone, or LTC against the BRDF.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shown {
+    Alone(Method),
+    Compared(View),
+}
+
+impl Shown {
+    const ALL: [Self; 7] = [
+        Self::Alone(Method::Brdf),
+        Self::Alone(Method::BrdfFast),
+        Self::Alone(Method::Ltc),
+        Self::Alone(Method::LtcFast),
+        Self::Alone(Method::LtcF16),
+        Self::Compared(View::Split),
+        Self::Compared(View::Diff),
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Alone(m) => m.name(),
+            Self::Compared(View::Diff) => "diff",
+            Self::Compared(_) => "split",
+        }
+    }
+
+    /// The settings: split and diff compare the literal forms (`ltc` | `brdf`), as the CPU.
+    fn settings(self, (w, h): (usize, usize)) -> RenderSettings {
+        match self {
+            Self::Alone(m) => RenderSettings::single(w, h, m),
+            Self::Compared(view) => RenderSettings::compare(w, h, view),
+        }
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The scene, a TOML file (the presets are in assets/scenes/).
+    #[arg(long)]
+    scene: PathBuf,
+    /// brdf, brdf-fast, ltc, ltc-fast, ltc-f16, split (LTC | BRDF) or diff (|LTC − BRDF| / BRDF).
+    /// On the CPU the fast forms are the same math as their literal twins.
+    #[arg(long, value_parser = one_of(&Shown::ALL, Shown::name))]
+    method: Shown,
+    /// Image size, WxH.
+    #[arg(long, default_value = "512x512", value_parser = parse_size)]
+    size: (usize, usize),
+    /// Output file (.png or .exr); default `<scene>-<method>.png`, or the next free
+    /// `<scene>-<method>-2.png`…: a default name never replaces a file.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Render on the CPU (the f64 reference) instead of the GPU.
+    #[arg(long)]
+    cpu: bool,
+    /// Light clipping rules (eq. 30): both, horizon (case 1 only), transformed (case 2
+    /// only) or none.
+    #[arg(long, value_parser = one_of(&Clipping::ALL, Clipping::name), default_value = "both")]
+    clip: Clipping,
+    /// corrected (DESIGN §1) or paper (eq. 25 as printed: no 1/π, no magnitudes).
+    #[arg(long, value_parser = one_of(&Normalization::ALL, Normalization::name), default_value = "corrected")]
+    normalization: Normalization,
+    /// Where the split view changes from LTC (left) to BRDF (right), 0–1 of the width.
+    #[arg(long, default_value_t = 0.5)]
+    divider: f64,
+    #[command(flatten)]
+    lut: LutArgs,
+}
+
+pub fn run(a: &Args) -> Result<()> {
+    if !a.divider.is_finite() || !(0.0..=1.0).contains(&a.divider) {
+        return Err(Error::input(
+            "--divider",
+            format!("must be in [0, 1], got {}", a.divider),
+        ));
+    }
+    let mut settings = a.method.settings(a.size);
+    settings.clipping = a.clip;
+    settings.normalization = a.normalization;
+    settings.divider = a.divider;
+    let default_out = a.out.is_none();
+    let out = a
+        .out
+        .clone()
+        .unwrap_or_else(|| default_name(&a.scene, a.method));
+    let format = ImageFormat::of(&out)?;
+    check_writable(&out)?;
+    let scene = Scene::load(&a.scene)?;
+    let lut = a.lut.load()?;
+    let start = Instant::now();
+    let (frame, device) = if a.cpu {
+        let frame = cpu::render(&scene, &lut, &settings);
+        let threads = rayon::current_num_threads();
+        (frame, format!("the CPU ({threads} threads)"))
+    } else {
+        render_gpu(&scene, &lut, &settings)?
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    if let Some((k, p)) = frame.first_invalid(settings.clipping) {
+        return Err(Error::machine(
+            "render",
+            format!(
+                "pixel ({}, {}) came out {p} on {device}; nothing was written",
+                k % frame.width,
+                k / frame.width
+            ),
+        ));
+    }
+    let bytes = frame_bytes(&frame, format, scene.exposure);
+    let written = if default_out {
+        write_new(&out, &bytes)?
+    } else {
+        write_atomically(&out, &bytes)?;
+        out
+    };
+    eprintln!(
+        "rendered {} lights at {}×{} on {device} in {seconds:.3} s; wrote {}",
+        scene.lights.len(),
+        settings.width,
+        settings.height,
+        written.display()
+    );
+    Ok(())
+}
+
+/// `<scene stem>-<method>.png` in the current directory.
+fn default_name(scene: &Path, shown: Shown) -> PathBuf {
+    let stem = scene
+        .file_stem()
+        .map_or("render".into(), |s| s.to_string_lossy());
+    PathBuf::from(format!("{stem}-{}.png", shown.name()))
+}
+
+/// The GPU render, checked against the adapter's limits before any work.
+fn render_gpu(scene: &Scene, lut: &Lut, s: &RenderSettings) -> Result<(Frame, String)> {
+    let ctx = GpuContext::new()?;
+    let mut renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked)?;
+    let (frame, ms) = renderer.render(&ctx, scene, s)?;
+    Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))
+}

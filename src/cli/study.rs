@@ -1,0 +1,78 @@
+//! `ltc-lab study`: every shading variant timed and measured against the exact image;
+//! `study.csv` and the Pareto chart `study.png` land together or not at all.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use ltc_lab::error::{Error, Result};
+use ltc_lab::files::{Outputs, free_directory};
+use ltc_lab::gpu::GpuContext;
+use ltc_lab::ltc::lut::Lut;
+use ltc_lab::study;
+
+use super::{check_frames_and_lights, parse_size, print};
+
+/// The directory `study` writes into unless told otherwise.
+const DEFAULT_DIR: &str = "study";
+const FILES: [&str; 2] = ["study.csv", "study.png"];
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Directory for study.csv and study.png (made if missing; files in it are replaced).
+    /// Default: ./study, or the first of study-2, study-3… that holds neither file.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    #[arg(long, default_value = "320x180", value_parser = parse_size)]
+    size: (usize, usize),
+    #[arg(long, value_delimiter = ',', default_value = "100,1000")]
+    lights: Vec<usize>,
+    #[arg(long, value_delimiter = ',', default_value = "0.1,0.27,0.6")]
+    alpha: Vec<f64>,
+    /// Timed frames per variant (median, after one warm-up).
+    #[arg(long, default_value_t = 5)]
+    frames: usize,
+}
+
+pub fn run(a: &Args) -> Result<()> {
+    check_frames_and_lights(a.frames, &a.lights)?;
+    if let Some(&alpha) = a.alpha.iter().find(|&&x| !(x > 0.0 && x <= 1.0)) {
+        return Err(Error::input(
+            "--alpha",
+            format!("each α must be in (0, 1], got {alpha}"),
+        ));
+    }
+    let dir = match &a.out {
+        Some(d) => d.clone(),
+        None => free_directory(Path::new(DEFAULT_DIR), &FILES)?,
+    };
+    let mut out = Outputs::new(&dir, &FILES)?;
+    let ctx = GpuContext::new()?;
+    ltc_lab::bench::check(&ctx, &a.lights, a.size)?;
+    let device = ctx.describe();
+    eprintln!("study on {device}");
+    let start = Instant::now();
+    let rows = study::run(
+        &ctx,
+        Lut::embedded(),
+        a.size,
+        &a.lights,
+        &a.alpha,
+        a.frames,
+        |r| {
+            eprintln!(
+                "  α {:<5} {:>6} lights {:>12}: {:9.3} ms, rel RMSE {:.2e}, p99 {:.2e}",
+                r.alpha, r.lights, r.variant, r.ms_median, r.rel_rmse, r.p99_rel_err
+            );
+        },
+    )?;
+    let csv = study::csv(&rows);
+    out.stage("study.csv", csv.as_bytes())?;
+    out.stage("study.png", &study::pareto_png(&rows, &ctx.info.name)?)?;
+    out.commit()?;
+    eprintln!(
+        "study done in {:.0} s; wrote {}/study.csv and study.png",
+        start.elapsed().as_secs_f64(),
+        dir.display()
+    );
+    print(&csv)
+}

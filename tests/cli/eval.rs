@@ -1,0 +1,132 @@
+//! `ltc-lab eval`.
+
+use ltc_lab::brdf::{brdf_cos, view_from_theta};
+
+use crate::{
+    assert_no_panic, assert_refused, corrupt_lut, first_line_then_close, into_dev_full, ltc_lab,
+    stderr,
+};
+
+const CASES: &str = "theta_o,alpha,lx,ly,lz,f0\n\
+    0,0.27,0,0,1,0.04\n\
+    60,0.5,-0.6,0.2,0.7745966692414834,1\n\
+    89,0.01,0.3,0.1,-0.9486832980505138,0\n";
+
+#[test]
+fn eval_prints_one_row_per_case() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases.csv");
+    // Spreadsheets save CSV with a UTF-8 byte-order mark: it is accepted.
+    std::fs::write(&cases, format!("\u{feff}{CASES}")).unwrap();
+    let o = ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(
+        text.lines().next().unwrap(),
+        "theta_o,alpha,lx,ly,lz,f0,brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse"
+    );
+    assert_eq!(rows.len(), 3);
+    for r in &rows {
+        let v = view_from_theta(r[0].to_radians());
+        let b = brdf_cos(v, [r[2], r[3], r[4]], r[1], r[5]);
+        assert!((r[6] - b.specular).abs() <= 1e-12 * b.specular.abs().max(1.0));
+        assert!((r[7] - b.diffuse).abs() <= 1e-12);
+        assert!(r[8] >= 0.0 && r[9] >= 0.0);
+    }
+    // The light below the horizon: zero both ways (eq. 30's clipping).
+    assert_eq!(&rows[2][6..], &[0.0; 4]);
+    // At normal view on a rough surface the LTC is within the pointwise error of the table.
+    assert!((rows[0][9] - rows[0][7]).abs() < 0.05 * rows[0][7]);
+}
+
+#[test]
+fn eval_refuses_bad_rows_naming_the_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("bad.csv");
+    for (row, what) in [
+        ("0,0.27,0,0,1", "line 3"),
+        ("0,nan,0,0,1,0.04", "line 3"),
+        ("0,0,0,0,1,0.04", "alpha"),
+        ("0,-0.5,0,0,1,0.04", "alpha"),
+        ("95,0.3,0,0,1,0.04", "theta_o"),
+        ("0,0.3,0,0,2,0.04", "unit length"),
+        ("0,0.3,0,zero,1,0.04", "'zero'"),
+    ] {
+        std::fs::write(
+            &cases,
+            format!("theta_o,alpha,lx,ly,lz,f0\n0,0.3,0,0,1,0.04\n{row}\n"),
+        )
+        .unwrap();
+        let o = ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]);
+        assert_refused(&o, what);
+        assert_refused(&o, "bad.csv");
+    }
+    std::fs::write(&cases, "a,b\n").unwrap();
+    assert_refused(
+        &ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]),
+        "header",
+    );
+    assert_refused(
+        &ltc_lab(&["eval", "--cases", "/nonexistent.csv"]),
+        "/nonexistent.csv",
+    );
+}
+
+#[test]
+fn eval_refuses_a_corrupt_lut() {
+    let dir = tempfile::tempdir().unwrap();
+    let lut = corrupt_lut(dir.path());
+    let cases = dir.path().join("cases.csv");
+    std::fs::write(&cases, CASES).unwrap();
+    assert_refused(
+        &ltc_lab(&[
+            "eval",
+            "--cases",
+            cases.to_str().unwrap(),
+            "--lut",
+            lut.to_str().unwrap(),
+        ]),
+        "corrupt.exr",
+    );
+}
+
+/// Many cases, so that the output outgrows a pipe's buffer (64 KiB on Linux).
+fn many_cases(dir: &std::path::Path) -> String {
+    let cases = dir.join("many.csv");
+    let mut text = String::from("theta_o,alpha,lx,ly,lz,f0\n");
+    for k in 0..3000 {
+        text.push_str(&format!("{},0.27,0,0,1,0.04\n", k % 90));
+    }
+    std::fs::write(&cases, text).unwrap();
+    cases.display().to_string()
+}
+
+/// `eval … | head -1`: the reader leaves; eval ends quietly, with success.
+#[test]
+fn eval_ends_quietly_on_a_closed_pipe() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = many_cases(dir.path());
+    let (line, status, err) = first_line_then_close(&["eval", "--cases", &cases]);
+    assert!(line.starts_with("theta_o,alpha"), "{line}");
+    assert_no_panic(status.code(), &err);
+    assert!(status.success(), "{status}: {err}");
+    assert!(err.is_empty(), "{err}");
+}
+
+/// `eval … > /dev/full`: one line saying so, exit 1 (the machine's failure, not the input's).
+#[test]
+fn eval_reports_a_full_disk_without_a_backtrace() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = many_cases(dir.path());
+    let o = into_dev_full(&["eval", "--cases", &cases]);
+    let err = stderr(&o);
+    assert_no_panic(o.status.code(), &err);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains("no space left"), "{err}");
+}

@@ -1,0 +1,142 @@
+//! `ltc-lab study`: its two files land together, in a directory made for them, and a default
+//! directory never replaces an earlier study.
+
+use ltc_lab::gpu::plane::PlaneRenderer;
+
+use crate::gpu_common::gpu;
+use crate::{assert_refused, ltc_lab, ltc_lab_in, stderr};
+
+const SMALL: [&str; 8] = [
+    "--size", "24x16", "--lights", "8", "--alpha", "0.27", "--frames", "1",
+];
+
+#[test]
+fn study_writes_every_variant_and_the_pareto_chart() {
+    if gpu().is_none() {
+        return;
+    }
+    let root = tempfile::tempdir().unwrap();
+    let dir = root.path().join("made/for/it");
+    let mut args = vec!["study", "--out", dir.to_str().unwrap()];
+    args.extend(SMALL);
+    let o = ltc_lab(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows = ltc_lab::study::read_csv(&dir.join("study.csv")).unwrap();
+    let names: Vec<&str> = rows.iter().map(|r| r.variant.as_str()).collect();
+    let mut expected = vec![
+        "brdf",
+        "brdf-fast",
+        "ltc",
+        "ltc-fast",
+        "ltc-paper",
+        "ltc-nearest",
+        "ltc-lut16",
+        "ltc-lut32",
+        "ltc-point",
+        "ltc-fast-point",
+    ];
+    if gpu().unwrap().ctx.has_f16() {
+        expected.push("ltc-f16");
+    }
+    assert_eq!(names, expected);
+    for r in &rows {
+        assert!(
+            r.ms_median > 0.0 && (r.lights, r.width, r.height) == (8, 24, 16),
+            "{r:?}"
+        );
+    }
+    // The reference is the exact image itself; every LTC variant differs from it, the
+    // paper-literal one by far the most (it drops 1/π and the magnitudes).
+    assert_eq!(rows[0].rel_rmse, 0.0);
+    let err = |v: &str| rows.iter().find(|r| r.variant == v).unwrap().rel_rmse;
+    assert!(err("ltc") > 0.0 && err("ltc-paper") > 10.0 * err("ltc"));
+    // ltc and ltc-fast are the same approximation: the same error to f32 rounding.
+    assert!((err("ltc") - err("ltc-fast")).abs() <= 1e-3 * err("ltc"));
+    let png = image::open(dir.join("study.png")).unwrap().to_rgb8();
+    assert!(
+        png.width() >= 800 && png.pixels().filter(|p| p.0 != [255, 255, 255]).count() > 10_000,
+        "blank chart"
+    );
+}
+
+#[test]
+fn study_refuses_bad_arguments() {
+    for (args, what) in [
+        (vec!["--alpha", "0"], "--alpha"),
+        (vec!["--alpha", "1.5"], "--alpha"),
+        (vec!["--lights", "0"], "--lights"),
+        (vec!["--frames", "0"], "--frames"),
+    ] {
+        let mut all = vec!["study", "--out", "/tmp/never-study"];
+        all.extend(args);
+        assert_refused(&ltc_lab(&all), what);
+    }
+    assert!(!std::path::Path::new("/tmp/never-study").exists());
+}
+
+/// `study --out s` where `s/study.png` is a directory: refused before anything is measured
+/// or written; the earlier `s/study.csv` is untouched.
+#[test]
+fn study_writes_both_files_or_neither() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("study.csv"), "the earlier study").unwrap();
+    std::fs::create_dir(dir.path().join("study.png")).unwrap();
+    let mut args = vec!["study", "--out", dir.path().to_str().unwrap()];
+    args.extend(SMALL);
+    assert_refused(&ltc_lab(&args), "study.png");
+    assert_eq!(
+        std::fs::read_to_string(dir.path().join("study.csv")).unwrap(),
+        "the earlier study"
+    );
+}
+
+/// More lights than the adapter shades: refused, and the directory made for the study is
+/// gone again.
+#[test]
+fn a_refused_study_leaves_no_directory() {
+    let Some(g) = gpu() else { return };
+    if PlaneRenderer::max_lights(&g.ctx) >= ltc_lab::scene::MAX_LIGHTS {
+        eprintln!("*** SKIPPED: this adapter shades every light count a scene may hold ***");
+        return;
+    }
+    let too_many = (PlaneRenderer::max_lights(&g.ctx) + 1).to_string();
+    let root = tempfile::tempdir().unwrap();
+    let dir = root.path().join("s");
+    let o = ltc_lab(&[
+        "study",
+        "--out",
+        dir.to_str().unwrap(),
+        "--size",
+        "8x8",
+        "--lights",
+        &too_many,
+        "--frames",
+        "1",
+    ]);
+    assert_refused(&o, "--lights");
+    assert!(!dir.exists(), "an empty directory was left");
+}
+
+/// With no --out, an earlier `study/` is kept and the new one goes to `study-2/`.
+#[test]
+fn a_default_study_directory_never_replaces_an_earlier_study() {
+    if gpu().is_none() {
+        return;
+    }
+    let cwd = tempfile::tempdir().unwrap();
+    std::fs::create_dir(cwd.path().join("study")).unwrap();
+    std::fs::write(cwd.path().join("study/study.csv"), "the earlier study").unwrap();
+    let mut args = vec!["study"];
+    args.extend(SMALL);
+    let o = ltc_lab_in(cwd.path(), &args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(cwd.path().join("study/study.csv")).unwrap(),
+        "the earlier study"
+    );
+    assert!(
+        cwd.path().join("study-2/study.png").exists(),
+        "{}",
+        stderr(&o)
+    );
+}
