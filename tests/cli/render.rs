@@ -286,26 +286,8 @@ fn the_diff_of_an_unclipped_glow_is_finite() {
     let dir = tempfile::tempdir().unwrap();
     let scene = preset("figure2-case1.toml");
     for cpu in devices() {
-        let out = dir.path().join(format!("diff-{cpu}.exr"));
-        let mut args = vec![
-            "render",
-            "--scene",
-            &scene,
-            "--method",
-            "diff",
-            "--clip",
-            "none",
-            "--size",
-            "48x32",
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        if cpu {
-            args.push("--cpu");
-        }
-        let o = ltc_lab(&args);
-        assert!(o.status.success(), "cpu: {cpu}: {}", stderr(&o));
-        let pixels = exr_pixels(&out);
+        let args = ["--method", "diff", "--clip", "none"];
+        let pixels = render_exr(dir.path(), &scene, &args, cpu);
         assert!(
             pixels.iter().flatten().all(|x| x.is_finite() && *x >= 0.0),
             "cpu: {cpu}: a non-finite or negative difference"
@@ -326,6 +308,20 @@ fn devices() -> Vec<bool> {
     }
 }
 
+/// Renders `scene` at 48×32 with `args`, on the CPU or the GPU, to an EXR in `dir`; its pixels.
+fn render_exr(dir: &Path, scene: &str, args: &[&str], cpu: bool) -> Vec<[f32; 3]> {
+    let out = dir.join(format!("out-{cpu}.exr"));
+    let mut all = vec!["render", "--scene", scene, "--size", "48x32"];
+    all.extend(args);
+    all.extend(["--out", out.to_str().unwrap()]);
+    if cpu {
+        all.push("--cpu");
+    }
+    let o = ltc_lab(&all);
+    assert!(o.status.success(), "cpu: {cpu}: {}", stderr(&o));
+    exr_pixels(&out)
+}
+
 /// A range of 1e-300 rounds to 0 in f32, which the GPU's light buffer reads as "infinite":
 /// such a light must light nothing there either, as on the CPU.
 #[test]
@@ -335,25 +331,14 @@ fn a_tiny_range_lights_nothing_on_either_renderer() {
         g.replace("intensity = 1.0", "intensity = 1.0\nrange = 1e-300")
     });
     for cpu in devices() {
-        let out = dir.path().join(format!("tiny-{cpu}.exr"));
-        let mut args = vec![
-            "render",
-            "--scene",
+        let pixels = render_exr(
+            dir.path(),
             scene.to_str().unwrap(),
-            "--method",
-            "brdf",
-            "--size",
-            "24x16",
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        if cpu {
-            args.push("--cpu");
-        }
-        let o = ltc_lab(&args);
-        assert!(o.status.success(), "{}", stderr(&o));
+            &["--method", "brdf"],
+            cpu,
+        );
         assert!(
-            exr_pixels(&out).iter().flatten().all(|&x| x == 0.0),
+            pixels.iter().flatten().all(|&x| x == 0.0),
             "cpu: {cpu}: a light of range 1e-300 lit the plane"
         );
     }
