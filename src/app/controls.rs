@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use crate::app::shading::Shading;
 use crate::app::state::LabState;
 use crate::ltc::Normalization;
+use crate::ltc::formats;
 use crate::ltc::lut::{Lut, Table};
 use crate::render::Method;
 use crate::scene::{PRESETS, RandomLights, Scene, generate_lights, preset};
@@ -254,18 +255,22 @@ fn table(ui: &mut egui::Ui, s: &mut LabState, message: &mut Option<Message>) -> 
     });
     ui.horizontal(|ui| {
         ui.add(egui::TextEdit::singleline(&mut s.lut_path).desired_width(120.0).hint_text("embedded LUT"))
-            .on_hover_text("An LTC table (.exr, as `ltc-lab fit` writes it) to shade with; empty for the embedded one");
+            .on_hover_text("An LTC table to shade with: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
         if ui.small_button("use LUT").on_hover_text("Load the table named on the left; a missing or broken file is reported here and the current table stays").clicked() {
             let path = s.lut_path.trim();
             let loaded = if path.is_empty() {
-                Ok(Lut::embedded().clone())
+                formats::load(None, Table::Classic)
             } else {
-                Lut::read(Path::new(path))
+                formats::read(Path::new(path))
             };
             *message = Some(match loaded {
-                Ok(lut) => {
-                    action = Some(Action::UseLut(lut));
-                    Message::note(format!("shading with {}", if path.is_empty() { "the embedded LUT" } else { path }))
+                Ok(loaded) => {
+                    action = Some(Action::UseLut(loaded.lut.into_owned()));
+                    let what = if path.is_empty() { "the embedded LUT" } else { path };
+                    Message::note(match loaded.note {
+                        Some(note) => format!("shading with {what}. {note}"),
+                        None => format!("shading with {what}"),
+                    })
                 }
                 Err(e) => Message::error(format!("{e} — still using the previous table")),
             });

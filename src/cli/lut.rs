@@ -2,10 +2,12 @@
 
 use std::path::PathBuf;
 
-use ltc_lab::error::Result;
+use ltc_lab::error::{Error, Result};
+use ltc_lab::ltc::formats::dds::Precision;
+use ltc_lab::ltc::formats::{Export, Header, export};
 use ltc_lab::ltc::lut::CHANNEL_NAMES;
 
-use super::{LutArgs, print};
+use super::{LutArgs, one_of, print};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -18,10 +20,34 @@ pub struct Args {
     /// diff.err, the error of one light orbiting a point, and their CSVs.
     #[arg(long)]
     atlas: Option<PathBuf>,
+    /// Write the table in another layout: ltc-code-js (ltc_code's ltc.js), ltc-code-dds
+    /// (its ltc_1.dds and ltc_2.dds), c (a header) or wgsl (const arrays and a lookup). The
+    /// point table's fitted scale is folded into the magnitudes.
+    #[arg(long, value_parser = one_of(&Export::ALL, Export::name), requires = "out")]
+    export: Option<Export>,
+    /// Where --export writes: a file, or for ltc-code-dds a directory (made if missing).
+    #[arg(long, requires = "export")]
+    out: Option<PathBuf>,
+    /// Texels of ltc-code-dds: f16 (RGBA16F, as ltc_code writes them) or f32 (RGBA32F).
+    #[arg(long, value_parser = one_of(&Precision::ALL, Precision::name), default_value = "f16")]
+    precision: Precision,
 }
 
 pub fn run(a: &Args) -> Result<()> {
     let lut = a.lut.load()?;
+    if let (Some(format), Some(out)) = (a.export, &a.out) {
+        let shipped = a.lut.lut.is_none().then_some(a.lut.table);
+        let header = Header::new(&lut, &a.lut.describe(), shipped);
+        let written = export(&lut, &header, format, a.precision, out)?;
+        let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
+        eprintln!("wrote {}", names.join(", "));
+        if a.atlas.is_none() && !a.dump {
+            return Ok(());
+        }
+    }
+    if a.export.is_some() && a.out.is_none() {
+        return Err(Error::input("--export", "needs --out"));
+    }
     if let Some(dir) = &a.atlas {
         let summary = ltc_lab::atlas::write_atlas(&lut, dir)?;
         print(

@@ -18,6 +18,7 @@ use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Parser, Subcommand};
 
 use ltc_lab::error::{Error, Result};
+use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::{Lut, Table};
 
 #[derive(Parser, Debug)]
@@ -88,7 +89,8 @@ pub fn parse_size(s: &str) -> std::result::Result<(usize, usize), String> {
 /// The LTC table a command shades with: a file, or one of the shipped ones.
 #[derive(clap::Args, Debug, Clone)]
 pub struct LutArgs {
-    /// A LUT file instead of the embedded one.
+    /// A LUT file instead of the embedded one: this project's .exr, ltc_code's ltc.js (or
+    /// three.js's copy of it), or its ltc_1.dds / ltc_2.dds (either file, or their directory).
     #[arg(long)]
     pub lut: Option<PathBuf>,
     /// Which shipped table: classic (ltc_code's fit) or point (the point-light fit).
@@ -97,15 +99,24 @@ pub struct LutArgs {
 }
 
 impl LutArgs {
+    /// The table; what a foreign layout could not hold is said on stderr.
     pub fn load(&self) -> Result<Cow<'static, Lut>> {
-        Lut::load(self.lut.as_deref(), self.table)
+        let loaded = formats::load(self.lut.as_deref(), self.table)?;
+        if let Some(note) = &loaded.note {
+            eprintln!("ltc-lab: note: {note}");
+        }
+        Ok(loaded.lut)
     }
 
     /// What the table is, for messages.
     pub fn describe(&self) -> String {
         match &self.lut {
             Some(p) => p.display().to_string(),
-            None => format!("the embedded {} table", self.table.name()),
+            None => format!(
+                "the embedded {} table ({})",
+                self.table.name(),
+                self.table.path()
+            ),
         }
     }
 }

@@ -7,10 +7,9 @@ use std::time::Instant;
 use ltc_lab::error::{Error, Result};
 use ltc_lab::files::{Outputs, free_directory};
 use ltc_lab::gpu::GpuContext;
-use ltc_lab::ltc::lut::Lut;
 use ltc_lab::study;
 
-use super::{check_frames_and_lights, parse_size, print};
+use super::{LutArgs, check_frames_and_lights, parse_size, print};
 
 /// The directory `study` writes into unless told otherwise.
 const DEFAULT_DIR: &str = "study";
@@ -31,6 +30,10 @@ pub struct Args {
     /// Timed frames per variant (median, after one warm-up).
     #[arg(long, default_value_t = 5)]
     frames: usize,
+    /// The table of the variants that shade with the shipped one (ltc, ltc-fast, ltc-paper,
+    /// ltc-nearest, ltc-f16).
+    #[command(flatten)]
+    lut: LutArgs,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -41,6 +44,7 @@ pub fn run(a: &Args) -> Result<()> {
             format!("each α must be in (0, 1], got {alpha}"),
         ));
     }
+    let lut = a.lut.load()?;
     let dir = match &a.out {
         Some(d) => d.clone(),
         None => free_directory(Path::new(DEFAULT_DIR), &FILES)?,
@@ -51,20 +55,12 @@ pub fn run(a: &Args) -> Result<()> {
     let device = ctx.describe();
     eprintln!("study on {device}");
     let start = Instant::now();
-    let rows = study::run(
-        &ctx,
-        Lut::embedded(),
-        a.size,
-        &a.lights,
-        &a.alpha,
-        a.frames,
-        |r| {
-            eprintln!(
-                "  α {:<5} {:>6} lights {:>12}: {:9.3} ms, rel RMSE {:.2e}, p99 {:.2e}",
-                r.alpha, r.lights, r.variant, r.ms_median, r.rel_rmse, r.p99_rel_err
-            );
-        },
-    )?;
+    let rows = study::run(&ctx, &lut, a.size, &a.lights, &a.alpha, a.frames, |r| {
+        eprintln!(
+            "  α {:<5} {:>6} lights {:>12}: {:9.3} ms, rel RMSE {:.2e}, p99 {:.2e}",
+            r.alpha, r.lights, r.variant, r.ms_median, r.rel_rmse, r.p99_rel_err
+        );
+    })?;
     let csv = study::csv(&rows);
     out.stage("study.csv", csv.as_bytes())?;
     out.stage("study.png", &study::pareto_png(&rows, &ctx.info.name)?)?;

@@ -317,14 +317,6 @@ impl Lut {
         }
     }
 
-    /// The shipped `table`, or the file at `path` if one is given.
-    pub fn load(path: Option<&Path>, table: Table) -> Result<std::borrow::Cow<'static, Lut>> {
-        match path {
-            Some(p) => Ok(std::borrow::Cow::Owned(Lut::read(p)?)),
-            None => Ok(std::borrow::Cow::Borrowed(Lut::shipped(table))),
-        }
-    }
-
     pub fn from_exr_bytes(bytes: &[u8], name: &str) -> Result<Lut> {
         let bad = |m: String| Error::input(name, m);
         let image = read()
@@ -399,7 +391,7 @@ impl Lut {
 
     /// Values no fit produces: a channel outside `channel_limits`, or a singular or
     /// reflecting `M⁻¹`.
-    fn validate(&self) -> std::result::Result<(), String> {
+    pub fn validate(&self) -> std::result::Result<(), String> {
         for (k, cell) in self.cells.iter().enumerate() {
             let at = format!("cell (i={}, j={})", k % self.size, k / self.size);
             for (c, name) in CHANNEL_NAMES.iter().enumerate() {
@@ -473,9 +465,15 @@ impl Lut {
     /// The GPU texture coordinate of DESIGN §2:
     /// `uv = (r, sqrt(1 − cos θo)) · (N−1)/N + 0.5/N`, `r = sqrt(α)`.
     pub fn uv(&self, alpha: f64, cos_theta_o: f64) -> (f64, f64) {
-        let n = self.size as f64;
         let r = alpha.max(0.0).sqrt();
         let s = (1.0 - cos_theta_o.clamp(0.0, 1.0)).sqrt();
+        self.uv_of_axes(r, s)
+    }
+
+    /// The texture coordinate of the table's axes `(r, s)`, each in [0, 1]: cell `(i, j)` of
+    /// any N sits at `(i/(N−1), j/(N−1))` — also the grazing row, whose θo is clamped.
+    pub fn uv_of_axes(&self, r: f64, s: f64) -> (f64, f64) {
+        let n = self.size as f64;
         let scale = (n - 1.0) / n;
         let bias = 0.5 / n;
         (r * scale + bias, s * scale + bias)

@@ -6,9 +6,11 @@
 
 pub mod fit;
 pub mod fit_point;
+pub mod formats;
 pub mod lobe;
 pub mod lut;
 pub mod nelder_mead;
+pub mod sphere;
 
 use glam::{DMat3, DVec3};
 

@@ -130,3 +130,89 @@ fn eval_reports_a_full_disk_without_a_backtrace() {
     assert_eq!(err.trim_end().lines().count(), 1, "{err}");
     assert!(err.contains("no space left"), "{err}");
 }
+
+/// `eval --lut` on a table in ltc_code's JavaScript layout, written here as ltc_code's
+/// `writeJS` writes it (2×2 cells, distinct entries), gives the values that layout defines:
+/// `M⁻¹ = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w))` (columns),
+/// `D = max((M⁻¹l).z, 0) |det M⁻¹| / (π |M⁻¹l|⁴)`, times `F0·t2.x + (1 − F0)·t2.y`, with
+/// the DESIGN §2 lookup (at r = 0.5 the two columns' average). The diffuse lobe is the
+/// embedded table's.
+#[test]
+fn eval_with_an_ltc_code_table_follows_that_layouts_definition() {
+    let dir = tempfile::tempdir().unwrap();
+    let tex1 = [
+        [1.0, 0.0, 0.0, 0.0002],
+        [0.9, 0.2, -0.1, 1.1],
+        [1.0, 0.0, 0.0, 0.0002],
+        [0.8, 0.3, -0.2, 1.2],
+    ];
+    let tex2 = [
+        [1.0, 0.001, 0.0, 0.0],
+        [0.5, 0.05, 0.0, 1.0],
+        [0.9, 0.01, 0.0, 0.0],
+        [0.6, 0.04, 0.0, 1.0],
+    ];
+    let line = |t: &[f64; 4]| format!("{}, {}, {}, {}, \n", t[0], t[1], t[2], t[3]);
+    let js = format!(
+        "var g_ltc_1 = [\n{}];\nvar g_ltc_2 = [{}];\n",
+        tex1.iter().map(line).collect::<String>(),
+        tex2.iter().map(line).collect::<String>()
+    );
+    let table = dir.path().join("tiny.js");
+    std::fs::write(&table, js).unwrap();
+    let cases = dir.path().join("cases.csv");
+    std::fs::write(
+        &cases,
+        "theta_o,alpha,lx,ly,lz,f0\n0,1,0.6,0,0.8,0.5\n0,0.25,0,0.28,0.96,0.2\n0,1,-0.6,0,0.8,0.5\n",
+    )
+    .unwrap();
+    let o = ltc_lab(&[
+        "eval",
+        "--cases",
+        cases.to_str().unwrap(),
+        "--lut",
+        table.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("diffuse lobe is the embedded"),
+        "{}",
+        stderr(&o)
+    );
+    let rows: Vec<Vec<f64>> = String::from_utf8(o.stdout)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let mix = |a: [f64; 4], b: [f64; 4], f: f64| {
+        std::array::from_fn::<f64, 4, _>(|c| a[c] * (1.0 - f) + b[c] * f)
+    };
+    // (θo = 0, r = 1): cell (1, 0); (r = 0.5): halfway between cells (0, 0) and (1, 0).
+    let texels = [
+        (tex1[1], tex2[1]),
+        (mix(tex1[0], tex1[1], 0.5), mix(tex2[0], tex2[1], 0.5)),
+        (tex1[1], tex2[1]),
+    ];
+    for (row, (t1, t2)) in rows.iter().zip(texels) {
+        let (l, f0) = ([row[2], row[3], row[4]], row[5]);
+        // M⁻¹ l with columns (t1.x, 0, t1.y), (0, 1, 0), (t1.z, 0, t1.w).
+        let w = [
+            t1[0] * l[0] + t1[2] * l[2],
+            l[1],
+            t1[1] * l[0] + t1[3] * l[2],
+        ];
+        let det = t1[0] * t1[3] - t1[2] * t1[1];
+        let q = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+        let d = w[2].max(0.0) * det.abs() / (std::f64::consts::PI * q * q);
+        let want = (f0 * t2[0] + (1.0 - f0) * t2[1]) * d;
+        // The table's f32 entries (exact for these decimals to 6e-8 relative) in f64.
+        assert!(
+            (row[8] - want).abs() <= 1e-6 * want,
+            "{row:?}: ltc_spec {} against {want}",
+            row[8]
+        );
+    }
+    // A mirrored light sees a different value: the m02/m20 entries are not symmetric.
+    assert!((rows[0][8] - rows[2][8]).abs() > 1e-3 * rows[0][8]);
+}

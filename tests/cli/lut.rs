@@ -132,3 +132,123 @@ fn atlas_writes_all_its_files_or_none() {
     let o = ltc_lab(&["lut", "--atlas", file.join("atlas").to_str().unwrap()]);
     assert_refused(&o, "plain");
 }
+
+/// `lut --export`: each format written where asked, with its header; ltc_code's DDS pair at
+/// the sizes ltc_code's own files have (128-byte header + 64² texels of 8 or 16 bytes).
+#[test]
+fn lut_exports_every_format() {
+    let dir = tempfile::tempdir().unwrap();
+    let js = dir.path().join("ltc.js");
+    let o = ltc_lab(&[
+        "lut",
+        "--table",
+        "point",
+        "--export",
+        "ltc-code-js",
+        "--out",
+        js.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&js).unwrap();
+    assert!(
+        text.contains("fit objective: the point-light fit"),
+        "no header"
+    );
+    assert!(text.contains("var g_ltc_1 = [") && text.contains("var g_ltc_2 = ["));
+    for (precision, bytes) in [("f16", 128 + 64 * 64 * 8), ("f32", 128 + 64 * 64 * 16)] {
+        let out = dir.path().join(precision);
+        let o = ltc_lab(&[
+            "lut",
+            "--export",
+            "ltc-code-dds",
+            "--precision",
+            precision,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        for f in ["ltc_1.dds", "ltc_2.dds"] {
+            assert_eq!(std::fs::metadata(out.join(f)).unwrap().len(), bytes);
+        }
+        assert!(
+            std::fs::read_to_string(out.join("ltc_dds.txt"))
+                .unwrap()
+                .contains("alpha_min")
+        );
+    }
+    let header = dir.path().join("ltc.h");
+    let o = ltc_lab(&["lut", "--export", "c", "--out", header.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    compiles_as_c(&header);
+    let wgsl = dir.path().join("ltc.wgsl");
+    let o = ltc_lab(&["lut", "--export", "wgsl", "--out", wgsl.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        std::fs::read_to_string(&wgsl)
+            .unwrap()
+            .contains("fn ltc_lookup(")
+    );
+    // --export needs --out, and the format must be one of the four.
+    assert_eq!(ltc_lab(&["lut", "--export", "c"]).status.code(), Some(2));
+    assert_eq!(
+        ltc_lab(&["lut", "--export", "png", "--out", "/tmp/x"])
+            .status
+            .code(),
+        Some(2)
+    );
+}
+
+/// The C header compiles (where the machine has a C compiler: `cc`, as Debian's gcc).
+fn compiles_as_c(header: &std::path::Path) {
+    let dir = header.parent().unwrap();
+    let main = dir.join("main.c");
+    std::fs::write(
+        &main,
+        "#include \"ltc.h\"\nint main(void) { return g_ltc_1[3] > 0.0f && g_ltc_2[4 * LTC_LUT_SIZE] >= 0.0f ? 0 : 1; }\n",
+    )
+    .unwrap();
+    match std::process::Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Werror", "-fsyntax-only"])
+        .arg(&main)
+        .output()
+    {
+        Ok(o) => assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr)),
+        Err(e) => eprintln!("*** SKIPPED: the C header is not compiled: no C compiler ({e}) ***"),
+    }
+}
+
+/// A table in ltc_code's layout is used as its own and says what it lacks: the note names
+/// the embedded diffuse lobe; a file that is not a table is refused.
+#[test]
+fn lut_reads_ltc_codes_layouts_and_says_what_they_lack() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("pair");
+    let o = ltc_lab(&[
+        "lut",
+        "--export",
+        "ltc-code-dds",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for given in [out.clone(), out.join("ltc_1.dds"), out.join("ltc_2.dds")] {
+        let o = ltc_lab(&["lut", "--lut", given.to_str().unwrap()]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains("the diffuse lobe is the embedded classic table's"),
+            "{}",
+            stderr(&o)
+        );
+        assert!(String::from_utf8_lossy(&o.stdout).contains("64×64"));
+    }
+    let bad = dir.path().join("square.js");
+    std::fs::write(
+        &bad,
+        "var g_ltc_1 = [1, 0, 0, 1];\nvar g_ltc_2 = [1, 0, 0, 1];\n",
+    )
+    .unwrap();
+    assert_refused(
+        &ltc_lab(&["lut", "--lut", bad.to_str().unwrap()]),
+        "square.js",
+    );
+}
