@@ -69,14 +69,16 @@ struct LutTexel {
     norms: vec4<f32>,
 }
 
-fn lut_texel(i: u32, j: u32, size: u32) -> LutTexel {
-    let base = (j * size + i) * LUT_VEC4S_PER_CELL;
-    return LutTexel(lut[base], lut[base + 1u], lut[base + 2u]);
+// Texel (i, j) of the table of `size` cells per side that starts at vec4 `base` (table A at 0;
+// table B, where two tables are compared, after it).
+fn lut_texel(i: u32, j: u32, size: u32, base: u32) -> LutTexel {
+    let k = base + (j * size + i) * LUT_VEC4S_PER_CELL;
+    return LutTexel(lut[k], lut[k + 1u], lut[k + 2u]);
 }
 
 // Lut::sample_uv: bilinear filtering with clamp-to-edge addressing, done in the shader so
 // that it is the CPU sampler exactly (hardware filtering uses 8-bit weights on many GPUs).
-fn lut_sample_uv(uv: vec2<f32>, size: u32) -> LutTexel {
+fn lut_sample_uv(uv: vec2<f32>, size: u32, base: u32) -> LutTexel {
     let x = uv * f32(size) - 0.5;
     let x0 = floor(x);
     let f = x - x0;
@@ -85,10 +87,10 @@ fn lut_sample_uv(uv: vec2<f32>, size: u32) -> LutTexel {
     let i1 = u32(clamp(x0.x + 1.0, 0.0, last));
     let j0 = u32(clamp(x0.y, 0.0, last));
     let j1 = u32(clamp(x0.y + 1.0, 0.0, last));
-    let a = lut_texel(i0, j0, size);
-    let b = lut_texel(i1, j0, size);
-    let c = lut_texel(i0, j1, size);
-    let d = lut_texel(i1, j1, size);
+    let a = lut_texel(i0, j0, size, base);
+    let b = lut_texel(i1, j0, size, base);
+    let c = lut_texel(i0, j1, size, base);
+    let d = lut_texel(i1, j1, size, base);
     return LutTexel(
         mix(mix(a.spec_m, b.spec_m, f.x), mix(c.spec_m, d.spec_m, f.x), f.y),
         mix(mix(a.diff_m, b.diff_m, f.x), mix(c.diff_m, d.diff_m, f.x), f.y),
@@ -97,9 +99,9 @@ fn lut_sample_uv(uv: vec2<f32>, size: u32) -> LutTexel {
 }
 
 // Lut::sample_nearest: the cell whose texel contains uv.
-fn lut_sample_nearest(uv: vec2<f32>, size: u32) -> LutTexel {
+fn lut_sample_nearest(uv: vec2<f32>, size: u32, base: u32) -> LutTexel {
     let k = vec2<u32>(clamp(floor(uv * f32(size)), vec2<f32>(0.0), vec2<f32>(f32(size - 1u))));
-    return lut_texel(k.x, k.y, size);
+    return lut_texel(k.x, k.y, size, base);
 }
 
 // Lut::uv: (r, sqrt(1 − cos θo)) · (N−1)/N + 0.5/N, r = sqrt(α).
@@ -110,13 +112,13 @@ fn lut_uv(alpha: f32, cos_theta_o: f32, size: u32) -> vec2<f32> {
 }
 
 // Lut::ltc_pair: both lobes at (α, cos θo).
-fn lut_ltc_pair(alpha: f32, cos_theta_o: f32, size: u32) -> LtcPair {
+fn lut_ltc_pair(alpha: f32, cos_theta_o: f32, size: u32, base: u32) -> LtcPair {
     let uv = lut_uv(alpha, cos_theta_o, size);
     var t: LutTexel;
     if LUT_NEAREST {
-        t = lut_sample_nearest(uv, size);
+        t = lut_sample_nearest(uv, size, base);
     } else {
-        t = lut_sample_uv(uv, size);
+        t = lut_sample_uv(uv, size, base);
     }
     let spec = cos_from_brdf_from_entries(t.spec_m);
     let diff = cos_from_brdf_from_entries(t.diff_m);

@@ -1,6 +1,9 @@
-// Shades the plane z = 0 seen by the camera into a storage texture, one thread per pixel,
-// lights read in workgroup-shared tiles of 256 (DESIGN §4). Composed after brdf.wgsl and
-// ltc.wgsl. The CPU reference is src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
+// Shades the plane z = 0 seen by the camera, one thread per pixel and one 16×16 workgroup per
+// tile, lights read in workgroup-shared loads of 256 (DESIGN §4). A render is summed in chunks
+// of each pixel's light list (all lights, or the tile's list when culling), the sums kept per
+// pixel between chunks, so that the lab can spread a render over frames; `resolve` turns the
+// sums into the image. Composed after brdf.wgsl, ltc.wgsl and scene.wgsl. The CPU reference is
+// src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
 
 // Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
 const METHOD_BRDF: u32 = 0u;      // the exact BRDF as DESIGN §1 writes it
@@ -8,6 +11,7 @@ const METHOD_BRDF_FAST: u32 = 1u; // the same, with Filament's V_SmithGGXCorrela
 const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻¹ l per lobe
 const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnormalized u, eq. 27
 const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
+const METHOD_LTC_F16_PAIRS: u32 = 5u; // the same, two lights per vec2<f16> (ltc_f16.wgsl)
 
 // What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
@@ -19,44 +23,38 @@ const VIEW_DIFF: u32 = 2u;   // |A − B| / max(B, floor) on luminance
 override METHOD_A: u32 = METHOD_LTC;
 override METHOD_B: u32 = METHOD_BRDF;
 override VIEW: u32 = VIEW_SINGLE;
+// B shades with table B (two tables compared) instead of table A.
+override TABLE_B: bool = false;
 
-// Must match src/gpu/plane.rs Params (checked by tests/shaders.rs).
-struct Params {
-    eye: vec4<f32>,        // xyz camera position
-    forward: vec4<f32>,    // xyz unit view direction
-    right: vec4<f32>,      // xyz unit
-    up: vec4<f32>,         // xyz unit
-    base_color: vec4<f32>, // rgb diffuse albedo
-    alpha: f32,
-    f0: f32,
-    tan_half_fov: f32,
-    aspect: f32,
-    half_size: f32,
-    divider: f32,          // first pixel column of B in the split view
-    rel_floor: f32,        // the diff view's floor under B's luminance (src/metrics.rs)
-    _pad0: f32,
-    width: u32,
-    height: u32,
-    light_count: u32,
-    lut_size: u32,
-    clip: u32,
-    normalization: u32,
-    _pad1: u32,
-    _pad2: u32,
-}
-
-// Must match src/gpu/plane.rs GpuLight: position and range (≤ 0: infinite), colour × intensity.
-struct GpuLight {
-    position_range: vec4<f32>,
-    intensity: vec4<f32>,
-}
-
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> lights: array<GpuLight>;
 @group(0) @binding(3) var output: texture_storage_2d<rgba32float, write>;
+// Per pixel, the sums so far, kept between chunks: A's specular rgb and diffuse r; A's diffuse
+// gb and B's specular rg; B's specular b and diffuse rgb (three buffers, so that each stays
+// within one storage binding's limit at 16 bytes per pixel).
+@group(0) @binding(4) var<storage, read_write> accum_0: array<vec4<f32>>;
+@group(0) @binding(8) var<storage, read_write> accum_1: array<vec4<f32>>;
+@group(0) @binding(9) var<storage, read_write> accum_2: array<vec4<f32>>;
+// src/gpu/bin.rs: each tile's first list entry, the total after them; the lists.
+@group(0) @binding(5) var<storage, read> tile_offsets: array<u32>;
+@group(0) @binding(6) var<storage, read> tile_lights: array<u32>;
+// Per tile: Σ|L_A|, Σ|L_B| (luminance) and the pixels on the plane; after them, the floor
+// of the difference view (`metrics::relative_floor`).
+@group(0) @binding(7) var<storage, read_write> partials: array<vec4<f32>>;
 
-const TILE: u32 = 256u;
-var<workgroup> tile: array<GpuLight, TILE>;
+const LOAD: u32 = 256u;
+var<workgroup> shared_lights: array<GpuLight, LOAD>;
+// The same lights' positions relative to the workgroup's centre (f16 pairs only).
+var<workgroup> shared_relative: array<vec3<f32>, LOAD>;
+var<workgroup> wg_count: u32;
+
+// One table's per-pixel state: the two lobes, and for ltc-fast M⁻¹ · tangent_from_world per
+// lobe with the factors pulled out of the sum.
+struct LtcShading {
+    pair: LtcPair,
+    spec_from_world: mat3x3<f32>,
+    diff_from_world: mat3x3<f32>,
+    spec_factor: f32,
+    diff_factor: f32,
+}
 
 // A visible point of the plane and everything per pixel that the methods need.
 struct Pixel {
@@ -65,12 +63,8 @@ struct Pixel {
     v: vec3<f32>,          // unit, toward the camera (world; n = +z)
     t1: vec3<f32>,         // shading frame (src/render.rs ShadingFrame)
     t2: vec3<f32>,
-    pair: LtcPair,
-    // ltc-fast: M⁻¹ · tangent_from_world per lobe, and the factors pulled out of the sum.
-    spec_from_world: mat3x3<f32>,
-    diff_from_world: mat3x3<f32>,
-    spec_factor: f32,
-    diff_factor: f32,
+    ltc_a: LtcShading,     // table A
+    ltc_b: LtcShading,     // table B where TABLE_B, else table A
     // brdf-fast: α² and the per-pixel factor of V_SmithGGXCorrelated.
     a2: f32,
     view_factor: f32,
@@ -86,17 +80,9 @@ struct Sums {
 fn surface_point(px: vec2<u32>) -> Pixel {
     var p: Pixel;
     p.on_plane = false;
-    let size = vec2<f32>(f32(params.width), f32(params.height));
-    let s = (vec2<f32>(px) + 0.5) / size * 2.0 - 1.0;
-    let dir = normalize(params.forward.xyz
-        + s.x * params.tan_half_fov * params.aspect * params.right.xyz
-        - s.y * params.tan_half_fov * params.up.xyz);
-    if dir.z == 0.0 {
-        return p;
-    }
-    let t = -params.eye.z / dir.z;
-    let x = params.eye.xyz + t * dir;
-    if t <= 0.0 || abs(x.x) > params.half_size || abs(x.y) > params.half_size {
+    let hit = plane_hit(camera_ray(vec2<f32>(px) + 0.5));
+    let x = hit.xyz;
+    if hit.w == 0.0 || abs(x.x) > params.half_size || abs(x.y) > params.half_size {
         return p;
     }
     p.on_plane = true;
@@ -110,23 +96,35 @@ fn surface_point(px: vec2<u32>) -> Pixel {
     return p;
 }
 
+// One table's LtcShading at the pixel: the table of `size` cells per side at `base`.
+fn ltc_shading(p: Pixel, size: u32, base: u32) -> LtcShading {
+    var s: LtcShading;
+    s.pair = lut_ltc_pair(params.alpha, p.v.z, size, base);
+    // tangent_from_world has rows t1, t2, n; WGSL builds from columns, hence the transpose.
+    let tangent_from_world = transpose(mat3x3<f32>(p.t1, p.t2, vec3<f32>(0.0, 0.0, 1.0)));
+    s.spec_from_world = s.pair.spec.cos_from_brdf * tangent_from_world;
+    s.diff_from_world = s.pair.diff.cos_from_brdf * tangent_from_world;
+    if params.normalization == NORMALIZATION_PAPER_LITERAL {
+        s.spec_factor = s.pair.spec.det_cos_from_brdf;
+        s.diff_factor = s.pair.diff.det_cos_from_brdf;
+    } else {
+        s.spec_factor = s.pair.spec.det_cos_from_brdf / PI * spec_magnitude(s.pair, params.f0);
+        s.diff_factor = s.pair.diff.det_cos_from_brdf / PI * magnitude(s.pair.diff);
+    }
+    return s;
+}
+
 // Per-pixel set-up of every method used by this pipeline.
 fn prepare(p_in: Pixel) -> Pixel {
     var p = p_in;
     if !p.on_plane {
         return p;
     }
-    p.pair = lut_ltc_pair(params.alpha, p.v.z, params.lut_size);
-    // tangent_from_world has rows t1, t2, n; WGSL builds from columns, hence the transpose.
-    let tangent_from_world = transpose(mat3x3<f32>(p.t1, p.t2, vec3<f32>(0.0, 0.0, 1.0)));
-    p.spec_from_world = p.pair.spec.cos_from_brdf * tangent_from_world;
-    p.diff_from_world = p.pair.diff.cos_from_brdf * tangent_from_world;
-    if params.normalization == NORMALIZATION_PAPER_LITERAL {
-        p.spec_factor = p.pair.spec.det_cos_from_brdf;
-        p.diff_factor = p.pair.diff.det_cos_from_brdf;
+    p.ltc_a = ltc_shading(p, params.lut_size, params.lut_base);
+    if TABLE_B {
+        p.ltc_b = ltc_shading(p, params.lut_size_b, params.lut_base_b);
     } else {
-        p.spec_factor = p.pair.spec.det_cos_from_brdf / PI * spec_magnitude(p.pair, params.f0);
-        p.diff_factor = p.pair.diff.det_cos_from_brdf / PI * magnitude(p.pair.diff);
+        p.ltc_b = p.ltc_a;
     }
     p.a2 = params.alpha * params.alpha;
     p.view_factor = sqrt(p.v.z * p.v.z * (1.0 - p.a2) + p.a2);
@@ -168,7 +166,7 @@ fn add_brdf_fast(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
 }
 
 // The paper's LTC (eq. 30): unit l into the shading frame, then M⁻¹ l per lobe.
-fn add_ltc(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
+fn add_ltc(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {
     let u = light.position_range.xyz - p.x;
     let d = length(u);
     let e = irradiance_scale(1.0, d, light.position_range.w);
@@ -177,29 +175,29 @@ fn add_ltc(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
     }
     let lw = u / d;
     let l = vec3<f32>(dot(lw, p.t1), dot(lw, p.t2), lw.z);
-    var spec_weight = spec_magnitude(p.pair, params.f0);
-    var diff_weight = magnitude(p.pair.diff);
+    var spec_weight = spec_magnitude(ltc.pair, params.f0);
+    var diff_weight = magnitude(ltc.pair.diff);
     if params.normalization == NORMALIZATION_PAPER_LITERAL {
         spec_weight = 1.0;
         diff_weight = 1.0;
     }
-    let ds = ltc_eval(p.pair.spec, l, params.clip, params.normalization);
-    let dd = ltc_eval(p.pair.diff, l, params.clip, params.normalization);
+    let ds = ltc_eval(ltc.pair.spec, l, params.clip, params.normalization);
+    let dd = ltc_eval(ltc.pair.diff, l, params.clip, params.normalization);
     (*s).spec += light.intensity.rgb * (e * spec_weight * ds);
     (*s).diff += light.intensity.rgb * (e * diff_weight * dd);
 }
 
 // LTC with the rotation folded into M⁻¹, the unnormalized u = p − x and eq. 27's factoring:
 // E·D = I w(d) d (A u).z / |A u|⁴ · |det M⁻¹|/π — one square root per light.
-fn add_ltc_fast(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
+fn add_ltc_fast(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {
     let u = light.position_range.xyz - p.x;
     let d2 = dot(u, u);
     if d2 < MIN_LIGHT_DISTANCE * MIN_LIGHT_DISTANCE || ((params.clip & CLIP_HORIZON) != 0u && u.z <= 0.0) {
         return;
     }
     let scale = window_falloff_d2(d2, light.position_range.w) * sqrt(d2);
-    let ws = p.spec_from_world * u;
-    let wd = p.diff_from_world * u;
+    let ws = ltc.spec_from_world * u;
+    let wd = ltc.diff_from_world * u;
     let transformed = (params.clip & CLIP_TRANSFORMED) != 0u;
     let qs = dot(ws, ws);
     let qd = dot(wd, wd);
@@ -209,13 +207,13 @@ fn add_ltc_fast(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
     (*s).diff += light.intensity.rgb * (scale * zd / (qd * qd));
 }
 
-fn add_light(method: u32, s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
+fn add_light(method: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {
     switch method {
         case METHOD_BRDF: { add_brdf(s, p, light); }
         case METHOD_BRDF_FAST: { add_brdf_fast(s, p, light); }
-        case METHOD_LTC: { add_ltc(s, p, light); }
-        case METHOD_LTC_F16: { add_ltc_f16(s, p, light); }
-        default: { add_ltc_fast(s, p, light); }
+        case METHOD_LTC: { add_ltc(s, p, ltc, light); }
+        case METHOD_LTC_F16, METHOD_LTC_F16_PAIRS: { add_ltc_f16(s, p, ltc, light); }
+        default: { add_ltc_fast(s, p, ltc, light); }
     }
 }
 
@@ -228,11 +226,11 @@ fn saturate_finite(x: vec3<f32>) -> vec3<f32> {
     return clamp(x, vec3<f32>(-F32_MAX), vec3<f32>(F32_MAX));
 }
 
-// Radiance from the sums: ltc-fast applies the factors pulled out of its sum here.
-fn finish(method: u32, sums: Sums, p: Pixel) -> vec3<f32> {
+// Radiance from the sums: the ltc-fast forms apply the factors pulled out of their sum here.
+fn finish(method: u32, sums: Sums, ltc: LtcShading) -> vec3<f32> {
     let s = Sums(saturate_finite(sums.spec), saturate_finite(sums.diff));
-    if method == METHOD_LTC_FAST || method == METHOD_LTC_F16 {
-        return saturate_finite(p.spec_factor * s.spec + params.base_color.rgb * (p.diff_factor * s.diff));
+    if method == METHOD_LTC_FAST || method == METHOD_LTC_F16 || method == METHOD_LTC_F16_PAIRS {
+        return saturate_finite(ltc.spec_factor * s.spec + params.base_color.rgb * (ltc.diff_factor * s.diff));
     }
     return saturate_finite(s.spec + params.base_color.rgb * s.diff);
 }
@@ -242,52 +240,201 @@ fn luminance(c: vec3<f32>) -> f32 {
     return dot(c, vec3<f32>(0.2126, 0.7152, 0.0722));
 }
 
+fn pixel_index(gid: vec2<u32>) -> u32 {
+    return gid.y * params.width + gid.x;
+}
+
+fn load_sums(k: u32) -> array<Sums, 2> {
+    let s0 = accum_0[k];
+    let s1 = accum_1[k];
+    let s2 = accum_2[k];
+    return array<Sums, 2>(Sums(s0.xyz, vec3<f32>(s0.w, s1.xy)), Sums(vec3<f32>(s1.zw, s2.x), s2.yzw));
+}
+
+fn store_sums(k: u32, a: Sums, b: Sums) {
+    accum_0[k] = vec4<f32>(a.spec, a.diff.x);
+    accum_1[k] = vec4<f32>(a.diff.yz, b.spec.xy);
+    accum_2[k] = vec4<f32>(b.spec.z, b.diff);
+}
+
+// Which methods a pixel sums: A, B, or both.
+fn uses_a(gid: vec2<u32>) -> bool {
+    return VIEW != VIEW_SPLIT || f32(gid.x) < params.divider;
+}
+
+fn uses_b(gid: vec2<u32>) -> bool {
+    return VIEW == VIEW_DIFF || (VIEW == VIEW_SPLIT && !uses_a(gid));
+}
+
+// The plane point under the workgroup's centre pixel (the f16 pairs' origin), or the origin.
+fn workgroup_centre(wid: vec2<u32>) -> vec3<f32> {
+    let centre = vec2<f32>(wid * TILE_SIDE) + 0.5 * f32(TILE_SIDE);
+    return plane_hit(camera_ray(centre)).xyz;
+}
+
+// Sums one chunk — entries [light_start, light_end) of each pixel's list — into the sums kept
+// in `accum` (starting from zero at the first chunk).
 @compute @workgroup_size(16, 16, 1)
-fn shade(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
+fn shade(
+    @builtin(global_invocation_id) gid: vec3<u32>,
+    @builtin(workgroup_id) wid: vec3<u32>,
+    @builtin(local_invocation_index) li: u32,
+) {
     let inside = gid.x < params.width && gid.y < params.height;
     var p: Pixel;
     p.on_plane = false;
     if inside {
         p = prepare(surface_point(gid.xy));
     }
-    let use_a = VIEW != VIEW_SPLIT || f32(gid.x) < params.divider;
-    let use_b = VIEW == VIEW_DIFF || (VIEW == VIEW_SPLIT && !use_a);
+    // The tile's list: culled where binned and the lists fit, else every light.
+    let tiles = params.tiles_x * params.tiles_y;
+    let culled = params.cull != 0u && tile_offsets[tiles] <= params.tile_capacity;
+    let tile = wid.y * params.tiles_x + wid.x;
+    if li == 0u {
+        var count = params.light_count;
+        if culled {
+            // The last tile's end is the total, after the offsets.
+            count = tile_offsets[tile + 1u] - tile_offsets[tile];
+        }
+        wg_count = count;
+    }
+    let count = workgroupUniformLoad(&wg_count);
+    let first = tile_offsets[tile];
+    var centre = vec3<f32>(0.0);
+    if METHOD_A == METHOD_LTC_F16_PAIRS {
+        centre = workgroup_centre(wid.xy);
+    }
+    let x_relative = p.x - centre;
+    let end = min(params.light_end, count);
+    let use_a = uses_a(gid.xy);
+    let use_b = uses_b(gid.xy);
     var a = Sums(vec3<f32>(0.0), vec3<f32>(0.0));
     var b = Sums(vec3<f32>(0.0), vec3<f32>(0.0));
-    // Every thread of the workgroup loads one light of each tile, pixel or not: the loop
-    // bound is uniform, so the barriers are too.
-    for (var base = 0u; base < params.light_count; base += TILE) {
-        if base + li < params.light_count {
-            tile[li] = lights[base + li];
+    let k = pixel_index(gid.xy);
+    if inside && params.light_start > 0u {
+        let sums = load_sums(k);
+        a = sums[0];
+        b = sums[1];
+    }
+    // Every thread of the workgroup loads one light of each load, pixel or not: the loop
+    // bounds are uniform, so the barriers are too.
+    for (var base = params.light_start; base < end; base += LOAD) {
+        let e = base + li;
+        if e < end {
+            var index = e;
+            if culled {
+                index = tile_lights[first + e];
+            }
+            shared_lights[li] = lights[index];
+            if METHOD_A == METHOD_LTC_F16_PAIRS {
+                shared_relative[li] = lights[index].position_range.xyz - centre;
+            }
         }
         workgroupBarrier();
-        let n = min(TILE, params.light_count - base);
+        let n = min(LOAD, end - base);
         // Seen from below (v.z ≤ 0) the one-sided plane is black, as on the CPU.
         if p.on_plane && p.v.z > 0.0 {
-            for (var k = 0u; k < n; k++) {
+            var j = 0u;
+            if METHOD_A == METHOD_LTC_F16_PAIRS && use_a && !use_b {
+                // Every light in a lane of a pair, the last one of an odd load beside a dead
+                // lane: a light's arithmetic never depends on its partner, so culling (which
+                // changes the pairs) gives the unculled image to the bit.
+                for (; j < n; j += 2u) {
+                    add_ltc_f16_pair(&a, p, p.ltc_a, x_relative, j, j + 1u < n);
+                }
+            }
+            for (; j < n; j++) {
                 if use_a {
-                    add_light(METHOD_A, &a, p, tile[k]);
+                    add_light(METHOD_A, &a, p, p.ltc_a, shared_lights[j]);
                 }
                 if use_b {
-                    add_light(METHOD_B, &b, p, tile[k]);
+                    add_light(METHOD_B, &b, p, p.ltc_b, shared_lights[j]);
                 }
             }
         }
         workgroupBarrier();
     }
-    if !inside {
+    if inside {
+        store_sums(k, a, b);
+    }
+}
+
+// Radiance of A and B at a pixel from its sums.
+fn radiances(gid: vec2<u32>) -> array<vec3<f32>, 2> {
+    let p = prepare(surface_point(gid));
+    let sums = load_sums(pixel_index(gid));
+    return array<vec3<f32>, 2>(finish(METHOD_A, sums[0], p.ltc_a), finish(METHOD_B, sums[1], p.ltc_b));
+}
+
+var<workgroup> wg_partials: array<vec4<f32>, 256>;
+
+// Per tile (for the difference view's floor): Σ|L_A|, Σ|L_B| and the pixels on the plane.
+@compute @workgroup_size(16, 16, 1)
+fn reduce(
+    @builtin(global_invocation_id) gid: vec3<u32>,
+    @builtin(workgroup_id) wid: vec3<u32>,
+    @builtin(local_invocation_index) li: u32,
+) {
+    var v = vec4<f32>(0.0);
+    if gid.x < params.width && gid.y < params.height && surface_point(gid.xy).on_plane {
+        let l = radiances(gid.xy);
+        v = vec4<f32>(abs(luminance(l[0])), abs(luminance(l[1])), 1.0, 0.0);
+    }
+    wg_partials[li] = v;
+    workgroupBarrier();
+    for (var d = 128u; d > 0u; d /= 2u) {
+        if li < d {
+            wg_partials[li] += wg_partials[li + d];
+        }
+        workgroupBarrier();
+    }
+    if li == 0u {
+        partials[wid.y * params.tiles_x + wid.x] = wg_partials[0];
+    }
+}
+
+// One workgroup: the floor, `metrics::relative_floor` — 1% of B's mean luminance, of A's
+// where B is black all over — after the partial sums.
+@compute @workgroup_size(256)
+fn floor_of_means(@builtin(local_invocation_index) li: u32) {
+    let tiles = params.tiles_x * params.tiles_y;
+    var v = vec4<f32>(0.0);
+    for (var t = li; t < tiles; t += 256u) {
+        v += partials[t];
+    }
+    wg_partials[li] = v;
+    workgroupBarrier();
+    for (var d = 128u; d > 0u; d /= 2u) {
+        if li < d {
+            wg_partials[li] += wg_partials[li + d];
+        }
+        workgroupBarrier();
+    }
+    if li == 0u {
+        let s = wg_partials[0];
+        let count = max(s.z, 1.0);
+        let mean = select(s.x / count, s.y / count, s.y > 0.0);
+        // RELATIVE_FLOOR of src/metrics.rs, never below f32's smallest normal.
+        partials[tiles] = vec4<f32>(max(0.01 * mean, 1.17549435e-38));
+    }
+}
+
+// The image from the sums: A, A | B or |A − B| / max(B, floor); alpha marks the plane.
+@compute @workgroup_size(16, 16, 1)
+fn resolve(@builtin(global_invocation_id) gid: vec3<u32>) {
+    if gid.x >= params.width || gid.y >= params.height {
         return;
     }
     var out = vec4<f32>(0.0);
-    if p.on_plane {
-        let la = finish(METHOD_A, a, p);
-        let lb = finish(METHOD_B, b, p);
+    if surface_point(gid.xy).on_plane {
+        let l = radiances(gid.xy);
         if VIEW == VIEW_DIFF {
-            let ref_lum = luminance(lb);
-            let rel = min(abs(luminance(la) - ref_lum) / max(ref_lum, params.rel_floor), F32_MAX);
+            let floor = partials[params.tiles_x * params.tiles_y].x;
+            let ref_lum = luminance(l[1]);
+            let rel = min(abs(luminance(l[0]) - ref_lum) / max(ref_lum, floor), F32_MAX);
             out = vec4<f32>(rel, rel, rel, 1.0);
         } else {
-            out = vec4<f32>(select(lb, la, use_a), 1.0);
+            out = vec4<f32>(select(l[1], l[0], uses_a(gid.xy)), 1.0);
         }
     }
     textureStore(output, vec2<i32>(gid.xy), out);

@@ -1,10 +1,12 @@
 //! The paper's Table 1 on this machine's GPU: GPU time per frame of every method at several
-//! light counts, measured in one run, with the ratios between the LTC and BRDF forms.
+//! light counts, culled and not, measured in one run, with the ratios between the LTC and
+//! BRDF forms and the fraction of lights in range of a pixel (the best culling can do).
+
+use glam::DVec3;
 
 use crate::error::Result;
 use crate::gpu::GpuContext;
-use crate::gpu::limits::check_image_size;
-use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
+use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
 use crate::ltc::lut::Lut;
 use crate::render::{Method, RenderSettings};
 use crate::scene::{RandomLights, Scene, generate_lights, preset};
@@ -15,6 +17,9 @@ pub const PAPER_LIGHTS: [usize; 4] = [100, 500, 1000, 5000];
 pub const PAPER_BRDF_FPS: [f64; 4] = [118.0, 23.0, 12.0, 2.0];
 pub const PAPER_LTC_FPS: [f64; 4] = [285.0, 56.0, 28.0, 5.0];
 
+/// The range of the benchmark's lights unless `--range` says otherwise: paper-100's.
+pub const DEFAULT_RANGE: f64 = 2.0;
+
 /// One measured cell of the table.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BenchRow {
@@ -23,9 +28,17 @@ pub struct BenchRow {
     pub width: usize,
     pub height: usize,
     pub frames: usize,
+    pub cull: bool,
+    /// Every light's range (`None`: infinite).
+    pub range: Option<f64>,
+    /// The mean fraction of lights within range of a pixel: the least any culling must sum.
+    pub in_range_fraction: f64,
+    /// Per frame: binning (culled) plus shading.
     pub ms_median: f64,
     pub ms_min: f64,
     pub ms_max: f64,
+    /// The binning's share of the median frame (culled frames with timestamps).
+    pub bin_ms_median: Option<f64>,
 }
 
 impl BenchRow {
@@ -33,35 +46,45 @@ impl BenchRow {
         1e3 / self.ms_median
     }
 
-    /// Light-pixel evaluations per second, in billions (every pixel sees the plane).
+    /// Light-pixel evaluations per second, in billions, counting every light at every pixel
+    /// (as unculled shading does them), so that culled and unculled rates compare.
     pub fn glightpx_per_s(&self) -> f64 {
         (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
     }
 
-    pub const CSV_HEADER: &'static str =
-        "method,lights,width,height,frames,ms_median,ms_min,ms_max,fps,glightpx_per_s";
+    pub const CSV_HEADER: &'static str = "method,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s";
 
     pub fn csv(&self) -> String {
         format!(
-            "{},{},{},{},{},{:.6},{:.6},{:.6},{:.3},{:.3}",
+            "{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3}",
             self.method.name(),
             self.lights,
             self.width,
             self.height,
             self.frames,
+            if self.cull { "on" } else { "off" },
+            range_text(self.range),
+            self.in_range_fraction,
             self.ms_median,
             self.ms_min,
             self.ms_max,
+            self.bin_ms_median
+                .map_or(String::new(), |b| format!("{b:.6}")),
             self.fps(),
             self.glightpx_per_s()
         )
     }
 }
 
+/// A range as the CSV and the table write it.
+pub fn range_text(range: Option<f64>) -> String {
+    range.map_or("inf".into(), |r| r.to_string())
+}
+
 /// The benchmark scene: paper-100's material (α = 0.27) and light distribution, seen from
 /// above a plane large enough that every pixel shades it, so that light-pixels = lights ×
-/// width × height.
-pub fn bench_scene(lights: usize) -> Scene {
+/// width × height; every light of range `range`.
+pub fn bench_scene(lights: usize, range: Option<f64>) -> Scene {
     let mut scene = preset("paper-100");
     let spread = scene.plane.half_size;
     scene.plane.half_size = 1e3;
@@ -73,11 +96,42 @@ pub fn bench_scene(lights: usize) -> Scene {
             seed: 27,
             height: [0.05, 0.6],
             intensity: [0.02, 0.08],
-            range: Some(2.0),
+            range,
         },
         spread,
     );
     scene
+}
+
+/// Pixels between the samples of `in_range_fraction`, each way: 1/64 of a 1920×1080 frame
+/// (32 400 pixels) already pins the mean to ~0.5% of itself.
+const FRACTION_STRIDE: usize = 8;
+
+/// The mean over the plane's pixels of the fraction of lights whose range reaches them (an
+/// infinite range reaches every pixel), on every `FRACTION_STRIDE`-th pixel each way.
+pub fn in_range_fraction(scene: &Scene, width: usize, height: usize) -> f64 {
+    if scene.lights.is_empty() {
+        return 0.0;
+    }
+    let (mut sum, mut count) = (0.0, 0usize);
+    for y in (FRACTION_STRIDE / 2..height).step_by(FRACTION_STRIDE) {
+        for x in (FRACTION_STRIDE / 2..width).step_by(FRACTION_STRIDE) {
+            let Some(p) = scene.surface_point(x, y, width, height) else {
+                continue;
+            };
+            let reached = scene
+                .lights
+                .iter()
+                .filter(|l| {
+                    l.range
+                        .is_none_or(|r| DVec3::from(l.position).distance(p.position) < r)
+                })
+                .count();
+            sum += reached as f64 / scene.lights.len() as f64;
+            count += 1;
+        }
+    }
+    if count > 0 { sum / count as f64 } else { 0.0 }
 }
 
 /// Median of a non-empty sample.
@@ -104,93 +158,139 @@ pub fn check(
     for &n in light_counts {
         PlaneRenderer::check_light_count(ctx, "--lights", n)?;
     }
-    check_image_size(ctx, width, height, crate::gpu::plane::TEXEL_BYTES)
+    crate::gpu::target::check_size(ctx, width, height)
 }
 
-/// Measures every method at every light count: `frames` timed frames after warm-up each.
+/// What `run` measures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BenchSettings {
+    pub lights: Vec<usize>,
+    pub size: (usize, usize),
+    pub frames: usize,
+    pub checks: ShaderChecks,
+    /// Culling off, on, or both.
+    pub culls: Vec<bool>,
+    pub range: Option<f64>,
+}
+
+/// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
+pub fn methods(ctx: &GpuContext) -> Vec<Method> {
+    let f16 = if ctx.has_f16() { &Method::F16[..] } else { &[] };
+    Method::F32.iter().chain(f16).copied().collect()
+}
+
+/// Measures every method at every light count and culling: `frames` timed frames after
+/// warm-up each.
 pub fn run(
     ctx: &GpuContext,
     lut: &Lut,
-    light_counts: &[usize],
-    (width, height): (usize, usize),
-    frames: usize,
-    checks: ShaderChecks,
+    s: &BenchSettings,
     mut progress: impl FnMut(&BenchRow),
 ) -> Result<Vec<BenchRow>> {
-    check(ctx, light_counts, (width, height))?;
-    let mut renderer = PlaneRenderer::new(ctx, lut, checks)?;
+    check(ctx, &s.lights, s.size)?;
+    let (width, height) = s.size;
+    let mut renderer = PlaneRenderer::new(ctx, lut, s.checks)?;
     let mut rows = Vec::new();
-    for &lights in light_counts {
-        let scene = bench_scene(lights);
-        let mut frame = renderer.prepare(
-            ctx,
-            &scene,
-            &RenderSettings::single(width, height, Method::Brdf),
-        )?;
-        for method in Method::F32 {
-            let settings = RenderSettings::single(width, height, method);
-            renderer.update(ctx, &mut frame, &scene, &settings);
-            for _ in 0..WARM_UP_FRAMES {
-                renderer.run(ctx, &frame);
+    for &lights in &s.lights {
+        let scene = bench_scene(lights, s.range);
+        let fraction = in_range_fraction(&scene, width, height);
+        for &cull in &s.culls {
+            for method in methods(ctx) {
+                let settings = RenderSettings {
+                    cull,
+                    ..RenderSettings::single(width, height, method)
+                };
+                renderer.begin(ctx, &scene, &settings)?;
+                for _ in 0..WARM_UP_FRAMES {
+                    renderer.run(ctx);
+                }
+                let times: Vec<FrameTimes> = (0..s.frames).map(|_| renderer.run(ctx)).collect();
+                let mut ms: Vec<f64> = times.iter().map(FrameTimes::total_ms).collect();
+                let mut bins: Vec<f64> = times.iter().filter_map(|t| t.bin_ms).collect();
+                let row = BenchRow {
+                    method,
+                    lights,
+                    width,
+                    height,
+                    frames: s.frames,
+                    cull,
+                    range: s.range,
+                    in_range_fraction: fraction,
+                    ms_min: ms.iter().copied().fold(f64::INFINITY, f64::min),
+                    ms_max: ms.iter().copied().fold(0.0, f64::max),
+                    ms_median: median(&mut ms),
+                    bin_ms_median: (!bins.is_empty()).then(|| median(&mut bins)),
+                };
+                progress(&row);
+                rows.push(row);
             }
-            let mut ms: Vec<f64> = (0..frames).map(|_| renderer.run(ctx, &frame)).collect();
-            let row = BenchRow {
-                method,
-                lights,
-                width,
-                height,
-                frames,
-                ms_min: ms.iter().copied().fold(f64::INFINITY, f64::min),
-                ms_max: ms.iter().copied().fold(0.0, f64::max),
-                ms_median: median(&mut ms),
-            };
-            progress(&row);
-            rows.push(row);
         }
     }
     Ok(rows)
 }
 
-/// The table in Markdown: one row per method and light count, then the speed-ups of each
-/// LTC form over each BRDF form, and the paper's figures for reference.
+/// The table in Markdown: one row per method, light count and culling, then the speed-ups of
+/// each LTC form over each BRDF form and of culling, and the paper's figures for reference.
 pub fn markdown(rows: &[BenchRow], device: &str) -> String {
     let mut out = format!(
-        "GPU: {device}\n\n| method | lights | size | ms (median) | ms (min–max) | fps | G light-px/s |\n|---|---:|---|---:|---:|---:|---:|\n"
+        "GPU: {device}\n\n| method | lights | size | cull | range | in range | ms (median) | ms (min–max) | bin ms | fps | G light-px/s |\n|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n"
     );
     for r in rows {
         out.push_str(&format!(
-            "| {} | {} | {}×{} | {:.3} | {:.3}–{:.3} | {:.1} | {:.2} |\n",
+            "| {} | {} | {}×{} | {} | {} | {:.1}% | {:.3} | {:.3}–{:.3} | {} | {:.1} | {:.2} |\n",
             r.method.name(),
             r.lights,
             r.width,
             r.height,
+            if r.cull { "on" } else { "off" },
+            range_text(r.range),
+            100.0 * r.in_range_fraction,
             r.ms_median,
             r.ms_min,
             r.ms_max,
+            r.bin_ms_median.map_or("–".into(), |b| format!("{b:.3}")),
             r.fps(),
             r.glightpx_per_s()
         ));
     }
-    out.push_str("\nSpeed-up (BRDF ms / LTC ms, same run):\n\n| lights | ltc / brdf | ltc-fast / brdf | ltc / brdf-fast | ltc-fast / brdf-fast |\n|---:|---:|---:|---:|---:|\n");
-    let mut counts: Vec<usize> = rows.iter().map(|r| r.lights).collect();
-    counts.dedup();
-    for n in counts {
-        let ms = |m: Method| {
-            rows.iter()
-                .find(|r| r.lights == n && r.method == m)
-                .map(|r| r.ms_median)
-        };
-        let ratio = |b: Method, l: Method| match (ms(b), ms(l)) {
-            (Some(b), Some(l)) => format!("{:.2}×", b / l),
-            _ => "–".into(),
-        };
+    let ms = |n: usize, cull: bool, m: Method| {
+        rows.iter()
+            .find(|r| r.lights == n && r.cull == cull && r.method == m)
+            .map(|r| r.ms_median)
+    };
+    let ratio = |slow: Option<f64>, fast: Option<f64>| match (slow, fast) {
+        (Some(s), Some(f)) => format!("{:.2}×", s / f),
+        _ => "–".into(),
+    };
+    let mut keys: Vec<(usize, bool)> = rows.iter().map(|r| (r.lights, r.cull)).collect();
+    keys.dedup();
+    out.push_str("\nSpeed-up (ms of the slower / ms of the faster, same run):\n\n| lights | cull | ltc / brdf | ltc-fast / brdf | ltc / brdf-fast | ltc-fast / brdf-fast | ltc-f16-pairs / ltc-fast |\n|---:|---|---:|---:|---:|---:|---:|\n");
+    for &(n, cull) in &keys {
+        let m = |method| ms(n, cull, method);
         out.push_str(&format!(
-            "| {n} | {} | {} | {} | {} |\n",
-            ratio(Method::Brdf, Method::Ltc),
-            ratio(Method::Brdf, Method::LtcFast),
-            ratio(Method::BrdfFast, Method::Ltc),
-            ratio(Method::BrdfFast, Method::LtcFast)
+            "| {n} | {} | {} | {} | {} | {} | {} |\n",
+            if cull { "on" } else { "off" },
+            ratio(m(Method::Brdf), m(Method::Ltc)),
+            ratio(m(Method::Brdf), m(Method::LtcFast)),
+            ratio(m(Method::BrdfFast), m(Method::Ltc)),
+            ratio(m(Method::BrdfFast), m(Method::LtcFast)),
+            ratio(m(Method::LtcFast), m(Method::LtcF16Pairs)),
         ));
+    }
+    let counts: Vec<usize> = keys.iter().map(|k| k.0).collect();
+    if rows.iter().any(|r| r.cull) && rows.iter().any(|r| !r.cull) {
+        out.push_str("\nCulling (unculled ms / culled ms, same run):\n\n| lights | brdf | ltc-fast | ltc-f16-pairs |\n|---:|---:|---:|---:|\n");
+        let mut seen = counts.clone();
+        seen.dedup();
+        for n in seen {
+            let r = |m| ratio(ms(n, false, m), ms(n, true, m));
+            out.push_str(&format!(
+                "| {n} | {} | {} | {} |\n",
+                r(Method::Brdf),
+                r(Method::LtcFast),
+                r(Method::LtcF16Pairs)
+            ));
+        }
     }
     out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");
     for k in 0..PAPER_LIGHTS.len() {

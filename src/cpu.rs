@@ -10,7 +10,7 @@ use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::metrics::relative_difference;
 use crate::render::{
-    Frame, FrameKind, LutFilter, Method, RenderSettings, ShadingFrame, SurfacePoint, View,
+    Frame, FrameKind, LutFilter, Method, RenderSettings, ShadingFrame, SurfacePoint, Tables, View,
 };
 use crate::scene::{Light, Scene};
 
@@ -93,25 +93,26 @@ fn combine(lobes: Lobes<f64>, base_color: [f64; 3]) -> DVec3 {
 }
 
 /// Renders the scene as `s.view` shows it: one method's radiance, both split at the divider,
-/// or their relative difference.
-pub fn render(scene: &Scene, lut: &Lut, s: &RenderSettings) -> Frame {
+/// or their relative difference. `tables`: one table, or A's and B's (`s.table_b`).
+pub fn render<'a>(scene: &Scene, tables: impl Into<Tables<'a>>, s: &RenderSettings) -> Frame {
+    let tables = tables.into();
+    let (a, b) = ((s.method_a, tables.a), (s.method_b, tables.for_b(s)));
     let divider = s.divider_column();
-    let shade = |pick: &(dyn Fn(usize) -> Method + Sync)| render_radiance(scene, lut, s, pick);
+    let shade = |pick: &Pick<'_>| render_radiance(scene, s, pick);
     match s.view {
-        View::A => shade(&|_| s.method_a),
-        View::B => shade(&|_| s.method_b),
+        View::A => shade(&|_| a),
+        View::B => shade(&|_| b),
         View::Split => {
-            let mut frame = shade(&|x| if x < divider { s.method_a } else { s.method_b });
+            let mut frame = shade(&|x| if x < divider { a } else { b });
             frame.divider = Some(divider);
             frame
         }
-        View::Diff => {
-            let a = shade(&|_| s.method_a);
-            let b = shade(&|_| s.method_b);
-            relative_difference(&a, &b)
-        }
+        View::Diff => relative_difference(&shade(&|_| a), &shade(&|_| b)),
     }
 }
+
+/// The method, and its table, that shades a pixel column.
+type Pick<'a> = dyn Fn(usize) -> (Method, &'a Lut) + Sync + 'a;
 
 /// The radiance at one surface point by `method` (its literal form: the CPU has one of each).
 pub fn shade(
@@ -136,20 +137,18 @@ pub fn shade(
     }
 }
 
-/// Radiance with the method `pick` gives for each pixel column.
-fn render_radiance(
-    scene: &Scene,
-    lut: &Lut,
-    s: &RenderSettings,
-    pick: &(dyn Fn(usize) -> Method + Sync),
-) -> Frame {
+/// Radiance with the method (and table) `pick` gives for each pixel column.
+fn render_radiance(scene: &Scene, s: &RenderSettings, pick: &Pick<'_>) -> Frame {
     let rows: Vec<(Vec<DVec3>, Vec<bool>)> = (0..s.height)
         .into_par_iter()
         .map(|y| {
             (0..s.width)
                 .map(|x| match scene.surface_point(x, y, s.width, s.height) {
                     None => (DVec3::ZERO, false),
-                    Some(p) => (shade(scene, lut, &p, s, pick(x)), true),
+                    Some(p) => {
+                        let (method, lut) = pick(x);
+                        (shade(scene, lut, &p, s, method), true)
+                    }
                 })
                 .unzip()
         })

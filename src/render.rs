@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, Normalization};
 
 /// How one pixel's lights are summed. The CPU reference has one form of each: the fast
@@ -21,20 +22,27 @@ pub enum Method {
     LtcFast,
     /// `LtcFast` with `M⁻¹l` and `D` in f16 (GPUs with `SHADER_F16` only).
     LtcF16,
+    /// `LtcF16` with two lights per `vec2<f16>` lane pair, light positions relative to the
+    /// workgroup's centre (GPUs with `SHADER_F16` only).
+    LtcF16Pairs,
 }
 
 impl Method {
     /// Every method, in the order the tables list them.
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::Brdf,
         Self::BrdfFast,
         Self::Ltc,
         Self::LtcFast,
         Self::LtcF16,
+        Self::LtcF16Pairs,
     ];
 
-    /// The methods every adapter runs (`LtcF16` needs `SHADER_F16`).
+    /// The methods every adapter runs.
     pub const F32: [Self; 4] = [Self::Brdf, Self::BrdfFast, Self::Ltc, Self::LtcFast];
+
+    /// The methods that need `SHADER_F16`.
+    pub const F16: [Self; 2] = [Self::LtcF16, Self::LtcF16Pairs];
 
     /// The name on the command line, in CSV files and in the lab.
     pub fn name(self) -> &'static str {
@@ -44,6 +52,7 @@ impl Method {
             Self::Ltc => "ltc",
             Self::LtcFast => "ltc-fast",
             Self::LtcF16 => "ltc-f16",
+            Self::LtcF16Pairs => "ltc-f16-pairs",
         }
     }
 
@@ -52,7 +61,14 @@ impl Method {
     }
 
     pub fn is_ltc(self) -> bool {
-        matches!(self, Self::Ltc | Self::LtcFast | Self::LtcF16)
+        matches!(
+            self,
+            Self::Ltc | Self::LtcFast | Self::LtcF16 | Self::LtcF16Pairs
+        )
+    }
+
+    pub fn needs_f16(self) -> bool {
+        Self::F16.contains(&self)
     }
 }
 
@@ -96,6 +112,12 @@ pub struct RenderSettings {
     /// Where `Split` changes from A to B, as a fraction of the width.
     pub divider: f64,
     pub lut_filter: LutFilter,
+    /// Each 16×16 tile sums only the lights whose range reaches it (the image is the same to
+    /// the bit: the others add exactly 0).
+    pub cull: bool,
+    /// B is an LTC method shading with the second table: two tables compared, not LTC
+    /// against the BRDF.
+    pub table_b: bool,
 }
 
 impl RenderSettings {
@@ -111,6 +133,8 @@ impl RenderSettings {
             normalization: Normalization::Corrected,
             divider: 0.5,
             lut_filter: LutFilter::Bilinear,
+            cull: true,
+            table_b: false,
         }
     }
 
@@ -143,6 +167,28 @@ impl RenderSettings {
             view: View::A,
             ..*self
         }
+    }
+}
+
+/// The tables a render reads: method A's, and method B's where it shades with one of its own
+/// (`RenderSettings::table_b`).
+#[derive(Clone, Copy, Debug)]
+pub struct Tables<'a> {
+    pub a: &'a Lut,
+    pub b: &'a Lut,
+}
+
+impl<'a> From<&'a Lut> for Tables<'a> {
+    /// One table for both.
+    fn from(lut: &'a Lut) -> Self {
+        Self { a: lut, b: lut }
+    }
+}
+
+impl<'a> Tables<'a> {
+    /// The table of method B under `settings`.
+    pub fn for_b(&self, settings: &RenderSettings) -> &'a Lut {
+        if settings.table_b { self.b } else { self.a }
     }
 }
 

@@ -57,8 +57,9 @@ pub fn variants() -> Vec<Variant> {
         v("ltc-lut32", Ltc, Corrected, Bilinear, Fitted(32)),
         v("ltc-point", Ltc, Corrected, Bilinear, Point),
         v("ltc-fast-point", LtcFast, Corrected, Bilinear, Point),
-        // Where the adapter has SHADER_F16 (`run` drops it elsewhere).
+        // Where the adapter has SHADER_F16 (`run` drops them elsewhere).
         v("ltc-f16", LtcF16, Corrected, Bilinear, Shipped),
+        v("ltc-f16-pairs", LtcF16Pairs, Corrected, Bilinear, Shipped),
     ]
 }
 
@@ -70,6 +71,9 @@ pub struct StudyRow {
     pub lights: usize,
     pub width: usize,
     pub height: usize,
+    pub cull: bool,
+    /// Every light's range (`None`: infinite).
+    pub range: Option<f64>,
     pub ms_median: f64,
     pub rel_rmse: f64,
     pub max_rel_err: f64,
@@ -77,7 +81,7 @@ pub struct StudyRow {
 }
 
 impl StudyRow {
-    pub const CSV_HEADER: &'static str = "variant,alpha,lights,width,height,ms_median,glightpx_per_s,rel_rmse,max_rel_err,p99_rel_err";
+    pub const CSV_HEADER: &'static str = "variant,alpha,lights,width,height,cull,range,ms_median,glightpx_per_s,rel_rmse,max_rel_err,p99_rel_err";
 
     /// Light-pixel evaluations per second, in billions (every pixel of the study scene sees
     /// the plane).
@@ -87,12 +91,14 @@ impl StudyRow {
 
     pub fn csv(&self) -> String {
         format!(
-            "{},{},{},{},{},{:.6},{:.4},{:.6e},{:.6e},{:.6e}",
+            "{},{},{},{},{},{},{},{:.6},{:.4},{:.6e},{:.6e},{:.6e}",
             self.variant,
             self.alpha,
             self.lights,
             self.width,
             self.height,
+            if self.cull { "on" } else { "off" },
+            crate::bench::range_text(self.range),
             self.ms_median,
             self.glightpx_per_s(),
             self.rel_rmse,
@@ -104,10 +110,10 @@ impl StudyRow {
     /// Parses a row written by `csv` (the lab reads study.csv back); errors name the line.
     pub fn parse(line: &str, at: &str) -> Result<Self> {
         let f: Vec<&str> = line.split(',').map(str::trim).collect();
-        if f.len() != 10 {
+        if f.len() != 12 {
             return Err(Error::input(
                 at,
-                format!("expected 10 values, found {}", f.len()),
+                format!("expected 12 values, found {}", f.len()),
             ));
         }
         let num = |k: usize| -> Result<f64> {
@@ -120,16 +126,32 @@ impl StudyRow {
             f[k].parse::<usize>()
                 .map_err(|_| Error::input(at, format!("'{}' is not a whole number", f[k])))
         };
+        let cull = match f[5] {
+            "on" => true,
+            "off" => false,
+            other => {
+                return Err(Error::input(
+                    at,
+                    format!("cull '{other}' is neither on nor off"),
+                ));
+            }
+        };
+        let range = match f[6] {
+            "inf" => None,
+            _ => Some(num(6)?).filter(|&r| r > 0.0),
+        };
         Ok(Self {
             variant: f[0].to_string(),
             alpha: num(1)?,
             lights: int(2)?,
             width: int(3)?,
             height: int(4)?,
-            ms_median: num(5)?,
-            rel_rmse: num(7)?,
-            max_rel_err: num(8)?,
-            p99_rel_err: num(9)?,
+            cull,
+            range,
+            ms_median: num(7)?,
+            rel_rmse: num(9)?,
+            max_rel_err: num(10)?,
+            p99_rel_err: num(11)?,
         })
     }
 }
@@ -137,8 +159,8 @@ impl StudyRow {
 /// The study scene: paper-100's plane, material and light distribution with `lights`
 /// generated lights (100 gives paper-100's own) and GGX α = `alpha`, seen from above so
 /// that every pixel shades the plane.
-pub fn study_scene(lights: usize, alpha: f64) -> Scene {
-    let mut scene = crate::bench::bench_scene(lights);
+pub fn study_scene(lights: usize, alpha: f64, range: Option<f64>) -> Scene {
+    let mut scene = crate::bench::bench_scene(lights, range);
     scene.material.alpha = alpha;
     scene
 }
@@ -163,21 +185,31 @@ pub fn read_csv(path: &std::path::Path) -> Result<Vec<StudyRow>> {
         .collect()
 }
 
-/// Runs the study: for each α and light count, the exact image, then every variant, each
-/// timed (median of `frames` after one warm-up) and measured against the exact image.
+/// What the study measures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StudySettings {
+    pub size: (usize, usize),
+    pub lights: Vec<usize>,
+    pub alphas: Vec<f64>,
+    pub frames: usize,
+    /// Culling off, on, or both (the same images: only the times differ).
+    pub culls: Vec<bool>,
+    pub range: Option<f64>,
+}
+
+/// Runs the study: for each α, light count and culling, the exact image, then every variant,
+/// each timed (median of `frames` after one warm-up) and measured against the exact image.
 pub fn run(
     ctx: &GpuContext,
     shipped: &Lut,
-    (width, height): (usize, usize),
-    light_counts: &[usize],
-    alphas: &[f64],
-    frames: usize,
+    s: &StudySettings,
     mut progress: impl FnMut(&StudyRow),
 ) -> Result<Vec<StudyRow>> {
-    crate::bench::check(ctx, light_counts, (width, height))?;
+    crate::bench::check(ctx, &s.lights, s.size)?;
+    let (width, height) = s.size;
     let variants: Vec<Variant> = variants()
         .into_iter()
-        .filter(|v| v.method != Method::LtcF16 || ctx.has_f16())
+        .filter(|v| !v.method.needs_f16() || ctx.has_f16())
         .collect();
     let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
     for v in &variants {
@@ -201,41 +233,48 @@ pub fn run(
         renderers.push((v.lut, PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)?));
     }
     let mut rows = Vec::new();
-    for &alpha in alphas {
-        for &lights in light_counts {
-            let scene = study_scene(lights, alpha);
-            let mut exact = None;
-            for v in &variants {
-                let renderer = &mut renderers
-                    .iter_mut()
-                    .find(|(c, _)| *c == v.lut)
-                    .expect("made above")
-                    .1;
-                let mut s = RenderSettings::single(width, height, v.method);
-                s.normalization = v.normalization;
-                s.lut_filter = v.filter;
-                let frame = renderer.prepare(ctx, &scene, &s)?;
-                renderer.run(ctx, &frame);
-                let mut ms: Vec<f64> = (0..frames.max(1))
-                    .map(|_| renderer.run(ctx, &frame))
-                    .collect();
-                ms.sort_by(f64::total_cmp);
-                let image = renderer.read(ctx, &frame);
-                let reference = exact.get_or_insert_with(|| image.clone());
-                let e = image_error(&image, reference);
-                let row = StudyRow {
-                    variant: v.name.into(),
-                    alpha,
-                    lights,
-                    width,
-                    height,
-                    ms_median: ms[ms.len() / 2],
-                    rel_rmse: e.rel_rmse,
-                    max_rel_err: e.max_rel,
-                    p99_rel_err: e.p99_rel,
-                };
-                progress(&row);
-                rows.push(row);
+    for &alpha in &s.alphas {
+        for &lights in &s.lights {
+            let scene = study_scene(lights, alpha, s.range);
+            for &cull in &s.culls {
+                let mut exact = None;
+                for v in &variants {
+                    let renderer = &mut renderers
+                        .iter_mut()
+                        .find(|(c, _)| *c == v.lut)
+                        .expect("made above")
+                        .1;
+                    let settings = RenderSettings {
+                        normalization: v.normalization,
+                        lut_filter: v.filter,
+                        cull,
+                        ..RenderSettings::single(width, height, v.method)
+                    };
+                    renderer.begin(ctx, &scene, &settings)?;
+                    renderer.run(ctx);
+                    let mut ms: Vec<f64> = (0..s.frames.max(1))
+                        .map(|_| renderer.run(ctx).total_ms())
+                        .collect();
+                    ms.sort_by(f64::total_cmp);
+                    let image = renderer.read(ctx);
+                    let reference = exact.get_or_insert_with(|| image.clone());
+                    let e = image_error(&image, reference);
+                    let row = StudyRow {
+                        variant: v.name.into(),
+                        alpha,
+                        lights,
+                        width,
+                        height,
+                        cull,
+                        range: s.range,
+                        ms_median: ms[ms.len() / 2],
+                        rel_rmse: e.rel_rmse,
+                        max_rel_err: e.max_rel,
+                        p99_rel_err: e.p99_rel,
+                    };
+                    progress(&row);
+                    rows.push(row);
+                }
             }
         }
     }

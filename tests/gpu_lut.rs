@@ -19,7 +19,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     if i >= arrayLength(&probe_uv) {
         return;
     }
-    let t = lut_sample_uv(probe_uv[i], LUT_SIZE);
+    let t = lut_sample_uv(probe_uv[i], LUT_SIZE, 0u);
     probe_out[3u * i] = t.spec_m;
     probe_out[3u * i + 1u] = t.diff_m;
     probe_out[3u * i + 2u] = t.norms;

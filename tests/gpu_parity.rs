@@ -6,7 +6,7 @@
 mod gpu_common;
 
 use glam::DVec3;
-use gpu_common::gpu;
+use gpu_common::{assert_close, diff_tolerance, gpu};
 use ltc_lab::cpu::render;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::lut::Lut;
@@ -58,50 +58,6 @@ const CLIPS: [Clipping; 4] = [
     Clipping::NONE,
 ];
 const NORMALIZATIONS: [Normalization; 2] = [Normalization::Corrected, Normalization::PaperLiteral];
-
-/// Per-pixel agreement of a GPU frame with the CPU reference.
-///
-/// Tolerance 2e-4 of `max(|reference luminance|, floor)`: the GPU shades in f32. Its hit
-/// point is off by ~1e-7 relative (f32 ray arithmetic over a 5-unit scene), which the
-/// inverse-square falloff's relative gradient 2/d (100 at d = 0.02, figure2-case2's light)
-/// turns into ~5e-5; f32 rounding of 1000-term sums and of the LUT blend adds ~1e-5. The
-/// largest difference measured on lavapipe over all cases was 6.9e-5 (figure2-case1, no
-/// clipping, paper-literal). The floor (1% of the reference's mean,
-/// `metrics::relative_floor`) covers pixels near zero, where the clipping decisions may fall
-/// differently in f32 on terms that vanish there.
-/// Pixels whose camera ray hits the plane in one precision only (its silhouette) are skipped:
-/// at most 1% of the image.
-const RADIANCE_TOLERANCE: f64 = 2e-4;
-
-fn assert_close(what: &str, gpu: &Frame, cpu: &Frame) {
-    let floor = relative_floor(cpu, cpu);
-    let mut silhouette = 0;
-    let mut worst: (f64, usize) = (0.0, 0);
-    for k in 0..cpu.pixels.len() {
-        if gpu.on_plane[k] != cpu.on_plane[k] {
-            silhouette += 1;
-            continue;
-        }
-        let (g, c) = (gpu.pixels[k], cpu.pixels[k]);
-        assert!(g.is_finite(), "{what}: pixel {k} is {g}");
-        let scale = luminance(c.abs()).max(floor);
-        let err = (g - c).abs().max_element() / scale;
-        if err > worst.0 {
-            worst = (err, k);
-        }
-    }
-    assert!(
-        silhouette * 100 <= cpu.pixels.len(),
-        "{what}: {silhouette} pixels differ in coverage"
-    );
-    let (err, k) = worst;
-    assert!(
-        err <= RADIANCE_TOLERANCE,
-        "{what}: pixel {k} differs by {err:.2e} (gpu {:?}, cpu {:?})",
-        gpu.pixels[k],
-        cpu.pixels[k]
-    );
-}
 
 fn cpu_frame(scene: &Scene, method: Method, clip: Clipping, normalization: Normalization) -> Frame {
     let mut s = RenderSettings::single(W, H, method);
@@ -248,17 +204,6 @@ fn gpu_split_and_diff_views_match_cpu() {
     }
 }
 
-/// The bound on a diff-view pixel `r = |a − b| / max(b, f)` given the radiance bound ε =
-/// `RADIANCE_TOLERANCE` (relative to `max(reference, floor)`) on each of a and b. With
-/// `D = max(b, f)`: `|δb| ≤ εD`, and `|δa| ≤ ε·max(a, f) ≤ εD(1 + r)` since `a ≤ b + rD`;
-/// the numerator moves by at most `|δa| + |δb|`, the denominator by `|δb|`, so
-/// `|δr| ≤ (ε(1 + r) + ε + rε) / (1 − ε) ≈ 2ε(1 + r)`. The floors of the radiance check and
-/// of the diff are both 1% of a mean luminance, of A's and of B's image (equal to the
-/// LTC's mean error, ~1%): a 10% margin covers their mismatch.
-fn diff_tolerance(r: f64) -> f64 {
-    2.0 * RADIANCE_TOLERANCE * (1.0 + r) * 1.1
-}
-
 #[test]
 fn ltc_and_ltc_fast_agree_to_f32_rounding() {
     if gpu().is_none() {
@@ -369,7 +314,7 @@ fn light_counts_zero_one_and_too_many() {
         "the lab's 20 000-light slider must fit: {max}"
     );
     PlaneRenderer::check_light_count(&g.ctx, "scene", max).unwrap();
-    let light_bytes = std::mem::size_of::<ltc_lab::gpu::plane::GpuLight>();
+    let light_bytes = std::mem::size_of::<ltc_lab::gpu::scene::GpuLight>();
     assert!(max <= ltc_lab::gpu::limits::buffer_max_lights(&g.ctx, light_bytes));
     let err = PlaneRenderer::check_light_count(&g.ctx, "scene", max + 1)
         .expect_err("one light too many is refused");

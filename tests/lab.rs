@@ -289,7 +289,7 @@ fn the_chart_reads_a_study_csv_and_reports_a_bad_row() {
     };
     let dir = tempfile::tempdir().unwrap();
     let good = dir.path().join("study.csv");
-    std::fs::write(&good, format!("{}\nltc,0.27,100,320,180,25.3,0.23,1.06e-2,1.9e-1,4.2e-2\nbrdf,0.27,100,320,180,27.8,0.21,0,0,0\n", ltc_lab::study::StudyRow::CSV_HEADER)).unwrap();
+    std::fs::write(&good, format!("{}\nltc,0.27,100,320,180,on,2,25.3,0.23,1.06e-2,1.9e-1,4.2e-2\nbrdf,0.27,100,320,180,on,2,27.8,0.21,0,0,0\n", ltc_lab::study::StudyRow::CSV_HEADER)).unwrap();
     h.state_mut().chart.study_path = good.display().to_string();
     h.run_steps(1);
     h.get_by_label("load study").click();
@@ -313,7 +313,7 @@ fn the_chart_reads_a_study_csv_and_reports_a_bad_row() {
     std::fs::write(
         &bad,
         format!(
-            "{}\nltc,0.27,100,320,180,nan,0.23,1e-2,1e-1,1e-2\n",
+            "{}\nltc,0.27,100,320,180,on,2,nan,0.23,1e-2,1e-1,1e-2\n",
             ltc_lab::study::StudyRow::CSV_HEADER
         ),
     )

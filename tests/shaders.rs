@@ -2,8 +2,8 @@
 //! composed), the Rust Pod types have the WGSL structs' layout, and the functions mirrored
 //! between Rust and WGSL carry the same names.
 
-use ltc_lab::gpu::plane::{GpuLight, Params};
-use ltc_lab::gpu::{brdf, ltc, plane_module_source};
+use ltc_lab::gpu::scene::{GpuLight, Params};
+use ltc_lab::gpu::{bin_module_source, brdf, ltc, plane_module_source};
 
 fn validate(name: &str, src: &str) -> naga::Module {
     let module = naga::front::wgsl::parse_str(src)
@@ -26,10 +26,22 @@ fn every_wgsl_file_validates() {
     );
     for f16 in [false, true] {
         let module = validate(
-            &format!("brdf.wgsl + ltc.wgsl + plane.wgsl (f16: {f16})"),
+            &format!("brdf.wgsl + ltc.wgsl + scene.wgsl + plane.wgsl (f16: {f16})"),
             &plane_module_source(f16),
         );
-        assert!(module.entry_points.iter().any(|e| e.name == "shade"));
+        for entry in ["shade", "reduce", "floor_of_means", "resolve"] {
+            assert!(
+                module.entry_points.iter().any(|e| e.name == entry),
+                "{entry}"
+            );
+        }
+    }
+    let module = validate("scene.wgsl + bin.wgsl", &bin_module_source());
+    for entry in ["bin_count", "bin_scan", "bin_write"] {
+        assert!(
+            module.entry_points.iter().any(|e| e.name == entry),
+            "{entry}"
+        );
     }
 }
 
@@ -77,15 +89,23 @@ fn pod_types_match_the_wgsl_structs() {
             aspect,
             half_size,
             divider,
-            rel_floor,
             _pad0,
+            _pad1,
             width,
             height,
             light_count,
             lut_size,
             clip,
             normalization,
-            _pad1,
+            tiles_x,
+            tiles_y,
+            light_start,
+            light_end,
+            cull,
+            tile_capacity,
+            lut_size_b,
+            lut_base_b,
+            lut_base,
             _pad2
         ),
         wgsl_layout(&module, "Params")
@@ -130,6 +150,7 @@ fn mirrored_functions_have_the_same_names() {
         "lut_uv",
         "spec_magnitude",
         "surface_point",
+        "camera_ray",
         "luminance",
     ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");

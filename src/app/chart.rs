@@ -221,13 +221,11 @@ pub fn measure(scene: &Scene, lut: &Lut) -> Result<Measurement, String> {
         PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
     let (w, h) = MEASURE_SIZE;
     let mut run = |scene: &Scene, s: &RenderSettings| -> Result<(Frame, f64), String> {
-        let frame = renderer
-            .prepare(&ctx, scene, s)
-            .map_err(|e| e.to_string())?;
-        renderer.run(&ctx, &frame);
-        let mut ms: Vec<f64> = (0..FRAMES).map(|_| renderer.run(&ctx, &frame)).collect();
+        renderer.begin(&ctx, scene, s).map_err(|e| e.to_string())?;
+        renderer.run(&ctx);
+        let mut ms: Vec<f64> = (0..FRAMES).map(|_| renderer.run(&ctx).total_ms()).collect();
         ms.sort_by(f64::total_cmp);
-        Ok((renderer.read(&ctx, &frame), ms[FRAMES / 2]))
+        Ok((renderer.read(&ctx), ms[FRAMES / 2]))
     };
     let (exact, _) = run(scene, &RenderSettings::single(w, h, Method::Brdf))?;
     let mut points = Vec::new();
@@ -252,7 +250,10 @@ pub fn measure(scene: &Scene, lut: &Lut) -> Result<Measurement, String> {
     for method in Method::F32 {
         let mut series = Vec::new();
         for &n in &PAPER_LIGHTS {
-            let (_, ms) = run(&bench_scene(n), &RenderSettings::single(w, h, method))?;
+            let (_, ms) = run(
+                &bench_scene(n, Some(crate::bench::DEFAULT_RANGE)),
+                &RenderSettings::single(w, h, method),
+            )?;
             series.push([n as f64, 1e3 / ms]);
         }
         scaling.push((method, series));

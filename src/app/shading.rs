@@ -122,9 +122,9 @@ impl Shading {
         frames: usize,
     ) -> Option<f64> {
         let (ctx, renderer) = self.gpu.as_mut()?;
-        let frame = renderer.prepare(ctx, scene, &settings.alone(method)).ok()?;
+        renderer.begin(ctx, scene, &settings.alone(method)).ok()?;
         let mut ms: Vec<f64> = (0..frames.max(1))
-            .map(|_| renderer.run(ctx, &frame))
+            .map(|_| renderer.run(ctx).total_ms())
             .collect();
         ms.sort_by(f64::total_cmp);
         Some(ms[ms.len() / 2])

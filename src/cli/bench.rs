@@ -2,13 +2,13 @@
 
 use std::path::PathBuf;
 
-use ltc_lab::bench::BenchRow;
+use ltc_lab::bench::{BenchRow, BenchSettings};
 use ltc_lab::error::Result;
 use ltc_lab::files::{check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
 
-use super::{LutArgs, check_frames_and_lights, parse_size, print};
+use super::{LutArgs, Range, check_frames_and_lights, parse_cull, parse_range, parse_size, print};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -26,6 +26,12 @@ pub struct Args {
     /// Keep wgpu's runtime bounds checks (the default benchmarks trusted shader modules).
     #[arg(long)]
     checked: bool,
+    /// Tiled culling of ranged lights: off, on, or both (off,on) in one run.
+    #[arg(long, value_delimiter = ',', default_value = "on", value_parser = parse_cull)]
+    cull: Vec<bool>,
+    /// Every light's range (scene units, or inf); default paper-100's 2.
+    #[arg(long, value_parser = parse_range)]
+    range: Option<Range>,
     #[command(flatten)]
     lut: LutArgs,
 }
@@ -51,11 +57,20 @@ pub fn run(a: &Args) -> Result<()> {
     } else {
         ShaderChecks::Trusted
     };
-    let rows = ltc_lab::bench::run(&ctx, &lut, &a.lights, a.size, a.frames, checks, |r| {
+    let settings = BenchSettings {
+        lights: a.lights.clone(),
+        size: a.size,
+        frames: a.frames,
+        checks,
+        culls: a.cull.clone(),
+        range: Range::or_default(a.range),
+    };
+    let rows = ltc_lab::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(
-            "  {:>9} {:>6} lights: {:.3} ms",
+            "  {:>13} {:>6} lights, cull {:>3}: {:.3} ms",
             r.method.name(),
             r.lights,
+            if r.cull { "on" } else { "off" },
             r.ms_median
         );
     })?;

@@ -121,6 +121,38 @@ impl LutArgs {
     }
 }
 
+/// `--cull on|off` (each of a list, for `bench` and `study`).
+pub fn parse_cull(s: &str) -> std::result::Result<bool, String> {
+    match s {
+        "on" => Ok(true),
+        "off" => Ok(false),
+        _ => Err(format!("'{s}' is neither on nor off")),
+    }
+}
+
+/// `--range R`: every light's range in scene units (`None`: infinite).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range(pub Option<f64>);
+
+/// `--range R`: a range > 0, or `inf`.
+pub fn parse_range(s: &str) -> std::result::Result<Range, String> {
+    if s == "inf" {
+        return Ok(Range(None));
+    }
+    s.parse::<f64>()
+        .ok()
+        .filter(|r| r.is_finite() && *r > 0.0)
+        .map(|r| Range(Some(r)))
+        .ok_or_else(|| format!("'{s}' is not a range > 0 (or inf)"))
+}
+
+impl Range {
+    /// The range asked for, or paper-100's.
+    pub fn or_default(range: Option<Range>) -> Option<f64> {
+        range.map_or(Some(ltc_lab::bench::DEFAULT_RANGE), |r| r.0)
+    }
+}
+
 /// `--frames` and `--lights` of `bench` and `study`.
 pub fn check_frames_and_lights(frames: usize, lights: &[usize]) -> Result<()> {
     if frames == 0 {

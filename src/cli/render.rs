@@ -9,13 +9,14 @@ use ltc_lab::error::{Error, Result};
 use ltc_lab::files::{check_writable, write_atomically, write_new};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
-use ltc_lab::ltc::lut::Lut;
+use ltc_lab::ltc::formats;
+use ltc_lab::ltc::lut::{Lut, Table};
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::output::{ImageFormat, frame_bytes};
-use ltc_lab::render::{Frame, Method, RenderSettings, View};
+use ltc_lab::render::{Frame, Method, RenderSettings, Tables, View};
 use ltc_lab::scene::Scene;
 
-use super::{LutArgs, one_of, parse_size};
+use super::{LutArgs, one_of, parse_cull, parse_size};
 
 /// What `--method` names: one method alone, or LTC against the BRDF.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -25,12 +26,13 @@ pub enum Shown {
 }
 
 impl Shown {
-    const ALL: [Self; 7] = [
+    const ALL: [Self; 8] = [
         Self::Alone(Method::Brdf),
         Self::Alone(Method::BrdfFast),
         Self::Alone(Method::Ltc),
         Self::Alone(Method::LtcFast),
         Self::Alone(Method::LtcF16),
+        Self::Alone(Method::LtcF16Pairs),
         Self::Compared(View::Split),
         Self::Compared(View::Diff),
     ];
@@ -57,7 +59,8 @@ pub struct Args {
     /// The scene, a TOML file (the presets are in assets/scenes/).
     #[arg(long)]
     scene: PathBuf,
-    /// brdf, brdf-fast, ltc, ltc-fast, ltc-f16, split (LTC | BRDF) or diff (|LTC − BRDF| / BRDF).
+    /// brdf, brdf-fast, ltc, ltc-fast, ltc-f16, ltc-f16-pairs, split (LTC | BRDF) or diff
+    /// (|LTC − BRDF| / BRDF); with --table-b or --lut-b, split and diff compare two tables.
     /// On the CPU the fast forms are the same math as their literal twins.
     #[arg(long, value_parser = one_of(&Shown::ALL, Shown::name))]
     method: Shown,
@@ -81,8 +84,19 @@ pub struct Args {
     /// Where the split view changes from LTC (left) to BRDF (right), 0–1 of the width.
     #[arg(long, default_value_t = 0.5)]
     divider: f64,
+    /// Tiled culling of ranged lights (the same image, faster where ranges are short).
+    #[arg(long, default_value = "on", value_parser = parse_cull, action = clap::ArgAction::Set)]
+    cull: bool,
     #[command(flatten)]
     lut: LutArgs,
+    /// Compare with this table instead of the BRDF: split and diff show LTC with the table
+    /// of --lut/--table (left) against LTC with this one (right). A file in any format --lut
+    /// reads.
+    #[arg(long)]
+    lut_b: Option<PathBuf>,
+    /// The same, with a shipped table: classic or point.
+    #[arg(long, value_parser = one_of(&Table::ALL, Table::name), conflicts_with = "lut_b")]
+    table_b: Option<Table>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -96,6 +110,7 @@ pub fn run(a: &Args) -> Result<()> {
     settings.clipping = a.clip;
     settings.normalization = a.normalization;
     settings.divider = a.divider;
+    settings.cull = a.cull;
     let default_out = a.out.is_none();
     let out = a
         .out
@@ -105,13 +120,29 @@ pub fn run(a: &Args) -> Result<()> {
     check_writable(&out)?;
     let scene = Scene::load(&a.scene)?;
     let lut = a.lut.load()?;
+    let lut_b = table_b(a)?;
+    if let Some(b) = &lut_b {
+        if !matches!(a.method, Shown::Compared(_)) {
+            return Err(Error::input(
+                "--method",
+                "--table-b and --lut-b compare two tables: use split or diff",
+            ));
+        }
+        settings.method_b = settings.method_a;
+        settings.table_b = true;
+        let _ = b;
+    }
+    let tables = Tables {
+        a: &lut,
+        b: lut_b.as_deref().unwrap_or(&lut),
+    };
     let start = Instant::now();
     let (frame, device) = if a.cpu {
-        let frame = cpu::render(&scene, &lut, &settings);
+        let frame = cpu::render(&scene, tables, &settings);
         let threads = rayon::current_num_threads();
         (frame, format!("the CPU ({threads} threads)"))
     } else {
-        render_gpu(&scene, &lut, &settings)?
+        render_gpu(&scene, tables, &settings)?
     };
     let seconds = start.elapsed().as_secs_f64();
     if let Some((k, p)) = frame.first_invalid(settings.clipping) {
@@ -149,10 +180,25 @@ fn default_name(scene: &Path, shown: Shown) -> PathBuf {
     PathBuf::from(format!("{stem}-{}.png", shown.name()))
 }
 
+/// The second table of a comparison, if one is asked for.
+fn table_b(a: &Args) -> Result<Option<std::borrow::Cow<'static, Lut>>> {
+    if a.lut_b.is_none() && a.table_b.is_none() {
+        return Ok(None);
+    }
+    let loaded = formats::load(a.lut_b.as_deref(), a.table_b.unwrap_or(Table::Classic))?;
+    if let Some(note) = &loaded.note {
+        eprintln!("ltc-lab: note: {note}");
+    }
+    Ok(Some(loaded.lut))
+}
+
 /// The GPU render, checked against the adapter's limits before any work.
-fn render_gpu(scene: &Scene, lut: &Lut, s: &RenderSettings) -> Result<(Frame, String)> {
+fn render_gpu(scene: &Scene, tables: Tables<'_>, s: &RenderSettings) -> Result<(Frame, String)> {
     let ctx = GpuContext::new()?;
-    let mut renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked)?;
+    let mut renderer = PlaneRenderer::new(&ctx, tables.a, ShaderChecks::Checked)?;
+    if s.table_b {
+        renderer.set_lut_b(&ctx, Some(tables.b))?;
+    }
     let (frame, ms) = renderer.render(&ctx, scene, s)?;
     Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))
 }

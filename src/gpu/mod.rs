@@ -1,30 +1,40 @@
 //! The GPU side: headless device set-up, one Rust module per WGSL file (`brdf`, `ltc`,
 //! `plane`), and timing. Shaders are composed from the embedded files at load time.
 
+pub mod bin;
 pub mod brdf;
 pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
 pub mod plane;
+pub mod scene;
+pub mod target;
 pub mod timing;
 
 use crate::error::Error;
 
-/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, plane.wgsl and ltc_f16.wgsl (behind
-/// `enable f16;`) — or, without f16, a stub in place of the last.
+/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, scene.wgsl, plane.wgsl and
+/// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last.
 pub fn plane_module_source(f16: bool) -> String {
-    if f16 {
-        [
-            ltc_f16::ENABLE,
-            brdf::SOURCE,
-            ltc::SOURCE,
-            plane::SOURCE,
-            ltc_f16::SOURCE,
-        ]
-        .join("\n")
+    let (enable, last) = if f16 {
+        (ltc_f16::ENABLE, ltc_f16::SOURCE)
     } else {
-        [brdf::SOURCE, ltc::SOURCE, plane::SOURCE, ltc_f16::STUB].join("\n")
-    }
+        ("", ltc_f16::STUB)
+    };
+    [
+        enable,
+        brdf::SOURCE,
+        ltc::SOURCE,
+        scene::SOURCE,
+        plane::SOURCE,
+        last,
+    ]
+    .join("\n")
+}
+
+/// The WGSL of the binning shader: scene.wgsl and bin.wgsl.
+pub fn bin_module_source() -> String {
+    [scene::SOURCE, bin::SOURCE].join("\n")
 }
 
 /// A headless device and what was chosen.

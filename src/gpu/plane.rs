@@ -1,25 +1,27 @@
-//! `shaders/plane.wgsl`: the compute shader that shades the plane into a storage texture;
-//! here its buffer types (Pod, with the WGSL structs' explicit padding), its pipelines (one
-//! per method combination, as override constants) and the dispatch and read-back. What it
-//! renders is `render::RenderSettings`, as for the CPU reference.
+//! `shaders/plane.wgsl`: the compute shader that shades the plane; here its pipelines (one per
+//! method combination, as override constants) and the renderer that keeps its resources —
+//! lights, tables, uniforms and a `Target` per size — between renders, chunks and frames.
+//! What it renders is `render::RenderSettings`, as for the CPU reference. One device: the
+//! command line's own, or the lab's window's.
 
 use std::collections::HashMap;
-
-use bytemuck::{Pod, Zeroable};
-use glam::DVec3;
+use std::ops::Range;
 
 use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
+use crate::gpu::bin::{self, Binning};
 use crate::gpu::limits;
-use crate::gpu::timing::PassTimer;
-use crate::ltc::Normalization;
+use crate::gpu::scene::{GpuLight, Params, params};
+use crate::gpu::target::{self, OUTPUT_FORMAT, Target};
+use crate::gpu::timing::{PassTimer, Slot, SlotTimes};
 use crate::ltc::lut::Lut;
-use crate::metrics::relative_floor;
-use crate::render::{Frame, FrameKind, LutFilter, Method, RenderSettings, View};
-use crate::scene::{Light, Scene};
+use crate::render::{Frame, LutFilter, Method, RenderSettings, View};
+use crate::scene::Scene;
 
-/// The shader text (composed after `ltc::SOURCE`).
+/// The shader text (composed after `scene::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/plane.wgsl");
+
+pub use crate::gpu::target::TEXEL_BYTES;
 
 /// `METHOD_*` of plane.wgsl.
 pub fn method_constant(m: Method) -> u32 {
@@ -29,6 +31,7 @@ pub fn method_constant(m: Method) -> u32 {
         Method::Ltc => 2,
         Method::LtcFast => 3,
         Method::LtcF16 => 4,
+        Method::LtcF16Pairs => 5,
     }
 }
 
@@ -37,105 +40,20 @@ const VIEW_SINGLE: u32 = 0;
 const VIEW_SPLIT: u32 = 1;
 const VIEW_DIFF: u32 = 2;
 
-/// The pipeline's methods A and B and its `VIEW_*`: `View::B` is B shaded as the single A.
-fn shader_view(s: &RenderSettings) -> (Method, Method, u32) {
-    match s.view {
-        View::A => (s.method_a, s.method_b, VIEW_SINGLE),
-        View::B => (s.method_b, s.method_b, VIEW_SINGLE),
-        View::Split => (s.method_a, s.method_b, VIEW_SPLIT),
-        View::Diff => (s.method_a, s.method_b, VIEW_DIFF),
-    }
-}
+/// What a pipeline is specialized for (its override constants): methods A and B, the
+/// `VIEW_*`, the LUT filter, and whether B reads table B.
+type PipelineKey = (Method, Method, u32, LutFilter, bool);
 
-/// The uniform block; must match `Params` in plane.wgsl (tests/gpu_layout.rs checks it
-/// against naga's layout of the WGSL struct).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
-pub struct Params {
-    pub eye: [f32; 4],
-    pub forward: [f32; 4],
-    pub right: [f32; 4],
-    pub up: [f32; 4],
-    pub base_color: [f32; 4],
-    pub alpha: f32,
-    pub f0: f32,
-    pub tan_half_fov: f32,
-    pub aspect: f32,
-    pub half_size: f32,
-    pub divider: f32,
-    pub rel_floor: f32,
-    pub _pad0: f32,
-    pub width: u32,
-    pub height: u32,
-    pub light_count: u32,
-    pub lut_size: u32,
-    pub clip: u32,
-    pub normalization: u32,
-    pub _pad1: u32,
-    pub _pad2: u32,
-}
-
-/// One light in the storage buffer; must match `GpuLight` in plane.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
-pub struct GpuLight {
-    /// xyz position, w the range (≤ 0: infinite).
-    pub position_range: [f32; 4],
-    /// rgb colour × intensity.
-    pub intensity: [f32; 4],
-}
-
-impl From<&Light> for GpuLight {
-    fn from(l: &Light) -> Self {
-        let p = l.position.map(|x| x as f32);
-        let i = l.radiant_intensity().as_vec3();
-        // A range below f32's smallest normal would round to 0, which encodes "infinite":
-        // kept positive, it lights nothing, as on the CPU.
-        let range = l.range.map_or(0.0, |r| (r as f32).max(f32::MIN_POSITIVE));
-        Self {
-            position_range: [p[0], p[1], p[2], range],
-            intensity: [i.x, i.y, i.z, 0.0],
-        }
-    }
-}
-
-/// The uniforms of one render; `rel_floor` is the diff view's floor under B's luminance
-/// (`metrics::relative_floor`).
-pub fn params(
-    settings: &RenderSettings,
-    scene: &Scene,
-    light_count: usize,
-    lut_size: usize,
-    rel_floor: f64,
-) -> Params {
-    let (eye, forward, right, up) = scene.camera_basis();
-    let v4 = |v: DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
-    let m = &scene.material;
-    Params {
-        eye: v4(eye),
-        forward: v4(forward),
-        right: v4(right),
-        up: v4(up),
-        base_color: v4(DVec3::from(m.base_color)),
-        alpha: m.alpha as f32,
-        f0: m.f0 as f32,
-        tan_half_fov: (scene.camera.fov_y_degrees.to_radians() * 0.5).tan() as f32,
-        aspect: (settings.width as f64 / settings.height as f64) as f32,
-        half_size: scene.plane.half_size as f32,
-        divider: settings.divider_column() as f32,
-        rel_floor: (rel_floor as f32).max(f32::MIN_POSITIVE),
-        width: settings.width as u32,
-        height: settings.height as u32,
-        light_count: light_count as u32,
-        lut_size: lut_size as u32,
-        clip: u32::from(settings.clipping.horizon)
-            | (u32::from(settings.clipping.transformed) << 1),
-        normalization: match settings.normalization {
-            Normalization::Corrected => 0,
-            Normalization::PaperLiteral => 1,
-        },
-        ..Params::default()
-    }
+/// The pipeline's methods and view: `View::B` is B shaded as the single A (with B's table).
+fn pipeline_key(s: &RenderSettings) -> PipelineKey {
+    let (a, b, view, table_b) = match s.view {
+        View::A => (s.method_a, s.method_b, VIEW_SINGLE, false),
+        // B alone, as A: its table must then be A's slot's, so the renderer swaps them.
+        View::B => (s.method_b, s.method_b, VIEW_SINGLE, false),
+        View::Split => (s.method_a, s.method_b, VIEW_SPLIT, s.table_b),
+        View::Diff => (s.method_a, s.method_b, VIEW_DIFF, s.table_b),
+    };
+    (a, b, view, s.lut_filter, table_b)
 }
 
 /// Whether wgpu wraps the shader in its runtime bounds checks.
@@ -148,54 +66,78 @@ pub enum ShaderChecks {
     Trusted,
 }
 
-/// Size of a workgroup side in plane.wgsl (`@workgroup_size(16, 16)`).
-const WORKGROUP: u32 = 16;
-const OUTPUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
-/// Bytes per texel of `OUTPUT_FORMAT`.
-pub const TEXEL_BYTES: u32 = 16;
-
-/// What a pipeline is specialized for (its override constants): methods A and B, the
-/// `VIEW_*`, the LUT filter.
-type PipelineKey = (Method, Method, u32, LutFilter);
-
-fn pipeline_key(s: &RenderSettings) -> PipelineKey {
-    let (a, b, view) = shader_view(s);
-    (a, b, view, s.lut_filter)
+/// The entry points of one specialization.
+struct Pipelines {
+    shade: wgpu::ComputePipeline,
+    reduce: wgpu::ComputePipeline,
+    floor: wgpu::ComputePipeline,
+    resolve: wgpu::ComputePipeline,
 }
 
-/// The plane shader's module, layout, pipelines and LUT buffer.
+/// The GPU milliseconds of one frame's passes.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FrameTimes {
+    /// Binning (culled renders), timestamps; `None` when there was none.
+    pub bin_ms: Option<f64>,
+    /// Shading (timestamps), or submit-to-done wall clock of the whole frame without them.
+    pub shade_ms: f64,
+}
+
+impl FrameTimes {
+    pub fn total_ms(&self) -> f64 {
+        self.shade_ms + self.bin_ms.unwrap_or(0.0)
+    }
+
+    fn from_slots(slots: SlotTimes, wall_ms: f64) -> Self {
+        match slots[Slot::Shade as usize] {
+            Some(shade_ms) => Self {
+                bin_ms: slots[Slot::Bin as usize],
+                shade_ms,
+            },
+            None => Self {
+                bin_ms: None,
+                shade_ms: wall_ms,
+            },
+        }
+    }
+}
+
+/// The tables in the LUT buffer: A first, B (if any) after it.
+struct Tables {
+    buffer: wgpu::Buffer,
+    size_a: usize,
+    /// Cells per side and first vec4 of table B.
+    b: Option<(usize, u32)>,
+    packed_a: Vec<[f32; 4]>,
+}
+
+/// The plane shader's module, layout and pipelines, and the resources of the current render.
 pub struct PlaneRenderer {
     module: wgpu::ShaderModule,
-    bind_group_layout: wgpu::BindGroupLayout,
+    layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
-    pipelines: HashMap<PipelineKey, wgpu::ComputePipeline>,
-    lut_buffer: wgpu::Buffer,
-    lut_size: usize,
+    pipelines: HashMap<PipelineKey, Pipelines>,
+    binning: Binning,
+    tables: Tables,
+    lights: wgpu::Buffer,
+    light_count: usize,
+    /// Whether any light has a finite range (else culling would keep every light).
+    any_ranged: bool,
+    params_buffer: wgpu::Buffer,
+    params: Params,
+    settings: RenderSettings,
+    target: Option<Target>,
+    bind_groups: Option<(wgpu::BindGroup, wgpu::BindGroup)>,
+    /// Whether the current render's tile lists are to be made (before its first chunk).
+    needs_binning: bool,
     timer: Option<PassTimer>,
-    /// Whether the module has the f16 method (the device has `SHADER_F16`).
+    /// Whether the module has the f16 methods (the device has `SHADER_F16`).
     f16: bool,
-}
-
-/// The resources of one render: uniforms, lights, the output texture and their bind group.
-pub struct PreparedFrame {
-    pub settings: RenderSettings,
-    pub light_count: usize,
-    /// The diff view's floor (`metrics::relative_floor`); set by `render`.
-    pub rel_floor: f64,
-    params: wgpu::Buffer,
-    texture: wgpu::Texture,
-    bind_group: wgpu::BindGroup,
 }
 
 impl PlaneRenderer {
     /// The module, layout and LUT buffer; refused where the LUT exceeds the device's storage.
     pub fn new(ctx: &GpuContext, lut: &Lut, checks: ShaderChecks) -> Result<Self> {
-        let packed = super::ltc::pack_lut(lut);
-        limits::check_lut_size(
-            ctx,
-            lut.size,
-            std::mem::size_of_val(packed.as_slice()) as u64,
-        )?;
         let device = &ctx.device;
         let desc = wgpu::ShaderModuleDescriptor {
             label: Some("plane.wgsl"),
@@ -205,106 +147,65 @@ impl PlaneRenderer {
             ShaderChecks::Checked => device.create_shader_module(desc),
             // SAFETY: the module is our own embedded WGSL, validated by naga in
             // tests/shaders.rs; every buffer index in it is bounded by construction (lights
-            // by light_count ≤ the buffer's length, LUT cells clamped into the table, texture
-            // writes guarded by the image size), which is what the runtime checks guard.
+            // by light_count ≤ the buffer's length, tile lists by their total ≤ the capacity,
+            // LUT cells clamped into the table, sums and texture writes guarded by the image
+            // size), which is what the runtime checks guard.
             #[allow(unsafe_code)]
             ShaderChecks::Trusted => unsafe {
                 device.create_shader_module_trusted(desc, wgpu::ShaderRuntimeChecks::unchecked())
             },
         };
-        let storage = |binding, read_only| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Storage { read_only },
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("plane"),
-            entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::COMPUTE,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                    count: None,
-                },
-                storage(1, true),
-                storage(2, true),
-                wgpu::BindGroupLayoutEntry {
-                    binding: 3,
-                    visibility: wgpu::ShaderStages::COMPUTE,
-                    ty: wgpu::BindingType::StorageTexture {
-                        access: wgpu::StorageTextureAccess::WriteOnly,
-                        format: OUTPUT_FORMAT,
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                    },
-                    count: None,
-                },
-            ],
-        });
+        let layout = plane_layout(device);
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("plane"),
-            bind_group_layouts: &[Some(&bind_group_layout)],
+            bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let lut_buffer = wgpu::util::DeviceExt::create_buffer_init(
-            device,
-            &wgpu::util::BufferInitDescriptor {
-                label: Some("ltc lut"),
-                contents: bytemuck::cast_slice(&packed),
-                usage: wgpu::BufferUsages::STORAGE,
-            },
-        );
+        let tables = Tables::new(ctx, lut, None)?;
         Ok(Self {
             module,
-            bind_group_layout,
+            layout,
             pipeline_layout,
             pipelines: HashMap::new(),
-            lut_buffer,
-            lut_size: lut.size,
+            binning: Binning::new(ctx),
+            tables,
+            lights: light_buffer(ctx, 1),
+            light_count: 0,
+            any_ranged: false,
+            params_buffer: device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("params"),
+                size: std::mem::size_of::<Params>() as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            }),
+            params: Params::default(),
+            settings: RenderSettings::single(1, 1, Method::Brdf),
+            target: None,
+            bind_groups: None,
+            needs_binning: false,
             timer: PassTimer::new(device, &ctx.queue),
             f16: ctx.has_f16(),
         })
     }
 
-    /// Whether this device can run `method` (`LtcF16` needs `SHADER_F16`).
-    pub fn supports(&self, method: Method) -> bool {
-        method != Method::LtcF16 || self.f16
+    /// Shades with `lut` as table A from now on (its buffer rewritten, pipelines kept).
+    pub fn set_lut(&mut self, ctx: &GpuContext, lut: &Lut) -> Result<()> {
+        self.tables = Tables::new(ctx, lut, None)?;
+        self.bind_groups = None;
+        Ok(())
     }
 
-    /// The pipeline of a method combination, compiled on first use.
-    fn pipeline(&mut self, ctx: &GpuContext, key: PipelineKey) -> &wgpu::ComputePipeline {
-        self.pipelines.entry(key).or_insert_with(|| {
-            let (a, b, view, filter) = key;
-            let constants = [
-                ("METHOD_A", f64::from(method_constant(a))),
-                ("METHOD_B", f64::from(method_constant(b))),
-                ("VIEW", f64::from(view)),
-                (
-                    "LUT_NEAREST",
-                    f64::from(u8::from(filter == LutFilter::Nearest)),
-                ),
-            ];
-            ctx.device
-                .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                    label: Some("plane"),
-                    layout: Some(&self.pipeline_layout),
-                    module: &self.module,
-                    entry_point: Some("shade"),
-                    compilation_options: wgpu::PipelineCompilationOptions {
-                        constants: &constants,
-                        zero_initialize_workgroup_memory: false,
-                    },
-                    cache: None,
-                })
-        })
+    /// Table B, which method B shades with where `RenderSettings::table_b` (else none).
+    pub fn set_lut_b(&mut self, ctx: &GpuContext, lut_b: Option<&Lut>) -> Result<()> {
+        let a = std::mem::take(&mut self.tables.packed_a);
+        self.tables = Tables::from_packed(ctx, a, self.tables.size_a, lut_b)?;
+        self.bind_groups = None;
+        Ok(())
+    }
+
+    /// Whether this device can run `method` (`LtcF16` and `LtcF16Pairs` need `SHADER_F16`).
+    pub fn supports(&self, method: Method) -> bool {
+        !method.needs_f16() || self.f16
     }
 
     /// The most lights this device shades (`limits::max_lights`).
@@ -318,7 +219,7 @@ impl PlaneRenderer {
     }
 
     /// Refuses what this device cannot render, before any work: the lights, a method it has
-    /// no shaders for, the image and its read-back.
+    /// no shaders for, a second table it was not given, the image.
     pub fn check(&self, ctx: &GpuContext, scene: &Scene, settings: &RenderSettings) -> Result<()> {
         Self::check_light_count(ctx, "scene", scene.lights.len())?;
         if let Some(m) = settings.methods().into_iter().find(|&m| !self.supports(m)) {
@@ -327,264 +228,379 @@ impl PlaneRenderer {
                 format!("{} has no f16 shaders (SHADER_F16)", ctx.info.name),
             ));
         }
-        limits::check_image_size(ctx, settings.width, settings.height, TEXEL_BYTES)
+        if settings.table_b && self.tables.b.is_none() {
+            return Err(Error::input("table B", "no second table was given"));
+        }
+        target::check_size(ctx, settings.width, settings.height)
     }
 
-    /// Uploads a frame's uniforms and lights and makes its output texture.
-    pub fn prepare(
-        &self,
+    /// Starts a render of `scene`: lights, uniforms and the target of its size, made or kept;
+    /// the tile lists are made with its first chunk. Nothing is summed yet.
+    pub fn begin(
+        &mut self,
         ctx: &GpuContext,
         scene: &Scene,
         settings: &RenderSettings,
-    ) -> Result<PreparedFrame> {
+    ) -> Result<()> {
         self.check(ctx, scene, settings)?;
-        let device = &ctx.device;
-        let init = |label, contents: &[u8], usage| {
-            wgpu::util::DeviceExt::create_buffer_init(
-                device,
-                &wgpu::util::BufferInitDescriptor {
-                    label: Some(label),
-                    contents,
-                    usage,
-                },
-            )
+        self.upload_lights(ctx, scene);
+        let cull = settings.cull && self.any_ranged;
+        let (tiles_x, tiles_y) = crate::gpu::scene::tiles(settings.width, settings.height);
+        let capacity = if cull {
+            bin::capacity(ctx, tiles_x * tiles_y, self.light_count)
+        } else {
+            1
         };
-        let params = params(settings, scene, scene.lights.len(), self.lut_size, 0.0);
-        let params_buffer = init(
-            "params",
-            bytemuck::bytes_of(&params),
-            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        );
-        // A binding cannot be empty: zero lights still get one (unread) element.
-        let mut lights: Vec<GpuLight> = scene.lights.iter().map(GpuLight::from).collect();
-        if lights.is_empty() {
-            lights.push(GpuLight::default());
-        }
-        let lights_buffer = init(
-            "lights",
-            bytemuck::cast_slice(&lights),
-            wgpu::BufferUsages::STORAGE,
-        );
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("plane output"),
-            size: wgpu::Extent3d {
-                width: settings.width as u32,
-                height: settings.height as u32,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: OUTPUT_FORMAT,
-            usage: wgpu::TextureUsages::STORAGE_BINDING
-                | wgpu::TextureUsages::COPY_SRC
-                | wgpu::TextureUsages::COPY_DST
-                | wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
+        let fits = self.target.as_ref().is_some_and(|t| {
+            (t.width, t.height) == (settings.width, settings.height) && t.tile_capacity >= capacity
         });
-        let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        if !fits {
+            self.target = Some(Target::new(ctx, settings.width, settings.height, capacity));
+            self.bind_groups = None;
+        }
+        let target = self.target.as_ref().expect("made above");
+        self.params = params(settings, scene);
+        self.params.cull = u32::from(cull);
+        self.params.tile_capacity = target.tile_capacity.min(u64::from(u32::MAX)) as u32;
+        self.params.lut_size = self.tables.size_a as u32;
+        let (size_b, base_b) = self.tables.b.unwrap_or((self.tables.size_a, 0));
+        self.params.lut_size_b = size_b as u32;
+        self.params.lut_base_b = base_b;
+        if settings.view == View::B && settings.table_b {
+            // B alone is shaded as the single method A: with B's table in A's slot.
+            self.params.lut_size = size_b as u32;
+            self.params.lut_base = base_b;
+        }
+        self.settings = *settings;
+        self.needs_binning = cull;
+        if self.bind_groups.is_none() {
+            self.bind_groups = Some(self.make_bind_groups(ctx));
+        }
+        Ok(())
+    }
+
+    /// The lights of `scene` into the light buffer (grown as needed).
+    fn upload_lights(&mut self, ctx: &GpuContext, scene: &Scene) {
+        let lights: Vec<GpuLight> = scene.lights.iter().map(GpuLight::from).collect();
+        let bytes = std::mem::size_of_val(lights.as_slice()) as u64;
+        if bytes > self.lights.size() {
+            self.lights = light_buffer(ctx, lights.len().next_power_of_two());
+            self.bind_groups = None;
+        }
+        if !lights.is_empty() {
+            ctx.queue
+                .write_buffer(&self.lights, 0, bytemuck::cast_slice(&lights));
+        }
+        self.light_count = lights.len();
+        self.any_ranged = scene.lights.iter().any(|l| l.range.is_some());
+    }
+
+    /// The plane and binning bind groups of the current target, tables and lights.
+    fn make_bind_groups(&self, ctx: &GpuContext) -> (wgpu::BindGroup, wgpu::BindGroup) {
+        let t = self.target.as_ref().expect("begin made the target");
+        fn buffer(binding: u32, buffer: &wgpu::Buffer) -> wgpu::BindGroupEntry<'_> {
+            wgpu::BindGroupEntry {
+                binding,
+                resource: buffer.as_entire_binding(),
+            }
+        }
+        let plane = ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("plane"),
-            layout: &self.bind_group_layout,
+            layout: &self.layout,
             entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: params_buffer.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: lights_buffer.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: self.lut_buffer.as_entire_binding(),
-                },
+                buffer(0, &self.params_buffer),
+                buffer(1, &self.lights),
+                buffer(2, &self.tables.buffer),
                 wgpu::BindGroupEntry {
                     binding: 3,
-                    resource: wgpu::BindingResource::TextureView(&view),
+                    resource: wgpu::BindingResource::TextureView(&t.view),
                 },
+                buffer(4, &t.sums[0]),
+                buffer(5, &t.tile_offsets),
+                buffer(6, &t.tile_lights),
+                buffer(7, &t.partials),
+                buffer(8, &t.sums[1]),
+                buffer(9, &t.sums[2]),
             ],
         });
-        Ok(PreparedFrame {
-            settings: *settings,
-            light_count: scene.lights.len(),
-            rel_floor: 0.0,
-            params: params_buffer,
-            texture,
-            bind_group,
+        let bin = ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("bin"),
+            layout: &self.binning.layout,
+            entries: &[
+                buffer(0, &self.params_buffer),
+                buffer(1, &self.lights),
+                buffer(5, &t.tile_offsets),
+                buffer(6, &t.tile_lights),
+            ],
+        });
+        (plane, bin)
+    }
+
+    /// The pipelines of a specialization, compiled on first use.
+    fn pipelines(&mut self, ctx: &GpuContext, key: PipelineKey) -> &Pipelines {
+        let (module, layout) = (&self.module, &self.pipeline_layout);
+        self.pipelines.entry(key).or_insert_with(|| {
+            let (a, b, view, filter, table_b) = key;
+            let constants = [
+                ("METHOD_A", f64::from(method_constant(a))),
+                ("METHOD_B", f64::from(method_constant(b))),
+                ("VIEW", f64::from(view)),
+                (
+                    "LUT_NEAREST",
+                    f64::from(u8::from(filter == LutFilter::Nearest)),
+                ),
+                ("TABLE_B", f64::from(u8::from(table_b))),
+            ];
+            let pipeline = |entry_point| {
+                ctx.device
+                    .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                        label: Some(entry_point),
+                        layout: Some(layout),
+                        module,
+                        entry_point: Some(entry_point),
+                        compilation_options: wgpu::PipelineCompilationOptions {
+                            constants: &constants,
+                            zero_initialize_workgroup_memory: false,
+                        },
+                        cache: None,
+                    })
+            };
+            Pipelines {
+                shade: pipeline("shade"),
+                reduce: pipeline("reduce"),
+                floor: pipeline("floor_of_means"),
+                resolve: pipeline("resolve"),
+            }
         })
     }
 
-    /// Changes what a prepared frame shows (method, view, clipping…) without new buffers.
-    pub fn update(
-        &self,
-        ctx: &GpuContext,
-        frame: &mut PreparedFrame,
-        scene: &Scene,
-        settings: &RenderSettings,
-    ) {
-        assert_eq!(
-            (settings.width, settings.height),
-            (frame.settings.width, frame.settings.height)
-        );
-        let params = params(
-            settings,
-            scene,
-            frame.light_count,
-            self.lut_size,
-            frame.rel_floor,
-        );
+    /// The number of entries a full render sums per pixel (every light, unculled).
+    pub fn light_count(&self) -> usize {
+        self.light_count
+    }
+
+    /// Sums entries `range` of every pixel's list into the kept sums (from zero where the
+    /// range starts at 0), then resolves the image; one submission. The first chunk of a
+    /// culled render makes the tile lists first. Returns the submission, for waiting.
+    pub fn step(&mut self, ctx: &GpuContext, range: Range<usize>) -> wgpu::SubmissionIndex {
+        self.params.light_start = range.start as u32;
+        self.params.light_end = range.end as u32;
         ctx.queue
-            .write_buffer(&frame.params, 0, bytemuck::bytes_of(&params));
-        frame.settings = *settings;
-    }
-
-    /// Fills the output with NaN, so that a pixel the shader fails to write shows.
-    pub fn poison(&self, ctx: &GpuContext, frame: &PreparedFrame) {
-        let (w, h) = (frame.settings.width as u32, frame.settings.height as u32);
-        let nan = vec![f32::NAN; (w * h * 4) as usize];
-        ctx.queue.write_texture(
-            frame.texture.as_image_copy(),
-            bytemuck::cast_slice(&nan),
-            wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(w * TEXEL_BYTES),
-                rows_per_image: Some(h),
-            },
-            wgpu::Extent3d {
-                width: w,
-                height: h,
-                depth_or_array_layers: 1,
-            },
-        );
-    }
-
-    /// Shades the frame once and waits; returns the GPU milliseconds (timestamp queries) or
-    /// the wall-clock milliseconds of submit-to-done where the adapter has none.
-    pub fn run(&mut self, ctx: &GpuContext, frame: &PreparedFrame) -> f64 {
-        let settings = frame.settings;
-        let key = pipeline_key(&settings);
-        self.pipeline(ctx, key);
-        let pipeline = &self.pipelines[&key];
+            .write_buffer(&self.params_buffer, 0, bytemuck::bytes_of(&self.params));
+        let key = pipeline_key(&self.settings);
+        self.pipelines(ctx, key);
+        let pipelines = &self.pipelines[&key];
+        let (plane_group, bin_group) = self.bind_groups.as_ref().expect("begin made them");
+        let target = self.target.as_ref().expect("begin made it");
         let mut encoder = ctx
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                 label: Some("plane"),
             });
+        let mut timer = self.timer.as_mut().filter(|t| t.can_resolve());
+        let timed = timer.is_some();
+        if let Some(t) = &mut timer {
+            t.clear();
+        }
+        let (tiles_x, tiles_y) = (target.tiles.0 as u32, target.tiles.1 as u32);
+        if self.needs_binning {
+            self.binning.encode(
+                &mut encoder,
+                bin_group,
+                (tiles_x, tiles_y),
+                timer.as_deref_mut(),
+            );
+            self.needs_binning = false;
+        }
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("plane"),
-                timestamp_writes: self.timer.as_ref().map(PassTimer::writes),
+                label: Some("shade"),
+                timestamp_writes: timer.as_deref_mut().map(|t| t.writes(Slot::Shade)),
             });
-            pass.set_pipeline(pipeline);
-            pass.set_bind_group(0, &frame.bind_group, &[]);
-            pass.dispatch_workgroups(
-                (settings.width as u32).div_ceil(WORKGROUP),
-                (settings.height as u32).div_ceil(WORKGROUP),
-                1,
-            );
+            pass.set_bind_group(0, plane_group, &[]);
+            pass.set_pipeline(&pipelines.shade);
+            pass.dispatch_workgroups(tiles_x, tiles_y, 1);
         }
-        if let Some(t) = &self.timer {
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("resolve"),
+                timestamp_writes: None,
+            });
+            pass.set_bind_group(0, plane_group, &[]);
+            if self.settings.view == View::Diff {
+                pass.set_pipeline(&pipelines.reduce);
+                pass.dispatch_workgroups(tiles_x, tiles_y, 1);
+                pass.set_pipeline(&pipelines.floor);
+                pass.dispatch_workgroups(1, 1, 1);
+            }
+            pass.set_pipeline(&pipelines.resolve);
+            pass.dispatch_workgroups(tiles_x, tiles_y, 1);
+        }
+        if let Some(t) = timer {
             t.resolve(&mut encoder);
         }
+        let index = ctx.queue.submit([encoder.finish()]);
+        if timed && let Some(t) = &mut self.timer {
+            t.request();
+        }
+        index
+    }
+
+    /// The last step's GPU times if they have arrived (poll the device meanwhile); never
+    /// waits.
+    pub fn try_times(&mut self) -> Option<FrameTimes> {
+        let slots = self.timer.as_mut()?.try_read()?;
+        slots[Slot::Shade as usize].map(|_| FrameTimes::from_slots(slots, 0.0))
+    }
+
+    /// Renders the current render whole (one chunk of every light) and waits: the GPU times
+    /// (timestamp queries), or the wall clock of submit-to-done where the adapter has none.
+    pub fn run(&mut self, ctx: &GpuContext) -> FrameTimes {
+        self.needs_binning |= self.params.cull != 0;
+        // A read-back still in flight is taken first, so that this frame's timestamps land.
+        if let Some(t) = &mut self.timer {
+            let _ = t.read_ms(&ctx.device);
+        }
         let start = std::time::Instant::now();
-        ctx.queue.submit([encoder.finish()]);
+        self.step(ctx, 0..self.light_count);
         let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
         let wall_ms = start.elapsed().as_secs_f64() * 1e3;
-        match &self.timer {
-            Some(t) => t.read_ms(&ctx.device),
-            None => wall_ms,
-        }
+        let slots = self
+            .timer
+            .as_mut()
+            .map_or([None; 2], |t| t.read_ms(&ctx.device));
+        FrameTimes::from_slots(slots, wall_ms)
     }
 
-    /// Reads the output back as a frame (alpha marks the plane's pixels).
-    pub fn read(&self, ctx: &GpuContext, frame: &PreparedFrame) -> Frame {
-        let (w, h) = (frame.settings.width as u32, frame.settings.height as u32);
-        let row = (w * TEXEL_BYTES).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
-        let buffer = ctx.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("plane readback"),
-            size: u64::from(row) * u64::from(h),
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let mut encoder = ctx
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("readback"),
-            });
-        encoder.copy_texture_to_buffer(
-            frame.texture.as_image_copy(),
-            wgpu::TexelCopyBufferInfo {
-                buffer: &buffer,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(row),
-                    rows_per_image: Some(h),
-                },
-            },
-            wgpu::Extent3d {
-                width: w,
-                height: h,
-                depth_or_array_layers: 1,
-            },
-        );
-        ctx.queue.submit([encoder.finish()]);
-        let slice = buffer.slice(..);
-        slice.map_async(wgpu::MapMode::Read, |_| {});
-        let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
-        let data = slice.get_mapped_range().expect("mapped after the wait");
-        let mut pixels = Vec::with_capacity((w * h) as usize);
-        let mut on_plane = Vec::with_capacity((w * h) as usize);
-        for y in 0..h as usize {
-            let start = y * row as usize;
-            let texels: &[[f32; 4]] =
-                bytemuck::cast_slice(&data[start..start + (w * TEXEL_BYTES) as usize]);
-            for t in texels {
-                pixels.push(DVec3::new(
-                    f64::from(t[0]),
-                    f64::from(t[1]),
-                    f64::from(t[2]),
-                ));
-                // NaN (a poisoned, unwritten texel) counts as on the plane, so it is seen.
-                on_plane.push(t[3] >= 0.5 || t[3].is_nan());
-            }
-        }
-        let s = frame.settings;
-        Frame {
-            width: s.width,
-            height: s.height,
-            kind: if s.view == View::Diff {
-                FrameKind::RelativeDifference
-            } else {
-                FrameKind::Radiance
-            },
-            pixels,
-            on_plane,
-            divider: (s.view == View::Split).then(|| s.divider_column()),
-        }
+    /// The output of the current render, read back.
+    pub fn read(&self, ctx: &GpuContext) -> Frame {
+        self.target
+            .as_ref()
+            .expect("begin made the target")
+            .read(ctx, &self.settings)
     }
 
-    /// Prepares, poisons, shades and reads back one frame. The diff view first renders A
-    /// and B alone for its floor (`metrics::relative_floor`), as the CPU does.
+    /// The entries of the current render's tile lists, read back (blocks): how much culling
+    /// kept of `tiles × lights`. `None` where the render is not culled or not yet binned.
+    pub fn tile_entries(&self, ctx: &GpuContext) -> Option<(u64, u64)> {
+        let t = self.target.as_ref()?;
+        (self.params.cull != 0 && !self.needs_binning).then(|| {
+            let all = (t.tiles.0 * t.tiles.1 * self.light_count) as u64;
+            (t.tile_entries(ctx), all)
+        })
+    }
+
+    /// The output texture (for the lab to show without a read-back).
+    pub fn output(&self) -> Option<&wgpu::TextureView> {
+        self.target.as_ref().map(|t| &t.view)
+    }
+
+    /// Begins, poisons, renders whole and reads back one frame: the frame and its GPU ms.
     pub fn render(
         &mut self,
         ctx: &GpuContext,
         scene: &Scene,
         settings: &RenderSettings,
     ) -> Result<(Frame, f64)> {
-        let mut frame = self.prepare(ctx, scene, settings)?;
-        if settings.view == View::Diff {
-            let mut alone = |method| {
-                self.update(ctx, &mut frame, scene, &settings.alone(method));
-                self.run(ctx, &frame);
-                self.read(ctx, &frame)
-            };
-            let (b, a) = (alone(settings.method_b), alone(settings.method_a));
-            frame.rel_floor = relative_floor(&b, &a);
-            self.update(ctx, &mut frame, scene, settings);
-        }
-        self.poison(ctx, &frame);
-        let ms = self.run(ctx, &frame);
-        Ok((self.read(ctx, &frame), ms))
+        self.begin(ctx, scene, settings)?;
+        self.target.as_ref().expect("made").poison(ctx);
+        let times = self.run(ctx);
+        Ok((self.read(ctx), times.total_ms()))
     }
+}
+
+/// A light buffer of `count` lights (a binding cannot be empty: at least one).
+fn light_buffer(ctx: &GpuContext, count: usize) -> wgpu::Buffer {
+    ctx.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("lights"),
+        size: (count.max(1) * std::mem::size_of::<GpuLight>()) as u64,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}
+
+impl Tables {
+    fn new(ctx: &GpuContext, lut: &Lut, b: Option<&Lut>) -> Result<Self> {
+        Self::from_packed(ctx, super::ltc::pack_lut(lut), lut.size, b)
+    }
+
+    /// Table A packed, B packed after it; refused where they exceed one storage binding.
+    fn from_packed(
+        ctx: &GpuContext,
+        packed_a: Vec<[f32; 4]>,
+        size_a: usize,
+        b: Option<&Lut>,
+    ) -> Result<Self> {
+        let mut all = packed_a.clone();
+        let b = b.map(|lut| {
+            let base = all.len() as u32;
+            all.extend(super::ltc::pack_lut(lut));
+            (lut.size, base)
+        });
+        let largest = b.map_or(size_a, |(n, _)| n.max(size_a));
+        limits::check_lut_size(ctx, largest, std::mem::size_of_val(all.as_slice()) as u64)?;
+        let buffer = wgpu::util::DeviceExt::create_buffer_init(
+            &ctx.device,
+            &wgpu::util::BufferInitDescriptor {
+                label: Some("ltc lut"),
+                contents: bytemuck::cast_slice(&all),
+                usage: wgpu::BufferUsages::STORAGE,
+            },
+        );
+        Ok(Self {
+            buffer,
+            size_a,
+            b,
+            packed_a,
+        })
+    }
+}
+
+/// The plane shader's bindings (src/gpu/plane.rs, scene.wgsl, ltc.wgsl, plane.wgsl).
+fn plane_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty,
+        count: None,
+    };
+    let storage = |binding, read_only| {
+        entry(
+            binding,
+            wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+        )
+    };
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("plane"),
+        entries: &[
+            entry(
+                0,
+                wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+            ),
+            storage(1, true),
+            storage(2, true),
+            entry(
+                3,
+                wgpu::BindingType::StorageTexture {
+                    access: wgpu::StorageTextureAccess::WriteOnly,
+                    format: OUTPUT_FORMAT,
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                },
+            ),
+            storage(4, false),
+            storage(5, true),
+            storage(6, true),
+            storage(7, false),
+            storage(8, false),
+            storage(9, false),
+        ],
+    })
 }

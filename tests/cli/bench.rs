@@ -27,7 +27,10 @@ fn bench_prints_the_table_and_writes_the_csv() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = String::from_utf8(o.stdout).unwrap();
-    assert!(table.contains("| ltc-fast | 20 | 32×16 |"), "{table}");
+    assert!(
+        table.contains("| ltc-fast | 20 | 32×16 | on | 2 |"),
+        "{table}"
+    );
     assert!(table.contains("ltc-fast / brdf"), "{table}");
     assert!(
         table.contains("| 5000 | 2 | 5 |"),
@@ -37,20 +40,24 @@ fn bench_prints_the_table_and_writes_the_csv() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "method,lights,width,height,frames,ms_median,ms_min,ms_max,fps,glightpx_per_s"
+        "method,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    assert_eq!(rows.len(), 8, "4 methods × 2 light counts");
+    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 };
+    assert_eq!(rows.len(), 2 * methods, "every method × 2 light counts");
     for r in &rows {
-        assert_eq!(r.len(), 10);
+        assert_eq!(r.len(), 14);
+        assert_eq!((r[5], r[6]), ("on", "2"), "{r:?}");
+        let fraction: f64 = r[7].parse().unwrap();
+        assert!(fraction > 0.0 && fraction <= 1.0, "{r:?}");
         let (median, min, max): (f64, f64, f64) = (
-            r[5].parse().unwrap(),
-            r[6].parse().unwrap(),
-            r[7].parse().unwrap(),
+            r[8].parse().unwrap(),
+            r[9].parse().unwrap(),
+            r[10].parse().unwrap(),
         );
         assert!(min > 0.0 && min <= median && median <= max, "{r:?}");
         // fps and G light-px/s follow from the median.
-        let fps: f64 = r[8].parse().unwrap();
+        let fps: f64 = r[12].parse().unwrap();
         assert!((fps - 1e3 / median).abs() <= 1e-3 * fps + 1e-3, "{r:?}");
     }
 }
@@ -119,4 +126,43 @@ fn bench_ends_quietly_when_nobody_reads() {
     assert_no_panic(out.status.code(), &err);
     assert!(out.status.success(), "{err}");
     assert!(csv.exists());
+}
+
+/// `--cull off,on` measures both in one run, `--range` sets every light's range, and the
+/// in-range fraction falls with the range (the lights are the same).
+#[test]
+fn bench_measures_culled_and_unculled_with_a_range() {
+    if gpu().is_none() {
+        return;
+    }
+    let run = |range: &str| {
+        let o = ltc_lab(&[
+            "bench", "--lights", "64", "--size", "32x32", "--frames", "1", "--cull", "off,on",
+            "--range", range,
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let (short, long) = (run("0.3"), run("inf"));
+    assert!(
+        short.contains("| ltc-fast | 64 | 32×32 | off | 0.3 |"),
+        "{short}"
+    );
+    assert!(
+        short.contains("| ltc-fast | 64 | 32×32 | on | 0.3 |"),
+        "{short}"
+    );
+    assert!(
+        short.contains("Culling (unculled ms / culled ms"),
+        "{short}"
+    );
+    assert!(
+        long.contains("| brdf | 64 | 32×32 | on | inf | 100.0% |"),
+        "{long}"
+    );
+    assert_eq!(ltc_lab(&["bench", "--range", "0"]).status.code(), Some(2));
+    assert_eq!(
+        ltc_lab(&["bench", "--cull", "maybe"]).status.code(),
+        Some(2)
+    );
 }

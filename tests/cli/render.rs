@@ -474,3 +474,47 @@ fn no_adapter_is_the_machine_failing() {
     assert!(err.contains("no adapter") && err.contains("--cpu"), "{err}");
     assert!(!out.exists());
 }
+
+/// `--table-b` compares two tables in the split and difference views, on either device; the
+/// culled and unculled renders are the same file's pixels.
+#[test]
+fn render_compares_two_tables_and_culls_without_changing_the_image() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = preset("paper-100.toml");
+    for cpu in devices() {
+        let diff = render_exr(
+            dir.path(),
+            &scene,
+            &["--method", "diff", "--table-b", "point"],
+            cpu,
+        );
+        assert!(
+            diff.iter().any(|p| p[0] > 1e-3),
+            "cpu: {cpu}: the two tables agree?"
+        );
+        let off = render_exr(
+            dir.path(),
+            &scene,
+            &["--method", "ltc", "--cull", "off"],
+            cpu,
+        );
+        let on = render_exr(
+            dir.path(),
+            &scene,
+            &["--method", "ltc", "--cull", "on"],
+            cpu,
+        );
+        assert_eq!(off, on, "cpu: {cpu}");
+    }
+    let o = ltc_lab(&[
+        "render",
+        "--cpu",
+        "--scene",
+        &scene,
+        "--method",
+        "ltc",
+        "--table-b",
+        "point",
+    ]);
+    assert_refused(&o, "--method");
+}

@@ -36,7 +36,7 @@ fn study_writes_every_variant_and_the_pareto_chart() {
         "ltc-fast-point",
     ];
     if gpu().unwrap().ctx.has_f16() {
-        expected.push("ltc-f16");
+        expected.extend(["ltc-f16", "ltc-f16-pairs"]);
     }
     assert_eq!(names, expected);
     for r in &rows {

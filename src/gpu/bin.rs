@@ -1,0 +1,111 @@
+//! `shaders/bin.wgsl`: tiled culling of ranged lights — per 16×16 tile, the lights whose range
+//! reaches the tile's footprint on the plane, in light order; here its pipelines, the buffer
+//! sizes and the passes.
+
+use crate::gpu::GpuContext;
+use crate::gpu::timing::{PassTimer, Slot};
+
+/// The shader text (composed after scene.wgsl).
+pub const SOURCE: &str = include_str!("../../shaders/bin.wgsl");
+
+/// The binning shader's pipelines (count, prefix sum, write) and their layout.
+pub struct Binning {
+    pub layout: wgpu::BindGroupLayout,
+    count: wgpu::ComputePipeline,
+    scan: wgpu::ComputePipeline,
+    write: wgpu::ComputePipeline,
+}
+
+/// Bytes of a list entry (a light's index).
+pub const ENTRY_BYTES: u64 = 4;
+
+/// The entries the tile lists may hold: every light in every tile, but no more than one
+/// storage binding holds (beyond it the shader sums every light in every tile: the same
+/// image, unculled).
+pub fn capacity(ctx: &GpuContext, tiles: usize, lights: usize) -> u64 {
+    let most = ctx
+        .limits
+        .max_storage_buffer_binding_size
+        .min(ctx.limits.max_buffer_size)
+        / ENTRY_BYTES;
+    ((tiles * lights) as u64).clamp(1, most)
+}
+
+impl Binning {
+    pub fn new(ctx: &GpuContext) -> Self {
+        let device = &ctx.device;
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("bin.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(super::bin_module_source().into()),
+        });
+        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty,
+            count: None,
+        };
+        let storage = |read_only| wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        };
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("bin"),
+            entries: &[
+                entry(
+                    0,
+                    wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                ),
+                entry(1, storage(true)),
+                entry(5, storage(false)),
+                entry(6, storage(false)),
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("bin"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = |entry_point| {
+            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(entry_point),
+                layout: Some(&pipeline_layout),
+                module: &module,
+                entry_point: Some(entry_point),
+                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                cache: None,
+            })
+        };
+        Self {
+            count: pipeline("bin_count"),
+            scan: pipeline("bin_scan"),
+            write: pipeline("bin_write"),
+            layout,
+        }
+    }
+
+    /// The three passes in one compute pass (timed in `Slot::Bin`).
+    pub fn encode(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        bind_group: &wgpu::BindGroup,
+        (tiles_x, tiles_y): (u32, u32),
+        timer: Option<&mut PassTimer>,
+    ) {
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("bin"),
+            timestamp_writes: timer.map(|t| t.writes(Slot::Bin)),
+        });
+        pass.set_bind_group(0, bind_group, &[]);
+        pass.set_pipeline(&self.count);
+        pass.dispatch_workgroups(tiles_x, tiles_y, 1);
+        pass.set_pipeline(&self.scan);
+        pass.dispatch_workgroups(1, 1, 1);
+        pass.set_pipeline(&self.write);
+        pass.dispatch_workgroups(tiles_x, tiles_y, 1);
+    }
+}

@@ -1,0 +1,117 @@
+//! `shaders/scene.wgsl`: the uniforms of a render, the light buffer's element and the camera's
+//! rays, shared by the plane and binning shaders; here their Pod types (with the WGSL
+//! structs' explicit padding) and the uniforms of a render.
+
+use bytemuck::{Pod, Zeroable};
+use glam::DVec3;
+
+use crate::ltc::Normalization;
+use crate::render::RenderSettings;
+use crate::scene::{Light, Scene};
+
+/// The shader text (composed before plane.wgsl and bin.wgsl).
+pub const SOURCE: &str = include_str!("../../shaders/scene.wgsl");
+
+/// The side of a tile in pixels (`TILE_SIDE`): the plane shader's 16×16 workgroup, the unit
+/// of binning.
+pub const TILE_SIDE: usize = 16;
+
+/// The uniform block; must match `Params` in scene.wgsl (tests/shaders.rs checks it against
+/// naga's layout of the WGSL struct).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct Params {
+    pub eye: [f32; 4],
+    pub forward: [f32; 4],
+    pub right: [f32; 4],
+    pub up: [f32; 4],
+    pub base_color: [f32; 4],
+    pub alpha: f32,
+    pub f0: f32,
+    pub tan_half_fov: f32,
+    pub aspect: f32,
+    pub half_size: f32,
+    pub divider: f32,
+    pub _pad0: f32,
+    pub _pad1: f32,
+    pub width: u32,
+    pub height: u32,
+    pub light_count: u32,
+    pub lut_size: u32,
+    pub clip: u32,
+    pub normalization: u32,
+    pub tiles_x: u32,
+    pub tiles_y: u32,
+    pub light_start: u32,
+    pub light_end: u32,
+    pub cull: u32,
+    pub tile_capacity: u32,
+    pub lut_size_b: u32,
+    pub lut_base_b: u32,
+    pub lut_base: u32,
+    pub _pad2: u32,
+}
+
+/// One light in the storage buffer; must match `GpuLight` in scene.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuLight {
+    /// xyz position, w the range (≤ 0: infinite).
+    pub position_range: [f32; 4],
+    /// rgb colour × intensity.
+    pub intensity: [f32; 4],
+}
+
+impl From<&Light> for GpuLight {
+    fn from(l: &Light) -> Self {
+        let p = l.position.map(|x| x as f32);
+        let i = l.radiant_intensity().as_vec3();
+        // A range below f32's smallest normal would round to 0, which encodes "infinite":
+        // kept positive, it lights nothing, as on the CPU.
+        let range = l.range.map_or(0.0, |r| (r as f32).max(f32::MIN_POSITIVE));
+        Self {
+            position_range: [p[0], p[1], p[2], range],
+            intensity: [i.x, i.y, i.z, 0.0],
+        }
+    }
+}
+
+/// Tiles across and down an image.
+pub fn tiles(width: usize, height: usize) -> (usize, usize) {
+    (width.div_ceil(TILE_SIDE), height.div_ceil(TILE_SIDE))
+}
+
+/// The uniforms of a render of `scene` as `settings` says; the chunk, the tables and the
+/// binning are set by the renderer.
+pub fn params(settings: &RenderSettings, scene: &Scene) -> Params {
+    let (eye, forward, right, up) = scene.camera_basis();
+    let v4 = |v: DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
+    let m = &scene.material;
+    let (tiles_x, tiles_y) = tiles(settings.width, settings.height);
+    Params {
+        eye: v4(eye),
+        forward: v4(forward),
+        right: v4(right),
+        up: v4(up),
+        base_color: v4(DVec3::from(m.base_color)),
+        alpha: m.alpha as f32,
+        f0: m.f0 as f32,
+        tan_half_fov: (scene.camera.fov_y_degrees.to_radians() * 0.5).tan() as f32,
+        aspect: (settings.width as f64 / settings.height as f64) as f32,
+        half_size: scene.plane.half_size as f32,
+        divider: settings.divider_column() as f32,
+        width: settings.width as u32,
+        height: settings.height as u32,
+        light_count: scene.lights.len() as u32,
+        clip: u32::from(settings.clipping.horizon)
+            | (u32::from(settings.clipping.transformed) << 1),
+        normalization: match settings.normalization {
+            Normalization::Corrected => 0,
+            Normalization::PaperLiteral => 1,
+        },
+        tiles_x: tiles_x as u32,
+        tiles_y: tiles_y as u32,
+        cull: u32::from(settings.cull),
+        ..Params::default()
+    }
+}
