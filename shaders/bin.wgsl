@@ -1,8 +1,9 @@
 // Tiled culling of ranged lights: for each 16×16-pixel tile, the list of the lights whose
 // range can reach it, in light order (so that a tile's sums are bit-identical to the unculled
 // ones: every light left out contributes exactly 0 there). Three passes: count per tile,
-// prefix-sum over tiles, write per tile. Composed after scene.wgsl; its Rust side is
-// src/gpu/bin.rs.
+// prefix-sum over tiles, write per tile. The per-tile passes may be dispatched a band of tile
+// rows at a time (from `params.bin_row`), so that the lab spreads them over frames. Composed
+// after scene.wgsl; its Rust side is src/gpu/bin.rs.
 
 // Counts, then (after bin_scan) each tile's first entry; [tiles] holds the total.
 @group(0) @binding(5) var<storage, read_write> tile_offsets: array<u32>;
@@ -68,6 +69,12 @@ fn light_in_tile(light: GpuLight, f: Footprint) -> bool {
         return false;
     }
     let r = sqrt(max(r2, 0.0)) + margin;
+    // Apart from the quadrilateral's bounding box by more than r: apart from it.
+    let lo = min(min(f.corners[0], f.corners[1]), min(f.corners[2], f.corners[3]));
+    let hi = max(max(f.corners[0], f.corners[1]), max(f.corners[2], f.corners[3]));
+    if any(c < lo - r) || any(c > hi + r) {
+        return false;
+    }
     // The orientation of the corners (the sign of the quadrilateral's area).
     var area = 0.0;
     for (var k = 0u; k < 4u; k++) {
@@ -91,14 +98,20 @@ fn light_in_tile(light: GpuLight, f: Footprint) -> bool {
 
 var<workgroup> wg_count: atomic<u32>;
 
+// The tile of a workgroup of a band dispatched from tile row `params.bin_row`.
+fn band_tile(wid: vec3<u32>) -> vec2<u32> {
+    return vec2<u32>(wid.x, wid.y + params.bin_row);
+}
+
 // One workgroup per tile: how many lights reach it.
 @compute @workgroup_size(256)
-fn bin_count(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
+fn bin_count(@builtin(workgroup_id) band: vec3<u32>, @builtin(local_invocation_index) li: u32) {
+    let tile = band_tile(band);
     if li == 0u {
         atomicStore(&wg_count, 0u);
     }
     workgroupBarrier();
-    let f = tile_footprint(wid.xy);
+    let f = tile_footprint(tile);
     for (var k = li; k < params.light_count; k += WORKGROUP) {
         if light_in_tile(lights[k], f) {
             atomicAdd(&wg_count, 1u);
@@ -106,7 +119,7 @@ fn bin_count(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
     }
     workgroupBarrier();
     if li == 0u {
-        tile_offsets[wid.y * params.tiles_x + wid.x] = atomicLoad(&wg_count);
+        tile_offsets[tile.y * params.tiles_x + tile.x] = atomicLoad(&wg_count);
     }
 }
 
@@ -159,8 +172,9 @@ fn bin_scan(@builtin(local_invocation_index) li: u32) {
 // lights, counts its own, and one prefix sum over the threads places every run (one scan per
 // tile rather than one per 256 lights: barriers cost more than tests on a CPU driver).
 @compute @workgroup_size(256)
-fn bin_write(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
-    let f = tile_footprint(wid.xy);
+fn bin_write(@builtin(workgroup_id) band: vec3<u32>, @builtin(local_invocation_index) li: u32) {
+    let tile = band_tile(band);
+    let f = tile_footprint(tile);
     let per = (params.light_count + WORKGROUP - 1u) / WORKGROUP;
     let begin = min(li * per, params.light_count);
     let end = min(begin + per, params.light_count);
@@ -173,7 +187,7 @@ fn bin_write(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
     wg_sums[li] = mine;
     workgroupBarrier();
     workgroup_scan(li);
-    var at = tile_offsets[wid.y * params.tiles_x + wid.x] + wg_sums[li] - mine;
+    var at = tile_offsets[tile.y * params.tiles_x + tile.x] + wg_sums[li] - mine;
     for (var k = begin; k < end; k++) {
         if light_in_tile(lights[k], f) {
             if at < params.tile_capacity {

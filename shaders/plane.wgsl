@@ -281,11 +281,6 @@ fn shade(
     @builtin(local_invocation_index) li: u32,
 ) {
     let inside = gid.x < params.width && gid.y < params.height;
-    var p: Pixel;
-    p.on_plane = false;
-    if inside {
-        p = prepare(surface_point(gid.xy));
-    }
     // The tile's list: culled where binned and the lists fit, else every light.
     let tiles = params.tiles_x * params.tiles_y;
     let culled = params.cull != 0u && tile_offsets[tiles] <= params.tile_capacity;
@@ -299,6 +294,15 @@ fn shade(
         wg_count = count;
     }
     let count = workgroupUniformLoad(&wg_count);
+    // A chunk past the end of this tile's list adds nothing: the kept sums stand.
+    if params.light_start > 0u && params.light_start >= count {
+        return;
+    }
+    var p: Pixel;
+    p.on_plane = false;
+    if inside {
+        p = prepare(surface_point(gid.xy));
+    }
     let first = tile_offsets[tile];
     var centre = vec3<f32>(0.0);
     if METHOD_A == METHOD_LTC_F16_PAIRS {

@@ -32,7 +32,7 @@ struct Params {
     lut_size_b: u32,       // table B (method B's own table), after table A in the buffer
     lut_base_b: u32,       // its first vec4
     lut_base: u32,         // table A's first vec4 (B's, where B is shown alone)
-    _pad2: u32,
+    bin_row: u32,          // the first tile row a binning dispatch works on
 }
 
 // Must match src/gpu/scene.rs GpuLight: position and range (≤ 0: infinite), colour × intensity.

@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use glam::DVec3;
-use serde::{Deserialize, Deserializer, Serialize};
+use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 use crate::render::SurfacePoint;
@@ -36,14 +36,29 @@ pub fn preset(name: &str) -> Scene {
     Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")
 }
 
-/// Exactly `N` numbers. serde's fixed-size arrays take the first `N` elements of a longer
-/// TOML list and drop the rest without a word (a 4-element colour, a 5-element position).
-fn exactly<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<[f64; N], D::Error> {
-    let v = Vec::<f64>::deserialize(d)?;
-    let len = v.len();
-    v.try_into().map_err(|_| {
-        serde::de::Error::invalid_length(len, &format!("a list of exactly {N} numbers").as_str())
-    })
+/// Exactly `N` numbers, as a list. serde's fixed-size arrays take the first `N` elements of a
+/// longer TOML list and drop the rest without a word (a 4-element colour, a 5-element
+/// position); and they are written as tuples, which RON (eframe's storage of the lab's state)
+/// does not read back as a list.
+mod exactly {
+    use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+    pub fn serialize<S: Serializer, const N: usize>(v: &[f64; N], s: S) -> Result<S::Ok, S::Error> {
+        v.as_slice().serialize(s)
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>, const N: usize>(
+        d: D,
+    ) -> Result<[f64; N], D::Error> {
+        let v = Vec::<f64>::deserialize(d)?;
+        let len = v.len();
+        v.try_into().map_err(|_| {
+            serde::de::Error::invalid_length(
+                len,
+                &format!("a list of exactly {N} numbers").as_str(),
+            )
+        })
+    }
 }
 
 /// The square plane `|x|, |y| ≤ half_size`, `z = 0`, normal `+z`.
@@ -58,7 +73,7 @@ pub struct Plane {
 #[serde(deny_unknown_fields)]
 pub struct Material {
     /// Diffuse albedo `c`, linear RGB.
-    #[serde(deserialize_with = "exactly")]
+    #[serde(with = "exactly")]
     pub base_color: [f64; 3],
     /// Specular reflectance at normal incidence (Schlick's `F0`).
     pub f0: f64,
@@ -70,9 +85,9 @@ pub struct Material {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Camera {
-    #[serde(deserialize_with = "exactly")]
+    #[serde(with = "exactly")]
     pub position: [f64; 3],
-    #[serde(deserialize_with = "exactly")]
+    #[serde(with = "exactly")]
     pub target: [f64; 3],
     /// Vertical field of view in degrees.
     pub fov_y_degrees: f64,
@@ -82,9 +97,9 @@ pub struct Camera {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Light {
-    #[serde(deserialize_with = "exactly")]
+    #[serde(with = "exactly")]
     pub position: [f64; 3],
-    #[serde(default = "white", deserialize_with = "exactly")]
+    #[serde(default = "white", with = "exactly")]
     pub color: [f64; 3],
     pub intensity: f64,
     /// Range `R` of the windowed falloff; absent means infinite.
@@ -114,10 +129,10 @@ pub struct RandomLights {
     pub count: usize,
     pub seed: u64,
     /// Heights above the plane, `[min, max]`.
-    #[serde(deserialize_with = "exactly")]
+    #[serde(with = "exactly")]
     pub height: [f64; 2],
     /// Intensities, `[min, max]`.
-    #[serde(deserialize_with = "exactly")]
+    #[serde(with = "exactly")]
     pub intensity: [f64; 2],
     /// Range of every generated light; absent means infinite.
     #[serde(default)]

@@ -117,7 +117,9 @@ fn serial_fit(lobe: Lobe, s: &FitSettings) -> Vec<CellFit> {
                 (0, a) => table[a + 1].unwrap().params.m,
                 _ => previous.unwrap().params.m,
             };
-            let fit = CellProblem::new(lobe, a, t, s, &strata).fit(start, s, &strata, |_, _| {});
+            let fit = CellProblem::new(lobe, a, t, s, &strata).fit(start, s, &strata, |_, _| {
+                ltc_lab::ltc::nelder_mead::CONTINUE
+            });
             table[t * n + a] = Some(fit);
             previous = Some(fit);
         }

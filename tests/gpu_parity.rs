@@ -113,10 +113,10 @@ fn gpu_matches_cpu_for_every_method_clip_and_normalization() {
 fn gpu_f16_ltc_matches_cpu_to_half_precision() {
     let Some(g) = gpu() else { return };
     if !g.ctx.has_f16() {
-        eprintln!(
-            "*** SKIPPED: {} has no SHADER_F16; ltc-f16 is not offered there ***",
+        gpu_common::skipped(&format!(
+            "{} has no SHADER_F16; ltc-f16 is not offered there",
             g.ctx.info.name
-        );
+        ));
         return;
     }
     for (name, scene) in scenes() {

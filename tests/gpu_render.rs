@@ -6,7 +6,7 @@
 mod gpu_common;
 
 use glam::DVec3;
-use gpu_common::{assert_close, gpu};
+use gpu_common::{assert_close, bits, gpu};
 use ltc_lab::cpu::render;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::lut::Lut;
@@ -70,13 +70,6 @@ fn binning_scene(range: f64, count: usize) -> Scene {
 
 fn frame(r: &mut PlaneRenderer, scene: &Scene, s: &RenderSettings) -> Frame {
     r.render(&gpu().unwrap().ctx, scene, s).unwrap().0
-}
-
-fn bits(f: &Frame) -> Vec<[u64; 3]> {
-    f.pixels
-        .iter()
-        .map(|p| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
-        .collect()
 }
 
 /// Every light culled from a tile adds exactly 0 at each of its pixels (its range does not
@@ -244,10 +237,10 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
 fn f16_pairs_are_finite_and_within_half_precision() {
     let Some(g) = gpu() else { return };
     if !g.ctx.has_f16() {
-        eprintln!(
-            "*** SKIPPED: {} has no SHADER_F16; ltc-f16-pairs is not offered there ***",
+        gpu_common::skipped(&format!(
+            "{} has no SHADER_F16; ltc-f16-pairs is not offered there",
             g.ctx.info.name
-        );
+        ));
         return;
     }
     let mut r = g.renderer.lock().unwrap();

@@ -1,5 +1,6 @@
 //! `ltc-lab lab --screenshot` in a real window (Xvfb in .ci/run): the PNG has the requested
-//! size and shows the lab, not a blank window.
+//! size and shows the lab, not a blank window; its frame log shows the plane filling in over
+//! frames.
 
 mod gpu_common;
 
@@ -9,21 +10,26 @@ fn display_available() -> bool {
     std::env::var_os("DISPLAY").is_some() || std::env::var_os("WAYLAND_DISPLAY").is_some()
 }
 
-#[test]
-fn lab_screenshot_is_the_requested_size_and_not_blank() {
+/// Whether the window tests can run here (skipped loudly where not, unless required).
+fn window_available() -> bool {
     if !display_available() {
         assert!(
             std::env::var_os("LTC_LAB_REQUIRE_GPU").is_none(),
             "LTC_LAB_REQUIRE_GPU is set but there is no display for the lab's window (start Xvfb and set DISPLAY)"
         );
-        eprintln!(
-            "\n*** SKIPPED: no DISPLAY for the lab's window. Run under Xvfb (as .ci/run does) to test it. ***\n"
+        gpu_common::skipped(
+            "no DISPLAY for the lab's window. Run under Xvfb (as .ci/run does) to test it.",
         );
-        return;
+        return false;
     }
     // The window draws with wgpu: without an adapter it cannot open (skipped loudly there,
     // unless LTC_LAB_REQUIRE_GPU is set).
-    if gpu_common::gpu().is_none() {
+    gpu_common::gpu().is_some()
+}
+
+#[test]
+fn lab_screenshot_is_the_requested_size_and_not_blank() {
+    if !window_available() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -65,4 +71,54 @@ fn lab_screenshot_is_the_requested_size_and_not_blank() {
             "{panel}: one colour covers {most} pixels"
         );
     }
+}
+
+/// The frame log of a window with 2 000 lights: one row per UI frame, the render in flight
+/// over many of them with its count of lights rising, complete at the end, and the
+/// screenshot taken only then.
+#[test]
+fn the_frame_log_shows_the_plane_filling_in_over_frames() {
+    if !window_available() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let (shot, log) = (dir.path().join("lab.png"), dir.path().join("frames.csv"));
+    let o = Command::new(env!("CARGO_BIN_EXE_ltc-lab"))
+        .args([
+            "lab", "--panel", "plane", "--size", "640x400", "--lights", "2000",
+        ])
+        .arg("--screenshot")
+        .arg(&shot)
+        .arg("--frame-log")
+        .arg(&log)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&log).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("frame,ms,render_in_flight,lights_done,lights_total")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.iter().all(|r| r.len() == 5 && r[1] >= 0.0));
+    assert!(rows.iter().enumerate().all(|(k, r)| r[0] == k as f64));
+    let last = rows.last().unwrap();
+    assert_eq!((last[2], last[3], last[4]), (0.0, 2000.0, 2000.0));
+    // The pacer's chunks start at one light and at most double per frame: 2 000 lights
+    // take at least 11 frames in flight, each with more lights done than the one before.
+    let filling: Vec<&Vec<f64>> = rows.iter().filter(|r| r[2] == 1.0).collect();
+    assert!(
+        filling.len() >= 11,
+        "in flight for {} frames",
+        filling.len()
+    );
+    assert!(
+        rows.windows(2)
+            .all(|w| w[1][3] >= w[0][3] || w[1][3] == 0.0),
+        "the count of lights done fell mid-render"
+    );
+    assert!(shot.exists());
 }

@@ -106,7 +106,7 @@ fn pod_types_match_the_wgsl_structs() {
             lut_size_b,
             lut_base_b,
             lut_base,
-            _pad2
+            bin_row
         ),
         wgsl_layout(&module, "Params")
     );

@@ -135,6 +135,7 @@ fn fitter_on_grazing_and_alpha_min_cells_is_finite_within_its_limit() {
             let problem = CellProblem::new(lobe, i, j, &settings, &strata);
             let fit = problem.fit([1.0, 1.0, 0.0], &settings, &strata, |_, f| {
                 assert!(f.is_finite());
+                ltc_lab::ltc::nelder_mead::CONTINUE
             });
             assert!(fit.iterations <= settings.max_iterations);
             assert!(

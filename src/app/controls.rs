@@ -10,7 +10,7 @@ use crate::ltc::Normalization;
 use crate::ltc::formats;
 use crate::ltc::lut::{Lut, Table};
 use crate::render::Method;
-use crate::scene::{PRESETS, RandomLights, Scene, generate_lights, preset};
+use crate::scene::{PRESETS, Scene, preset};
 
 /// What the side panel asks of the app.
 pub enum Action {
@@ -46,7 +46,7 @@ impl Message {
 }
 
 /// The light counts the slider offers, at most (and at most what the adapter shades).
-pub const MAX_LIGHT_SLIDER: usize = 20_000;
+pub const MAX_LIGHT_SLIDER: usize = 100_000;
 
 /// The side panel; returns what the app must do beyond the state.
 pub fn show(
@@ -130,24 +130,17 @@ fn lights(ui: &mut egui::Ui, s: &mut LabState, max: usize) {
             .on_hover_text("z of the selected light; below 0 it is under the plane (clipping case 1). Shift-drag its marker for the same");
     }
     let mut count = s.light_count;
-    if ui
-        .add(egui::Slider::new(&mut count, 0..=max).logarithmic(true).text("lights"))
-        .on_hover_text("Regenerates the lights with the seeded generator (replaces the current ones): N point lights over the plane, heights 0.05–0.6")
-        .changed()
-    {
-        s.light_count = count;
-        s.scene.lights = generate_lights(
-            &RandomLights {
-                count,
-                seed: s.seed,
-                height: [0.05, 0.6],
-                intensity: [0.02, 0.08],
-                range: Some(2.0),
-            },
-            s.scene.plane.half_size,
-        );
-        s.selected_light = None;
-    }
+    ui.horizontal(|ui| {
+        if ui
+            .add(egui::Slider::new(&mut count, 0..=max).logarithmic(true).text("lights"))
+            .on_hover_text(format!("Regenerates the lights with the seeded generator (replaces the current ones): N point lights over the plane, heights 0.05–0.6, range 2, paper-100's intensities (past 100 lights scaled down so that the total power stays paper-100's). At most {max} here: {}", if max < MAX_LIGHT_SLIDER { "this adapter's limit" } else { "the slider's" }))
+            .changed()
+        {
+            s.set_light_count(count);
+        }
+    });
+    ui.checkbox(&mut s.cull, "cull by range")
+        .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. The image is the same to the bit; with short ranges it is much faster");
 }
 
 fn shading_rules(ui: &mut egui::Ui, s: &mut LabState) {

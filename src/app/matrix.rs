@@ -3,13 +3,11 @@
 //! chosen cell (click a cell to choose it); and "refit this cell", which runs the fitter live
 //! and plots the Nelder–Mead objective iteration by iteration.
 
-use std::sync::mpsc;
-
 use egui::{Color32, Vec2};
 use glam::DMat3;
 
+use crate::app::refit::Refit;
 use crate::app::state::LabState;
-use crate::ltc::fit::{CellProblem, FitSettings, FitStrata};
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut, Table, cell_theta};
 use crate::ltc::{Ltc, mat3_rows};
@@ -18,24 +16,11 @@ use crate::output::false_colour;
 /// Heat maps per row (14 channels: three rows).
 const MAPS_PER_ROW: usize = 5;
 
-/// A live refit: the objective per iteration, then the fitted lobe.
-pub struct Refit {
-    pub lobe: Lobe,
-    pub cell: (usize, usize),
-    pub history: Vec<[f64; 2]>,
-    pub result: Option<Ltc>,
-    rx: mpsc::Receiver<RefitEvent>,
-}
-
-enum RefitEvent {
-    Iteration(usize, f64),
-    Done(Ltc),
-}
-
 pub struct MatrixPanel {
     /// Each channel's heat map, made once from the LUT.
     maps: Vec<egui::ColorImage>,
     textures: Vec<Option<egui::TextureHandle>>,
+    /// A refit under way (its result goes to the lab's state).
     pub refit: Option<Refit>,
     /// The cell nearest the chosen (θo, α) at the last frame.
     pub current_cell: (usize, usize),
@@ -73,14 +58,25 @@ impl MatrixPanel {
     }
 
     /// The refitted lobe, while the chosen cell is the one refitted.
-    pub fn refit_ltc(&self) -> Option<(Lobe, Ltc)> {
-        let r = self.refit.as_ref()?;
-        (r.cell == self.current_cell).then_some(())?;
-        r.result.map(|ltc| (r.lobe, ltc))
+    pub fn refit_ltc(&self, s: &LabState) -> Option<(Lobe, Ltc)> {
+        let r = s.refit.as_ref()?;
+        (r.cell == self.current_cell).then(|| (r.lobe, r.ltc()))
+    }
+
+    /// Whether a refit is under way.
+    pub fn busy(&self) -> bool {
+        self.refit.is_some()
     }
 
     pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
-        self.poll_refit(ui.ctx());
+        if let Some(r) = &mut self.refit {
+            if let Some(result) = r.poll() {
+                s.refit = Some(result);
+                self.refit = None;
+            } else {
+                ui.ctx().request_repaint();
+            }
+        }
         let n = lut.size;
         let theta = s.theta_o_deg.to_radians().min(crate::ltc::lut::THETA_MAX);
         let (u, v) = (s.alpha().sqrt(), (1.0 - theta.cos()).max(0.0).sqrt());
@@ -149,32 +145,7 @@ impl MatrixPanel {
                     .on_hover_text("The shipped tables at this (θo, α): ltc_code's classic fit and the point-light fit (luts/ltc_point.exr)");
                 }
             });
-            ui.horizontal(|ui| {
-                let busy = self.refit.as_ref().is_some_and(|r| r.result.is_none());
-                if ui
-                    .add_enabled(!busy, egui::Button::new("refit this cell"))
-                    .on_hover_text("Runs ltc_code's fit (Nelder–Mead, 32×32 strata from both distributions, |·|³ error) on the nearest cell from the identity, live")
-                    .clicked()
-                {
-                    self.start_refit(s.lobe, self.current_cell, lut);
-                }
-                if let Some(r) = &self.refit {
-                    ui.label(match (r.result, r.history.last()) {
-                        (Some(_), Some(last)) => format!("refit ({}, {}): {} iterations, objective {:.3e}", r.cell.0, r.cell.1, r.history.len(), last[1]),
-                        (None, _) => format!("fitting… iteration {}", r.history.len()),
-                        _ => String::new(),
-                    });
-                }
-            });
-            if let Some(r) = &self.refit {
-                let points: Vec<[f64; 2]> = r.history.iter().map(|&[i, f]| [i, f.max(1e-300).log10()]).collect();
-                egui_plot::Plot::new("nelder-mead")
-                    .height(90.0)
-                    .x_axis_label("iteration")
-                    .y_axis_label("log10 objective")
-                    .allow_scroll(false)
-                    .show(ui, |p| p.line(egui_plot::Line::new("objective", points)));
-            }
+            self.refit_controls(ui, s, lut);
             ui.separator();
             self.heat_maps(ui, s, lut, (u, v));
         });
@@ -222,48 +193,95 @@ impl MatrixPanel {
         }
     }
 
-    fn start_refit(&mut self, lobe: Lobe, (i, j): (usize, usize), lut: &Lut) {
-        let (tx, rx) = mpsc::channel();
-        let settings = FitSettings {
-            size: lut.size,
-            alpha_min: lut.alpha_min,
-            ..FitSettings::default()
-        };
-        std::thread::spawn(move || {
-            let strata = FitStrata::new(&settings);
-            let problem = CellProblem::new(lobe, i, j, &settings, &strata);
-            let fit = problem.fit([1.0, 1.0, 0.0], &settings, &strata, |k, f| {
-                let _ = tx.send(RefitEvent::Iteration(k, f));
-            });
-            let _ = tx.send(RefitEvent::Done(fit.ltc));
-        });
-        self.refit = Some(Refit {
-            lobe,
-            cell: (i, j),
-            history: Vec::new(),
-            result: None,
-            rx,
-        });
-    }
-
-    fn poll_refit(&mut self, ctx: &egui::Context) {
-        let Some(r) = &mut self.refit else { return };
-        while let Ok(e) = r.rx.try_recv() {
-            match e {
-                RefitEvent::Iteration(k, f) => r.history.push([k as f64, f]),
-                RefitEvent::Done(ltc) => r.result = Some(ltc),
+    /// The refit's button, its progress and cancel, then the result: stored and refitted
+    /// matrices and errors side by side, and the objective per iteration.
+    fn refit_controls(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
+        ui.horizontal_wrapped(|ui| {
+            match &self.refit {
+                Some(r) => {
+                    ui.add(egui::ProgressBar::new(r.progress()).desired_width(80.0))
+                        .on_hover_text("Iterations used of the fitter's limit");
+                    ui.small(format!("refitting cell ({}, {})… iteration {}", r.cell.0, r.cell.1, r.history.len()));
+                    if ui.small_button("cancel").on_hover_text("Stop the fit at its next iteration").clicked() {
+                        r.cancel();
+                    }
+                }
+                None => {
+                    if ui
+                        .button("refit this cell")
+                        .on_hover_text("Runs ltc_code's fit (Nelder–Mead, 32×32 strata from both distributions, |·|³ error) on the nearest cell, from the stored cell's parameters, live; then compares stored and refitted lobes by their pointwise error")
+                        .clicked()
+                    {
+                        self.refit = Some(Refit::start(s.lobe, self.current_cell, lut));
+                    }
+                }
             }
-        }
-        if r.result.is_none() {
-            ctx.request_repaint();
-        }
+        });
+        let Some(r) = s
+            .refit
+            .as_ref()
+            .filter(|r| r.cell == self.current_cell && r.lobe == s.lobe)
+        else {
+            if let Some(r) = &s.refit {
+                ui.small(format!(
+                    "(last refit: cell ({}, {}), {} lobe)",
+                    r.cell.0,
+                    r.cell.1,
+                    r.lobe.name()
+                ));
+            }
+            return;
+        };
+        ui.horizontal(|ui| {
+            matrix(
+                ui,
+                "stored M^-1 (÷ middle)",
+                crate::ltc::mat3_from_rows(r.stored),
+                "The table's cell as stored",
+            );
+            matrix(
+                ui,
+                "refitted M^-1 (÷ middle)",
+                crate::ltc::mat3_from_rows(r.cos_from_brdf),
+                "The refit's result",
+            );
+        });
+        let how = if r.cancelled {
+            "cancelled"
+        } else if r.converged {
+            "converged"
+        } else {
+            "stopped at the iteration limit"
+        };
+        ui.label(format!(
+            "pointwise error: stored {:.2}%, refitted {:.2}% — {} iterations, {how}",
+            100.0 * r.stored_error,
+            100.0 * r.error,
+            r.iterations
+        ))
+        .on_hover_text("∫|n·D − f·cos| / ∫ f·cos (DESIGN §4), both measured with 64² strata from both distributions");
+        let points: Vec<[f64; 2]> = r
+            .history
+            .iter()
+            .map(|&[i, f]| [i, f.max(1e-300).log10()])
+            .collect();
+        egui_plot::Plot::new("nelder-mead")
+            .height(90.0)
+            .x_axis_label("iteration")
+            .y_axis_label("log10 objective")
+            .allow_scroll(false)
+            .show(ui, |p| p.line(egui_plot::Line::new("objective", points)));
     }
 
     /// Blocks until a running refit is done (tests).
-    pub fn wait_for_refit(&mut self, ctx: &egui::Context) {
-        while self.refit.as_ref().is_some_and(|r| r.result.is_none()) {
-            std::thread::sleep(std::time::Duration::from_millis(5));
-            self.poll_refit(ctx);
+    pub fn wait_for_refit(&mut self, s: &mut LabState) {
+        while let Some(r) = &mut self.refit {
+            if let Some(result) = r.poll() {
+                s.refit = Some(result);
+                self.refit = None;
+            } else {
+                std::thread::sleep(std::time::Duration::from_millis(5));
+            }
         }
     }
 }

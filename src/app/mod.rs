@@ -4,16 +4,21 @@
 
 pub mod chart;
 pub mod clipping;
+pub mod completion;
 pub mod controls;
+pub mod display;
 pub mod lobe;
 pub mod matrix;
+pub mod measure;
+pub mod pacer;
 pub mod plane;
+pub mod refit;
 pub mod screenshot;
 pub mod shading;
 pub mod state;
 
 pub use controls::Message;
-pub use screenshot::{PendingScreenshot, ScreenshotApp};
+pub use screenshot::{PendingScreenshot, ScreenshotApp, Settling};
 pub use state::{ClipScene, LabState, PanelId};
 
 use crate::ltc::lut::Lut;
@@ -38,11 +43,13 @@ pub struct LabApp {
 const STORAGE_KEY: &str = "ltc-lab-state";
 
 impl LabApp {
-    pub fn new(state: LabState) -> Self {
+    /// The lab drawing with the window's wgpu device (`render_state`: eframe's, or a test
+    /// harness's); without one, the plane is drawn by the CPU reference.
+    pub fn new(state: LabState, render_state: Option<&egui_wgpu::RenderState>) -> Self {
         // The chosen shipped table; a persisted `lut_path` is loaded again only on request,
         // so a file that vanished since cannot stop the lab from starting.
         let lut = Lut::shipped(state.table).clone();
-        let shading = shading::Shading::new(&lut);
+        let shading = shading::Shading::new(&lut, render_state);
         Self {
             state,
             lobe: lobe::LobePanel,
@@ -64,7 +71,13 @@ impl LabApp {
             .and_then(|s| eframe::get_value::<LabState>(s, STORAGE_KEY))
             .filter(|s| s.scene.validate().is_ok())
             .unwrap_or_default();
-        Self::new(state)
+        Self::new(state, cc.wgpu_render_state.as_ref())
+    }
+
+    /// Whether anything is still being computed for the window: the plane's render, a
+    /// measurement, a refit (a screenshot waits for none of them to be in flight).
+    pub fn busy(&self) -> bool {
+        self.shading.in_flight() || self.chart.busy() || self.matrix.busy()
     }
 
     /// The whole window: the side panel, then the panels (one maximised, or all in a grid).
@@ -145,13 +158,8 @@ impl LabApp {
             match id {
                 PanelId::Lobe => {
                     let other = Lut::shipped(self.state.table.other());
-                    self.lobe.show(
-                        ui,
-                        &mut self.state,
-                        &self.lut,
-                        self.matrix.refit_ltc(),
-                        other,
-                    );
+                    let refit = self.matrix.refit_ltc(&self.state);
+                    self.lobe.show(ui, &mut self.state, &self.lut, refit, other);
                 }
                 PanelId::Matrix => self.matrix.show(ui, &mut self.state, &self.lut),
                 PanelId::Plane => {
@@ -159,7 +167,9 @@ impl LabApp {
                         .show(ui, &mut self.state, &mut self.shading, &self.lut);
                 }
                 PanelId::Clipping => self.clipping.show(ui, &mut self.state, &self.lut),
-                PanelId::Chart => self.chart.show(ui, &self.state, &self.lut),
+                PanelId::Chart => self
+                    .chart
+                    .show(ui, &mut self.state, &self.lut, &self.shading),
             }
         });
     }
@@ -169,8 +179,9 @@ impl LabApp {
         match action {
             controls::Action::UseLut(lut) => self.use_lut(lut),
             controls::Action::SaveExr(path) => {
+                let exposure = self.state.scene.exposure;
                 self.message = Some(
-                    match self.plane.save_exr(&path, self.state.scene.exposure) {
+                    match plane::PlanePanel::save_exr(&self.shading, &path, exposure) {
                         Ok(()) => Message::note(format!("saved {}", path.display())),
                         Err(e) => Message::error(e),
                     },
@@ -186,7 +197,6 @@ impl LabApp {
     fn use_lut(&mut self, lut: Lut) {
         self.shading.set_lut(&lut);
         self.matrix = matrix::MatrixPanel::new(&lut);
-        self.plane.invalidate();
         self.clipping = clipping::ClippingPanel::default();
         self.lut = lut;
     }
@@ -201,6 +211,16 @@ impl LabApp {
             Err(e) => Message::error(e),
         });
         self.screenshot = None;
+    }
+}
+
+impl Settling for LabApp {
+    fn busy(&self) -> bool {
+        LabApp::busy(self)
+    }
+
+    fn progress(&self) -> (usize, usize) {
+        (self.shading.progress.done, self.shading.progress.total)
     }
 }
 

@@ -58,12 +58,54 @@ impl PendingScreenshot {
 /// sizes on the first frame and draws on the second).
 pub const SCREENSHOT_AFTER_FRAMES: u32 = 4;
 
-/// `ltc-lab lab --screenshot`: shows `app` for a few frames, saves the window to `path` and
-/// closes it; the outcome is left in `result` for the command line.
+/// How long the screenshot waits for the window's work to finish before it gives up: a
+/// 20 000-light plane fills in under a minute on a CPU driver; ten leave room for a slow one.
+pub const SETTLE_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(600);
+
+/// What the screenshot mode asks of the app it shows.
+pub trait Settling {
+    /// Whether anything is still being computed for the window.
+    fn busy(&self) -> bool;
+    /// The plane's render: entries summed and their total (for the frame log).
+    fn progress(&self) -> (usize, usize);
+}
+
+/// One row of the frame log.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameRecord {
+    pub frame: usize,
+    /// Wall-clock milliseconds since the previous UI frame began (the first: since start).
+    pub ms: f64,
+    pub render_in_flight: bool,
+    pub lights_done: usize,
+    pub lights_total: usize,
+}
+
+/// The frame log as CSV: `frame,ms,render_in_flight,lights_done,lights_total`.
+pub fn frame_log_csv(records: &[FrameRecord]) -> String {
+    let mut out = String::from("frame,ms,render_in_flight,lights_done,lights_total\n");
+    for r in records {
+        out.push_str(&format!(
+            "{},{:.3},{},{},{}\n",
+            r.frame,
+            r.ms,
+            u8::from(r.render_in_flight),
+            r.lights_done,
+            r.lights_total
+        ));
+    }
+    out
+}
+
+/// `ltc-lab lab --screenshot`: shows `app` until its work is done (at least a few frames),
+/// saves the window to `path` and closes it; the outcome is left in `result`, and every UI
+/// frame in `frames` for the frame log.
 pub struct ScreenshotApp<A> {
     pub app: A,
     pending: PendingScreenshot,
-    frames: u32,
+    started: std::time::Instant,
+    last_frame: Option<std::time::Instant>,
+    pub frames: Arc<Mutex<Vec<FrameRecord>>>,
     pub result: Arc<Mutex<Option<Result<(), String>>>>,
 }
 
@@ -72,18 +114,47 @@ impl<A> ScreenshotApp<A> {
         Self {
             app,
             pending: PendingScreenshot::new(path),
-            frames: 0,
+            started: std::time::Instant::now(),
+            last_frame: None,
+            frames: Arc::default(),
             result: Arc::default(),
         }
     }
 }
 
-impl<A: eframe::App> eframe::App for ScreenshotApp<A> {
+impl<A: eframe::App + Settling> eframe::App for ScreenshotApp<A> {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let now = std::time::Instant::now();
+        let ms = now
+            .duration_since(self.last_frame.unwrap_or(self.started))
+            .as_secs_f64()
+            * 1e3;
+        self.last_frame = Some(now);
         self.app.ui(ui, frame);
         let ctx = ui.ctx().clone();
-        self.frames += 1;
-        if self.frames >= SCREENSHOT_AFTER_FRAMES
+        let (lights_done, lights_total) = self.app.progress();
+        let busy = self.app.busy();
+        let count = {
+            let mut frames = self.frames.lock().expect("not poisoned");
+            let record = FrameRecord {
+                frame: frames.len(),
+                ms,
+                render_in_flight: busy,
+                lights_done,
+                lights_total,
+            };
+            frames.push(record);
+            frames.len()
+        };
+        let timed_out = self.started.elapsed() > SETTLE_TIMEOUT;
+        if timed_out && busy {
+            *self.result.lock().expect("not poisoned") = Some(Err(format!(
+                "the window was still busy after {} s",
+                SETTLE_TIMEOUT.as_secs()
+            )));
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        } else if count >= SCREENSHOT_AFTER_FRAMES as usize
+            && !busy
             && let Some(outcome) = self.pending.poll(&ctx)
         {
             *self.result.lock().expect("not poisoned") = Some(outcome.map(|_| ()));

@@ -1,56 +1,191 @@
-//! The lab's renderer: the GPU plane shader on the lab's own headless device, read back into
-//! a `Frame`, or — where no adapter exists — the CPU reference at a smaller size, with the
-//! reason kept for the window to show.
+//! The lab's renderer: the GPU plane shader on the window's own device, summed across frames
+//! in chunks that fit a time budget, shown straight from the GPU (tone-mapped there, never
+//! read back); or — where the window has no wgpu device — the CPU reference at a smaller size
+//! on a worker thread. The UI thread never waits for a render.
 
+use std::sync::Arc;
+use std::sync::mpsc;
+use std::time::Instant;
+
+use crate::app::completion::{Chunk, Completion};
+use crate::app::display::ShownImage;
+use crate::app::pacer::Pacer;
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
+use crate::gpu::display::DisplayPass;
+use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
 use crate::ltc::lut::Lut;
-use crate::render::{Frame, Method, RenderSettings};
+use crate::render::{Frame, FrameKind, RenderSettings, Tables, View};
 use crate::scene::Scene;
 
-pub struct Shading {
-    gpu: Option<(GpuContext, PlaneRenderer)>,
-    /// The table both paths shade with.
-    lut: Lut,
-    /// Why the GPU is not used, for the window.
-    pub gpu_error: Option<String>,
-}
+/// GPU milliseconds a frame may spend on the plane: half a 60 Hz frame, leaving the other
+/// half to egui's own drawing (and, on a CPU driver, to the UI thread's share of the cores).
+pub const DEFAULT_BUDGET_MS: f64 = 8.0;
 
 /// The largest side the CPU fallback renders: the f64 reference shades ~1e8 light-pixels/s
 /// on two cores, so 320 px keeps 100 lights interactive.
 pub const CPU_FALLBACK_SIDE: usize = 320;
 
-/// One rendered view and how it was made.
-pub struct Shaded {
-    pub frame: Frame,
-    /// GPU milliseconds of the pass (timestamp queries or wall clock), `None` on the CPU.
-    pub gpu_ms: Option<f64>,
+/// The window's wgpu set-up: the default one (`WGPU_BACKEND` honoured) asking the device for
+/// what the plane's renderer uses — timestamp queries for its budget, f16 shaders, the
+/// adapter's own limits for the largest light buffer (`gpu::device_descriptor`).
+pub fn wgpu_setup() -> egui_wgpu::WgpuSetup {
+    let mut setup = egui_wgpu::WgpuSetupCreateNew::without_display_handle();
+    setup.device_descriptor = Arc::new(crate::gpu::device_descriptor);
+    setup.into()
+}
+
+/// What a render depends on: a change of any of these restarts it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderKey {
+    pub scene: Scene,
+    pub settings: RenderSettings,
+}
+
+/// What a chunk does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Work {
+    Bin,
+    Shade,
+}
+
+/// How far the current render is.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Progress {
+    /// While the tile lists are being made (culling): how far, 0 to 1.
+    pub binning: Option<f32>,
+    /// Entries of each pixel's light list summed so far, of `total` (every light).
+    pub done: usize,
+    pub total: usize,
+    /// GPU milliseconds spent on it so far (timestamp queries; 0 without them).
+    pub gpu_ms: f64,
+    /// UI frames it has taken so far.
+    pub frames: usize,
+}
+
+impl Progress {
+    pub fn complete(&self) -> bool {
+        self.done >= self.total
+    }
+
+    /// "3 200 / 20 000 lights, 16%" (or "binning lights into tiles: 40%").
+    pub fn describe(&self) -> String {
+        if let Some(b) = self.binning {
+            return format!("binning lights into tiles: {:.0}%", 100.0 * b);
+        }
+        let percent = if self.total > 0 {
+            100.0 * self.done as f64 / self.total as f64
+        } else {
+            100.0
+        };
+        format!(
+            "{} / {} lights, {percent:.0}%",
+            thousands(self.done),
+            thousands(self.total)
+        )
+    }
+}
+
+/// A count with thin spaces between thousands.
+pub fn thousands(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (k, c) in digits.chars().enumerate() {
+        if k > 0 && (digits.len() - k).is_multiple_of(3) {
+            out.push('\u{2009}');
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// Whether the next chunk may go (tests hold a render back with it; see `Shading::gate`).
+pub type Gate = Arc<dyn Fn() -> bool + Send + Sync>;
+
+pub struct Shading {
+    gpu: Option<GpuShading>,
+    cpu: Option<CpuShading>,
+    /// The tables both paths shade with (A, and B where two are compared).
+    lut: Lut,
+    lut_b: Option<Lut>,
+    /// Why the GPU is not used, for the window.
+    pub gpu_error: Option<String>,
+    pub budget_ms: f64,
+    /// Held closed, no chunk is dispatched: the render stays in flight (tests).
+    pub gate: Option<Gate>,
+    key: Option<RenderKey>,
+    pub progress: Progress,
+    /// An error of the last render, shown over the image.
+    pub error: Option<String>,
+}
+
+/// The plane on the window's device.
+struct GpuShading {
+    ctx: GpuContext,
+    renderer: PlaneRenderer,
+    display: DisplayPass,
+    egui: egui_wgpu::RenderState,
+    texture: Option<egui::TextureId>,
+    /// When the last chunk's work was done, by the wall clock (made with the first chunk,
+    /// which brings the window to wake).
+    completion: Option<Completion>,
+    /// Whether chunks are paced on timestamp queries (a discrete or integrated GPU that has
+    /// them) or on the wall clock (a CPU driver, or no queries).
+    paced_on_timestamps: bool,
+    /// Sizes the chunks of lights and of binning from their times.
+    shade_pacer: Pacer,
+    bin_pacer: Pacer,
+    /// The chunk in flight, if any.
+    in_flight: Option<InFlight>,
+    /// How the shown image was last made from the sums (a change re-encodes it).
+    shown: Option<(FrameKind, f64)>,
+}
+
+/// A chunk submitted and not yet timed.
+struct InFlight {
+    work: Work,
+    /// Its size, for its pacer: tile rows or list entries.
+    units: usize,
+    /// Submission to completion, once the waiter has seen it done.
+    wall_ms: Option<f64>,
+    /// Whether it belongs to a render since restarted (its time says nothing of the new one).
+    stale: bool,
+}
+
+/// The CPU reference on a worker thread, where there is no GPU.
+struct CpuShading {
+    rx: Option<mpsc::Receiver<Frame>>,
+    texture: Option<egui::TextureHandle>,
 }
 
 impl Shading {
-    pub fn new(lut: &Lut) -> Self {
-        let gpu = GpuContext::new().and_then(|ctx| {
-            let renderer = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked)?;
-            Ok((ctx, renderer))
-        });
-        match gpu {
-            Ok(gpu) => Self {
-                gpu: Some(gpu),
-                lut: lut.clone(),
-                gpu_error: None,
-            },
-            Err(e) => Self {
-                gpu: None,
-                lut: lut.clone(),
-                gpu_error: Some(e.to_string()),
-            },
+    /// The lab's renderer on the window's device (`render_state`), or the CPU without one.
+    pub fn new(lut: &Lut, render_state: Option<&egui_wgpu::RenderState>) -> Self {
+        let (gpu, gpu_error) = match render_state.map(|rs| GpuShading::new(rs, lut)) {
+            Some(Ok(g)) => (Some(g), None),
+            Some(Err(e)) => (None, Some(e)),
+            None => (None, Some("the window draws without wgpu".to_string())),
+        };
+        Self {
+            cpu: gpu.is_none().then_some(CpuShading {
+                rx: None,
+                texture: None,
+            }),
+            gpu,
+            lut: lut.clone(),
+            lut_b: None,
+            gpu_error,
+            budget_ms: DEFAULT_BUDGET_MS,
+            gate: None,
+            key: None,
+            progress: Progress::default(),
+            error: None,
         }
     }
 
     /// The device in words, or why there is none.
     pub fn describe(&self) -> String {
         match (&self.gpu, &self.gpu_error) {
-            (Some((ctx, _)), _) => ctx.describe(),
+            (Some(g), _) => g.ctx.describe(),
             (None, Some(e)) => format!("no GPU: {e}"),
             (None, None) => "no GPU".into(),
         }
@@ -60,73 +195,354 @@ impl Shading {
         self.gpu.is_some()
     }
 
-    /// Shades with another table from now on (on the CPU where the GPU cannot hold it).
+    /// The device, for other panels that measure on it (the chart).
+    pub fn context(&self) -> Option<&GpuContext> {
+        self.gpu.as_ref().map(|g| &g.ctx)
+    }
+
+    /// Shades with another table A from now on: its buffer rewritten, pipelines kept.
     pub fn set_lut(&mut self, lut: &Lut) {
-        if let Some((ctx, renderer)) = &mut self.gpu {
-            match PlaneRenderer::new(ctx, lut, ShaderChecks::Checked) {
-                Ok(r) => *renderer = r,
-                Err(e) => {
-                    self.gpu = None;
-                    self.gpu_error = Some(e.to_string());
-                }
-            }
+        if let Some(g) = &mut self.gpu
+            && let Err(e) = g.renderer.set_lut(&g.ctx, lut)
+        {
+            self.error = Some(e.to_string());
         }
         self.lut = lut.clone();
+        self.key = None;
+    }
+
+    /// Table B, which method B shades with when two tables are compared.
+    pub fn set_lut_b(&mut self, lut_b: Option<&Lut>) {
+        if let Some(g) = &mut self.gpu
+            && let Err(e) = g.renderer.set_lut_b(&g.ctx, lut_b)
+        {
+            self.error = Some(e.to_string());
+        }
+        self.lut_b = lut_b.cloned();
+        self.key = None;
     }
 
     /// The GPU's light limit, or the scene limit on the CPU.
     pub fn max_lights(&self) -> usize {
-        self.gpu
-            .as_ref()
-            .map_or(crate::scene::MAX_LIGHTS, |(ctx, _)| {
-                PlaneRenderer::max_lights(ctx)
-            })
+        self.gpu.as_ref().map_or(crate::scene::MAX_LIGHTS, |g| {
+            PlaneRenderer::max_lights(&g.ctx)
+        })
     }
 
-    /// Renders `settings` (the CPU draws the literal form of each method, at most
-    /// `CPU_FALLBACK_SIDE` pixels wide).
-    pub fn render(&mut self, scene: &Scene, settings: &RenderSettings) -> Result<Shaded, String> {
-        match &mut self.gpu {
-            Some((ctx, renderer)) => {
-                let (frame, ms) = renderer
-                    .render(ctx, scene, settings)
-                    .map_err(|e| e.to_string())?;
-                Ok(Shaded {
-                    frame,
-                    gpu_ms: Some(ms),
-                })
-            }
-            None => {
-                let scale = (CPU_FALLBACK_SIDE as f64 / settings.width.max(settings.height) as f64)
-                    .min(1.0);
-                let s = RenderSettings {
-                    width: ((settings.width as f64 * scale).round() as usize).max(1),
-                    height: ((settings.height as f64 * scale).round() as usize).max(1),
-                    ..*settings
+    /// Forgets the current render, so that the next frame starts it again.
+    pub fn invalidate(&mut self) {
+        self.key = None;
+    }
+
+    /// One frame's share of the render of `scene` as `settings` says: restarted when either
+    /// changed, then one chunk within the budget if the last one is done. Never waits.
+    pub fn update(
+        &mut self,
+        ui: &egui::Context,
+        scene: &Scene,
+        settings: &RenderSettings,
+    ) -> ShownImage {
+        let key = RenderKey {
+            // Exposure is applied when the image is shown: it does not restart the sums.
+            scene: Scene {
+                exposure: 1.0,
+                ..scene.clone()
+            },
+            settings: *settings,
+        };
+        let restart = self.key.as_ref() != Some(&key);
+        let kind = if settings.view == View::Diff {
+            FrameKind::RelativeDifference
+        } else {
+            FrameKind::Radiance
+        };
+        if let Some(g) = &mut self.gpu {
+            if restart {
+                self.error = g.begin(&key).err();
+                self.progress = Progress {
+                    total: g.renderer.light_count(),
+                    binning: g.renderer.binning_progress(),
+                    ..Progress::default()
                 };
-                Ok(Shaded {
-                    frame: crate::cpu::render(scene, &self.lut, &s),
-                    gpu_ms: None,
-                })
+                self.key = Some(key);
             }
+            let gate_open = self.gate.as_ref().is_none_or(|open| open());
+            let ready = g.ready(&mut self.progress);
+            if self.error.is_none() && !self.progress.complete() && gate_open && ready {
+                g.chunk(ui, &mut self.progress, self.budget_ms, kind, scene.exposure);
+            }
+            if !self.progress.complete() || g.in_flight.is_some() {
+                ui.request_repaint();
+            }
+            g.show(kind, scene.exposure);
+            return ShownImage {
+                texture: g.texture,
+                size: (settings.width, settings.height),
+            };
+        }
+        let cpu = self.cpu.as_mut().expect("one path or the other");
+        if restart {
+            let tables = (self.lut.clone(), self.lut_b.clone());
+            cpu.start(ui, key.scene.clone(), settings, tables);
+            self.progress = Progress {
+                total: scene.lights.len(),
+                ..Progress::default()
+            };
+            self.key = Some(key);
+        }
+        if cpu.collect(ui, scene.exposure) {
+            self.progress.done = self.progress.total;
+        } else {
+            ui.request_repaint();
+        }
+        ShownImage {
+            texture: cpu.texture.as_ref().map(egui::TextureHandle::id),
+            size: (settings.width, settings.height),
         }
     }
 
-    /// GPU milliseconds of one method alone on `scene` (median of `frames`, after the
-    /// pipeline's first use), for the live per-method times; `None` without a GPU.
-    pub fn time_method(
+    /// What the current render shades (its scene and settings), once one has started.
+    pub fn key(&self) -> Option<&RenderKey> {
+        self.key.as_ref()
+    }
+
+    /// Whether the current render is still being summed.
+    pub fn in_flight(&self) -> bool {
+        !self.progress.complete()
+    }
+
+    /// The finished image, read back (for saving an EXR); `None` while in flight.
+    pub fn read(&self) -> Option<Frame> {
+        if self.in_flight() {
+            return None;
+        }
+        self.gpu.as_ref().map(|g| g.renderer.read(&g.ctx))
+    }
+}
+
+impl GpuShading {
+    fn new(rs: &egui_wgpu::RenderState, lut: &Lut) -> Result<Self, String> {
+        let ctx =
+            GpuContext::from_parts(rs.device.clone(), rs.queue.clone(), rs.adapter.get_info());
+        let renderer =
+            PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
+        Ok(Self {
+            display: DisplayPass::new(&ctx),
+            completion: None,
+            paced_on_timestamps: renderer.timed() && ctx.info.device_type != wgpu::DeviceType::Cpu,
+            ctx,
+            renderer,
+            egui: rs.clone(),
+            texture: None,
+            shade_pacer: Pacer::default(),
+            bin_pacer: Pacer::default(),
+            in_flight: None,
+            shown: None,
+        })
+    }
+
+    fn begin(&mut self, key: &RenderKey) -> Result<(), String> {
+        // A new render's cost per light may be anything: its chunks start small again.
+        self.shade_pacer = Pacer::default();
+        self.bin_pacer = Pacer::default();
+        if let Some(chunk) = &mut self.in_flight {
+            chunk.stale = true;
+        }
+        self.renderer
+            .begin(&self.ctx, &key.scene, &key.settings)
+            .map_err(|e| e.to_string())
+    }
+
+    /// Whether the last chunk's work is done and its time taken (into the progress and its
+    /// pacer); polls the device, never waits.
+    fn ready(&mut self, progress: &mut Progress) -> bool {
+        // Runs the timestamp read-back's callback, if one is pending.
+        let _ = self.ctx.device.poll(wgpu::PollType::Poll);
+        let Some(chunk) = &mut self.in_flight else {
+            return true;
+        };
+        if chunk.wall_ms.is_none() {
+            match self
+                .completion
+                .as_ref()
+                .map_or(Chunk::Idle, Completion::take)
+            {
+                Chunk::InFlight => return false,
+                Chunk::Done { ms } => chunk.wall_ms = Some(ms),
+                Chunk::Idle => chunk.wall_ms = Some(0.0),
+            }
+        }
+        let wall_ms = chunk.wall_ms.unwrap_or(0.0);
+        let times = if self.paced_on_timestamps {
+            match self.renderer.try_times() {
+                Some(t) => t,
+                // The timestamps follow the work: a frame or so later.
+                None => return false,
+            }
+        } else {
+            // Drops any timestamps read, so that they do not pile up.
+            let _ = self.renderer.try_times();
+            match chunk.work {
+                Work::Bin => FrameTimes {
+                    bin_ms: Some(wall_ms),
+                    shade_ms: 0.0,
+                },
+                Work::Shade => FrameTimes {
+                    bin_ms: None,
+                    shade_ms: wall_ms,
+                },
+            }
+        };
+        if chunk.stale {
+            self.in_flight = None;
+            return true;
+        }
+        progress.gpu_ms += times.total_ms();
+        match chunk.work {
+            Work::Bin => self
+                .bin_pacer
+                .record(chunk.units, times.bin_ms.unwrap_or(times.shade_ms)),
+            Work::Shade => self.shade_pacer.record(chunk.units, times.shade_ms),
+        }
+        self.in_flight = None;
+        true
+    }
+
+    /// Dispatches the next chunk within the budget: a band of tile rows while the lists are
+    /// being made, else entries of every pixel's list (and the image shown from them).
+    fn chunk(
         &mut self,
-        scene: &Scene,
+        window: &egui::Context,
+        progress: &mut Progress,
+        budget_ms: f64,
+        kind: FrameKind,
+        exposure: f64,
+    ) {
+        let submitted = Instant::now();
+        let (work, units) = if self.renderer.binning_progress().is_some() {
+            let rows = self.bin_pacer.next(budget_ms);
+            self.renderer.bin_step(&self.ctx, rows);
+            (Work::Bin, rows)
+        } else {
+            let end = (progress.done + self.shade_pacer.next(budget_ms)).min(progress.total);
+            self.renderer.step(&self.ctx, progress.done..end);
+            self.encode_display(kind, exposure);
+            let units = end - progress.done;
+            progress.done = end;
+            (Work::Shade, units)
+        };
+        // An empty submission's index stands for all the work before it.
+        let index = self.ctx.queue.submit([]);
+        let device = &self.ctx.device;
+        self.completion
+            .get_or_insert_with(|| Completion::new(device.clone(), window.clone()))
+            .submitted(index, submitted);
+        self.in_flight = Some(InFlight {
+            work,
+            units,
+            wall_ms: None,
+            stale: false,
+        });
+        progress.binning = self.renderer.binning_progress();
+        progress.frames += 1;
+    }
+
+    /// Re-encodes the shown image where it was made otherwise (the exposure changed).
+    fn show(&mut self, kind: FrameKind, exposure: f64) {
+        if self.shown != Some((kind, exposure)) {
+            self.encode_display(kind, exposure);
+        }
+    }
+
+    fn encode_display(&mut self, kind: FrameKind, exposure: f64) {
+        let Some(image) = self.renderer.output() else {
+            return;
+        };
+        let size = image.texture().size();
+        let (view, fresh) = self.display.target(&self.ctx, (size.width, size.height));
+        if fresh || self.texture.is_none() {
+            let mut egui = self.egui.renderer.write();
+            self.texture = Some(match self.texture {
+                Some(id) => {
+                    egui.update_egui_texture_from_wgpu_texture(
+                        &self.ctx.device,
+                        view,
+                        wgpu::FilterMode::Linear,
+                        id,
+                    );
+                    id
+                }
+                None => {
+                    egui.register_native_texture(&self.ctx.device, view, wgpu::FilterMode::Linear)
+                }
+            });
+        }
+        let mut encoder = self
+            .ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("display"),
+            });
+        self.display
+            .encode(&self.ctx, &mut encoder, image, kind, exposure);
+        self.ctx.queue.submit([encoder.finish()]);
+        self.shown = Some((kind, exposure));
+    }
+}
+
+impl CpuShading {
+    /// Starts the CPU render at a reduced size on a worker thread (a stale one's result is
+    /// dropped: only the newest receiver is read).
+    fn start(
+        &mut self,
+        ui: &egui::Context,
+        scene: Scene,
         settings: &RenderSettings,
-        method: Method,
-        frames: usize,
-    ) -> Option<f64> {
-        let (ctx, renderer) = self.gpu.as_mut()?;
-        renderer.begin(ctx, scene, &settings.alone(method)).ok()?;
-        let mut ms: Vec<f64> = (0..frames.max(1))
-            .map(|_| renderer.run(ctx).total_ms())
-            .collect();
-        ms.sort_by(f64::total_cmp);
-        Some(ms[ms.len() / 2])
+        (lut, lut_b): (Lut, Option<Lut>),
+    ) {
+        let scale =
+            (CPU_FALLBACK_SIDE as f64 / settings.width.max(settings.height) as f64).min(1.0);
+        let s = RenderSettings {
+            width: ((settings.width as f64 * scale).round() as usize).max(1),
+            height: ((settings.height as f64 * scale).round() as usize).max(1),
+            ..*settings
+        };
+        let (tx, rx) = mpsc::channel();
+        let repaint = ui.clone();
+        std::thread::spawn(move || {
+            let tables = Tables {
+                a: &lut,
+                b: lut_b.as_ref().unwrap_or(&lut),
+            };
+            let _ = tx.send(crate::cpu::render(&scene, tables, &s));
+            repaint.request_repaint();
+        });
+        self.rx = Some(rx);
+    }
+
+    /// Takes a finished render into the texture; whether the current one is done.
+    fn collect(&mut self, ui: &egui::Context, exposure: f64) -> bool {
+        let Some(rx) = &self.rx else {
+            return true;
+        };
+        match rx.try_recv() {
+            Ok(frame) => {
+                let image = crate::app::display::frame_image(&frame, exposure);
+                match &mut self.texture {
+                    Some(t) => t.set(image, egui::TextureOptions::LINEAR),
+                    None => {
+                        self.texture =
+                            Some(ui.load_texture("plane", image, egui::TextureOptions::LINEAR));
+                    }
+                }
+                self.rx = None;
+                true
+            }
+            Err(mpsc::TryRecvError::Empty) => false,
+            Err(mpsc::TryRecvError::Disconnected) => {
+                self.rx = None;
+                true
+            }
+        }
     }
 }

@@ -8,6 +8,10 @@ use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::render::{Method, View};
 use crate::scene::{Scene, preset};
 
+/// paper-100's light count (assets/scenes/paper-100.toml), whose intensities the light-count
+/// slider's lights share.
+const PAPER_LIGHT_COUNT: f64 = 100.0;
+
 /// The panels, for maximising one and for headless screenshots.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum PanelId {
@@ -69,6 +73,8 @@ pub struct LabState {
     pub intensity_scale: f64,
     /// Replaces every light's range when > 0.
     pub range_override: f64,
+    /// Tiled culling of ranged lights in the plane's render (the same image, faster).
+    pub cull: bool,
     pub light_count: usize,
     pub seed: u64,
     pub selected_light: Option<usize>,
@@ -89,6 +95,10 @@ pub struct LabState {
     pub table: Table,
     /// Overlay the other shipped table's LTC in the lobe panel.
     pub overlay_other_fit: bool,
+    /// The chart's last measurement (or study), kept between runs.
+    pub measurement: Option<crate::app::measure::Measurement>,
+    /// The matrix panel's last refit, kept between runs.
+    pub refit: Option<crate::app::refit::RefitResult>,
 }
 
 /// The Figure-2 scene whose case map and profile the clipping panel shows.
@@ -124,6 +134,7 @@ impl Default for LabState {
             normalization: Normalization::Corrected,
             intensity_scale: 1.0,
             range_override: 0.0,
+            cull: true,
             seed: 27,
             selected_light: None,
             lobe: Lobe::Specular,
@@ -139,6 +150,8 @@ impl Default for LabState {
             lut_path: String::new(),
             table: Table::Classic,
             overlay_other_fit: true,
+            measurement: None,
+            refit: None,
         }
     }
 }
@@ -158,6 +171,26 @@ impl LabState {
             }
         }
         s
+    }
+
+    /// `count` lights from the seeded generator, as the lights slider makes them (heights
+    /// 0.05–0.6, paper-100's intensities and range); they replace the current ones.
+    pub fn set_light_count(&mut self, count: usize) {
+        self.light_count = count;
+        // paper-100's intensities, scaled down past 100 lights so that the total power stays
+        // paper-100's: 20 000 lights at those intensities only show a white plane.
+        let dim = (PAPER_LIGHT_COUNT / count.max(1) as f64).min(1.0);
+        self.scene.lights = crate::scene::generate_lights(
+            &crate::scene::RandomLights {
+                count,
+                seed: self.seed,
+                height: [0.05, 0.6],
+                intensity: [0.02 * dim, 0.08 * dim],
+                range: Some(crate::bench::DEFAULT_RANGE),
+            },
+            self.scene.plane.half_size,
+        );
+        self.selected_light = None;
     }
 
     /// The LTC pair of the lobe and matrix panels' (θo, α).

@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use ltc_lab::app::screenshot::frame_log_csv;
 use ltc_lab::app::{LabApp, LabState, PanelId, ScreenshotApp};
 use ltc_lab::error::{Error, Result};
 use ltc_lab::scene::Scene;
@@ -44,9 +45,18 @@ pub struct Args {
     /// Start with this scene instead of the saved state.
     #[arg(long)]
     scene: Option<PathBuf>,
-    /// Fill the speed-vs-accuracy chart before showing (as its "measure" button does).
+    /// Fill the speed-vs-accuracy chart (as its "measure" button does; the screenshot waits
+    /// for it).
     #[arg(long)]
     measure: bool,
+    /// Start with this many lights from the seeded generator (as the lights slider makes
+    /// them).
+    #[arg(long)]
+    lights: Option<usize>,
+    /// With --screenshot: write one row per UI frame to this CSV
+    /// (frame,ms,render_in_flight,lights_done,lights_total).
+    #[arg(long, requires = "screenshot")]
+    frame_log: Option<PathBuf>,
 }
 
 impl Default for Args {
@@ -58,6 +68,8 @@ impl Default for Args {
             size: DEFAULT_SIZE,
             scene: None,
             measure: false,
+            lights: None,
+            frame_log: None,
         }
     }
 }
@@ -67,22 +79,40 @@ pub fn run(a: Args) -> Result<()> {
     if let Some(p) = &a.screenshot {
         check_screenshot_path(p)?;
     }
+    if let Some(p) = &a.frame_log {
+        ltc_lab::files::check_writable(p)?;
+    }
+    if let Some(n) = a.lights.filter(|&n| n > ltc_lab::scene::MAX_LIGHTS) {
+        return Err(Error::input(
+            "--lights",
+            format!(
+                "{n} is more than the {} a scene may hold",
+                ltc_lab::scene::MAX_LIGHTS
+            ),
+        ));
+    }
     let (w, h) = a.size;
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("LTC Lab")
             .with_inner_size([w as f32, h as f32]),
         renderer: eframe::Renderer::Wgpu,
+        wgpu_options: egui_wgpu::WgpuConfiguration {
+            wgpu_setup: ltc_lab::app::shading::wgpu_setup(),
+            ..Default::default()
+        },
         // A screenshot shows the defaults, not whatever the last session left.
         persist_window: a.screenshot.is_none(),
         ..Default::default()
     };
-    let panel = a.panel.0;
-    let measure = a.measure;
+    let (panel, measure, lights) = (a.panel.0, a.measure, a.lights);
     let configure = move |mut state: LabState| {
         if let Some(sc) = &scene {
             state.light_count = sc.lights.len();
             state.scene = sc.clone();
+        }
+        if let Some(n) = lights {
+            state.set_light_count(n);
         }
         if panel.is_some() {
             state.maximised = panel;
@@ -91,20 +121,33 @@ pub fn run(a: Args) -> Result<()> {
     };
     let prepare = move |mut app: LabApp| {
         if measure {
-            app.chart.measure_now(&app.state.shaded_scene(), &app.lut);
+            app.chart.start(&app.state, &app.lut, &app.shading);
         }
         app
     };
     let outcome = match a.screenshot {
         Some(path) => {
-            let shot =
-                ScreenshotApp::new(prepare(LabApp::new(configure(LabState::default()))), path);
-            let result = shot.result.clone();
+            let result = std::sync::Arc::new(std::sync::Mutex::new(None));
+            let frames = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+            let (slot, log) = (result.clone(), frames.clone());
             let run = eframe::run_native(
                 "LTC Lab (screenshot)",
                 options,
-                Box::new(move |_cc| Ok(Box::new(shot))),
+                Box::new(move |cc| {
+                    let app = LabApp::new(
+                        configure(LabState::default()),
+                        cc.wgpu_render_state.as_ref(),
+                    );
+                    let mut shot = ScreenshotApp::new(prepare(app), path);
+                    shot.result = slot;
+                    shot.frames = log;
+                    Ok(Box::new(shot))
+                }),
             );
+            if let Some(p) = &a.frame_log {
+                let records = frames.lock().expect("not poisoned");
+                ltc_lab::files::write_atomically(p, frame_log_csv(&records).as_bytes())?;
+            }
             let taken = result.lock().expect("not poisoned").take();
             match (run, taken) {
                 (Ok(()), Some(outcome)) => outcome,

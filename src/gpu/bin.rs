@@ -38,31 +38,14 @@ impl Binning {
             label: Some("bin.wgsl"),
             source: wgpu::ShaderSource::Wgsl(super::bin_module_source().into()),
         });
-        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty,
-            count: None,
-        };
-        let storage = |read_only| wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only },
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        };
+        use super::binding::{compute, storage, uniform};
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("bin"),
             entries: &[
-                entry(
-                    0,
-                    wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                ),
-                entry(1, storage(true)),
-                entry(5, storage(false)),
-                entry(6, storage(false)),
+                compute(0, uniform()),
+                compute(1, storage(true)),
+                compute(5, storage(false)),
+                compute(6, storage(false)),
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -88,8 +71,9 @@ impl Binning {
         }
     }
 
-    /// The three passes in one compute pass (timed in `Slot::Bin`).
-    pub fn encode(
+    /// The whole binning in one compute pass: count, prefix sum, write, every tile (the
+    /// uniforms' `bin_row` at 0); timed in `Slot::Bin`.
+    pub fn encode_all(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         bind_group: &wgpu::BindGroup,
@@ -108,4 +92,43 @@ impl Binning {
         pass.set_pipeline(&self.write);
         pass.dispatch_workgroups(tiles_x, tiles_y, 1);
     }
+
+    /// A band of tile rows of one per-tile pass (its first row set in the uniforms'
+    /// `bin_row`), after the prefix sum over all tiles for `ScanThenWrite` (the first write
+    /// band); timed in `Slot::Bin`.
+    pub fn encode_band(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        bind_group: &wgpu::BindGroup,
+        tiles_x: u32,
+        rows: u32,
+        pass: BinPass,
+        timer: Option<&mut PassTimer>,
+    ) {
+        let mut compute = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("bin"),
+            timestamp_writes: timer.map(|t| t.writes(Slot::Bin)),
+        });
+        compute.set_bind_group(0, bind_group, &[]);
+        if pass == BinPass::ScanThenWrite {
+            compute.set_pipeline(&self.scan);
+            compute.dispatch_workgroups(1, 1, 1);
+        }
+        compute.set_pipeline(match pass {
+            BinPass::Count => &self.count,
+            BinPass::Write | BinPass::ScanThenWrite => &self.write,
+        });
+        if rows > 0 {
+            compute.dispatch_workgroups(tiles_x, rows, 1);
+        }
+    }
+}
+
+/// The per-tile passes of binning.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinPass {
+    Count,
+    /// The prefix sum over all tiles, then a write band (the first one).
+    ScanThenWrite,
+    Write,
 }

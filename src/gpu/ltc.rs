@@ -1,6 +1,9 @@
 //! `shaders/ltc.wgsl`: LTC evaluation and the in-shader bilinear LUT sampler, mirroring
-//! `crate::ltc` and `crate::ltc::lut`; here, the LUT's packing into a storage buffer.
+//! `crate::ltc` and `crate::ltc::lut`; here, the LUT's packing into a storage buffer, and the
+//! buffer holding tables A and B.
 
+use crate::error::Result;
+use crate::gpu::{GpuContext, limits};
 use crate::ltc::lut::{Channel, Lut};
 
 /// The shader text (composed after `brdf::SOURCE`).
@@ -36,4 +39,50 @@ pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
             ]
         })
         .collect()
+}
+
+/// The tables in the LUT buffer: A first, B (if any) after it.
+pub struct Tables {
+    pub buffer: wgpu::Buffer,
+    pub size_a: usize,
+    /// Cells per side and first vec4 of table B.
+    pub b: Option<(usize, u32)>,
+    pub packed_a: Vec<[f32; 4]>,
+}
+
+impl Tables {
+    pub fn new(ctx: &GpuContext, lut: &Lut, b: Option<&Lut>) -> Result<Self> {
+        Self::from_packed(ctx, pack_lut(lut), lut.size, b)
+    }
+
+    /// Table A packed, B packed after it; refused where they exceed one storage binding.
+    pub fn from_packed(
+        ctx: &GpuContext,
+        packed_a: Vec<[f32; 4]>,
+        size_a: usize,
+        b: Option<&Lut>,
+    ) -> Result<Self> {
+        let mut all = packed_a.clone();
+        let b = b.map(|lut| {
+            let base = all.len() as u32;
+            all.extend(pack_lut(lut));
+            (lut.size, base)
+        });
+        let largest = b.map_or(size_a, |(n, _)| n.max(size_a));
+        limits::check_lut_size(ctx, largest, std::mem::size_of_val(all.as_slice()) as u64)?;
+        let buffer = wgpu::util::DeviceExt::create_buffer_init(
+            &ctx.device,
+            &wgpu::util::BufferInitDescriptor {
+                label: Some("ltc lut"),
+                contents: bytemuck::cast_slice(&all),
+                usage: wgpu::BufferUsages::STORAGE,
+            },
+        );
+        Ok(Self {
+            buffer,
+            size_a,
+            b,
+            packed_a,
+        })
+    }
 }

@@ -2,7 +2,9 @@
 //! `plane`), and timing. Shaders are composed from the embedded files at load time.
 
 pub mod bin;
+pub mod binding;
 pub mod brdf;
+pub mod display;
 pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
@@ -37,7 +39,22 @@ pub fn bin_module_source() -> String {
     [scene::SOURCE, bin::SOURCE].join("\n")
 }
 
-/// A headless device and what was chosen.
+/// What this project asks of a device, the command line's and the lab window's alike:
+/// timestamp queries and f16 shaders where the adapter has them, and the adapter's own limits
+/// (the largest light buffer, 2 GiB bindings on a big GPU rather than WebGPU's defaults).
+pub fn device_descriptor(adapter: &wgpu::Adapter) -> wgpu::DeviceDescriptor<'static> {
+    wgpu::DeviceDescriptor {
+        label: Some("ltc-lab"),
+        required_features: adapter.features()
+            & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16),
+        required_limits: adapter.limits(),
+        experimental_features: wgpu::ExperimentalFeatures::disabled(),
+        memory_hints: wgpu::MemoryHints::Performance,
+        trace: wgpu::Trace::Off,
+    }
+}
+
+/// A device and what was chosen.
 pub struct GpuContext {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
@@ -66,29 +83,28 @@ impl GpuContext {
             )
         })?;
         let info = adapter.get_info();
-        let limits = adapter.limits();
-        let required_features =
-            adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16);
-        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-            label: Some("ltc-lab"),
-            required_features,
-            required_limits: limits.clone(),
-            experimental_features: wgpu::ExperimentalFeatures::disabled(),
-            memory_hints: wgpu::MemoryHints::Performance,
-            trace: wgpu::Trace::Off,
-        }))
+        let (device, queue) = pollster::block_on(
+            adapter.request_device(&device_descriptor(&adapter)),
+        )
         .map_err(|e| {
             Error::machine(
                 format!("GPU {}", info.name),
                 format!("cannot open the device: {e}"),
             )
         })?;
-        Ok(Self {
+        Ok(Self::from_parts(device, queue, info))
+    }
+
+    /// A device opened elsewhere (the lab's window's), with `device_descriptor`'s features
+    /// where it was asked for them.
+    pub fn from_parts(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Self {
+        let limits = device.limits();
+        Self {
             device,
             queue,
             info,
             limits,
-        })
+        }
     }
 
     /// One line for the log: name, backend, type, timestamps.

@@ -9,8 +9,9 @@ use std::ops::Range;
 
 use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
-use crate::gpu::bin::{self, Binning};
+use crate::gpu::bin::{self, BinPass, Binning};
 use crate::gpu::limits;
+use crate::gpu::ltc::Tables;
 use crate::gpu::scene::{GpuLight, Params, params};
 use crate::gpu::target::{self, OUTPUT_FORMAT, Target};
 use crate::gpu::timing::{PassTimer, Slot, SlotTimes};
@@ -74,6 +75,13 @@ struct Pipelines {
     resolve: wgpu::ComputePipeline,
 }
 
+/// Where the making of the tile lists is: the next band of tile rows to count, or to write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum BinStage {
+    Count(u32),
+    Write(u32),
+}
+
 /// The GPU milliseconds of one frame's passes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FrameTimes {
@@ -102,15 +110,6 @@ impl FrameTimes {
     }
 }
 
-/// The tables in the LUT buffer: A first, B (if any) after it.
-struct Tables {
-    buffer: wgpu::Buffer,
-    size_a: usize,
-    /// Cells per side and first vec4 of table B.
-    b: Option<(usize, u32)>,
-    packed_a: Vec<[f32; 4]>,
-}
-
 /// The plane shader's module, layout and pipelines, and the resources of the current render.
 pub struct PlaneRenderer {
     module: wgpu::ShaderModule,
@@ -128,8 +127,9 @@ pub struct PlaneRenderer {
     settings: RenderSettings,
     target: Option<Target>,
     bind_groups: Option<(wgpu::BindGroup, wgpu::BindGroup)>,
-    /// Whether the current render's tile lists are to be made (before its first chunk).
-    needs_binning: bool,
+    /// How far the current render's tile lists are made: the next band of tile rows to count
+    /// or to write (`None`: made, or no culling).
+    bin_stage: Option<BinStage>,
     timer: Option<PassTimer>,
     /// Whether the module has the f16 methods (the device has `SHADER_F16`).
     f16: bool,
@@ -182,7 +182,7 @@ impl PlaneRenderer {
             settings: RenderSettings::single(1, 1, Method::Brdf),
             target: None,
             bind_groups: None,
-            needs_binning: false,
+            bin_stage: None,
             timer: PassTimer::new(device, &ctx.queue),
             f16: ctx.has_f16(),
         })
@@ -272,7 +272,7 @@ impl PlaneRenderer {
             self.params.lut_base = base_b;
         }
         self.settings = *settings;
-        self.needs_binning = cull;
+        self.bin_stage = cull.then_some(BinStage::Count(0));
         if self.bind_groups.is_none() {
             self.bind_groups = Some(self.make_bind_groups(ctx));
         }
@@ -385,6 +385,7 @@ impl PlaneRenderer {
     pub fn step(&mut self, ctx: &GpuContext, range: Range<usize>) -> wgpu::SubmissionIndex {
         self.params.light_start = range.start as u32;
         self.params.light_end = range.end as u32;
+        self.params.bin_row = 0;
         ctx.queue
             .write_buffer(&self.params_buffer, 0, bytemuck::bytes_of(&self.params));
         let key = pipeline_key(&self.settings);
@@ -403,14 +404,14 @@ impl PlaneRenderer {
             t.clear();
         }
         let (tiles_x, tiles_y) = (target.tiles.0 as u32, target.tiles.1 as u32);
-        if self.needs_binning {
-            self.binning.encode(
+        if self.bin_stage.take().is_some() {
+            // Lists not (all) made band by band: made whole here, in one pass from row 0.
+            self.binning.encode_all(
                 &mut encoder,
                 bin_group,
                 (tiles_x, tiles_y),
                 timer.as_deref_mut(),
             );
-            self.needs_binning = false;
         }
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
@@ -446,17 +447,88 @@ impl PlaneRenderer {
         index
     }
 
+    /// How far the tile lists are made, 0 to 1; `None` when they are (or there are none).
+    pub fn binning_progress(&self) -> Option<f32> {
+        let rows = self.target.as_ref()?.tiles.1 as f32;
+        self.bin_stage.map(|stage| match stage {
+            BinStage::Count(r) => r as f32 / (2.0 * rows),
+            BinStage::Write(r) => (rows + r as f32) / (2.0 * rows),
+        })
+    }
+
+    /// Makes the next `rows` tile rows of the tile lists (counting them, then writing them):
+    /// binning spread over frames. One submission, timed in `Slot::Bin`. Does nothing when
+    /// the lists are made.
+    pub fn bin_step(&mut self, ctx: &GpuContext, rows: usize) {
+        let Some(stage) = self.bin_stage else {
+            return;
+        };
+        let target = self.target.as_ref().expect("begin made it");
+        let (tiles_x, tiles_y) = (target.tiles.0 as u32, target.tiles.1 as u32);
+        let (first, pass) = match stage {
+            BinStage::Count(r) => (r, BinPass::Count),
+            BinStage::Write(0) => (0, BinPass::ScanThenWrite),
+            BinStage::Write(r) => (r, BinPass::Write),
+        };
+        let end = (first + rows.max(1) as u32).min(tiles_y);
+        self.params.bin_row = first;
+        ctx.queue
+            .write_buffer(&self.params_buffer, 0, bytemuck::bytes_of(&self.params));
+        let (_, bin_group) = self.bind_groups.as_ref().expect("begin made them");
+        let mut encoder = ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("bin band"),
+            });
+        let mut timer = self.timer.as_mut().filter(|t| t.can_resolve());
+        let timed = timer.is_some();
+        if let Some(t) = &mut timer {
+            t.clear();
+        }
+        self.binning.encode_band(
+            &mut encoder,
+            bin_group,
+            tiles_x,
+            end - first,
+            pass,
+            timer.as_deref_mut(),
+        );
+        if let Some(t) = timer {
+            t.resolve(&mut encoder);
+        }
+        ctx.queue.submit([encoder.finish()]);
+        if timed && let Some(t) = &mut self.timer {
+            t.request();
+        }
+        self.bin_stage = match (pass, end == tiles_y) {
+            (BinPass::Count, true) => Some(BinStage::Write(0)),
+            (BinPass::Count, false) => Some(BinStage::Count(end)),
+            (_, true) => None,
+            (_, false) => Some(BinStage::Write(end)),
+        };
+    }
+
+    /// Whether the steps are timed (the device has timestamp queries).
+    pub fn timed(&self) -> bool {
+        self.timer.is_some()
+    }
+
     /// The last step's GPU times if they have arrived (poll the device meanwhile); never
     /// waits.
     pub fn try_times(&mut self) -> Option<FrameTimes> {
         let slots = self.timer.as_mut()?.try_read()?;
-        slots[Slot::Shade as usize].map(|_| FrameTimes::from_slots(slots, 0.0))
+        Some(FrameTimes {
+            bin_ms: slots[Slot::Bin as usize],
+            shade_ms: slots[Slot::Shade as usize].unwrap_or(0.0),
+        })
     }
 
     /// Renders the current render whole (one chunk of every light) and waits: the GPU times
     /// (timestamp queries), or the wall clock of submit-to-done where the adapter has none.
     pub fn run(&mut self, ctx: &GpuContext) -> FrameTimes {
-        self.needs_binning |= self.params.cull != 0;
+        if self.params.cull != 0 {
+            self.bin_stage = Some(BinStage::Count(0));
+        }
         // A read-back still in flight is taken first, so that this frame's timestamps land.
         if let Some(t) = &mut self.timer {
             let _ = t.read_ms(&ctx.device);
@@ -484,7 +556,7 @@ impl PlaneRenderer {
     /// kept of `tiles × lights`. `None` where the render is not culled or not yet binned.
     pub fn tile_entries(&self, ctx: &GpuContext) -> Option<(u64, u64)> {
         let t = self.target.as_ref()?;
-        (self.params.cull != 0 && !self.needs_binning).then(|| {
+        (self.params.cull != 0 && self.bin_stage.is_none()).then(|| {
             let all = (t.tiles.0 * t.tiles.1 * self.light_count) as u64;
             (t.tile_entries(ctx), all)
         })
@@ -519,88 +591,24 @@ fn light_buffer(ctx: &GpuContext, count: usize) -> wgpu::Buffer {
     })
 }
 
-impl Tables {
-    fn new(ctx: &GpuContext, lut: &Lut, b: Option<&Lut>) -> Result<Self> {
-        Self::from_packed(ctx, super::ltc::pack_lut(lut), lut.size, b)
-    }
-
-    /// Table A packed, B packed after it; refused where they exceed one storage binding.
-    fn from_packed(
-        ctx: &GpuContext,
-        packed_a: Vec<[f32; 4]>,
-        size_a: usize,
-        b: Option<&Lut>,
-    ) -> Result<Self> {
-        let mut all = packed_a.clone();
-        let b = b.map(|lut| {
-            let base = all.len() as u32;
-            all.extend(super::ltc::pack_lut(lut));
-            (lut.size, base)
-        });
-        let largest = b.map_or(size_a, |(n, _)| n.max(size_a));
-        limits::check_lut_size(ctx, largest, std::mem::size_of_val(all.as_slice()) as u64)?;
-        let buffer = wgpu::util::DeviceExt::create_buffer_init(
-            &ctx.device,
-            &wgpu::util::BufferInitDescriptor {
-                label: Some("ltc lut"),
-                contents: bytemuck::cast_slice(&all),
-                usage: wgpu::BufferUsages::STORAGE,
-            },
-        );
-        Ok(Self {
-            buffer,
-            size_a,
-            b,
-            packed_a,
-        })
-    }
-}
-
 /// The plane shader's bindings (src/gpu/plane.rs, scene.wgsl, ltc.wgsl, plane.wgsl).
 fn plane_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::COMPUTE,
-        ty,
-        count: None,
-    };
-    let storage = |binding, read_only| {
-        entry(
-            binding,
-            wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Storage { read_only },
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-        )
-    };
+    use super::binding::{compute, storage, uniform, written_texture};
+    let read = |binding| compute(binding, storage(true));
+    let write = |binding| compute(binding, storage(false));
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("plane"),
         entries: &[
-            entry(
-                0,
-                wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-            ),
-            storage(1, true),
-            storage(2, true),
-            entry(
-                3,
-                wgpu::BindingType::StorageTexture {
-                    access: wgpu::StorageTextureAccess::WriteOnly,
-                    format: OUTPUT_FORMAT,
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                },
-            ),
-            storage(4, false),
-            storage(5, true),
-            storage(6, true),
-            storage(7, false),
-            storage(8, false),
-            storage(9, false),
+            compute(0, uniform()),
+            read(1),
+            read(2),
+            compute(3, written_texture(OUTPUT_FORMAT)),
+            write(4),
+            read(5),
+            read(6),
+            write(7),
+            write(8),
+            write(9),
         ],
     })
 }

@@ -49,7 +49,7 @@ pub struct Params {
     pub lut_size_b: u32,
     pub lut_base_b: u32,
     pub lut_base: u32,
-    pub _pad2: u32,
+    pub bin_row: u32,
 }
 
 /// One light in the storage buffer; must match `GpuLight` in scene.wgsl.

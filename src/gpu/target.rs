@@ -156,55 +156,20 @@ impl Target {
     /// Reads the output back as a frame of `settings` (alpha marks the plane's pixels).
     pub fn read(&self, ctx: &GpuContext, settings: &RenderSettings) -> Frame {
         let (w, h) = (self.width as u32, self.height as u32);
-        let row = (w * TEXEL_BYTES).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
-        let buffer = ctx.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("plane readback"),
-            size: u64::from(row) * u64::from(h),
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let mut encoder = ctx
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("readback"),
-            });
-        encoder.copy_texture_to_buffer(
-            self.texture.as_image_copy(),
-            wgpu::TexelCopyBufferInfo {
-                buffer: &buffer,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(row),
-                    rows_per_image: Some(h),
-                },
-            },
-            wgpu::Extent3d {
-                width: w,
-                height: h,
-                depth_or_array_layers: 1,
-            },
-        );
-        ctx.queue.submit([encoder.finish()]);
-        let slice = buffer.slice(..);
-        slice.map_async(wgpu::MapMode::Read, |_| {});
-        let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
-        let data = slice.get_mapped_range().expect("mapped after the wait");
-        let mut pixels = Vec::with_capacity((w * h) as usize);
-        let mut on_plane = Vec::with_capacity((w * h) as usize);
-        for y in 0..h as usize {
-            let start = y * row as usize;
-            let texels: &[[f32; 4]] =
-                bytemuck::cast_slice(&data[start..start + (w * TEXEL_BYTES) as usize]);
-            for t in texels {
-                pixels.push(DVec3::new(
-                    f64::from(t[0]),
-                    f64::from(t[1]),
-                    f64::from(t[2]),
-                ));
-                // NaN (a poisoned, unwritten texel) counts as on the plane, so it is seen.
-                on_plane.push(t[3] >= 0.5 || t[3].is_nan());
-            }
-        }
+        let data = read_texels(ctx, &self.texture, (w, h), TEXEL_BYTES);
+        let texels: Vec<[f32; 4]> = data
+            .chunks_exact(TEXEL_BYTES as usize)
+            .map(bytemuck::pod_read_unaligned)
+            .collect();
+        let pixels = texels
+            .iter()
+            .map(|t| DVec3::new(f64::from(t[0]), f64::from(t[1]), f64::from(t[2])))
+            .collect();
+        // NaN (a poisoned, unwritten texel) counts as on the plane, so it is seen.
+        let on_plane = texels
+            .iter()
+            .map(|t| t[3] >= 0.5 || t[3].is_nan())
+            .collect();
         Frame {
             width: self.width,
             height: self.height,
@@ -218,4 +183,52 @@ impl Target {
             divider: (settings.view == View::Split).then(|| settings.divider_column()),
         }
     }
+}
+
+/// A texture of `size` read back, `texel_bytes` per texel, rows packed tightly (the copy's
+/// rows are padded to wgpu's 256-byte alignment); waits for the GPU.
+pub fn read_texels(
+    ctx: &GpuContext,
+    texture: &wgpu::Texture,
+    (w, h): (u32, u32),
+    texel_bytes: u32,
+) -> Vec<u8> {
+    let row = (w * texel_bytes).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+    let buffer = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("readback"),
+        size: u64::from(row) * u64::from(h),
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut encoder = ctx
+        .device
+        .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("readback"),
+        });
+    encoder.copy_texture_to_buffer(
+        texture.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(row),
+                rows_per_image: Some(h),
+            },
+        },
+        wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+    );
+    ctx.queue.submit([encoder.finish()]);
+    let slice = buffer.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
+    let data = slice.get_mapped_range().expect("mapped after the wait");
+    data.chunks(row as usize)
+        .take(h as usize)
+        .flat_map(|line| &line[..(w * texel_bytes) as usize])
+        .copied()
+        .collect()
 }

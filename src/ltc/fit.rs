@@ -10,7 +10,7 @@ use rayon::prelude::*;
 
 use crate::ltc::lobe::{Lobe, Stratum, lobe_moments, strata};
 use crate::ltc::lut::{ALPHA_MIN, Lut, LutCell, cell_alpha, cell_theta};
-use crate::ltc::nelder_mead::{Minimum, nelder_mead};
+use crate::ltc::nelder_mead::{CONTINUE, Minimum, nelder_mead};
 use crate::ltc::{Clipping, Ltc, Normalization};
 
 /// How a table is fitted. The defaults are ltc_code's where it has one.
@@ -210,17 +210,27 @@ impl CellProblem {
         }
     }
 
+    /// The free parameters that give the lobe `cos_from_brdf` (any scale) in this cell's
+    /// frame: the start of a refit from a stored cell. `M` rotated back by the frame and
+    /// scaled to its last diagonal entry 1 is `[[m00, 0, m02], [0, m11, 0], [0, 0, 1]]`.
+    pub fn params_of(&self, cos_from_brdf: DMat3) -> [f64; 3] {
+        let m = crate::ltc::mat3_rows(self.frame.transpose() * cos_from_brdf.inverse());
+        let s = m[2][2];
+        [m[0][0] / s, m[1][1] / s, m[0][2] / s]
+    }
+
     pub fn ltc(&self, params: &LtcParams) -> Ltc {
         Ltc::from_brdf_from_cos(params.brdf_from_cos(), self.norm, self.fresnel)
     }
 
-    /// Runs Nelder–Mead from `start`; `observe` sees the best objective per iteration.
+    /// Runs Nelder–Mead from `start`; `observe` sees the best objective per iteration and may
+    /// stop it.
     pub fn fit(
         &self,
         start: [f64; 3],
         settings: &FitSettings,
         strata: &FitStrata,
-        observe: impl FnMut(usize, f64),
+        observe: impl FnMut(usize, f64) -> std::ops::ControlFlow<()>,
     ) -> CellFit {
         let objective = |p: &[f64; 3]| {
             let ltc = self.ltc(&self.params(p, settings.alpha_min));
@@ -268,7 +278,7 @@ pub fn fit_lobe(
     let mut start = [1.0, 1.0, 0.0];
     for i in (0..n).rev() {
         let problem = CellProblem::new(lobe, i, 0, settings, &strata);
-        let fit = problem.fit(start, settings, &strata, |_, _| {});
+        let fit = problem.fit(start, settings, &strata, |_, _| CONTINUE);
         start = fit.params.m;
         normal_view[i] = Some((fit, problem));
         on_cell();
@@ -284,7 +294,7 @@ pub fn fit_lobe(
             column.push(first);
             for j in 1..n {
                 let problem = CellProblem::new(lobe, i, j, settings, &strata);
-                let fit = problem.fit(start, settings, &strata, |_, _| {});
+                let fit = problem.fit(start, settings, &strata, |_, _| CONTINUE);
                 start = fit.params.m;
                 column.push((fit, problem));
                 on_cell();

@@ -15,7 +15,7 @@ use crate::brdf::{d_ggx, g2_correlated, lambda_ggx};
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
 use crate::ltc::lobe::{Lobe, Stratum, visible_normal};
 use crate::ltc::lut::{Channel, Lut, LutCell};
-use crate::ltc::nelder_mead::nelder_mead;
+use crate::ltc::nelder_mead::{CONTINUE, nelder_mead};
 use crate::ltc::{Clipping, Ltc, Normalization, cos_from_brdf_from_entries};
 
 /// Strata per axis of the fit's quadrature (64² nodes); tests/fit_point.rs compares it with
@@ -207,7 +207,7 @@ fn descend<const D: usize>(
         settings.tolerance,
         settings.max_iterations,
         |p| objective(&at(p)),
-        |_, _| {},
+        |_, _| CONTINUE,
     );
     at(&m.point)
 }

@@ -1,6 +1,9 @@
 //! Downhill simplex (Nelder & Mead 1965) with the standard coefficients and the termination
 //! test of Numerical Recipes (3rd ed., §10.5) — the variant ltc_code's fitter uses.
 
+/// What an observer that never stops the search returns.
+pub const CONTINUE: std::ops::ControlFlow<()> = std::ops::ControlFlow::Continue(());
+
 /// The outcome of a minimization.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Minimum<const D: usize> {
@@ -14,14 +17,14 @@ pub struct Minimum<const D: usize> {
 
 /// Minimizes `f` from `start` with an initial simplex of step `delta` along each axis; stops
 /// when `2|f_hi − f_lo| < tol (|f_hi| + |f_lo|)` or after `max_iterations`. `observe` sees the
-/// best value after every iteration (the lab plots it).
+/// best value after every iteration (the lab plots it) and may stop the search there.
 pub fn nelder_mead<const D: usize>(
     start: [f64; D],
     delta: f64,
     tol: f64,
     max_iterations: usize,
     mut f: impl FnMut(&[f64; D]) -> f64,
-    mut observe: impl FnMut(usize, f64),
+    mut observe: impl FnMut(usize, f64) -> std::ops::ControlFlow<()>,
 ) -> Minimum<D> {
     // Standard coefficients (Nelder & Mead 1965).
     const REFLECT: f64 = 1.0;
@@ -59,7 +62,14 @@ pub fn nelder_mead<const D: usize>(
                 nh = i;
             }
         }
-        observe(iteration, values[lo]);
+        if observe(iteration, values[lo]).is_break() {
+            return Minimum {
+                point: simplex[lo],
+                value: values[lo],
+                iterations: iteration,
+                converged: false,
+            };
+        }
 
         let (a, b) = (values[lo].abs(), values[hi].abs());
         if 2.0 * (a - b).abs() < (a + b) * tol {
@@ -135,7 +145,7 @@ mod tests {
             1e-12,
             500,
             |p| (p[0] - 1.0).powi(2) + 3.0 * (p[1] + 2.0).powi(2) + 0.25,
-            |_, _| {},
+            |_, _| CONTINUE,
         );
         assert!(m.converged);
         // The tolerance is on f's relative spread: 1e-12 of 0.25 bounds |Δp|² ~ 1e-13.
@@ -146,7 +156,7 @@ mod tests {
 
     #[test]
     fn stops_at_the_iteration_limit() {
-        let m = nelder_mead([10.0], 0.01, 0.0, 7, |p| p[0] * p[0] + 1.0, |_, _| {});
+        let m = nelder_mead([10.0], 0.01, 0.0, 7, |p| p[0] * p[0] + 1.0, |_, _| CONTINUE);
         assert!(!m.converged);
         assert_eq!(m.iterations, 7);
     }

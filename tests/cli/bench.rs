@@ -79,7 +79,7 @@ fn bench_checks_every_light_count_first() {
     let Some(g) = gpu() else { return };
     let too_many = (PlaneRenderer::max_lights(&g.ctx) + 1).to_string();
     if PlaneRenderer::max_lights(&g.ctx) >= ltc_lab::scene::MAX_LIGHTS {
-        eprintln!("*** SKIPPED: this adapter shades every light count a scene may hold ***");
+        crate::gpu_common::skipped("this adapter shades every light count a scene may hold");
         return;
     }
     let o = ltc_lab(&[

@@ -213,7 +213,9 @@ fn compiles_as_c(header: &std::path::Path) {
         .output()
     {
         Ok(o) => assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr)),
-        Err(e) => eprintln!("*** SKIPPED: the C header is not compiled: no C compiler ({e}) ***"),
+        Err(e) => crate::gpu_common::skipped(&format!(
+            "the C header is not compiled: no C compiler ({e})"
+        )),
     }
 }
 

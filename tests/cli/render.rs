@@ -415,9 +415,9 @@ fn a_table_too_large_for_the_gpu_is_refused_naming_the_limit() {
     // 48 bytes per cell on the GPU (three vec4<f32>, src/gpu/ltc.rs).
     let n = ((limit / 48) as f64).sqrt() as usize + 1;
     if n > 2048 {
-        eprintln!(
-            "*** SKIPPED: a table beyond this adapter's {limit}-byte storage binding has {n}² cells, too large to write in a test ***"
-        );
+        crate::gpu_common::skipped(&format!(
+            "a table beyond this adapter's {limit}-byte storage binding has {n}² cells, too large to write in a test"
+        ));
         return;
     }
     let cell = ltc_lab::ltc::lut::Lut::embedded().cells[0];

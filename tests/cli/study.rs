@@ -96,7 +96,7 @@ fn study_writes_both_files_or_neither() {
 fn a_refused_study_leaves_no_directory() {
     let Some(g) = gpu() else { return };
     if PlaneRenderer::max_lights(&g.ctx) >= ltc_lab::scene::MAX_LIGHTS {
-        eprintln!("*** SKIPPED: this adapter shades every light count a scene may hold ***");
+        crate::gpu_common::skipped("this adapter shades every light count a scene may hold");
         return;
     }
     let too_many = (PlaneRenderer::max_lights(&g.ctx) + 1).to_string();

@@ -10,6 +10,13 @@ use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::{luminance, relative_floor};
 use ltc_lab::render::Frame;
 
+/// Says loudly that a check was skipped: straight to the process's stderr, which the test
+/// harness does not capture (its `eprintln!` capture would hide the line of a passing test).
+pub fn skipped(why: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "\n*** SKIPPED: {why} ***\n");
+}
+
 pub struct Gpu {
     pub ctx: GpuContext,
     pub renderer: Mutex<PlaneRenderer>,
@@ -31,11 +38,19 @@ pub fn gpu() -> Option<&'static Gpu> {
             panic!("LTC_LAB_REQUIRE_GPU is set but {e}")
         }
         Err(e) => {
-            eprintln!("\n*** SKIPPED: GPU test without a GPU adapter ({e}). Install mesa-vulkan-drivers or set LTC_LAB_REQUIRE_GPU=1 to make this a failure. ***\n");
+            skipped(&format!("GPU test without a GPU adapter ({e}). Install mesa-vulkan-drivers or set LTC_LAB_REQUIRE_GPU=1 to make this a failure."));
             None
         }
     })
     .as_ref()
+}
+
+/// A frame's pixels to the bit, for checks of exact equality.
+pub fn bits(f: &Frame) -> Vec<[u64; 3]> {
+    f.pixels
+        .iter()
+        .map(|p| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
+        .collect()
 }
 
 /// Per-pixel agreement of a GPU frame with the CPU reference.

@@ -1,0 +1,88 @@
+//! When a chunk of GPU work finished, by the wall clock: a thread waits on the device for each
+//! submission in turn, so that the UI thread never does. On a CPU driver (lavapipe, llvmpipe)
+//! this is the time a pacer must follow — the "GPU" shares the cores with the UI, and its
+//! timestamp queries were seen to read ~5 ms whatever the work (lavapipe, Mesa 22.3) — and it
+//! wakes the window the moment the work is done.
+
+use std::sync::mpsc;
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+/// The state of the chunk last handed to the waiter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Chunk {
+    /// None submitted yet, or its time already taken.
+    Idle,
+    InFlight,
+    /// Done, `ms` after its submission.
+    Done {
+        ms: f64,
+    },
+}
+
+pub struct Completion {
+    tx: Option<mpsc::Sender<(wgpu::SubmissionIndex, Instant)>>,
+    state: Arc<Mutex<Chunk>>,
+}
+
+impl Completion {
+    /// A waiter on `device`, which asks `window` for a frame when a chunk is done.
+    pub fn new(device: wgpu::Device, window: egui::Context) -> Self {
+        let (tx, rx) = mpsc::channel::<(wgpu::SubmissionIndex, Instant)>();
+        let state = Arc::new(Mutex::new(Chunk::Idle));
+        let shared = state.clone();
+        let spawned = std::thread::Builder::new()
+            .name("ltc-lab chunk waiter".into())
+            .spawn(move || {
+                // Ends when the sender is dropped with the renderer.
+                for (index, submitted) in rx {
+                    let _ = device.poll(wgpu::PollType::Wait {
+                        submission_index: Some(index),
+                        timeout: None,
+                    });
+                    let ms = submitted.elapsed().as_secs_f64() * 1e3;
+                    if let Ok(mut s) = shared.lock() {
+                        *s = Chunk::Done { ms };
+                    }
+                    window.request_repaint();
+                }
+            });
+        Self {
+            // Without a thread the UI polls (`take` then reports the chunk done at once).
+            tx: spawned.ok().map(|_| tx),
+            state,
+        }
+    }
+
+    /// Hands a submission to the waiter: everything submitted up to `index`.
+    pub fn submitted(&self, index: wgpu::SubmissionIndex, at: Instant) {
+        let Some(tx) = &self.tx else {
+            self.set(Chunk::Done {
+                ms: at.elapsed().as_secs_f64() * 1e3,
+            });
+            return;
+        };
+        self.set(Chunk::InFlight);
+        if tx.send((index, at)).is_err() {
+            self.set(Chunk::Done { ms: 0.0 });
+        }
+    }
+
+    /// The last chunk's state; a `Done` is taken (the next call says `Idle`).
+    pub fn take(&self) -> Chunk {
+        let Ok(mut s) = self.state.lock() else {
+            return Chunk::Idle;
+        };
+        let now = *s;
+        if matches!(now, Chunk::Done { .. }) {
+            *s = Chunk::Idle;
+        }
+        now
+    }
+
+    fn set(&self, chunk: Chunk) {
+        if let Ok(mut s) = self.state.lock() {
+            *s = chunk;
+        }
+    }
+}

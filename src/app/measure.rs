@@ -1,0 +1,246 @@
+//! The chart's measurement, on the window's own device and in budgeted steps: every method on
+//! the current scene (GPU time and image error against the exact BRDF), then fps against the
+//! number of lights. Each render is summed in chunks that fit the frame's budget, so that the
+//! window stays live; the result is kept with the lab's state.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use serde::{Deserialize, Serialize};
+
+use crate::app::pacer::Pacer;
+use crate::bench::{DEFAULT_RANGE, PAPER_LIGHTS, bench_scene};
+use crate::gpu::GpuContext;
+use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
+use crate::ltc::Normalization;
+use crate::ltc::lut::Lut;
+use crate::metrics::image_error;
+use crate::render::{Frame, Method, RenderSettings};
+use crate::scene::Scene;
+
+/// Size of the measured frames: small enough for a CPU driver to finish in seconds.
+pub const MEASURE_SIZE: (usize, usize) = (320, 180);
+/// Timed renders per point (median): three, as a CPU driver takes seconds for each.
+pub const REPEATS: usize = 3;
+
+/// One measured method: GPU ms and relative RMSE against the exact BRDF.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Point {
+    pub label: String,
+    pub ms: f64,
+    pub rel_rmse: f64,
+}
+
+/// What the chart plots.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Measurement {
+    pub points: Vec<Point>,
+    /// (lights, fps) per method.
+    pub scaling: Vec<(Method, Vec<[f64; 2]>)>,
+    /// Where it comes from: the device and size, or a study file.
+    pub device: String,
+}
+
+impl Measurement {
+    /// The points of a `study.csv` (`ltc-lab study`): every row a point, labelled with its
+    /// variant.
+    pub fn from_study(rows: &[crate::study::StudyRow], source: &str) -> Self {
+        Self {
+            points: rows
+                .iter()
+                .map(|r| Point {
+                    label: r.variant.clone(),
+                    ms: r.ms_median,
+                    rel_rmse: r.rel_rmse,
+                })
+                .collect(),
+            scaling: Vec::new(),
+            device: format!("{source}: {} rows", rows.len()),
+        }
+    }
+}
+
+/// One render to time: a point of the error chart, or of the fps curves.
+struct Task {
+    label: String,
+    scene: Scene,
+    settings: RenderSettings,
+    /// (method, lights) of an fps curve; `None` for an error point.
+    curve: Option<(Method, usize)>,
+}
+
+/// A measurement under way.
+pub struct MeasureJob {
+    ctx: GpuContext,
+    renderer: PlaneRenderer,
+    tasks: Vec<Task>,
+    next: usize,
+    /// Entries of the current render summed so far (`None`: not begun).
+    done: Option<usize>,
+    /// The chunk in flight: its entries and when it was submitted.
+    in_flight: Option<(usize, std::time::Instant)>,
+    /// GPU ms of the current render so far, and of each finished repeat.
+    render_ms: f64,
+    repeat_ms: Vec<f64>,
+    idle: Arc<AtomicBool>,
+    /// Sizes the chunks from their GPU times.
+    pacer: Pacer,
+    exact: Option<Frame>,
+    result: Measurement,
+}
+
+impl MeasureJob {
+    /// Every method on `scene`, then the paper's light counts, on the device of `ctx`.
+    pub fn new(ctx: &GpuContext, scene: &Scene, lut: &Lut) -> Result<Self, String> {
+        let ctx = GpuContext::from_parts(ctx.device.clone(), ctx.queue.clone(), ctx.info.clone());
+        let renderer =
+            PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
+        let (w, h) = MEASURE_SIZE;
+        let mut tasks = Vec::new();
+        for (label, method, normalization) in [
+            ("brdf", Method::Brdf, Normalization::Corrected),
+            ("brdf-fast", Method::BrdfFast, Normalization::Corrected),
+            ("ltc", Method::Ltc, Normalization::Corrected),
+            ("ltc-fast", Method::LtcFast, Normalization::Corrected),
+            ("ltc-paper", Method::Ltc, Normalization::PaperLiteral),
+        ] {
+            tasks.push(Task {
+                label: label.into(),
+                scene: scene.clone(),
+                settings: RenderSettings {
+                    normalization,
+                    ..RenderSettings::single(w, h, method)
+                },
+                curve: None,
+            });
+        }
+        for method in Method::F32 {
+            for &n in &PAPER_LIGHTS {
+                tasks.push(Task {
+                    label: format!("{} at {n} lights", method.name()),
+                    scene: bench_scene(n, Some(DEFAULT_RANGE)),
+                    settings: RenderSettings::single(w, h, method),
+                    curve: Some((method, n)),
+                });
+            }
+        }
+        for t in &tasks {
+            renderer
+                .check(&ctx, &t.scene, &t.settings)
+                .map_err(|e| e.to_string())?;
+        }
+        Ok(Self {
+            result: Measurement {
+                device: format!("{} at {w}×{h}", ctx.describe()),
+                ..Measurement::default()
+            },
+            ctx,
+            renderer,
+            tasks,
+            next: 0,
+            done: None,
+            in_flight: None,
+            render_ms: 0.0,
+            repeat_ms: Vec::new(),
+            idle: Arc::new(AtomicBool::new(true)),
+            pacer: Pacer::default(),
+            exact: None,
+        })
+    }
+
+    /// "ltc-fast at 500 lights (14 of 21)".
+    pub fn describe(&self) -> String {
+        match self.tasks.get(self.next) {
+            Some(t) => format!("{} ({} of {})", t.label, self.next + 1, self.tasks.len()),
+            None => "done".into(),
+        }
+    }
+
+    /// The fraction done.
+    pub fn progress(&self) -> f32 {
+        self.next as f32 / self.tasks.len().max(1) as f32
+    }
+
+    /// One frame's share: a chunk within `budget_ms` once the last is done and timed; the
+    /// measurement when the last task has finished. Never waits on the GPU, but for reading
+    /// back one small finished image per error point.
+    pub fn step(&mut self, budget_ms: f64) -> Option<Measurement> {
+        let _ = self.ctx.device.poll(wgpu::PollType::Poll);
+        if !self.idle.load(Ordering::Acquire) {
+            return None;
+        }
+        if let Some((entries, submitted)) = self.in_flight {
+            let ms = match self.renderer.try_times() {
+                Some(t) => t.total_ms(),
+                // The timestamps follow the work; wait a frame for them.
+                None if self.renderer.timed() => return None,
+                // Without timestamp queries: submit to done, at frame granularity.
+                None => submitted.elapsed().as_secs_f64() * 1e3,
+            };
+            self.render_ms += ms;
+            self.pacer.record(entries, ms);
+            self.in_flight = None;
+        }
+        let task = self.tasks.get(self.next)?;
+        let total = task.scene.lights.len();
+        let done = match self.done {
+            Some(d) => d,
+            None => {
+                if let Err(e) = self.renderer.begin(&self.ctx, &task.scene, &task.settings) {
+                    // Checked in `new`: a failure now is the device's.
+                    self.result.device = format!("measurement failed: {e}");
+                    self.next = self.tasks.len();
+                    return Some(std::mem::take(&mut self.result));
+                }
+                self.render_ms = 0.0;
+                0
+            }
+        };
+        if done >= total {
+            return self.finish_repeat();
+        }
+        let end = (done + self.pacer.next(budget_ms)).min(total);
+        self.idle.store(false, Ordering::Release);
+        self.renderer.step(&self.ctx, done..end);
+        let idle = self.idle.clone();
+        self.ctx
+            .queue
+            .on_submitted_work_done(move || idle.store(true, Ordering::Release));
+        self.in_flight = Some((end - done, std::time::Instant::now()));
+        self.done = Some(end);
+        None
+    }
+
+    /// A repeat's renders are all summed: its time; after the last repeat, the point.
+    fn finish_repeat(&mut self) -> Option<Measurement> {
+        self.repeat_ms.push(self.render_ms);
+        self.done = None;
+        if self.repeat_ms.len() < REPEATS {
+            return None;
+        }
+        let mut ms = std::mem::take(&mut self.repeat_ms);
+        ms.sort_by(f64::total_cmp);
+        let median = ms[ms.len() / 2];
+        let task = &self.tasks[self.next];
+        match task.curve {
+            None => {
+                let frame = self.renderer.read(&self.ctx);
+                let exact = self.exact.get_or_insert_with(|| frame.clone());
+                self.result.points.push(Point {
+                    label: task.label.clone(),
+                    ms: median,
+                    rel_rmse: image_error(&frame, exact).rel_rmse,
+                });
+            }
+            Some((method, n)) => {
+                let fps = 1e3 / median.max(1e-9);
+                match self.result.scaling.iter_mut().find(|(m, _)| *m == method) {
+                    Some((_, series)) => series.push([n as f64, fps]),
+                    None => self.result.scaling.push((method, vec![[n as f64, fps]])),
+                }
+            }
+        }
+        self.next += 1;
+        (self.next == self.tasks.len()).then(|| std::mem::take(&mut self.result))
+    }
+}
