@@ -204,7 +204,7 @@ impl PlanePanel {
         if s.view == View::Diff {
             colour_bar(ui);
         }
-        let response = response.on_hover_text("Drag a light's marker to move it over the plane, Shift-drag to change its height; drag the divider; hover a pixel to inspect it");
+        // No tooltip on the image: it would cover the reading below it while one hovers.
         if let Some(pos) = response.hover_pos() {
             let x = f64::from((pos.x - rect.min.x) / rect.width()) * width as f64;
             let y = f64::from((pos.y - rect.min.y) / rect.height()) * height as f64;
@@ -219,7 +219,7 @@ impl PlanePanel {
                 r.case1,
                 r.case2
             )),
-            None => ui.label("hover the plane to inspect a pixel"),
+            None => ui.label("hover a pixel to inspect it; drag a light's marker to move it (Shift: its height), drag the divider"),
         };
     }
 
