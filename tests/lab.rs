@@ -12,7 +12,7 @@ use std::time::{Duration, Instant};
 use egui_kittest::wgpu::WgpuTestRenderer;
 use egui_kittest::{Harness, SnapshotOptions, SnapshotResults};
 use gpu_common::bits;
-use ltc_lab::app::{LabApp, LabState, PanelId};
+use ltc_lab::app::{Compare, LabApp, LabState, PanelId};
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::render::{Frame, View};
 
@@ -82,6 +82,19 @@ fn snapshot_of_every_panel() {
         h.snapshot_options(format!("lab_{id:?}").to_lowercase(), &options(800 * 500));
         results.extend_harness(&mut h);
     }
+    // Two tables compared: the classic table (A) against the point fit (B), as the
+    // difference map, with the lobe and matrix panels showing both.
+    let mut tables = lab(
+        (1200.0, 700.0),
+        LabState {
+            compare: Compare::TableB,
+            view: View::Diff,
+            ..LabState::default()
+        },
+    )
+    .unwrap();
+    tables.snapshot_options("lab_tables", &options(1200 * 700));
+    results.extend_harness(&mut tables);
     results.unwrap();
 }
 
@@ -363,14 +376,20 @@ fn the_table_switch_shades_with_the_point_fit_and_both_fits_are_shown() {
         return;
     };
     assert!(
-        h.query_by_label_contains("classic fit: M^-1").is_some()
-            && h.query_by_label_contains("point fit: M^-1").is_some()
+        h.query_by_label_contains("A (classic): M^-1").is_some()
+            && h.query_by_label_contains("B (point): M^-1").is_some()
     );
     assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded());
     h.get_by_label("point").click();
     h.run_steps(3);
     assert_eq!(h.state().state.table, ltc_lab::ltc::lut::Table::Point);
     assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded_point());
+    // Table B follows: the other shipped table.
+    assert_eq!(&h.state().other.lut, ltc_lab::ltc::lut::Lut::embedded());
+    assert!(
+        h.query_by_label_contains("A (point): M^-1").is_some()
+            && h.query_by_label_contains("B (classic): M^-1").is_some()
+    );
 }
 
 /// The default state with panel `id` shown alone.
@@ -490,4 +509,58 @@ fn a_cancelled_refit_stops_and_is_kept_with_the_state() {
     let saved = ron::to_string(&app.state).unwrap();
     let restored: LabState = ron::from_str(&saved).expect("eframe reads the state back");
     assert_eq!(restored, app.state);
+}
+
+/// "A | B tables": side B shades the same LTC form with table B, as the CPU reference does
+/// with the two tables (the GPU–CPU tolerance of tests/gpu_parity.rs); a table loaded "as B"
+/// becomes table B, is named in the matrix panel, and stays when table A changes.
+#[test]
+fn two_tables_compared_on_the_plane_and_in_the_matrix() {
+    // Tall enough that the side panel's table rows are on screen, not scrolled away.
+    let Some(mut h) = lab((1000.0, 900.0), plane_state(100)) else {
+        return;
+    };
+    let ltc_against_brdf = plane_image(&h);
+    h.get_by_label("A | B tables").click();
+    settle(&mut h);
+    let key = h.state().shading.key().unwrap().clone();
+    assert!(key.settings.table_b && key.settings.method_b == key.settings.method_a);
+    let gpu = plane_image(&h);
+    let tables = ltc_lab::render::Tables {
+        a: ltc_lab::ltc::lut::Lut::embedded(),
+        b: ltc_lab::ltc::lut::Lut::embedded_point(),
+    };
+    let cpu = ltc_lab::cpu::render(&key.scene, tables, &key.settings);
+    gpu_common::assert_close("A | B split", &gpu, &cpu);
+    assert!(
+        bits(&gpu) != bits(&ltc_against_brdf),
+        "side B is still the BRDF"
+    );
+    // A file as table B.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("mine.exr");
+    ltc_lab::ltc::lut::Lut::embedded_point()
+        .write(&file)
+        .unwrap();
+    h.state_mut().state.lut_path = file.display().to_string();
+    h.state_mut().state.maximised = Some(PanelId::Matrix);
+    h.run_steps(1);
+    h.get_by_label("as B").click();
+    settle(&mut h);
+    let app = h.state();
+    assert!(app.other.chosen && app.other.name.ends_with("mine.exr"));
+    assert!(!app.message.as_ref().unwrap().is_error);
+    assert!(
+        h.query_by_label_contains("mine.exr): M^-1").is_some(),
+        "the matrix panel does not name table B"
+    );
+    h.get_by_label("point").click();
+    settle(&mut h);
+    assert!(
+        h.state().other.name.ends_with("mine.exr"),
+        "table B did not stay"
+    );
+    h.get_by_label("reset").click();
+    settle(&mut h);
+    assert_eq!(h.state().other.name, "classic");
 }

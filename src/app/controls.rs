@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::app::other::OtherTable;
 use crate::app::shading::Shading;
 use crate::app::state::LabState;
 use crate::ltc::Normalization;
@@ -14,8 +15,10 @@ use crate::scene::{PRESETS, Scene, preset};
 
 /// What the side panel asks of the app.
 pub enum Action {
-    /// Shade with this table from now on.
-    UseLut(Lut),
+    /// Shade with this table (named so) from now on.
+    UseLut(Lut, String),
+    /// Compare with this table as table B from now on.
+    UseOther(crate::app::other::OtherTable),
     /// Save the plane's linear radiance to this EXR file (named by the user).
     SaveExr(PathBuf),
     /// Save the window to this PNG file (named by the user).
@@ -53,6 +56,7 @@ pub fn show(
     ui: &mut egui::Ui,
     s: &mut LabState,
     shading: &Shading,
+    other: &OtherTable,
     message: &mut Option<Message>,
 ) -> Option<Action> {
     ui.heading("LTC Lab");
@@ -75,7 +79,7 @@ pub fn show(
     ui.separator();
     ui.strong("Scene");
     scene_files(ui, s, message);
-    let mut action = table(ui, s, message);
+    let mut action = table(ui, s, other, message);
     action = action.or_else(|| save_buttons(ui, s));
     if let Some(m) = message {
         let colour = if m.is_error {
@@ -230,7 +234,12 @@ fn scene_files(ui: &mut egui::Ui, s: &mut LabState, message: &mut Option<Message
 }
 
 /// The shipped table switch, and a LUT file to shade with.
-fn table(ui: &mut egui::Ui, s: &mut LabState, message: &mut Option<Message>) -> Option<Action> {
+fn table(
+    ui: &mut egui::Ui,
+    s: &mut LabState,
+    other: &OtherTable,
+    message: &mut Option<Message>,
+) -> Option<Action> {
     let mut action = None;
     ui.horizontal(|ui| {
         ui.label("LTC table:");
@@ -242,34 +251,61 @@ fn table(ui: &mut egui::Ui, s: &mut LabState, message: &mut Option<Message>) -> 
             ui.selectable_value(&mut s.table, t, t.name()).on_hover_text(hover);
         }
         if s.table != before {
-            action = Some(Action::UseLut(Lut::shipped(s.table).clone()));
+            action = Some(Action::UseLut(Lut::shipped(s.table).clone(), s.table.name().into()));
             s.lut_path.clear();
         }
     });
     ui.horizontal(|ui| {
         ui.add(egui::TextEdit::singleline(&mut s.lut_path).desired_width(120.0).hint_text("embedded LUT"))
-            .on_hover_text("An LTC table to shade with: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
-        if ui.small_button("use LUT").on_hover_text("Load the table named on the left; a missing or broken file is reported here and the current table stays").clicked() {
-            let path = s.lut_path.trim();
-            let loaded = if path.is_empty() {
-                formats::load(None, Table::Classic)
-            } else {
-                formats::read(Path::new(path))
-            };
-            *message = Some(match loaded {
-                Ok(loaded) => {
-                    action = Some(Action::UseLut(loaded.lut.into_owned()));
-                    let what = if path.is_empty() { "the embedded LUT" } else { path };
-                    Message::note(match loaded.note {
-                        Some(note) => format!("shading with {what}. {note}"),
-                        None => format!("shading with {what}"),
-                    })
+            .on_hover_text("An LTC table: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
+        if ui.small_button("use LUT").on_hover_text("Shade with the table named on the left (table A); a missing or broken file is reported here and the current table stays").clicked() {
+            *message = Some(match load(&s.lut_path) {
+                Ok((lut, name, note)) => {
+                    let text = format!("shading with {name}{note}");
+                    action = Some(Action::UseLut(lut, name));
+                    Message::note(text)
                 }
                 Err(e) => Message::error(format!("{e} — still using the previous table")),
             });
         }
+        if ui.small_button("as B").on_hover_text("Make the table named on the left table B, the other fit: the lobe overlay, the matrix panel and the plane's A | B comparison show it beside table A").clicked() {
+            *message = Some(match load(&s.lut_path) {
+                Ok((lut, name, note)) => {
+                    let text = format!("table B is {name}{note}");
+                    action = Some(Action::UseOther(OtherTable::chosen(lut, name)));
+                    Message::note(text)
+                }
+                Err(e) => Message::error(format!("{e} — table B stays")),
+            });
+        }
+    });
+    ui.horizontal(|ui| {
+        ui.small(format!("table B: {}", other.name))
+            .on_hover_text("The other fit: the lobe overlay and the matrix panel show it beside table A, and the plane's A | B comparison shades with it");
+        if other.chosen && ui.small_button("reset").on_hover_text("Table B back to the other shipped table").clicked() {
+            action = Some(Action::UseOther(OtherTable::shipped_other(s.table)));
+        }
     });
     action
+}
+
+/// The table in the file at `path` (the embedded one where empty), its name for labels, and
+/// what the file could not hold (ltc_code's layout has no diffuse lobe), as ". note".
+fn load(path: &str) -> Result<(Lut, String, String), String> {
+    let path = path.trim();
+    let loaded = if path.is_empty() {
+        formats::load(None, Table::Classic)
+    } else {
+        formats::read(Path::new(path))
+    }
+    .map_err(|e| e.to_string())?;
+    let name = if path.is_empty() {
+        "the embedded LUT"
+    } else {
+        path
+    };
+    let note = loaded.note.map(|n| format!(". {n}")).unwrap_or_default();
+    Ok((loaded.lut.into_owned(), name.to_string(), note))
 }
 
 /// The screenshot field: `.png` saves the window, `.exr` the plane's radiance.

@@ -6,6 +6,7 @@
 use egui::{Color32, Pos2, Vec2};
 use glam::{DMat3, DVec3};
 
+use crate::app::other::OtherTable;
 use crate::app::state::LabState;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::Lut;
@@ -39,15 +40,15 @@ impl LobePanel {
         s: &mut LabState,
         lut: &Lut,
         refit: Option<(Lobe, Ltc)>,
-        other: &Lut,
+        other: &OtherTable,
     ) {
         ui.horizontal(|ui| {
             ui.selectable_value(&mut s.lobe, Lobe::Specular, "specular")
                 .on_hover_text("GGX f_s·cos with F = 1 against n_s·D_s");
             ui.selectable_value(&mut s.lobe, Lobe::Diffuse, "diffuse")
                 .on_hover_text("Burley fd·cos with c = 1 against n_d·D_d");
-            ui.checkbox(&mut s.overlay_other_fit, "other fit")
-                .on_hover_text("Overlay the other shipped table's LTC (green): the point-light fit over the classic one, or the reverse");
+            ui.checkbox(&mut s.overlay_other_fit, format!("table B ({})", other.name))
+                .on_hover_text("Overlay table B's LTC (green): by default the other shipped table (the point-light fit over the classic one, or the reverse); \"as B\" in the side panel loads another");
             ui.checkbox(&mut s.colour_difference, "difference")
                 .on_hover_text("Colour the unit sphere by n·D − f·cos (red: LTC too bright, blue: too dark), relative to the lobe's peak");
         });
@@ -63,7 +64,7 @@ impl LobePanel {
             (_, Lobe::Diffuse) => pair.diff,
         };
         let ltc = morphed_ltc(&fitted, s.morph);
-        let other_pair = s.ltc_pair(other);
+        let other_pair = s.ltc_pair(&other.lut);
         let other_ltc = s.overlay_other_fit.then(|| {
             morphed_ltc(
                 if s.lobe == Lobe::Specular {
@@ -312,7 +313,7 @@ fn slice_plot(
             );
             if let Some(o) = other {
                 p.line(
-                    egui_plot::Line::new("other fit", points(o, false))
+                    egui_plot::Line::new("table B", points(o, false))
                         .color(Color32::from_rgb(80, 220, 120)),
                 );
             }

@@ -6,10 +6,11 @@
 use egui::{Color32, Vec2};
 use glam::DMat3;
 
+use crate::app::other::OtherTable;
 use crate::app::refit::Refit;
 use crate::app::state::LabState;
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut, Table, cell_theta};
+use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut, cell_theta};
 use crate::ltc::{Ltc, mat3_rows};
 use crate::output::false_colour;
 
@@ -68,7 +69,13 @@ impl MatrixPanel {
         self.refit.is_some()
     }
 
-    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
+    /// The panel for table A (`lut`, named `a_name`), with table B's cell beside it.
+    pub fn show(
+        &mut self,
+        ui: &mut egui::Ui,
+        s: &mut LabState,
+        (lut, a_name, other): (&Lut, &str, &OtherTable),
+    ) {
         if let Some(r) = &mut self.refit {
             if let Some(result) = r.poll() {
                 s.refit = Some(result);
@@ -126,15 +133,14 @@ impl MatrixPanel {
                 100.0 * err
             ))
             .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (DESIGN §4)");
-            // Both shipped fits of this (θo, α), side by side.
+            // Tables A and B at this (θo, α), side by side.
             ui.vertical(|ui| {
-                for table in Table::ALL {
-                    let name = table.name();
-                    let t = Lut::shipped(table).sample(s.alpha(), theta.cos());
+                for (which, name, table) in [("A", a_name, lut), ("B", other.name.as_str(), &other.lut)] {
+                    let t = table.sample(s.alpha(), theta.cos());
                     let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
                     let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
                     ui.label(format!(
-                        "{name} fit: M^-1 = [[{:.3}, 0, {:.3}], [0, 1, 0], [{:.3}, 0, {:.3}]], scale {:.3}, error {:.1}%",
+                        "{which} ({name}): M^-1 = [[{:.3}, 0, {:.3}], [0, 1, 0], [{:.3}, 0, {:.3}]], scale {:.3}, error {:.1}%",
                         t.get(m[0]),
                         t.get(m[1]),
                         t.get(m[2]),
@@ -142,7 +148,7 @@ impl MatrixPanel {
                         scale,
                         100.0 * t.get(e)
                     ))
-                    .on_hover_text("The shipped tables at this (θo, α): ltc_code's classic fit and the point-light fit (luts/ltc_point.exr)");
+                    .on_hover_text("Table A (the one shaded with) and table B (the other fit: the other shipped table, or one loaded with \"as B\") at this (θo, α), bilinear; error is each table's pointwise error (DESIGN §4) of this lobe");
                 }
             });
             self.refit_controls(ui, s, lut);

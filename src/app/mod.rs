@@ -10,6 +10,7 @@ pub mod display;
 pub mod lobe;
 pub mod matrix;
 pub mod measure;
+pub mod other;
 pub mod pacer;
 pub mod plane;
 pub mod refit;
@@ -19,7 +20,7 @@ pub mod state;
 
 pub use controls::Message;
 pub use screenshot::{PendingScreenshot, ScreenshotApp, Settling};
-pub use state::{ClipScene, LabState, PanelId};
+pub use state::{ClipScene, Compare, LabState, PanelId};
 
 use crate::ltc::lut::Lut;
 
@@ -27,6 +28,10 @@ use crate::ltc::lut::Lut;
 pub struct LabApp {
     pub state: LabState,
     pub lut: Lut,
+    /// What table A is, for labels: a shipped table's name or the file's path.
+    pub lut_name: String,
+    /// Table B, the other fit.
+    pub other: other::OtherTable,
     pub shading: shading::Shading,
     pub lobe: lobe::LobePanel,
     pub matrix: matrix::MatrixPanel,
@@ -49,8 +54,12 @@ impl LabApp {
         // The chosen shipped table; a persisted `lut_path` is loaded again only on request,
         // so a file that vanished since cannot stop the lab from starting.
         let lut = Lut::shipped(state.table).clone();
-        let shading = shading::Shading::new(&lut, render_state);
+        let other = other::OtherTable::shipped_other(state.table);
+        let mut shading = shading::Shading::new(&lut, render_state);
+        shading.set_lut_b(Some(&other.lut));
         Self {
+            lut_name: state.table.name().to_string(),
+            other,
             state,
             lobe: lobe::LobePanel,
             matrix: matrix::MatrixPanel::new(&lut),
@@ -87,8 +96,13 @@ impl LabApp {
             .default_size(250.0)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
-                    let action =
-                        controls::show(ui, &mut self.state, &self.shading, &mut self.message);
+                    let action = controls::show(
+                        ui,
+                        &mut self.state,
+                        &self.shading,
+                        &self.other,
+                        &mut self.message,
+                    );
                     if let Some(action) = action {
                         self.act(action);
                     }
@@ -157,14 +171,18 @@ impl LabApp {
             ui.separator();
             match id {
                 PanelId::Lobe => {
-                    let other = Lut::shipped(self.state.table.other());
                     let refit = self.matrix.refit_ltc(&self.state);
-                    self.lobe.show(ui, &mut self.state, &self.lut, refit, other);
+                    self.lobe
+                        .show(ui, &mut self.state, &self.lut, refit, &self.other);
                 }
-                PanelId::Matrix => self.matrix.show(ui, &mut self.state, &self.lut),
+                PanelId::Matrix => {
+                    let tables = (&self.lut, self.lut_name.as_str(), &self.other);
+                    self.matrix.show(ui, &mut self.state, tables);
+                }
                 PanelId::Plane => {
+                    let tables = (&self.lut, &self.other);
                     self.plane
-                        .show(ui, &mut self.state, &mut self.shading, &self.lut);
+                        .show(ui, &mut self.state, &mut self.shading, tables);
                 }
                 PanelId::Clipping => self.clipping.show(ui, &mut self.state, &self.lut),
                 PanelId::Chart => self
@@ -177,7 +195,8 @@ impl LabApp {
     /// Carries out what the side panel asked for.
     fn act(&mut self, action: controls::Action) {
         match action {
-            controls::Action::UseLut(lut) => self.use_lut(lut),
+            controls::Action::UseLut(lut, name) => self.use_lut(lut, name),
+            controls::Action::UseOther(other) => self.use_other(other),
             controls::Action::SaveExr(path) => {
                 let exposure = self.state.scene.exposure;
                 self.message = Some(
@@ -193,12 +212,23 @@ impl LabApp {
         }
     }
 
-    /// Shades with `lut` from now on: every panel that holds the table starts again.
-    fn use_lut(&mut self, lut: Lut) {
+    /// Shades with `lut` from now on: every panel that holds the table starts again. Table B
+    /// follows to the other shipped table unless the user chose it.
+    fn use_lut(&mut self, lut: Lut, name: String) {
         self.shading.set_lut(&lut);
         self.matrix = matrix::MatrixPanel::new(&lut);
         self.clipping = clipping::ClippingPanel::default();
         self.lut = lut;
+        self.lut_name = name;
+        if !self.other.chosen {
+            self.use_other(other::OtherTable::shipped_other(self.state.table));
+        }
+    }
+
+    /// Compares with `other` as table B from now on.
+    fn use_other(&mut self, other: other::OtherTable) {
+        self.shading.set_lut_b(Some(&other.lut));
+        self.other = other;
     }
 
     /// Saves a screenshot the user asked for, once its pixels arrive.

@@ -8,8 +8,9 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use crate::app::display::{ShownImage, colour_bar};
+use crate::app::other::OtherTable;
 use crate::app::shading::Shading;
-use crate::app::state::LabState;
+use crate::app::state::{Compare, LabState};
 use crate::cpu::{clip_counts, shade_exact, shade_ltc};
 use crate::ltc::lut::Lut;
 use crate::metrics::luminance;
@@ -40,17 +41,24 @@ pub struct PlanePanel {
 /// The pixel inspector's numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelReading {
-    pub exact: DVec3,
-    pub ltc: DVec3,
+    /// LTC with table A.
+    pub a: DVec3,
+    /// The exact BRDF, or LTC with table B.
+    pub b: DVec3,
+    /// `|L_a − L_b| / L_b` on luminance.
     pub relative_error: f64,
     pub case1: usize,
     pub case2: usize,
 }
 
 impl PlanePanel {
+    /// What the plane renders: LTC (A) against the BRDF form, or — two tables compared — the
+    /// same LTC form with table A against it with table B.
     pub fn settings(s: &LabState, width: usize, height: usize) -> RenderSettings {
+        let tables = s.compare == Compare::TableB;
         RenderSettings {
-            method_b: s.method_brdf,
+            method_b: if tables { s.method_ltc } else { s.method_brdf },
+            table_b: tables,
             view: s.view,
             clipping: s.clipping,
             normalization: s.normalization,
@@ -60,21 +68,33 @@ impl PlanePanel {
         }
     }
 
-    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, shading: &mut Shading, lut: &Lut) {
+    pub fn show(
+        &mut self,
+        ui: &mut egui::Ui,
+        s: &mut LabState,
+        shading: &mut Shading,
+        (lut, other): (&Lut, &OtherTable),
+    ) {
+        let (a, b) = side_names(s.compare);
         ui.horizontal_wrapped(|ui| {
+            ui.selectable_value(&mut s.compare, Compare::Brdf, "LTC | BRDF")
+                .on_hover_text("Side B is the exact BRDF (the BRDF form in the side panel)");
+            ui.selectable_value(&mut s.compare, Compare::TableB, "A | B tables")
+                .on_hover_text(format!("Two tables compared: side B is the same LTC form with table B ({}) instead of the BRDF; the difference map is then |L_A − L_B| / L_B", other.name));
+            ui.separator();
             for (v, name, hover) in [
                 (
                     View::Split,
-                    "split",
-                    "LTC left of the divider, exact BRDF right of it; drag the divider",
+                    "split".to_string(),
+                    format!("{a} left of the divider, {b} right of it; drag the divider"),
                 ),
                 (
                     View::Diff,
-                    "difference",
-                    "|L_ltc − L_brdf| / max(L_brdf, 1% of the mean), log colour scale 0.1%–100%",
+                    "difference".to_string(),
+                    format!("|L_{a} − L_{b}| / max(L_{b}, 1% of the mean), log colour scale 0.1%–100%"),
                 ),
-                (View::A, "LTC", "The LTC form alone"),
-                (View::B, "BRDF", "The BRDF form alone"),
+                (View::A, a.to_string(), format!("{a} alone")),
+                (View::B, b.to_string(), format!("{b} alone")),
             ] {
                 ui.selectable_value(&mut s.view, v, name)
                     .on_hover_text(hover);
@@ -159,14 +179,14 @@ impl PlanePanel {
             painter.text(
                 egui::pos2(divider_x - 6.0, rect.min.y + 4.0),
                 egui::Align2::RIGHT_TOP,
-                "LTC",
+                a,
                 egui::FontId::proportional(12.0),
                 Color32::WHITE,
             );
             painter.text(
                 egui::pos2(divider_x + 6.0, rect.min.y + 4.0),
                 egui::Align2::LEFT_TOP,
-                "BRDF",
+                b,
                 egui::FontId::proportional(12.0),
                 Color32::WHITE,
             );
@@ -208,13 +228,14 @@ impl PlanePanel {
         if let Some(pos) = response.hover_pos() {
             let x = f64::from((pos.x - rect.min.x) / rect.width()) * width as f64;
             let y = f64::from((pos.y - rect.min.y) / rect.height()) * height as f64;
-            self.inspected = inspect(s, lut, x, y, width, height);
+            let b_table = (s.compare == Compare::TableB).then_some(&other.lut);
+            self.inspected = inspect(s, (lut, b_table), x, y, width, height);
         }
         match &self.inspected {
             Some(r) => ui.label(format!(
-                "pixel: BRDF {:.4} | LTC {:.4} (luminance), relative error {:.2}%; lights in case 1: {}, case 2: {}",
-                luminance(r.exact),
-                luminance(r.ltc),
+                "pixel: {a} {:.4} | {b} {:.4} (luminance), relative difference {:.2}%; lights in case 1: {}, case 2: {}",
+                luminance(r.a),
+                luminance(r.b),
                 100.0 * r.relative_error,
                 r.case1,
                 r.case2
@@ -330,10 +351,11 @@ fn progress_line(ui: &mut egui::Ui, shading: &Shading, hide_timings: bool) {
     ));
 }
 
-/// The exact and LTC radiance at an image position, computed on the CPU reference.
+/// Side A's and side B's radiance at an image position, in f64 on the CPU: LTC with table A,
+/// against the exact BRDF or (`b_table`) LTC with table B.
 fn inspect(
     s: &LabState,
-    lut: &Lut,
+    (lut, b_table): (&Lut, Option<&Lut>),
     x: f64,
     y: f64,
     width: usize,
@@ -341,23 +363,37 @@ fn inspect(
 ) -> Option<PixelReading> {
     let scene = s.shaded_scene();
     let p = scene.surface_point_at(x, y, width, height)?;
-    let exact = shade_exact(&scene, &p, &scene.lights);
-    let ltc = shade_ltc(
-        &scene,
-        lut,
-        &p,
-        &scene.lights,
-        s.clipping,
-        s.normalization,
-        LutFilter::Bilinear,
-    );
+    let ltc = |table| {
+        shade_ltc(
+            &scene,
+            table,
+            &p,
+            &scene.lights,
+            s.clipping,
+            s.normalization,
+            LutFilter::Bilinear,
+        )
+    };
+    let a = ltc(lut);
+    let b = match b_table {
+        Some(t) => ltc(t),
+        None => shade_exact(&scene, &p, &scene.lights),
+    };
     let counts = clip_counts(&scene, lut, &p, &scene.lights);
-    let le = luminance(exact);
+    let lb = luminance(b);
     Some(PixelReading {
-        exact,
-        ltc,
-        relative_error: (luminance(ltc) - le).abs() / le.max(1e-12),
+        a,
+        b,
+        relative_error: (luminance(a) - lb).abs() / lb.max(1e-12),
         case1: counts.below_horizon,
         case2: counts.pushed_below,
     })
+}
+
+/// What sides A and B of the plane are called.
+fn side_names(compare: Compare) -> (&'static str, &'static str) {
+    match compare {
+        Compare::Brdf => ("LTC", "BRDF"),
+        Compare::TableB => ("A", "B"),
+    }
 }

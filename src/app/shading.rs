@@ -203,7 +203,10 @@ impl Shading {
     /// Shades with another table A from now on: its buffer rewritten, pipelines kept.
     pub fn set_lut(&mut self, lut: &Lut) {
         if let Some(g) = &mut self.gpu
-            && let Err(e) = g.renderer.set_lut(&g.ctx, lut)
+            && let Err(e) = g
+                .renderer
+                .set_lut(&g.ctx, lut)
+                .and_then(|()| g.renderer.set_lut_b(&g.ctx, self.lut_b.as_ref()))
         {
             self.error = Some(e.to_string());
         }

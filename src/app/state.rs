@@ -53,6 +53,14 @@ impl PanelId {
     }
 }
 
+/// What the plane's side B is: the exact BRDF, or LTC with table B (two tables compared).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Compare {
+    #[default]
+    Brdf,
+    TableB,
+}
+
 /// Everything the user set; persisted by eframe between runs.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -93,8 +101,10 @@ pub struct LabState {
     pub lut_path: String,
     /// Which shipped table shades (classic or the point-light fit).
     pub table: Table,
-    /// Overlay the other shipped table's LTC in the lobe panel.
+    /// Overlay table B's LTC in the lobe panel.
     pub overlay_other_fit: bool,
+    /// The plane's side B.
+    pub compare: Compare,
     /// The chart's last measurement (or study), kept between runs.
     pub measurement: Option<crate::app::measure::Measurement>,
     /// The matrix panel's last refit, kept between runs.
@@ -150,6 +160,7 @@ impl Default for LabState {
             lut_path: String::new(),
             table: Table::Classic,
             overlay_other_fit: true,
+            compare: Compare::Brdf,
             measurement: None,
             refit: None,
         }
