@@ -372,6 +372,20 @@ fn radiances(gid: vec2<u32>) -> array<vec3<f32>, 2> {
 
 var<workgroup> wg_partials: array<vec4<f32>, 256>;
 
+// The sum of `v` over a 256-invocation workgroup, by halving (every invocation must call it:
+// it holds barriers); the same pairing order in every call, so the sums are deterministic.
+fn workgroup_sum(li: u32, v: vec4<f32>) -> vec4<f32> {
+    wg_partials[li] = v;
+    workgroupBarrier();
+    for (var d = 128u; d > 0u; d /= 2u) {
+        if li < d {
+            wg_partials[li] += wg_partials[li + d];
+        }
+        workgroupBarrier();
+    }
+    return wg_partials[0];
+}
+
 // Per tile (for the difference view's floor): Σ|L_A|, Σ|L_B| and the pixels on the plane.
 @compute @workgroup_size(16, 16, 1)
 fn reduce(
@@ -384,16 +398,9 @@ fn reduce(
         let l = radiances(gid.xy);
         v = vec4<f32>(abs(luminance(l[0])), abs(luminance(l[1])), 1.0, 0.0);
     }
-    wg_partials[li] = v;
-    workgroupBarrier();
-    for (var d = 128u; d > 0u; d /= 2u) {
-        if li < d {
-            wg_partials[li] += wg_partials[li + d];
-        }
-        workgroupBarrier();
-    }
+    let total = workgroup_sum(li, v);
     if li == 0u {
-        partials[wid.y * params.tiles_x + wid.x] = wg_partials[0];
+        partials[wid.y * params.tiles_x + wid.x] = total;
     }
 }
 
@@ -406,16 +413,8 @@ fn floor_of_means(@builtin(local_invocation_index) li: u32) {
     for (var t = li; t < tiles; t += 256u) {
         v += partials[t];
     }
-    wg_partials[li] = v;
-    workgroupBarrier();
-    for (var d = 128u; d > 0u; d /= 2u) {
-        if li < d {
-            wg_partials[li] += wg_partials[li + d];
-        }
-        workgroupBarrier();
-    }
+    let s = workgroup_sum(li, v);
     if li == 0u {
-        let s = wg_partials[0];
         let count = max(s.z, 1.0);
         let mean = select(s.x / count, s.y / count, s.y > 0.0);
         // RELATIVE_FLOOR of src/metrics.rs, never below f32's smallest normal.

@@ -8,7 +8,7 @@ use ltc_lab::files::{check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
 
-use super::{LutArgs, Range, check_frames_and_lights, parse_cull, parse_range, parse_size, print};
+use super::{CullArgs, LutArgs, Range, check_frames_and_lights, parse_size, print};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -26,12 +26,8 @@ pub struct Args {
     /// Keep wgpu's runtime bounds checks (the default benchmarks trusted shader modules).
     #[arg(long)]
     checked: bool,
-    /// Tiled culling of ranged lights: off, on, or both (off,on) in one run.
-    #[arg(long, value_delimiter = ',', default_value = "on", value_parser = parse_cull)]
-    cull: Vec<bool>,
-    /// Every light's range (scene units, or inf); default paper-100's 2.
-    #[arg(long, value_parser = parse_range)]
-    range: Option<Range>,
+    #[command(flatten)]
+    culling: CullArgs,
     #[command(flatten)]
     lut: LutArgs,
 }
@@ -62,8 +58,8 @@ pub fn run(a: &Args) -> Result<()> {
         size: a.size,
         frames: a.frames,
         checks,
-        culls: a.cull.clone(),
-        range: Range::or_default(a.range),
+        culls: a.culling.cull.clone(),
+        range: Range::or_default(a.culling.range),
     };
     let rows = ltc_lab::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(

@@ -121,6 +121,18 @@ impl LutArgs {
     }
 }
 
+/// `bench`'s and `study`'s culling: which passes, and every light's range.
+#[derive(clap::Args, Debug, Clone)]
+pub struct CullArgs {
+    /// Tiled culling of ranged lights: off, on, or both (off,on) in one run; the images are
+    /// the same.
+    #[arg(long, value_delimiter = ',', default_value = "on", value_parser = parse_cull)]
+    pub cull: Vec<bool>,
+    /// Every light's range (scene units, or inf); default paper-100's 2.
+    #[arg(long, value_parser = parse_range)]
+    pub range: Option<Range>,
+}
+
 /// `--cull on|off` (each of a list, for `bench` and `study`).
 pub fn parse_cull(s: &str) -> std::result::Result<bool, String> {
     match s {

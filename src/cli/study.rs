@@ -9,7 +9,7 @@ use ltc_lab::files::{Outputs, free_directory};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::study;
 
-use super::{LutArgs, Range, check_frames_and_lights, parse_cull, parse_range, parse_size, print};
+use super::{CullArgs, LutArgs, Range, check_frames_and_lights, parse_size, print};
 
 /// The directory `study` writes into unless told otherwise.
 const DEFAULT_DIR: &str = "study";
@@ -30,12 +30,8 @@ pub struct Args {
     /// Timed frames per variant (median, after one warm-up).
     #[arg(long, default_value_t = 5)]
     frames: usize,
-    /// Tiled culling of ranged lights: off, on, or both (off,on); the images are the same.
-    #[arg(long, value_delimiter = ',', default_value = "on", value_parser = parse_cull)]
-    cull: Vec<bool>,
-    /// Every light's range (scene units, or inf); default paper-100's 2.
-    #[arg(long, value_parser = parse_range)]
-    range: Option<Range>,
+    #[command(flatten)]
+    culling: CullArgs,
     /// The table of the variants that shade with the shipped one (ltc, ltc-fast, ltc-paper,
     /// ltc-nearest, ltc-f16).
     #[command(flatten)]
@@ -66,8 +62,8 @@ pub fn run(a: &Args) -> Result<()> {
         lights: a.lights.clone(),
         alphas: a.alpha.clone(),
         frames: a.frames,
-        culls: a.cull.clone(),
-        range: Range::or_default(a.range),
+        culls: a.culling.cull.clone(),
+        range: Range::or_default(a.culling.range),
     };
     let rows = study::run(&ctx, &lut, &settings, |r| {
         eprintln!(
