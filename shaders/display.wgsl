@@ -40,18 +40,22 @@ fn diff_scale_position(rel: f32) -> f32 {
     return clamp((log(max(rel, 1e-30)) / log(10.0) + 3.0) / 3.0, 0.0, 1.0);
 }
 
-// src/output.rs false_colour: dark blue → blue → green → yellow → red, linear in sRGB.
-fn false_colour(t: f32) -> vec3<f32> {
-    let stops = array<vec3<f32>, 5>(
-        vec3<f32>(0.05, 0.05, 0.30),
-        vec3<f32>(0.10, 0.35, 0.95),
-        vec3<f32>(0.10, 0.80, 0.30),
-        vec3<f32>(0.95, 0.85, 0.10),
-        vec3<f32>(0.90, 0.10, 0.10),
+// src/colormap.rs viridis: R's viridisLite::viridis(9), linear between stops in sRGB.
+fn viridis(t: f32) -> vec3<f32> {
+    let stops = array<vec3<f32>, 9>(
+        vec3<f32>(68.0, 1.0, 84.0),
+        vec3<f32>(71.0, 45.0, 123.0),
+        vec3<f32>(59.0, 82.0, 139.0),
+        vec3<f32>(44.0, 114.0, 142.0),
+        vec3<f32>(33.0, 144.0, 140.0),
+        vec3<f32>(39.0, 173.0, 129.0),
+        vec3<f32>(93.0, 200.0, 99.0),
+        vec3<f32>(170.0, 220.0, 50.0),
+        vec3<f32>(253.0, 231.0, 37.0),
     );
-    let x = clamp(t, 0.0, 1.0) * 4.0;
-    let k = min(u32(floor(x)), 3u);
-    return mix(stops[k], stops[k + 1u], x - f32(k));
+    let x = clamp(t, 0.0, 1.0) * 8.0;
+    let k = min(u32(floor(x)), 7u);
+    return mix(stops[k], stops[k + 1u], x - f32(k)) / 255.0;
 }
 
 @compute @workgroup_size(16, 16, 1)
@@ -64,7 +68,7 @@ fn show(@builtin(global_invocation_id) gid: vec3<u32>) {
     var c = BACKGROUND;
     if t.a >= 0.5 {
         if display.kind == 1u {
-            c = false_colour(diff_scale_position(t.x));
+            c = viridis(diff_scale_position(t.x));
         } else {
             c = tone_map(t.rgb, display.exposure);
         }

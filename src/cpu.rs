@@ -7,7 +7,7 @@ use rayon::prelude::*;
 
 use crate::brdf::{Lobes, irradiance_scale, point_light_exact};
 use crate::ltc::lut::Lut;
-use crate::ltc::{Clipping, LtcPair, Normalization};
+use crate::ltc::{ClipCase, Clipping, LtcPair, Normalization};
 use crate::metrics::relative_difference;
 use crate::render::{
     Frame, FrameKind, LutFilter, Method, RenderSettings, ShadingFrame, SurfacePoint, Tables, View,
@@ -42,20 +42,24 @@ pub fn shade_exact(scene: &Scene, p: &SurfacePoint, lights: &[Light]) -> DVec3 {
         return DVec3::ZERO;
     }
     let frame = ShadingFrame::new(p.view);
-    let v = frame.tangent_from_world(p.view).to_array();
-    let m = &scene.material;
     lights.iter().fold(DVec3::ZERO, |sum, light| {
-        let u = frame.tangent_from_world(DVec3::from(light.position) - p.position);
-        let lobes = point_light_exact(
-            v,
-            u.to_array(),
-            1.0,
-            light.range_or_infinity(),
-            m.alpha,
-            m.f0,
-        );
-        sum + light.radiant_intensity() * combine(lobes, m.base_color)
+        sum + exact_term(scene, &frame, p, light)
     })
+}
+
+/// One light's exact radiance toward the camera (eq. 28's summand).
+pub fn exact_term(scene: &Scene, frame: &ShadingFrame, p: &SurfacePoint, light: &Light) -> DVec3 {
+    let m = &scene.material;
+    let u = frame.tangent_from_world(DVec3::from(light.position) - p.position);
+    let lobes = point_light_exact(
+        frame.tangent_from_world(p.view).to_array(),
+        u.to_array(),
+        1.0,
+        light.range_or_infinity(),
+        m.alpha,
+        m.f0,
+    );
+    light.radiant_intensity() * combine(lobes, m.base_color)
 }
 
 /// The LTC radiance toward the camera at `p` (eq. 30, corrected or paper-literal).
@@ -71,20 +75,32 @@ pub fn shade_ltc(
     if p.view.z <= 0.0 {
         return DVec3::ZERO;
     }
-    let m = &scene.material;
-    let px = LtcPixel::new(lut, m.alpha, p.view, filter);
+    let px = LtcPixel::new(lut, scene.material.alpha, p.view, filter);
     lights.iter().fold(DVec3::ZERO, |sum, light| {
-        let u = px
-            .frame
-            .tangent_from_world(DVec3::from(light.position) - p.position);
-        let d = u.length();
-        let e = irradiance_scale(1.0, d, light.range_or_infinity());
-        if e <= 0.0 {
-            return sum;
-        }
-        let lobes = px.pair.ltc_lobes(u / d, m.f0, clipping, normalization);
-        sum + light.radiant_intensity() * (e * combine(lobes, m.base_color))
+        sum + ltc_term(scene, &px, p, light, clipping, normalization)
     })
+}
+
+/// One light's LTC radiance toward the camera (eq. 30's summand).
+pub fn ltc_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    light: &Light,
+    clipping: Clipping,
+    normalization: Normalization,
+) -> DVec3 {
+    let m = &scene.material;
+    let u = px
+        .frame
+        .tangent_from_world(DVec3::from(light.position) - p.position);
+    let d = u.length();
+    let e = irradiance_scale(1.0, d, light.range_or_infinity());
+    if e <= 0.0 {
+        return DVec3::ZERO;
+    }
+    let lobes = px.pair.ltc_lobes(u / d, m.f0, clipping, normalization);
+    light.radiant_intensity() * (e * combine(lobes, m.base_color))
 }
 
 /// `specular + c · diffuse`, per channel.
@@ -170,28 +186,66 @@ fn render_radiance(scene: &Scene, s: &RenderSettings, pick: &Pick<'_>) -> Frame 
     }
 }
 
-/// How many lights fall in each clipping case at a surface point (the paper's §2.5).
+/// How many lights fall in each clipping case at a surface point (the paper's §2.5, in the
+/// four classes of `ClipCase`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ClipCounts {
-    /// Case 1: below the horizon (`n·l ≤ 0`).
-    pub below_horizon: usize,
-    /// Case 2: above the horizon, but pushed below it by `M⁻¹` of either lobe.
+    pub visible: usize,
+    /// Case 1: below the horizon, lifted above it by `M⁻¹` (the glow).
+    pub lifted: usize,
+    /// Case 2: above the horizon, pushed below it by `M⁻¹` (the negative light).
     pub pushed_below: usize,
+    /// Below the horizon and still below after `M⁻¹` (harmless once clipped).
+    pub stays_below: usize,
+}
+
+impl ClipCounts {
+    pub fn get(&self, case: ClipCase) -> usize {
+        match case {
+            ClipCase::Visible => self.visible,
+            ClipCase::Lifted => self.lifted,
+            ClipCase::PushedBelow => self.pushed_below,
+            ClipCase::StaysBelow => self.stays_below,
+        }
+    }
+
+    fn add_one(&mut self, case: ClipCase) {
+        match case {
+            ClipCase::Visible => self.visible += 1,
+            ClipCase::Lifted => self.lifted += 1,
+            ClipCase::PushedBelow => self.pushed_below += 1,
+            ClipCase::StaysBelow => self.stays_below += 1,
+        }
+    }
+
+    /// The class a case map paints a pixel: an artifact (case 1, then case 2) before the
+    /// harmless classes; `None` where no light reaches the point.
+    pub fn class(&self) -> Option<ClipCase> {
+        [
+            ClipCase::Lifted,
+            ClipCase::PushedBelow,
+            ClipCase::Visible,
+            ClipCase::StaysBelow,
+        ]
+        .into_iter()
+        .find(|&c| self.get(c) > 0)
+    }
 }
 
 impl std::ops::Add for ClipCounts {
     type Output = Self;
     fn add(self, b: Self) -> Self {
         Self {
-            below_horizon: self.below_horizon + b.below_horizon,
+            visible: self.visible + b.visible,
+            lifted: self.lifted + b.lifted,
             pushed_below: self.pushed_below + b.pushed_below,
+            stays_below: self.stays_below + b.stays_below,
         }
     }
 }
 
-/// Counts the lights that reach `p` (non-zero irradiance) in clipping cases 1 and 2.
+/// Counts the lights that reach `p` (non-zero irradiance) in each clipping case.
 pub fn clip_counts(scene: &Scene, lut: &Lut, p: &SurfacePoint, lights: &[Light]) -> ClipCounts {
-    use crate::ltc::ClipCase;
     let px = LtcPixel::new(lut, scene.material.alpha, p.view, LutFilter::Bilinear);
     let mut counts = ClipCounts::default();
     for light in lights {
@@ -202,25 +256,35 @@ pub fn clip_counts(scene: &Scene, lut: &Lut, p: &SurfacePoint, lights: &[Light])
         if irradiance_scale(1.0, d, light.range_or_infinity()) <= 0.0 {
             continue;
         }
-        let l = u / d;
-        match (px.pair.spec.clip_case(l), px.pair.diff.clip_case(l)) {
-            (ClipCase::BelowHorizon, _) => counts.below_horizon += 1,
-            (ClipCase::PushedBelow, _) | (_, ClipCase::PushedBelow) => counts.pushed_below += 1,
-            _ => {}
-        }
+        counts.add_one(px.pair.clip_case(u / d));
     }
     counts
 }
 
-/// Clipping counts summed over every pixel of a `width × height` view.
-pub fn clip_counts_image(scene: &Scene, lut: &Lut, width: usize, height: usize) -> ClipCounts {
+/// Each pixel's clipping counts for a `width × height` view (`None` off the plane), rows in
+/// parallel.
+pub fn clip_counts_map(
+    scene: &Scene,
+    lut: &Lut,
+    width: usize,
+    height: usize,
+) -> Vec<Option<ClipCounts>> {
     (0..height)
         .into_par_iter()
-        .map(|y| {
-            (0..width)
-                .filter_map(|x| scene.surface_point(x, y, width, height))
-                .map(|p| clip_counts(scene, lut, &p, &scene.lights))
-                .fold(ClipCounts::default(), std::ops::Add::add)
+        .flat_map_iter(|y| {
+            (0..width).map(move |x| {
+                scene
+                    .surface_point(x, y, width, height)
+                    .map(|p| clip_counts(scene, lut, &p, &scene.lights))
+            })
         })
-        .reduce(ClipCounts::default, std::ops::Add::add)
+        .collect()
+}
+
+/// Clipping counts summed over every pixel of a `width × height` view.
+pub fn clip_counts_image(scene: &Scene, lut: &Lut, width: usize, height: usize) -> ClipCounts {
+    clip_counts_map(scene, lut, width, height)
+        .into_iter()
+        .flatten()
+        .fold(ClipCounts::default(), std::ops::Add::add)
 }

@@ -49,21 +49,6 @@ pub fn diff_scale_position(rel: f64) -> f64 {
     ((rel.max(1e-300).log10() - lo) / (hi - lo)).clamp(0.0, 1.0)
 }
 
-/// A dark-blue → blue → green → yellow → red ramp, piecewise linear in sRGB.
-pub fn false_colour(t: f64) -> [u8; 3] {
-    const STOPS: [[f64; 3]; 5] = [
-        [0.05, 0.05, 0.30],
-        [0.10, 0.35, 0.95],
-        [0.10, 0.80, 0.30],
-        [0.95, 0.85, 0.10],
-        [0.90, 0.10, 0.10],
-    ];
-    let x = t.clamp(0.0, 1.0) * (STOPS.len() - 1) as f64;
-    let k = (x.floor() as usize).min(STOPS.len() - 2);
-    let f = x - k as f64;
-    std::array::from_fn(|c| to_u8(STOPS[k][c] * (1.0 - f) + STOPS[k + 1][c] * f))
-}
-
 /// Background (off the plane) in PNGs.
 const BACKGROUND: [u8; 3] = [24, 24, 28];
 
@@ -77,7 +62,9 @@ pub fn to_rgb8(frame: &Frame, exposure: f64) -> image::RgbImage {
         }
         match frame.kind {
             FrameKind::Radiance => tone_map(frame.pixels[k], exposure),
-            FrameKind::RelativeDifference => false_colour(diff_scale_position(frame.pixels[k].x)),
+            FrameKind::RelativeDifference => {
+                crate::colormap::viridis(diff_scale_position(frame.pixels[k].x))
+            }
         }
     };
     let mut img = image::RgbImage::from_fn(w, h, |x, y| image::Rgb(pixel((y * w + x) as usize)));
@@ -106,7 +93,7 @@ fn with_colour_bar(img: &image::RgbImage) -> image::RgbImage {
     let margin = 4 * scale;
     let span = w.saturating_sub(2 * margin).max(1);
     for x in 0..span {
-        let colour = false_colour(f64::from(x) / f64::from(span.max(2) - 1));
+        let colour = crate::colormap::viridis(f64::from(x) / f64::from(span.max(2) - 1));
         for y in top..top + bar {
             out.put_pixel(margin + x, y, image::Rgb(colour));
         }

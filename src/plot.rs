@@ -5,8 +5,8 @@ use std::sync::Once;
 
 use plotters::prelude::*;
 
+use crate::colormap::viridis;
 use crate::error::{Error, Result};
-use crate::output::false_colour;
 
 /// Registers the bundled font under plotters' "sans-serif" once per process.
 fn register_font() {
@@ -162,7 +162,7 @@ pub fn heat_map_png(
         let cells = (0..xs.len() - 1).flat_map(|i| (0..ys.len() - 1).map(move |j| (i, j)));
         chart
             .draw_series(cells.map(|(i, j)| {
-                let [r, g, b] = false_colour(crate::output::diff_scale_position(value(i, j)));
+                let [r, g, b] = viridis(crate::output::diff_scale_position(value(i, j)));
                 Rectangle::new(
                     [(xs[i], ys[j]), (xs[i + 1], ys[j + 1])],
                     RGBColor(r, g, b).filled(),
@@ -173,7 +173,7 @@ pub fn heat_map_png(
         let bar = bar.margin(8, 16, 70, 24);
         let (bw, _) = bar.dim_in_pixel();
         for x in 0..bw {
-            let [r, g, b] = false_colour(f64::from(x) / f64::from(bw.max(2) - 1));
+            let [r, g, b] = viridis(f64::from(x) / f64::from(bw.max(2) - 1));
             bar.draw(&Rectangle::new(
                 [(x as i32, 0), (x as i32 + 1, 16)],
                 RGBColor(r, g, b).filled(),

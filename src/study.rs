@@ -167,14 +167,21 @@ pub fn study_scene(lights: usize, alpha: f64, range: Option<f64>) -> Scene {
 
 /// Reads `study.csv`; errors name the file and line.
 pub fn read_csv(path: &std::path::Path) -> Result<Vec<StudyRow>> {
-    let name = path.display().to_string();
-    let text = crate::files::read_text(path)?;
-    let mut lines = text.lines().enumerate();
+    parse_csv(&crate::files::read_text(path)?, &path.display().to_string())
+}
+
+/// A `study.csv`'s text (`name` for errors); lines starting with `#` are comments (the
+/// bundled reference study states its device and size in them).
+pub fn parse_csv(text: &str, name: &str) -> Result<Vec<StudyRow>> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim_start().starts_with('#'));
     match lines.next() {
         Some((_, h)) if h.trim() == StudyRow::CSV_HEADER => {}
-        _ => {
+        other => {
             return Err(Error::input(
-                format!("{name} line 1"),
+                format!("{name} line {}", other.map_or(1, |(k, _)| k + 1)),
                 format!("the header must be '{}'", StudyRow::CSV_HEADER),
             ));
         }

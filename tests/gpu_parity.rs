@@ -108,7 +108,9 @@ fn gpu_matches_cpu_for_every_method_clip_and_normalization() {
 /// operation, ~10 operations in M⁻¹l and |w|⁴), so each term is good to ~5e-3; terms of one
 /// sign average out in the sum. 1e-2 of the reference luminance (floor: 1% of the mean).
 /// Scenes with α ≥ 0.12: at α near α_min, M⁻¹l spans more than f16's range (the study
-/// measures that).
+/// measures that). Not figure2-case2: its light lies 0.01 over the plane, so n·l is ~1e-3
+/// at most pixels and f16's absolute rounding of a unit vector's z (2.4e-4) is a 10–20%
+/// error of it — outside the per-term bound above by construction.
 #[test]
 fn gpu_f16_ltc_matches_cpu_to_half_precision() {
     let Some(g) = gpu() else { return };
@@ -119,7 +121,7 @@ fn gpu_f16_ltc_matches_cpu_to_half_precision() {
         ));
         return;
     }
-    for (name, scene) in scenes() {
+    for (name, scene) in scenes().into_iter().filter(|(n, _)| *n != "figure2-case2") {
         let cpu = cpu_frame(
             &scene,
             Method::Ltc,

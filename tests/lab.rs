@@ -71,12 +71,35 @@ fn options(pixels: usize) -> SnapshotOptions {
 
 #[test]
 fn snapshot_of_every_panel() {
-    let Some(mut all) = lab((1200.0, 700.0), LabState::default()) else {
+    let Some(mut all) = lab((1600.0, 900.0), LabState::default()) else {
         return;
     };
     let mut results = SnapshotResults::new();
-    all.snapshot_options("lab_all", &options(1200 * 700));
+    all.snapshot_options("lab_all", &options(1600 * 900));
     results.extend_harness(&mut all);
+    // Below the grid's minimum the panels go under tabs.
+    let mut small = lab((1024.0, 640.0), LabState::default()).unwrap();
+    assert!(
+        small.query_by_label("Matrix and LUT").is_some(),
+        "no tabs at 1024×640"
+    );
+    small.snapshot_options("layout_1024x640", &options(1024 * 640));
+    results.extend_harness(&mut small);
+    let mut matrix = lab((900.0, 760.0), maximised(PanelId::Matrix)).unwrap();
+    matrix.snapshot_options("matrix_heatmaps_colorbars", &options(900 * 760));
+    results.extend_harness(&mut matrix);
+    // The chart opens with the bundled reference study (measured with `ltc-lab study`).
+    let mut chart = lab((900.0, 560.0), maximised(PanelId::Chart)).unwrap();
+    assert!(
+        chart
+            .state()
+            .state
+            .measurement
+            .as_ref()
+            .is_some_and(|m| !m.points.is_empty() && !m.scaling.is_empty())
+    );
+    chart.snapshot_options("chart_measured", &options(900 * 560));
+    results.extend_harness(&mut chart);
     for id in PanelId::ALL {
         let mut h = lab((800.0, 500.0), maximised(id)).unwrap();
         h.snapshot_options(format!("lab_{id:?}").to_lowercase(), &options(800 * 500));
@@ -85,7 +108,7 @@ fn snapshot_of_every_panel() {
     // Two tables compared: the classic table (A) against the point fit (B), as the
     // difference map, with the lobe and matrix panels showing both.
     let mut tables = lab(
-        (1200.0, 700.0),
+        (1600.0, 900.0),
         LabState {
             compare: Compare::TableB,
             view: View::Diff,
@@ -93,14 +116,14 @@ fn snapshot_of_every_panel() {
         },
     )
     .unwrap();
-    tables.snapshot_options("lab_tables", &options(1200 * 700));
+    tables.snapshot_options("lab_tables", &options(1600 * 900));
     results.extend_harness(&mut tables);
     results.unwrap();
 }
 
 #[test]
 fn moving_alpha_changes_the_matrix_and_the_plane() {
-    let Some(mut h) = lab((1200.0, 700.0), LabState::default()) else {
+    let Some(mut h) = lab((1600.0, 900.0), LabState::default()) else {
         return;
     };
     let before_alpha = h.state().state.alpha();
@@ -149,7 +172,7 @@ fn moving_alpha_changes_the_matrix_and_the_plane() {
 
 #[test]
 fn clicking_a_heat_map_cell_selects_it() {
-    let Some(mut h) = lab((1000.0, 800.0), maximised(PanelId::Matrix)) else {
+    let Some(mut h) = lab((1000.0, 1000.0), maximised(PanelId::Matrix)) else {
         return;
     };
     let rect = h.get_by_label("spec.norm heat map").rect();
@@ -178,31 +201,123 @@ fn clicking_a_heat_map_cell_selects_it() {
     assert_eq!(app.matrix.current_cell, (10, 50));
 }
 
+/// Total positive luminance of a clipping picture (row 0: case 1, row 1: case 2).
+fn picture_energy(h: &Harness<'static, LabApp>, row: usize, k: usize) -> f64 {
+    let f = &h.state().clipping.rows[row].thumbs[k].frame;
+    f.pixels
+        .iter()
+        .map(|&p| ltc_lab::metrics::luminance(p).max(0.0))
+        .sum()
+}
+
+/// Pixels of a shown picture bright enough to see on the dark panel (any channel ≥ 64/255:
+/// a quarter of full scale, well above the background's 24–28).
+fn visible_pixels(image: &egui::ColorImage) -> usize {
+    image
+        .pixels
+        .iter()
+        .filter(|c| c.r().max(c.g()).max(c.b()) >= 64)
+        .count()
+}
+
+/// Pixels in the diverging map's negative (blue) half: blue well above red.
+fn blue_pixels(image: &egui::ColorImage) -> usize {
+    image
+        .pixels
+        .iter()
+        .filter(|c| c.b() >= 96 && i32::from(c.b()) > i32::from(c.r()) + 40)
+        .count()
+}
+
 #[test]
-fn case_1_rule_off_makes_the_glow_appear() {
+fn clipping_rules_off_show_the_glow_and_the_negative_light() {
     let Some(mut h) = lab((1000.0, 700.0), maximised(PanelId::Clipping)) else {
         return;
     };
-    // (c): the light below the plane, with both rules on: black.
-    assert_eq!(h.state().clipping.picture_energy(2), 0.0);
+    let mut results = SnapshotResults::new();
+    // (c) of case 1: the light below the plane, with both rules on: black; (d) always.
+    assert_eq!(picture_energy(&h, 0, 2), 0.0);
     assert_eq!(
-        h.state().clipping.picture_energy(3),
+        picture_energy(&h, 0, 3),
         0.0,
         "the exact BRDF never lights from below"
     );
     h.get_by_label_contains("case 1 rule").click();
     h.run_steps(3);
-    assert!(!h.state().state.clip_panel.horizon);
-    let glow = h.state().clipping.picture_energy(2);
-    assert!(glow > 0.0, "no glow without the horizon rule");
-    assert_eq!(h.state().clipping.picture_energy(3), 0.0);
-    h.get_by_label_contains("case 1 rule").click();
-    h.run_steps(3);
-    assert_eq!(
-        h.state().clipping.picture_energy(2),
-        0.0,
-        "the glow did not vanish"
+    // One set of rules: the panel's checkbox is the lab's.
+    assert!(!h.state().state.clipping.horizon);
+    assert!(
+        picture_energy(&h, 0, 2) > 0.0,
+        "no glow without the horizon rule"
     );
+    assert_eq!(picture_energy(&h, 0, 3), 0.0);
+    let glow = &h.state().clipping.rows[0].thumbs[2];
+    // The glow, ~1/200 of the lit plane, exposed to itself: a visible patch, not a dot.
+    assert!(glow.factor > 50.0, "exposure ×{}", glow.factor);
+    let seen = visible_pixels(&glow.image);
+    assert!(seen > 500, "only {seen} visible pixels in the exposed glow");
+    h.snapshot_options("clipping_case1_glow", &options(1000 * 700));
+    results.extend_harness(&mut h);
+    h.get_by_label_contains("case 1 rule").click();
+    h.get_by_label_contains("case 2 rule").click();
+    h.run_steps(3);
+    assert_eq!(picture_energy(&h, 0, 2), 0.0, "the glow did not vanish");
+    let negative = &h.state().clipping.rows[1].thumbs[2];
+    let min = negative
+        .frame
+        .pixels
+        .iter()
+        .map(|&p| ltc_lab::metrics::luminance(p))
+        .fold(0.0, f64::min);
+    assert!(
+        min < 0.0 && negative.negative_factor.is_some(),
+        "no negative light: {min}"
+    );
+    let blue = blue_pixels(&negative.image);
+    assert!(blue > 2000, "only {blue} pixels show the negative light");
+    // The same rule on: nothing negative, nothing blue.
+    assert_eq!(blue_pixels(&h.state().clipping.rows[0].thumbs[2].image), 0);
+    h.snapshot_options("clipping_case2_negative", &options(1000 * 700));
+    results.extend_harness(&mut h);
+    results.unwrap();
+}
+
+#[test]
+fn the_clipping_case_map_is_the_cpu_classification() {
+    let Some(mut h) = lab(
+        (1000.0, 700.0),
+        LabState {
+            clip_scene: ltc_lab::app::ClipScene::Case2,
+            ..maximised(PanelId::Clipping)
+        },
+    ) else {
+        return;
+    };
+    let app = h.state();
+    let (w, hgt) = ltc_lab::app::clipping::PICTURE;
+    for (r, which) in [
+        ltc_lab::app::ClipScene::Case1,
+        ltc_lab::app::ClipScene::Case2,
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let scene = app.state.clip_setup.scene(which, which);
+        let reference = ltc_lab::cpu::clip_counts_map(&scene, &app.lut, w, hgt);
+        let row = &app.clipping.rows[r];
+        assert_eq!(row.case_map, reference, "{which:?}");
+        let classified = reference
+            .iter()
+            .flatten()
+            .filter(|c| c.class().is_some())
+            .count();
+        assert_eq!(row.class_counts.iter().sum::<usize>(), classified);
+    }
+    // Case 1's light lifts part of the plane, case 2's pushes most of it below.
+    assert!(app.clipping.rows[0].class_counts[1] > 0);
+    assert!(app.clipping.rows[1].class_counts[2] > w * hgt / 4);
+    h.snapshot_options("clipping_case_map", &options(1000 * 700));
+    h.run_steps(1);
 }
 
 #[test]
@@ -284,7 +399,7 @@ fn refit_runs_the_fitter_live_and_the_lobe_panel_follows() {
 
 #[test]
 fn a_broken_lut_file_is_reported_and_the_lab_keeps_its_table() {
-    let Some(mut h) = lab((1200.0, 700.0), LabState::default()) else {
+    let Some(mut h) = lab((1600.0, 900.0), LabState::default()) else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
@@ -563,4 +678,75 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     h.get_by_label("reset").click();
     settle(&mut h);
     assert_eq!(h.state().other.name, "classic");
+}
+
+#[test]
+fn a_pinned_pixel_opens_into_its_lights_and_one_shows_on_the_lobe() {
+    let state = LabState {
+        maximised: Some(PanelId::Plane),
+        ..LabState::default()
+    };
+    let Some(mut h) = lab((1000.0, 700.0), state) else {
+        return;
+    };
+    let rect = h.get_by_label("plane image").rect();
+    // Beside the lights' markers: the near half of the plane, a fifth from the left.
+    let at = egui::pos2(
+        rect.min.x + rect.width() * 0.2,
+        rect.min.y + rect.height() * 0.8,
+    );
+    h.hover_at(at);
+    h.run_steps(1);
+    h.drag_at(at);
+    h.run_steps(1);
+    h.drop_at(at);
+    settle(&mut h);
+    let app = h.state();
+    let [u, v] = app.state.pinned.expect("the click pinned a pixel");
+    assert!(
+        (u - 0.2).abs() < 0.01 && (v - 0.8).abs() < 0.01,
+        "pinned at ({u}, {v})"
+    );
+    let t = app
+        .plane
+        .pinned
+        .as_ref()
+        .expect("the pinned pixel's lights");
+    assert_eq!(t.terms.len(), app.state.scene.lights.len());
+    // The table's pixel is the plane's: the CPU reference at the same point.
+    let scene = app.state.shaded_scene();
+    let (w, hgt) = app.plane.shown.unwrap().size;
+    let p = scene
+        .surface_point_at(u * w as f64, v * hgt as f64, w, hgt)
+        .unwrap();
+    let exact = ltc_lab::cpu::shade_exact(&scene, &p, &scene.lights);
+    assert_eq!(t.exact, exact);
+    // The readout sits in its own strip.
+    assert!(h.query_by_label_contains("pinned (0.2").is_some());
+    // Sorted by the share of the error, largest first: click the top row's index.
+    let top = ltc_lab::app::pixel_table::sorted_rows(t, h.state().state.light_sort)[0];
+    let (index, omega) = (top.index, top.omega);
+    h.get_by_label(&index.to_string()).click();
+    h.run_steps(2);
+    assert_eq!(h.state().state.lobe_light, Some(omega.to_array()));
+    assert_eq!(h.state().state.selected_light, Some(index));
+    h.snapshot_options("plane_pixel_pinned_lights", &options(1000 * 700));
+}
+
+#[test]
+fn the_lobe_difference_at_80_degrees_shows_the_gap() {
+    let mut state = maximised(PanelId::Lobe);
+    state.theta_o_deg = 80.0;
+    state.scene.material.alpha = 0.6;
+    state.colour_difference = true;
+    let Some(mut h) = lab((800.0, 600.0), state) else {
+        return;
+    };
+    h.snapshot_options("lobe_difference_80deg", &options(800 * 600));
+    let image = h.render().expect("a rendered frame");
+    // The sphere is no longer one grey: both signs of the difference show, as saturated
+    // diverging colours (the map's orange and blue halves), on a few hundred pixels each.
+    let orange = image.pixels().filter(|p| p[0] > 150 && p[2] < 90).count();
+    let blue = image.pixels().filter(|p| p[2] > 150 && p[0] < 90).count();
+    assert!(orange > 300 && blue > 300, "orange {orange}, blue {blue}");
 }

@@ -107,7 +107,7 @@ fn case_1_light_below_the_horizon_glows_only_without_the_horizon_rule() {
     let ltc = tilted();
     // Below the horizon (z < 0) yet (M⁻¹l).z = 0.5·0.9 − 0.6·0.1 > 0.
     let l = DVec3::new(-0.9, 0.0, -0.1).normalize();
-    assert_eq!(ltc.clip_case(l), ClipCase::BelowHorizon);
+    assert_eq!(ltc.clip_case(l), ClipCase::Lifted);
     assert!((ltc.cos_from_brdf * l).z > 0.0);
     assert_eq!(
         ltc.ltc_eval(l, Clipping::BOTH, Normalization::Corrected),
@@ -136,6 +136,19 @@ fn case_2_light_pushed_below_is_negative_only_without_the_transformed_rule() {
         0.0
     );
     assert!(ltc.ltc_eval(l, Clipping::HORIZON, Normalization::Corrected) < 0.0);
+    assert!(ltc.ltc_eval(l, Clipping::NONE, Normalization::Corrected) < 0.0);
+}
+
+#[test]
+fn a_light_below_that_stays_below_is_removed_by_either_rule_and_negative_by_none() {
+    let ltc = tilted();
+    // Below (z < 0) and (M⁻¹l).z = −0.5·0.1 − 0.6·0.9 < 0: it stays below.
+    let l = DVec3::new(0.1, 0.0, -0.9).normalize();
+    assert!((ltc.cos_from_brdf * l).z < 0.0);
+    assert_eq!(ltc.clip_case(l), ClipCase::StaysBelow);
+    for c in [Clipping::BOTH, Clipping::HORIZON, Clipping::TRANSFORMED] {
+        assert_eq!(ltc.ltc_eval(l, c, Normalization::Corrected), 0.0);
+    }
     assert!(ltc.ltc_eval(l, Clipping::NONE, Normalization::Corrected) < 0.0);
 }
 

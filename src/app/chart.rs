@@ -6,11 +6,14 @@
 
 use egui::Color32;
 
+use crate::app::axes::log_axis;
+
 use crate::app::measure::{MEASURE_SIZE, MeasureJob, Measurement, Point, REPEATS};
 use crate::app::shading::Shading;
 use crate::app::state::LabState;
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
 use crate::ltc::lut::Lut;
+use crate::render::Method;
 
 #[derive(Default)]
 pub struct ChartPanel {
@@ -30,6 +33,9 @@ impl ChartPanel {
             } else {
                 ui.ctx().request_repaint();
             }
+        }
+        if s.measurement.is_none() {
+            s.measurement = reference_study();
         }
         ui.horizontal_wrapped(|ui| {
             match &self.job {
@@ -51,7 +57,7 @@ impl ChartPanel {
                     }
                 }
             }
-            ui.add(egui::TextEdit::singleline(&mut self.study_path).desired_width(110.0).hint_text("study.csv"))
+            ui.add(egui::TextEdit::singleline(&mut self.study_path).desired_width(110.0).hint_text("path to a study.csv"))
                 .on_hover_text("A study.csv written by `ltc-lab study`, to plot instead of a live measurement");
             if ui.small_button("load study").on_hover_text("Plot the study.csv named on the left").clicked() {
                 let path = self.study_path.trim();
@@ -63,7 +69,7 @@ impl ChartPanel {
                             s.measurement = Some(Measurement::from_study(&rows, path));
                             self.error = None;
                         }
-                        Err(e) => self.error = Some(e.to_string()),
+                        Err(e) => self.error = Some(format!("load study {path}: {e}")),
                     }
                 }
             }
@@ -79,9 +85,6 @@ impl ChartPanel {
         ui.horizontal(|ui| {
             ui.allocate_ui(egui::vec2(half, height), |ui| {
                 // The axes of `study.png` (src/plot.rs): log time, log error, exact at 1e-7.
-                let power = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
-                    format!("{:.3}", 10f64.powf(mark.value))
-                };
                 let exponent = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
                     // Only whole exponents: finer grid marks would round to repeated labels.
                     if (mark.value - mark.value.round()).abs() < 1e-9 {
@@ -90,11 +93,11 @@ impl ChartPanel {
                         String::new()
                     }
                 };
-                egui_plot::Plot::new("time vs error")
+                let plot = egui_plot::Plot::new("time vs error")
                     .x_axis_label("GPU ms per frame (log)")
-                    .y_axis_label("relative RMSE against the exact BRDF (log; exact at 1e-7)")
-                    .x_axis_formatter(power)
-                    .y_axis_formatter(exponent)
+                    .y_axis_label("relative RMSE (log; exact at 1e-7)")
+                    .y_axis_formatter(exponent);
+                log_axis(plot, true)
                     .legend(egui_plot::Legend::default().position(egui_plot::Corner::LeftBottom))
                     .allow_scroll(false)
                     .show(ui, |p| {
@@ -116,36 +119,61 @@ impl ChartPanel {
                                     ]
                                 })
                                 .collect();
-                            p.points(egui_plot::Points::new(name.to_string(), series).radius(5.0));
+                            p.points(
+                                egui_plot::Points::new(name.to_string(), series)
+                                    .radius(5.0)
+                                    .color(method_colour(name)),
+                            );
                         }
                     });
             });
             ui.allocate_ui(egui::vec2(half, height), |ui| {
-                egui_plot::Plot::new("fps vs lights")
-                    .x_axis_label("lights")
-                    .y_axis_label("fps")
+                let plot = egui_plot::Plot::new("fps vs lights")
+                    .x_axis_label("lights (log)")
+                    .y_axis_label("fps (log)")
                     .legend(egui_plot::Legend::default())
-                    .allow_scroll(false)
-                    .show(ui, |p| {
-                        let paper = |fps: [f64; 4]| -> Vec<[f64; 2]> {
-                            PAPER_LIGHTS
-                                .iter()
-                                .zip(fps)
-                                .map(|(&n, f)| [n as f64, f])
-                                .collect()
-                        };
+                    .allow_scroll(false);
+                // Both axes by decades: the GTX 1060's thousands of fps and a CPU driver's
+                // few share the plot without flattening either.
+                log_axis(log_axis(plot, true), false).show(ui, |p| {
+                    let log = |series: &[[f64; 2]]| -> Vec<[f64; 2]> {
+                        series
+                            .iter()
+                            .filter(|q| q[0] > 0.0 && q[1] > 0.0)
+                            .map(|q| [q[0].log10(), q[1].log10()])
+                            .collect()
+                    };
+                    let paper = |fps: [f64; 4]| -> Vec<[f64; 2]> {
+                        let points: Vec<[f64; 2]> = PAPER_LIGHTS
+                            .iter()
+                            .zip(fps)
+                            .map(|(&n, f)| [n as f64, f])
+                            .collect();
+                        log(&points)
+                    };
+                    // The paper's lines dashed, in colours no measured method uses.
+                    p.line(
+                        egui_plot::Line::new("paper BRDF (GTX 1060)", paper(PAPER_BRDF_FPS))
+                            .color(PAPER_BRDF_COLOUR)
+                            .style(egui_plot::LineStyle::dashed_dense()),
+                    );
+                    p.line(
+                        egui_plot::Line::new("paper LTC (GTX 1060)", paper(PAPER_LTC_FPS))
+                            .color(PAPER_LTC_COLOUR)
+                            .style(egui_plot::LineStyle::dashed_dense()),
+                    );
+                    for (m, series) in s.measurement.iter().flat_map(|m| &m.scaling) {
                         p.line(
-                            egui_plot::Line::new("paper BRDF (GTX 1060)", paper(PAPER_BRDF_FPS))
-                                .style(egui_plot::LineStyle::dashed_dense()),
+                            egui_plot::Line::new(m.name(), log(series))
+                                .color(method_colour(m.name())),
                         );
-                        p.line(
-                            egui_plot::Line::new("paper LTC (GTX 1060)", paper(PAPER_LTC_FPS))
-                                .style(egui_plot::LineStyle::dashed_dense()),
+                        p.points(
+                            egui_plot::Points::new(m.name(), log(series))
+                                .radius(3.0)
+                                .color(method_colour(m.name())),
                         );
-                        for (m, series) in s.measurement.iter().flat_map(|m| &m.scaling) {
-                            p.line(egui_plot::Line::new(m.name(), series.clone()));
-                        }
-                    });
+                    }
+                });
             });
         });
     }
@@ -169,4 +197,42 @@ impl ChartPanel {
     pub fn busy(&self) -> bool {
         self.job.is_some()
     }
+}
+
+/// The paper's reference lines' colours (greys, so that no measured method shares them).
+const PAPER_BRDF_COLOUR: Color32 = Color32::from_gray(210);
+const PAPER_LTC_COLOUR: Color32 = Color32::from_gray(140);
+
+/// One colour per method in every plot, from its name (a study's variants start with it):
+/// egui_plot's automatic colours follow the drawing order and differ between the two plots.
+pub fn method_colour(label: &str) -> Color32 {
+    const PALETTE: [Color32; 6] = [
+        Color32::from_rgb(240, 150, 60),
+        Color32::from_rgb(230, 90, 90),
+        Color32::from_rgb(70, 140, 255),
+        Color32::from_rgb(90, 210, 120),
+        Color32::from_rgb(200, 110, 230),
+        Color32::from_rgb(60, 210, 210),
+    ];
+    // The longest method name the label starts with ("ltc-fast-point" is ltc-fast's).
+    Method::ALL
+        .iter()
+        .enumerate()
+        .filter(|(_, m)| label.starts_with(m.name()))
+        .max_by_key(|(_, m)| m.name().len())
+        .map_or(Color32::from_gray(180), |(k, _)| PALETTE[k % PALETTE.len()])
+}
+
+/// The bundled reference study (assets/study/reference.csv: its device and size are in its
+/// comment lines), shown until the user measures or loads one.
+pub fn reference_study() -> Option<Measurement> {
+    let text = include_str!("../../assets/study/reference.csv");
+    let rows = crate::study::parse_csv(text, "assets/study/reference.csv").ok()?;
+    let device = text
+        .lines()
+        .find_map(|l| l.strip_prefix("# device: "))
+        .unwrap_or("unknown device");
+    let mut m = Measurement::from_study(&rows, "reference study");
+    m.device = format!("reference study ({device}) — press measure for this machine");
+    Some(m)
 }

@@ -1,187 +1,608 @@
-//! The clipping panel: the paper's Figure 2 — one light at (0, 0, 1) and at (0, 0, −0.158731),
-//! α = 0.5, LTC against BRDF — recomputed live with each clipping rule on or off, so that the
-//! glow of case 1 and the negative light of case 2 appear and vanish; a map of which pixels
-//! see the light in which case; and a radiance profile through the image's centre.
+//! The clipping panel: the paper's Figure 2 for both clipping cases — per case, (a) LTC and
+//! (b) BRDF with the light above the plane, (c) LTC and (d) BRDF with the case's light —
+//! each picture exposed to its own content with its factor printed, negative light in the
+//! diverging map; each case's four-class case map with a legend and counts; and a profile
+//! along a line dragged on any picture (by default through the case's strongest artifact) on
+//! a symmetric log axis. The rules are the lab's own; α, the light and the table are edited
+//! here.
 
-use egui::{Color32, Vec2};
+use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
-use crate::app::state::{ClipScene, LabState};
-use crate::cpu::{ClipCounts, clip_counts, render};
+use crate::app::axes::symlog_y;
+use crate::app::display::rgb;
+use crate::app::other::OtherTable;
+use crate::app::state::{ClipScene, ClipSetup, LabState};
+use crate::colormap::{diverging, round_sig, short_number};
+use crate::cpu::{ClipCounts, clip_counts_map, render};
 use crate::ltc::lut::Lut;
-use crate::ltc::{Clipping, Normalization};
+use crate::ltc::{ClipCase, Clipping, Normalization};
 use crate::metrics::luminance;
-use crate::output::tone_map;
+use crate::output::srgb_encode;
 use crate::render::{Frame, Method, RenderSettings};
-use crate::scene::preset;
 
-/// Size of each small picture: the CPU reference renders all of them (one light each).
+/// Size of each picture: the CPU reference renders all of them (one light each, ~2 ms).
 pub const PICTURE: (usize, usize) = (192, 108);
+
+/// The two rows: case 1 and case 2.
+const ROWS: [ClipScene; 2] = [ClipScene::Case1, ClipScene::Case2];
 
 #[derive(Clone, Debug, PartialEq)]
 struct Key {
     clip: Clipping,
-    scene: ClipScene,
     normalization: Normalization,
+    setup: ClipSetup,
+}
+
+/// One picture: its render, the image shown, and how it was exposed.
+pub struct Thumb {
+    pub frame: Frame,
+    pub image: egui::ColorImage,
+    texture: Option<egui::TextureHandle>,
+    /// The exposure factors of the positive and (if any) negative parts.
+    pub factor: f64,
+    pub negative_factor: Option<f64>,
+    pub caption: String,
+}
+
+/// A case row: its four pictures, its case map and the profile's renders.
+pub struct CaseRow {
+    pub thumbs: Vec<Thumb>,
+    pub case_map: Vec<Option<ClipCounts>>,
+    map_image: egui::ColorImage,
+    map_texture: Option<egui::TextureHandle>,
+    /// Pixels per class, in `ClipCase::ALL`'s order.
+    pub class_counts: [usize; 4],
+    /// BRDF, LTC with both rules, LTC as toggled, LTC without this case's rule.
+    pub profile_frames: [Frame; 4],
+    /// The line through the case's strongest artifact, in picture coordinates (0–1).
+    pub default_line: [Pos2; 2],
 }
 
 #[derive(Default)]
 pub struct ClippingPanel {
     key: Option<Key>,
-    /// (a) normal LTC, (b) normal BRDF, (c) case-1 LTC, (d) case-1 BRDF.
-    pub pictures: Vec<Frame>,
-    pub case_map: Vec<ClipCounts>,
-    textures: Vec<egui::TextureHandle>,
-    /// Luminance along the centre row: BRDF, LTC with both rules (eq. 30), LTC with the rules
-    /// as toggled, LTC with none.
-    profiles: [Vec<[f64; 2]>; 4],
+    pub rows: Vec<CaseRow>,
+    /// The user's profile line (picture coordinates, 0–1), while one is drawn.
+    pub line: Option<[Pos2; 2]>,
+    drag_from: Option<Pos2>,
 }
 
-const CAPTIONS: [&str; 4] = [
-    "(a) LTC, light at (0, 0, 1)",
-    "(b) BRDF, light at (0, 0, 1)",
-    "(c) LTC, light at (0, 0, −0.158731)",
-    "(d) BRDF, light at (0, 0, −0.158731)",
+/// The case map's class colours, in `ClipCase::ALL`'s order: grey for visible, the glow's
+/// orange for case 1, the negative light's blue for case 2 (as in the diverging map), and a
+/// dark violet for the harmless "stays below".
+pub const CLASS_COLOURS: [Color32; 4] = [
+    Color32::from_rgb(120, 120, 128),
+    Color32::from_rgb(245, 150, 40),
+    Color32::from_rgb(60, 140, 255),
+    Color32::from_rgb(70, 45, 85),
 ];
 
+const BACKGROUND: Color32 = Color32::from_rgb(24, 24, 28);
+
+/// The rule that case `row` is about, off: what the profile's last line shows.
+fn without_case_rule(row: ClipScene) -> Clipping {
+    match row {
+        ClipScene::Case2 => Clipping::HORIZON,
+        _ => Clipping::TRANSFORMED,
+    }
+}
+
 impl ClippingPanel {
-    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
+    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, other: &OtherTable) {
         ui.horizontal_wrapped(|ui| {
-            ui.checkbox(&mut s.clip_panel.horizon, "case 1 rule (n·l ≤ 0 -> 0)")
-                .on_hover_text("Off: the light below the plane is lifted above the horizon by M^-1 and the LTC glows (c), while the BRDF (d) stays black");
-            ui.checkbox(&mut s.clip_panel.transformed, "case 2 rule ((M^-1l).z ≤ 0 -> 0)")
-                .on_hover_text("Off: a light above the horizon that M^-1 pushes below contributes negative light (see the case-2 map and profile)");
-            ui.label("map and profile of:");
-            for (c, name) in [(ClipScene::Normal, "normal"), (ClipScene::Case1, "case 1"), (ClipScene::Case2, "case 2")] {
-                ui.selectable_value(&mut s.clip_scene, c, name)
-                    .on_hover_text(format!("The {} preset", c.preset()));
+            ui.checkbox(&mut s.clipping.horizon, "case 1 rule (n·l ≤ 0 -> 0)")
+                .on_hover_text("The lab's rule (the side panel's \"clip case 1\"). Off: the light below the plane is lifted above the horizon by M^-1 and the LTC glows (c), while the BRDF (d) stays black");
+            ui.checkbox(&mut s.clipping.transformed, "case 2 rule ((M^-1 l).z ≤ 0 -> 0)")
+                .on_hover_text("The lab's rule (the side panel's \"clip case 2\"). Off: a light above the horizon that M^-1 pushes below contributes negative light (blue)");
+            ui.separator();
+            ui.label("table");
+            ui.selectable_value(&mut s.clip_setup.table_b, false, "A")
+                .on_hover_text("Table A, the one the lab shades with");
+            ui.selectable_value(&mut s.clip_setup.table_b, true, format!("B ({})", other.name))
+                .on_hover_text("Table B, the other fit");
+            if ui.small_button("reset").on_hover_text("The presets' α and lights").clicked() {
+                s.clip_setup = ClipSetup::default();
+                self.line = None;
             }
         });
-        self.ensure(ui.ctx(), s, lut);
-        let avail = ui.available_width();
-        let w = ((avail - 20.0) / 5.0).max(40.0);
-        let h = w * PICTURE.1 as f32 / PICTURE.0 as f32;
-        ui.horizontal(|ui| {
-            for (k, t) in self.textures.iter().enumerate() {
-                ui.vertical(|ui| {
-                    ui.add(egui::Image::new(t).fit_to_exact_size(Vec2::new(w, h)))
-                        .on_hover_text(CAPTIONS.get(k).copied().unwrap_or("clipping cases: green visible, red case 1 (below the horizon), blue case 2 (pushed below by M^-1)"));
-                    ui.small(CAPTIONS.get(k).copied().unwrap_or("case map"));
-                });
-            }
-        });
-        let [brdf, clipped, toggled, unclipped] = self.profiles.clone();
-        egui_plot::Plot::new("clip profile")
-            .legend(egui_plot::Legend::default())
-            .x_axis_label("x along the centre row (pixels)")
-            .y_axis_label("luminance")
-            .allow_scroll(false)
-            .show(ui, |p| {
-                p.line(egui_plot::Line::new("BRDF", brdf).color(Color32::from_rgb(240, 150, 60)));
-                p.line(
-                    egui_plot::Line::new("LTC clipped (eq. 30)", clipped)
-                        .color(Color32::from_rgb(70, 140, 255)),
-                );
-                p.line(
-                    egui_plot::Line::new("LTC, rules as toggled", toggled)
-                        .color(Color32::from_rgb(90, 210, 120)),
-                );
-                p.line(
-                    egui_plot::Line::new("LTC unclipped (click to hide)", unclipped)
-                        .color(Color32::from_rgb(220, 80, 200)),
-                );
+        let table = if s.clip_setup.table_b {
+            &other.lut
+        } else {
+            lut
+        };
+        self.ensure(s, table);
+        egui::ScrollArea::vertical()
+            .auto_shrink([false; 2])
+            .show(ui, |ui| {
+                for (r, &row) in ROWS.iter().enumerate() {
+                    self.row_controls(ui, s, row);
+                    self.row_pictures(ui, s, r, row);
+                }
+                self.legend(ui, s);
+                self.profile(ui, s);
             });
     }
 
-    fn ensure(&mut self, ctx: &egui::Context, s: &LabState, lut: &Lut) {
+    /// The row's title, α and light position.
+    fn row_controls(&mut self, ui: &mut egui::Ui, s: &mut LabState, row: ClipScene) {
+        let k = row.index();
+        ui.horizontal_wrapped(|ui| {
+            let selected = s.clip_scene == row;
+            let title = match row {
+                ClipScene::Case2 => "case 2: light above, pushed below by M^-1",
+                _ => "case 1: light below, lifted by M^-1",
+            };
+            if ui
+                .selectable_label(selected, egui::RichText::new(title).strong())
+                .on_hover_text("Show this case's legend and profile")
+                .clicked()
+            {
+                s.clip_scene = row;
+                self.line = None;
+            }
+            ui.add(
+                egui::DragValue::new(&mut s.clip_setup.alpha[k])
+                    .range(crate::ltc::lut::ALPHA_MIN..=1.0)
+                    .speed(0.005)
+                    .prefix("α "),
+            )
+            .on_hover_text("This case's roughness (all four pictures of the row)");
+            ui.label("light");
+            for (c, axis) in ["x ", "y ", "z "].into_iter().enumerate() {
+                ui.add(
+                    egui::DragValue::new(&mut s.clip_setup.light[k][c])
+                        .range(-3.0..=3.0)
+                        .speed(0.005)
+                        .max_decimals(4)
+                        .prefix(axis),
+                )
+                .on_hover_text("The case light's position, scene units (the plane spans ±2)");
+            }
+        });
+    }
+
+    /// A row's four pictures and its case map; drag on any to draw the profile's line.
+    fn row_pictures(&mut self, ui: &mut egui::Ui, s: &mut LabState, r: usize, row: ClipScene) {
+        let w = ((ui.available_width() - 24.0) / 5.0).clamp(40.0, 320.0);
+        let size = Vec2::new(w, w * PICTURE.1 as f32 / PICTURE.0 as f32);
+        let line = self.line_or_default(s);
+        let show_line = s.clip_scene == row;
+        let Some(case_row) = self.rows.get_mut(r) else {
+            return;
+        };
+        let mut drawn: Option<(Pos2, Pos2, bool)> = None;
+        ui.horizontal(|ui| {
+            let count = case_row.thumbs.len() + 1;
+            for k in 0..count {
+                ui.vertical(|ui| {
+                    ui.set_width(size.x);
+                    let (texture, caption, hover) = if k < case_row.thumbs.len() {
+                        let t = &mut case_row.thumbs[k];
+                        let texture = t
+                            .texture
+                            .get_or_insert_with(|| {
+                                ui.ctx().load_texture(
+                                    format!("clip{r}-{k}"),
+                                    t.image.clone(),
+                                    egui::TextureOptions::LINEAR,
+                                )
+                            })
+                            .id();
+                        (texture, t.caption.clone(), Some(&t.frame))
+                    } else {
+                        let texture = case_row
+                            .map_texture
+                            .get_or_insert_with(|| {
+                                ui.ctx().load_texture(
+                                    format!("clipmap{r}"),
+                                    case_row.map_image.clone(),
+                                    egui::TextureOptions::NEAREST,
+                                )
+                            })
+                            .id();
+                        (texture, "case map".to_string(), None)
+                    };
+                    let (rect, response) =
+                        ui.allocate_exact_size(size, egui::Sense::click_and_drag());
+                    let name = format!("{} picture {k}", row.preset());
+                    response
+                        .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
+                    let painter = ui.painter_at(rect);
+                    painter.image(
+                        texture,
+                        rect,
+                        egui::Rect::from_min_max(Pos2::ZERO, egui::pos2(1.0, 1.0)),
+                        Color32::WHITE,
+                    );
+                    let to_unit = |p: Pos2| {
+                        let u = (p - rect.min) / rect.size();
+                        egui::pos2(u.x.clamp(0.0, 1.0), u.y.clamp(0.0, 1.0))
+                    };
+                    if show_line {
+                        let a = rect.min + line[0].to_vec2() * rect.size();
+                        let b = rect.min + line[1].to_vec2() * rect.size();
+                        let stroke = egui::Stroke::new(1.5, Color32::from_rgb(255, 240, 80));
+                        painter.line_segment([a, b], stroke);
+                        painter.circle_filled(a, 2.5, stroke.color);
+                    }
+                    if response.drag_started()
+                        && let Some(p) = response.ctx.input(|i| i.pointer.press_origin())
+                    {
+                        drawn = Some((to_unit(p), to_unit(p), true));
+                    }
+                    if response.dragged()
+                        && let Some(p) = response.interact_pointer_pos()
+                    {
+                        drawn = Some((Pos2::ZERO, to_unit(p), false));
+                    }
+                    if let Some(p) = response.hover_pos() {
+                        let u = to_unit(p);
+                        let text = match hover {
+                            Some(frame) => format!(
+                                "luminance {}",
+                                short_number(sample(frame, u).unwrap_or(0.0))
+                            ),
+                            None => class_at(&case_row.case_map, u)
+                                .map_or("off the plane".into(), |c| c.name().to_string()),
+                        };
+                        ui.small(text);
+                    } else {
+                        ui.small(caption);
+                    }
+                });
+            }
+        });
+        match drawn {
+            Some((from, to, true)) => {
+                self.drag_from = Some(from);
+                s.clip_scene = row;
+                self.line = Some([from, to]);
+            }
+            Some((_, to, false)) => {
+                if let Some(from) = self.drag_from {
+                    s.clip_scene = row;
+                    self.line = Some([from, to]);
+                }
+            }
+            None => {}
+        }
+    }
+
+    /// The four classes' colours, names and pixel counts for the selected case.
+    fn legend(&self, ui: &mut egui::Ui, s: &LabState) {
+        let Some(row) = self.selected_row(s) else {
+            return;
+        };
+        ui.horizontal_wrapped(|ui| {
+            ui.small(format!(
+                "case map of {} (pixels of {}×{}):",
+                if s.clip_scene == ClipScene::Case2 {
+                    "case 2"
+                } else {
+                    "case 1"
+                },
+                PICTURE.0,
+                PICTURE.1
+            ));
+            for (k, case) in ClipCase::ALL.into_iter().enumerate() {
+                let (rect, _) = ui.allocate_exact_size(Vec2::splat(10.0), egui::Sense::hover());
+                ui.painter().rect_filled(rect, 2.0, CLASS_COLOURS[k]);
+                ui.small(format!("{} {}", case.name(), row.class_counts[k]))
+                    .on_hover_text(class_hover(case));
+            }
+        });
+        if let Some(t) = row.thumbs.get(2) {
+            let text = match t.negative_factor {
+                Some(n) => format!(
+                    "(c): orange positive ×{}, blue negative light ×{} (each part exposed to its own peak)",
+                    short_number(round_sig(t.factor)),
+                    short_number(round_sig(n))
+                ),
+                None => "each picture is exposed so that its brightest pixel is white; its factor is printed under it".into(),
+            };
+            ui.small(text);
+        }
+    }
+
+    /// Luminance along the line on a symmetric log axis: the BRDF, LTC with both rules, as
+    /// toggled, and without the case's rule.
+    fn profile(&mut self, ui: &mut egui::Ui, s: &LabState) {
+        let line = self.line_or_default(s);
+        let Some(row) = self.selected_row(s) else {
+            return;
+        };
+        let curves: Vec<Vec<[f64; 2]>> = row
+            .profile_frames
+            .iter()
+            .map(|f| profile_along(f, line))
+            .collect();
+        let peak = curves
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, p| m.max(p[1].abs()))
+            .max(1e-30);
+        // Five decades under the peak: case 1's glow is ~1e-3 of the dip beside it.
+        let c = peak * 1e-5;
+        let names = [
+            ("BRDF", Color32::from_rgb(240, 150, 60)),
+            ("LTC, both rules (eq. 30)", Color32::from_rgb(70, 140, 255)),
+            ("LTC, rules as toggled", Color32::from_rgb(90, 210, 120)),
+            (
+                if s.clip_scene == ClipScene::Case2 {
+                    "LTC without the case-2 rule"
+                } else {
+                    "LTC without the case-1 rule"
+                },
+                Color32::from_rgb(220, 80, 200),
+            ),
+        ];
+        if ui
+            .small_button("line through the strongest artifact")
+            .on_hover_text("Drag on any picture to draw another line")
+            .clicked()
+        {
+            self.line = None;
+        }
+        let plot = egui_plot::Plot::new("clip profile")
+            .legend(egui_plot::Legend::default())
+            .x_axis_label("distance along the line (pixels of the pictures)")
+            .y_axis_label("luminance (symlog)")
+            .min_size(Vec2::new(80.0, 140.0))
+            .allow_scroll(false);
+        symlog_y(plot, c).show(ui, |p| {
+            for (k, (points, (name, colour))) in curves.into_iter().zip(names).enumerate() {
+                let points: Vec<[f64; 2]> = points
+                    .into_iter()
+                    .map(|[x, y]| [x, crate::colormap::symlog(y, c)])
+                    .collect();
+                let mut line = egui_plot::Line::new(name, points).color(colour);
+                if k == 3 {
+                    line = line.style(egui_plot::LineStyle::dashed_loose());
+                }
+                p.line(line);
+            }
+        });
+    }
+
+    fn selected_row(&self, s: &LabState) -> Option<&CaseRow> {
+        let r = if s.clip_scene == ClipScene::Case2 {
+            1
+        } else {
+            0
+        };
+        self.rows.get(r)
+    }
+
+    /// The user's line, or the selected case's default.
+    fn line_or_default(&self, s: &LabState) -> [Pos2; 2] {
+        self.line.unwrap_or_else(|| {
+            self.selected_row(s)
+                .map_or([egui::pos2(0.0, 0.5), egui::pos2(1.0, 0.5)], |r| {
+                    r.default_line
+                })
+        })
+    }
+
+    /// Renders both rows again when the rules, α, a light or the table changed.
+    fn ensure(&mut self, s: &LabState, lut: &Lut) {
         let key = Key {
-            clip: s.clip_panel,
-            scene: s.clip_scene,
+            clip: s.clipping,
             normalization: s.normalization,
+            setup: s.clip_setup.clone(),
         };
         if self.key.as_ref() == Some(&key) {
             return;
         }
-        let (w, h) = PICTURE;
-        let shot = |scene: &str, method: Method, clip: Clipping| {
-            let mut r = RenderSettings::single(w, h, method);
-            r.clipping = clip;
-            r.normalization = s.normalization;
-            render(&preset(scene), lut, &r)
-        };
-        self.pictures = vec![
-            shot("figure2-normal", Method::Ltc, key.clip),
-            shot("figure2-normal", Method::Brdf, key.clip),
-            shot("figure2-case1", Method::Ltc, key.clip),
-            shot("figure2-case1", Method::Brdf, key.clip),
-        ];
-        let scene = preset(key.scene.preset());
-        self.case_map = (0..h)
-            .flat_map(|y| (0..w).map(move |x| (x, y)))
-            .map(|(x, y)| {
-                scene
-                    .surface_point(x, y, w, h)
-                    .map_or(ClipCounts::default(), |p| {
-                        clip_counts(&scene, lut, &p, &scene.lights)
-                    })
-            })
-            .collect();
-        let row = |f: &Frame| -> Vec<[f64; 2]> {
-            (0..w)
-                .map(|x| [x as f64, luminance(f.pixels[(h / 2) * w + x])])
-                .collect()
-        };
-        self.profiles = [
-            row(&shot(key.scene.preset(), Method::Brdf, Clipping::BOTH)),
-            row(&shot(key.scene.preset(), Method::Ltc, Clipping::BOTH)),
-            row(&shot(key.scene.preset(), Method::Ltc, key.clip)),
-            row(&shot(key.scene.preset(), Method::Ltc, Clipping::NONE)),
-        ];
-        // Each picture's own exposure: Figure 2 is about where light is, not how much.
-        let mut images: Vec<egui::ColorImage> = self
-            .pictures
-            .iter()
-            .map(|f| {
-                let pixels = f.pixels.iter().zip(&f.on_plane).map(|(p, &on)| {
-                    if !on {
-                        return Color32::from_gray(24);
-                    }
-                    let [r, g, b] = tone_map(*p, 4.0);
-                    Color32::from_rgb(r, g, b)
-                });
-                egui::ColorImage::new([w, h], pixels.collect())
-            })
-            .collect();
-        images.push(egui::ColorImage::new(
-            [w, h],
-            self.case_map
-                .iter()
-                .zip(&self.pictures[0].on_plane)
-                .map(
-                    |(c, &on)| match (on, c.below_horizon > 0, c.pushed_below > 0) {
-                        (false, _, _) => Color32::from_gray(24),
-                        (true, true, _) => Color32::from_rgb(200, 60, 50),
-                        (true, _, true) => Color32::from_rgb(60, 90, 220),
-                        (true, false, false) => Color32::from_rgb(60, 170, 80),
-                    },
-                )
-                .collect(),
-        ));
-        self.textures = images
-            .into_iter()
-            .enumerate()
-            .map(|(k, img)| ctx.load_texture(format!("clip{k}"), img, egui::TextureOptions::LINEAR))
-            .collect();
+        self.rows = ROWS.iter().map(|&row| case_row(&key, row, lut)).collect();
         self.key = Some(key);
     }
+}
 
-    /// Total luminance of a picture (tests: the glow of case 1 appears and vanishes).
-    pub fn picture_energy(&self, k: usize) -> f64 {
-        self.pictures.get(k).map_or(0.0, |f| {
-            f.pixels
-                .iter()
-                .map(|&p| luminance(p.max(DVec3::ZERO)))
-                .sum()
+/// One case's pictures, case map and profile renders.
+fn case_row(key: &Key, row: ClipScene, lut: &Lut) -> CaseRow {
+    let (w, h) = PICTURE;
+    let shot = |which: ClipScene, method: Method, clip: Clipping| {
+        let mut r = RenderSettings::single(w, h, method);
+        r.clipping = clip;
+        r.normalization = key.normalization;
+        render(&key.setup.scene(which, row), lut, &r)
+    };
+    let rules = if key.clip == Clipping::BOTH {
+        "both rules".to_string()
+    } else {
+        format!("rules: {}", key.clip.name())
+    };
+    let pictures = [
+        (
+            "(a) LTC, light above",
+            shot(ClipScene::Normal, Method::Ltc, key.clip),
+        ),
+        (
+            "(b) BRDF, light above",
+            shot(ClipScene::Normal, Method::Brdf, key.clip),
+        ),
+        ("(c) LTC", shot(row, Method::Ltc, key.clip)),
+        ("(d) BRDF", shot(row, Method::Brdf, key.clip)),
+    ];
+    let thumbs: Vec<Thumb> = pictures
+        .into_iter()
+        .enumerate()
+        .map(|(k, (name, frame))| {
+            let mut t = thumb(frame);
+            let exposure = match t.negative_factor {
+                Some(n) => format!(
+                    "+×{} −×{}",
+                    short_number(round_sig(t.factor)),
+                    short_number(round_sig(n))
+                ),
+                None if t.factor.is_finite() => format!("×{}", short_number(round_sig(t.factor))),
+                None => "black".into(),
+            };
+            let rules = if k == 2 {
+                format!(", {rules}")
+            } else {
+                String::new()
+            };
+            t.caption = format!("{name}{rules} {exposure}");
+            t
         })
+        .collect();
+    let scene = key.setup.scene(row, row);
+    let case_map = clip_counts_map(&scene, lut, w, h);
+    let mut class_counts = [0; 4];
+    for c in case_map.iter().flatten().filter_map(ClipCounts::class) {
+        class_counts[ClipCase::ALL.iter().position(|&x| x == c).unwrap_or(0)] += 1;
+    }
+    let map_image = egui::ColorImage::new(
+        [w, h],
+        case_map
+            .iter()
+            .map(|c| {
+                c.and_then(|c| c.class()).map_or(BACKGROUND, |class| {
+                    CLASS_COLOURS[ClipCase::ALL.iter().position(|&x| x == class).unwrap_or(0)]
+                })
+            })
+            .collect(),
+    );
+    let both = shot(row, Method::Ltc, Clipping::BOTH);
+    let without = shot(row, Method::Ltc, without_case_rule(row));
+    let default_line = strongest_artifact_line(&without, &both);
+    CaseRow {
+        profile_frames: [
+            shot(row, Method::Brdf, key.clip),
+            both,
+            thumbs[2].frame.clone(),
+            without,
+        ],
+        thumbs,
+        case_map,
+        map_image,
+        map_texture: None,
+        class_counts,
+        default_line,
+    }
+}
+
+/// A picture exposed to its own content: a positive one so that its brightest pixel is
+/// white; a signed one in the diverging map, each sign scaled to its own peak.
+pub fn thumb(frame: Frame) -> Thumb {
+    let lum: Vec<f64> = frame
+        .pixels
+        .iter()
+        .zip(&frame.on_plane)
+        .map(|(p, &on)| if on { luminance(*p) } else { 0.0 })
+        .collect();
+    let max = lum.iter().copied().fold(0.0f64, f64::max);
+    let min = lum.iter().copied().fold(0.0f64, f64::min);
+    let factor = 1.0 / max;
+    let negative_factor = (min < 0.0).then(|| -1.0 / min);
+    let pixels = frame
+        .pixels
+        .iter()
+        .zip(&frame.on_plane)
+        .zip(&lum)
+        .map(|((p, &on), &l)| {
+            if !on {
+                return BACKGROUND;
+            }
+            match negative_factor {
+                // Each sign to its own peak, encoded like the positive pictures (sRGB), so
+                // that the dim tail of the negative light reads as it would as light.
+                Some(n) => {
+                    let x = if l < 0.0 {
+                        l * n
+                    } else {
+                        l * factor.min(1e300)
+                    };
+                    rgb(diverging(x.signum() * srgb_encode(x.abs().min(1.0))))
+                }
+                None if max > 0.0 => {
+                    let c = (*p * factor).clamp(DVec3::ZERO, DVec3::ONE);
+                    let e = |x: f64| (srgb_encode(x) * 255.0).round() as u8;
+                    Color32::from_rgb(e(c.x), e(c.y), e(c.z))
+                }
+                None => Color32::BLACK,
+            }
+        })
+        .collect();
+    Thumb {
+        image: egui::ColorImage::new([frame.width, frame.height], pixels),
+        frame,
+        texture: None,
+        factor,
+        negative_factor,
+        caption: String::new(),
+    }
+}
+
+/// A horizontal line through the pixel where the case's artifact (LTC without the case's rule
+/// minus LTC with both) is largest; the centre row where there is none.
+fn strongest_artifact_line(without: &Frame, both: &Frame) -> [Pos2; 2] {
+    let (k, size) = without
+        .pixels
+        .iter()
+        .zip(&both.pixels)
+        .map(|(a, b)| (luminance(*a) - luminance(*b)).abs())
+        .enumerate()
+        .fold(
+            (without.width * (without.height / 2), 0.0),
+            |best, (k, d)| {
+                if d > best.1 { (k, d) } else { best }
+            },
+        );
+    let y = if size > 0.0 {
+        ((k / without.width) as f32 + 0.5) / without.height as f32
+    } else {
+        0.5
+    };
+    [egui::pos2(0.0, y), egui::pos2(1.0, y)]
+}
+
+/// Luminance at picture coordinates `u` (0–1), nearest pixel; `None` off the plane.
+fn sample(frame: &Frame, u: Pos2) -> Option<f64> {
+    let x = ((u.x * frame.width as f32) as usize).min(frame.width - 1);
+    let y = ((u.y * frame.height as f32) as usize).min(frame.height - 1);
+    let k = y * frame.width + x;
+    frame.on_plane[k].then(|| luminance(frame.pixels[k]))
+}
+
+/// The class of the case map at picture coordinates `u`.
+fn class_at(map: &[Option<ClipCounts>], u: Pos2) -> Option<ClipCase> {
+    let (w, h) = PICTURE;
+    let x = ((u.x * w as f32) as usize).min(w - 1);
+    let y = ((u.y * h as f32) as usize).min(h - 1);
+    map.get(y * w + x)
+        .copied()
+        .flatten()
+        .and_then(|c| c.class())
+}
+
+/// Luminance along `line` (picture coordinates), x in picture pixels from its start.
+pub fn profile_along(frame: &Frame, line: [Pos2; 2]) -> Vec<[f64; 2]> {
+    let px = Vec2::new(frame.width as f32, frame.height as f32);
+    let length = ((line[1] - line[0]) * px).length();
+    let steps = (length.ceil() as usize).max(2);
+    (0..=steps)
+        .filter_map(|k| {
+            let t = k as f32 / steps as f32;
+            let u = line[0] + (line[1] - line[0]) * t;
+            sample(frame, u).map(|l| [f64::from(t * length), l])
+        })
+        .collect()
+}
+
+fn class_hover(case: ClipCase) -> &'static str {
+    match case {
+        ClipCase::Visible => "Above the horizon before and after M^-1: shaded as fitted",
+        ClipCase::Lifted => {
+            "Below the horizon but lifted above it by M^-1: glows unless the case-1 rule clips it"
+        }
+        ClipCase::PushedBelow => {
+            "Above the horizon but pushed below by M^-1: negative light unless the case-2 rule clips it"
+        }
+        ClipCase::StaysBelow => {
+            "Below the horizon and still below after M^-1: either rule removes it (without both, it is negative)"
+        }
     }
 }

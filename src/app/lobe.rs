@@ -6,8 +6,10 @@
 use egui::{Color32, Pos2, Vec2};
 use glam::{DMat3, DVec3};
 
+use crate::app::display::{colour_bar, rgb};
 use crate::app::other::OtherTable;
 use crate::app::state::LabState;
+use crate::colormap::ColourScale;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, Ltc, Normalization};
@@ -50,7 +52,7 @@ impl LobePanel {
             ui.checkbox(&mut s.overlay_other_fit, format!("table B ({})", other.name))
                 .on_hover_text("Overlay table B's LTC (green): by default the other shipped table (the point-light fit over the classic one, or the reverse); \"as B\" in the side panel loads another");
             ui.checkbox(&mut s.colour_difference, "difference")
-                .on_hover_text("Colour the unit sphere by n·D − f·cos (red: LTC too bright, blue: too dark), relative to the lobe's peak");
+                .on_hover_text("Colour the unit sphere by n·D − f·cos in 1/sr, the slice plot's units (orange: LTC too bright, blue: too dark)");
         });
         ui.add(egui::Slider::new(&mut s.morph, 0.0..=1.0).text("M: I -> fitted"))
             .on_hover_text("D is the clamped cosine pushed through M_t = (1−t)·I + t·M: at 0 the cosine, at 1 the fitted LTC (the transformed lobe)");
@@ -78,7 +80,7 @@ impl LobePanel {
         let plot_h = (ui.available_height() * 0.3).clamp(60.0, 160.0);
         let size = Vec2::new(
             ui.available_width(),
-            (ui.available_height() - plot_h - 8.0).max(80.0),
+            (ui.available_height() - plot_h - 30.0).max(80.0),
         );
         let (rect, response) = ui.allocate_exact_size(size, egui::Sense::drag());
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "lobe view"));
@@ -88,7 +90,13 @@ impl LobePanel {
             s.orbit_yaw += d.x * 0.01;
             s.orbit_pitch = (s.orbit_pitch + d.y * 0.01).clamp(-1.5, 1.5);
         }
-        self.paint_sphere(ui, rect, s, v, alpha, &ltc, other_ltc.as_ref());
+        let difference = self.paint_sphere(ui, rect, s, v, alpha, &ltc, other_ltc.as_ref());
+        match difference {
+            Some(scale) => colour_bar(ui, &scale, 200.0),
+            None => {
+                ui.small("orange: exact f·cos (filled); blue lines: LTC n·D; green lines: table B; n normal, v view, M x/y/z the columns of M");
+            }
+        }
         slice_plot(ui, s.lobe, v, alpha, &ltc, other_ltc.as_ref(), plot_h);
     }
 
@@ -101,7 +109,7 @@ impl LobePanel {
         alpha: f64,
         ltc: &Ltc,
         other: Option<&Ltc>,
-    ) {
+    ) -> Option<ColourScale> {
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 4.0, Color32::from_gray(18));
         let (cy, sy) = (f64::from(s.orbit_yaw).cos(), f64::from(s.orbit_yaw).sin());
@@ -109,117 +117,158 @@ impl LobePanel {
             f64::from(s.orbit_pitch).cos(),
             f64::from(s.orbit_pitch).sin(),
         );
-        let scale = f64::from(rect.width().min(rect.height())) * 0.42;
-        let centre = rect.center() + Vec2::new(0.0, rect.height() * 0.15);
         // Orbit: yaw about z, then pitch about the screen's x axis; orthographic, z up.
-        let project = |p: DVec3| -> (Pos2, f64) {
+        let view_of = |p: DVec3| -> (f64, f64, f64) {
             let x = cy * p.x - sy * p.y;
             let y = sy * p.x + cy * p.y;
-            let (up, depth) = (cp * p.z - sp * y, sp * p.z + cp * y);
+            (x, cp * p.z - sp * y, sp * p.z + cp * y)
+        };
+        let exact_at = |l: DVec3| s.lobe.eval(v, l, alpha).value;
+        // The tessellation's pole is the exact lobe's peak, its rings packed toward it, so that
+        // a sharp lobe (α ≈ 0.02, a degree wide) is made of many triangles, not one sliver.
+        let pole = peak_direction(s.lobe, v, exact_at);
+        let dirs = pole_grid(pole);
+        let vals: Vec<(f64, f64)> = dirs
+            .iter()
+            .map(|&l| values(s.lobe, v, alpha, ltc, l))
+            .collect();
+        // Scaled to the exact lobe's peak: the LTC can spike where M^-1 ω is short, and a
+        // spike must not flatten everything else (the difference read uniform grey).
+        let peak = vals.iter().fold(1e-12f64, |m, &(e, _)| m.max(e));
+        let clamp_r = |x: f64| (x / peak).clamp(-1.5, 1.5);
+        let exact_pos: Vec<DVec3> = dirs
+            .iter()
+            .zip(&vals)
+            .map(|(d, v)| *d * clamp_r(v.0))
+            .collect();
+        let ltc_pos: Vec<DVec3> = dirs
+            .iter()
+            .zip(&vals)
+            .map(|(d, v)| *d * clamp_r(v.1).max(0.0))
+            .collect();
+        // Auto-scale: the lobes' extent, not the unit sphere's, fills the view (the
+        // difference is painted on the unit sphere itself).
+        let unit_sphere = [
+            DVec3::X,
+            -DVec3::X,
+            DVec3::Y,
+            -DVec3::Y,
+            DVec3::Z,
+            -DVec3::Z,
+        ];
+        let shown: &[DVec3] = if s.colour_difference {
+            &unit_sphere
+        } else {
+            &exact_pos
+        };
+        let extent = shown
+            .iter()
+            .chain(if s.colour_difference {
+                &[][..]
+            } else {
+                &ltc_pos[..]
+            })
+            .map(|p| {
+                let (x, up, _) = view_of(*p);
+                (x, up)
+            })
+            .fold([0.0f64, 0.0, 0.0, 0.0], |b, (x, y)| {
+                [b[0].min(x), b[1].max(x), b[2].min(y), b[3].max(y)]
+            });
+        let (span_x, span_y) = (
+            (extent[1] - extent[0]).max(0.2),
+            (extent[3] - extent[2]).max(0.2),
+        );
+        let scale = (f64::from(rect.width()) / span_x).min(f64::from(rect.height()) / span_y) * 0.8;
+        let mid = egui::vec2(
+            ((extent[0] + extent[1]) * 0.5 * scale) as f32,
+            (-(extent[2] + extent[3]) * 0.5 * scale) as f32,
+        );
+        let centre = rect.center() - mid;
+        let project = |p: DVec3| -> (Pos2, f64) {
+            let (x, up, depth) = view_of(p);
             (
                 centre + Vec2::new((x * scale) as f32, (-up * scale) as f32),
                 depth,
             )
         };
-        let dirs: Vec<DVec3> = (0..=RINGS)
-            .flat_map(|i| {
-                let t = std::f64::consts::PI * i as f64 / RINGS as f64;
-                (0..SEGMENTS).map(move |k| {
-                    let p = std::f64::consts::TAU * k as f64 / SEGMENTS as f64;
-                    DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
-                })
-            })
-            .collect();
-        let vals: Vec<(f64, f64)> = dirs
-            .iter()
-            .map(|&l| values(s.lobe, v, alpha, ltc, l))
-            .collect();
-        let peak = vals.iter().fold(1e-12f64, |m, &(a, b)| m.max(a).max(b));
-        let mut triangles: Vec<(f64, [Pos2; 3], [Color32; 3])> = Vec::new();
-        let index = |i: usize, k: usize| i * SEGMENTS + k % SEGMENTS;
-        // Each surface: a position and a colour per direction.
-        let surfaces: Vec<(Vec<DVec3>, Vec<Color32>)> = if s.colour_difference {
-            let colours = vals
-                .iter()
-                .map(|&(e, a)| diverging(((a - e) / peak).clamp(-1.0, 1.0)))
-                .collect();
-            vec![(dirs.clone(), colours)]
-        } else {
-            let radial = |pick: fn(&(f64, f64)) -> f64| -> Vec<DVec3> {
-                dirs.iter()
-                    .zip(&vals)
-                    .map(|(d, v)| *d * (pick(v) / peak))
-                    .collect()
-            };
-            let n = dirs.len();
-            let mut surfaces = vec![
-                (
-                    radial(|v| v.0),
-                    vec![Color32::from_rgba_unmultiplied(240, 150, 60, 150); n],
-                ),
-                (
-                    radial(|v| v.1),
-                    vec![Color32::from_rgba_unmultiplied(70, 140, 255, 120); n],
-                ),
-            ];
-            if let Some(o) = other {
-                let positions = dirs
-                    .iter()
-                    .map(|&l| l * (values(s.lobe, v, alpha, o, l).1 / peak))
-                    .collect();
-                surfaces.push((
-                    positions,
-                    vec![Color32::from_rgba_unmultiplied(80, 220, 120, 90); n],
-                ));
+        let mesh_surface = |positions: &[DVec3], colours: &dyn Fn(usize) -> Color32| {
+            let mut triangles: Vec<(f64, [Pos2; 3], [Color32; 3])> = Vec::new();
+            for (quad, p) in quads(positions) {
+                let normal = (p[1] - p[0])
+                    .cross(p[3] - p[0])
+                    .try_normalize()
+                    .unwrap_or(DVec3::Z);
+                let light = 0.6 + 0.4 * normal.z.abs();
+                for tri in [[0, 1, 2], [0, 2, 3]] {
+                    let proj: Vec<(Pos2, f64)> = tri.iter().map(|&t| project(p[t])).collect();
+                    let depth = proj.iter().map(|x| x.1).sum::<f64>();
+                    let cols = tri.map(|t| shade(colours(quad[t]), light as f32));
+                    triangles.push((depth, [proj[0].0, proj[1].0, proj[2].0], cols));
+                }
             }
-            surfaces
+            // Painter's algorithm: far triangles first.
+            triangles.sort_by(|a, b| b.0.total_cmp(&a.0));
+            let mut mesh = egui::Mesh::default();
+            for (_, p, c) in &triangles {
+                let base = mesh.vertices.len() as u32;
+                for k in 0..3 {
+                    mesh.colored_vertex(p[k], c[k]);
+                }
+                mesh.add_triangle(base, base + 1, base + 2);
+            }
+            painter.add(egui::Shape::mesh(mesh));
         };
-        for (position, colour) in &surfaces {
-            let position = |n: usize| position[n];
-            let colour = |n: usize| colour[n];
-            for i in 0..RINGS {
-                for k in 0..SEGMENTS {
-                    let quad = [
-                        index(i, k),
-                        index(i, k + 1),
-                        index(i + 1, k + 1),
-                        index(i + 1, k),
-                    ];
-                    let p: Vec<DVec3> = quad.iter().map(|&n| position(n)).collect();
-                    if p.iter().all(|x| x.length_squared() < 1e-8) {
-                        continue;
-                    }
-                    // Lambert shading from the viewer's side, for depth cues.
-                    let normal = (p[1] - p[0])
-                        .cross(p[3] - p[0])
-                        .try_normalize()
-                        .unwrap_or(DVec3::Z);
-                    let light = 0.55 + 0.45 * normal.z.abs();
-                    for tri in [[0, 1, 2], [0, 2, 3]] {
-                        let proj: Vec<(Pos2, f64)> = tri.iter().map(|&t| project(p[t])).collect();
-                        let depth = proj.iter().map(|x| x.1).sum::<f64>();
-                        let cols = tri.map(|t| shade(colour(quad[t]), light as f32));
-                        triangles.push((depth, [proj[0].0, proj[1].0, proj[2].0], cols));
-                    }
+        let difference = s.colour_difference.then(|| {
+            let max = vals
+                .iter()
+                .map(|&(e, a)| (a - e).abs())
+                .fold(0.0f64, f64::max)
+                .min(peak)
+                .max(1e-12);
+            ColourScale::signed(max, "n·D − f·cos (1/sr)")
+        });
+        match &difference {
+            Some(scale_d) => {
+                let unit: Vec<DVec3> = dirs.clone();
+                let colours: Vec<Color32> = vals
+                    .iter()
+                    .map(|&(e, a)| rgb(scale_d.colour(a - e)))
+                    .collect();
+                mesh_surface(&unit, &|n| colours[n]);
+            }
+            None => {
+                // The exact lobe filled, the LTC (and table B) as meshes of lines over it:
+                // two filled surfaces that nearly coincide z-fight.
+                mesh_surface(&exact_pos, &|_| {
+                    Color32::from_rgba_unmultiplied(240, 150, 60, 170)
+                });
+                wireframe(
+                    &painter,
+                    &ltc_pos,
+                    &project,
+                    Color32::from_rgb(90, 160, 255),
+                );
+                if let Some(o) = other {
+                    let positions: Vec<DVec3> = dirs
+                        .iter()
+                        .map(|&l| l * clamp_r(values(s.lobe, v, alpha, o, l).1).max(0.0))
+                        .collect();
+                    wireframe(
+                        &painter,
+                        &positions,
+                        &project,
+                        Color32::from_rgb(80, 220, 120),
+                    );
                 }
             }
         }
-        // Painter's algorithm: far triangles first.
-        triangles.sort_by(|a, b| b.0.total_cmp(&a.0));
-        let mut mesh = egui::Mesh::default();
-        for (_, p, c) in &triangles {
-            let base = mesh.vertices.len() as u32;
-            for k in 0..3 {
-                mesh.colored_vertex(p[k], c[k]);
-            }
-            mesh.add_triangle(base, base + 1, base + 2);
-        }
-        painter.add(egui::Shape::mesh(mesh));
-        // The horizon circle, the normal, the view vector and the LTC's frame.
+        // The horizon circle, the normal, the view vector and the LTC's frame, labelled.
+        let reach = 0.5 * span_x.max(span_y).min(1.2);
         let ring: Vec<Pos2> = (0..=64)
             .map(|k| {
                 let p = std::f64::consts::TAU * k as f64 / 64.0;
-                project(DVec3::new(p.cos(), p.sin(), 0.0)).0
+                project(DVec3::new(p.cos(), p.sin(), 0.0) * reach).0
             })
             .collect();
         painter.add(egui::Shape::line(
@@ -227,43 +276,111 @@ impl LobePanel {
             egui::Stroke::new(1.0, Color32::from_gray(90)),
         ));
         let origin = project(DVec3::ZERO).0;
-        let arrow = |d: DVec3, c: Color32| {
-            painter.arrow(origin, project(d).0 - origin, egui::Stroke::new(2.0, c));
+        let font = egui::FontId::proportional(12.0);
+        let arrow = |d: DVec3, c: Color32, name: &str| {
+            let tip = project(d * reach).0;
+            painter.arrow(origin, tip - origin, egui::Stroke::new(2.0, c));
+            painter.text(tip, egui::Align2::LEFT_BOTTOM, name, font.clone(), c);
         };
-        arrow(DVec3::Z, Color32::WHITE);
-        arrow(v, Color32::YELLOW);
+        arrow(DVec3::Z, Color32::WHITE, "n");
+        arrow(v, Color32::YELLOW, "v");
         let frame = ltc.brdf_from_cos;
-        for (k, c) in [
-            Color32::RED,
-            Color32::GREEN,
-            Color32::from_rgb(80, 120, 255),
+        for (k, (c, name)) in [
+            (Color32::RED, "M x"),
+            (Color32::GREEN, "M y"),
+            (Color32::from_rgb(80, 120, 255), "M z"),
         ]
         .into_iter()
         .enumerate()
         {
-            arrow(frame.col(k).normalize_or_zero() * 0.6, c);
+            arrow(frame.col(k).normalize_or_zero() * 0.6, c, name);
         }
+        // A light of the plane's pinned pixel, and its image under the (morphed) M^-1.
+        if let Some(w) = s.lobe_light.map(DVec3::from) {
+            arrow(w, Color32::from_rgb(255, 90, 220), "ω (light)");
+            let image = (ltc.cos_from_brdf * w).normalize_or_zero();
+            arrow(image, Color32::from_rgb(80, 230, 230), "ω' = M^-1 ω");
+        }
+        difference
     }
 }
 
-/// Blue (LTC too dark) – grey – red (too bright).
-fn diverging(d: f64) -> Color32 {
-    let t = d.abs() as f32;
-    let base = 70.0;
-    let (r, g, b) = if d >= 0.0 {
-        (
-            base + (255.0 - base) * t,
-            base * (1.0 - t),
-            base * (1.0 - t),
-        )
+/// Where the exact lobe peaks: the best of a coarse grid of the upper hemisphere.
+fn peak_direction(lobe: Lobe, v: DVec3, exact_at: impl Fn(DVec3) -> f64) -> DVec3 {
+    // The specular lobe's peak is near the mirror direction; search around it and the normal.
+    let mirror = DVec3::new(-v.x, -v.y, v.z);
+    let start = if lobe == Lobe::Specular {
+        mirror
     } else {
-        (
-            base * (1.0 - t),
-            base * (1.0 - t) + 60.0 * t,
-            base + (255.0 - base) * t,
-        )
+        DVec3::Z
     };
-    Color32::from_rgb(r as u8, g as u8, b as u8)
+    (0..=40)
+        .flat_map(|i| (0..72).map(move |k| (i, k)))
+        .map(|(i, k)| {
+            let t = std::f64::consts::FRAC_PI_2 * f64::from(i) / 40.0;
+            let p = std::f64::consts::TAU * f64::from(k) / 72.0;
+            DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
+        })
+        .chain([start])
+        .map(|d| (exact_at(d), d))
+        .fold(
+            (f64::NEG_INFINITY, start),
+            |b, x| if x.0 > b.0 { x } else { b },
+        )
+        .1
+}
+
+/// Directions on the sphere in rings about `pole`, packed toward it (θ ∝ (i/RINGS)²).
+fn pole_grid(pole: DVec3) -> Vec<DVec3> {
+    let z = pole.normalize_or(DVec3::Z);
+    let (x, y) = z.any_orthonormal_pair();
+    (0..=RINGS)
+        .flat_map(|i| {
+            let f = i as f64 / RINGS as f64;
+            let t = std::f64::consts::PI * f * f;
+            (0..SEGMENTS).map(move |k| {
+                let p = std::f64::consts::TAU * k as f64 / SEGMENTS as f64;
+                x * (t.sin() * p.cos()) + y * (t.sin() * p.sin()) + z * t.cos()
+            })
+        })
+        .collect()
+}
+
+/// The quads of a `pole_grid` surface (vertex indices and positions), skipping empty ones.
+fn quads(positions: &[DVec3]) -> Vec<([usize; 4], [DVec3; 4])> {
+    let index = |i: usize, k: usize| i * SEGMENTS + k % SEGMENTS;
+    (0..RINGS)
+        .flat_map(|i| (0..SEGMENTS).map(move |k| (i, k)))
+        .map(|(i, k)| {
+            let q = [
+                index(i, k),
+                index(i, k + 1),
+                index(i + 1, k + 1),
+                index(i + 1, k),
+            ];
+            (q, q.map(|n| positions[n]))
+        })
+        .filter(|(_, p)| p.iter().any(|x| x.length_squared() >= 1e-8))
+        .collect()
+}
+
+/// A surface as lines along every 4th ring and every 8th segment.
+fn wireframe(
+    painter: &egui::Painter,
+    positions: &[DVec3],
+    project: &dyn Fn(DVec3) -> (Pos2, f64),
+    colour: Color32,
+) {
+    let stroke = egui::Stroke::new(1.0, colour.gamma_multiply(0.85));
+    let at = |i: usize, k: usize| project(positions[i * SEGMENTS + k % SEGMENTS]).0;
+    for i in (0..=RINGS).step_by(4) {
+        let ring: Vec<Pos2> = (0..=SEGMENTS).map(|k| at(i, k)).collect();
+        painter.add(egui::Shape::line(ring, stroke));
+    }
+    for k in (0..SEGMENTS).step_by(8) {
+        let meridian: Vec<Pos2> = (0..=RINGS).map(|i| at(i, k)).collect();
+        painter.add(egui::Shape::line(meridian, stroke));
+    }
 }
 
 fn shade(c: Color32, k: f32) -> Color32 {

@@ -3,16 +3,17 @@
 //! chosen cell (click a cell to choose it); and "refit this cell", which runs the fitter live
 //! and plots the Nelder–Mead objective iteration by iteration.
 
-use egui::{Color32, Vec2};
+use egui::{Color32, Pos2, Vec2};
 use glam::DMat3;
 
+use crate::app::display::{colour_bar, rgb};
 use crate::app::other::OtherTable;
 use crate::app::refit::Refit;
 use crate::app::state::LabState;
+use crate::colormap::{ColourScale, short_number};
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut, cell_theta};
 use crate::ltc::{Ltc, mat3_rows};
-use crate::output::false_colour;
 
 /// Heat maps per row (14 channels: three rows).
 const MAPS_PER_ROW: usize = 5;
@@ -20,6 +21,12 @@ const MAPS_PER_ROW: usize = 5;
 pub struct MatrixPanel {
     /// Each channel's heat map, made once from the LUT.
     maps: Vec<egui::ColorImage>,
+    /// Each channel's colour scale: viridis, diverging for signed channels, log for errors.
+    pub scales: Vec<ColourScale>,
+    /// The channel whose colour bar is shown (the last one clicked).
+    pub focus: usize,
+    /// The channel, cell and value under the pointer at the last frame.
+    hovered: Option<(usize, usize, usize, f64)>,
     textures: Vec<Option<egui::TextureHandle>>,
     /// A refit under way (its result goes to the lab's state).
     pub refit: Option<Refit>,
@@ -30,28 +37,25 @@ pub struct MatrixPanel {
 impl MatrixPanel {
     pub fn new(lut: &Lut) -> Self {
         let n = lut.size;
-        let maps = (0..CHANNEL_COUNT)
-            .map(|c| {
-                let values: Vec<f64> = lut.cells.iter().map(|cell| f64::from(cell.0[c])).collect();
-                let (lo, hi) = values
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                        (a.min(x), b.max(x))
-                    });
-                let span = (hi - lo).max(1e-12);
+        let scales: Vec<ColourScale> = (0..CHANNEL_COUNT).map(|c| channel_scale(lut, c)).collect();
+        let maps = scales
+            .iter()
+            .enumerate()
+            .map(|(c, scale)| {
                 // Row j = 0 (normal view) at the top, column i = 0 (α_min) at the left.
-                let pixels = values
+                let pixels = lut
+                    .cells
                     .iter()
-                    .map(|&x| {
-                        let [r, g, b] = false_colour((x - lo) / span);
-                        Color32::from_rgb(r, g, b)
-                    })
+                    .map(|cell| rgb(scale.colour(f64::from(cell.0[c]))))
                     .collect();
                 egui::ColorImage::new([n, n], pixels)
             })
             .collect();
         Self {
             maps,
+            scales,
+            focus: Channel::err(Lobe::Specular) as usize,
+            hovered: None,
             textures: vec![None; CHANNEL_COUNT],
             refit: None,
             current_cell: (0, 0),
@@ -157,46 +161,116 @@ impl MatrixPanel {
         });
     }
 
-    /// Every channel as an N×N heat map (min to max of the channel), crosshair on the chosen
-    /// (r, sqrt(1 − cos θo)); click to choose a cell.
+    /// Every channel as an N×N heat map (crosshair on the chosen cell; click to choose a
+    /// cell), then the focused channel's colour bar, the value under the pointer and a jump to
+    /// the worst cell.
     fn heat_maps(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, (u, v): (f64, f64)) {
         let n = lut.size;
-        let side = ((ui.available_width() - 30.0) / MAPS_PER_ROW as f32).clamp(40.0, 160.0);
+        ui.small(format!(
+            "each map: x: r = √α from 0 to 1 (α = {} … 1), y (down) θo from 0° (top) to {:.0}° (rows by sqrt(1 − cos θo))",
+            short_number(lut.alpha(0)),
+            cell_theta(n - 1, n).to_degrees()
+        ));
+        // The focused channel's bar, the reading under the pointer (last frame's) and the
+        // jump, above the maps so that no scrolling hides them.
+        let scale = &self.scales[self.focus];
+        colour_bar(ui, scale, 260.0);
+        ui.horizontal(|ui| {
+            let text = match self.hovered {
+                Some((c, i, j, x)) => format!(
+                    "{} at cell ({i}, {j}): α = {}, θo = {:.1}°: {}",
+                    CHANNEL_NAMES[c],
+                    short_number(lut.alpha(i)),
+                    cell_theta(j, n).to_degrees(),
+                    self.scales[c].format(x)
+                ),
+                None => "hover a map to read a cell; click one to choose it (and its channel's colour bar)".into(),
+            };
+            // One line, truncated: a reading that wrapped would move the maps under the
+            // pointer between the hover and the click.
+            ui.add(egui::Label::new(egui::RichText::new(text).small()).truncate());
+        });
+        let err = worst_channel(self.focus);
+        if ui
+            .small_button(format!("worst cell of {}", CHANNEL_NAMES[err]))
+            .on_hover_text(
+                "Jump to the cell with the largest pointwise error of the shown channel's lobe",
+            )
+            .clicked()
+        {
+            let k = (0..lut.cells.len())
+                .max_by(|&a, &b| lut.cells[a].0[err].total_cmp(&lut.cells[b].0[err]))
+                .unwrap_or(0);
+            choose_cell(s, lut, (k % n, k / n));
+        }
+        // The visible width, not the scroll area's content width (a wide row above widens it).
+        let visible = ui
+            .available_width()
+            .min(ui.clip_rect().right() - ui.cursor().left());
+        let side = ((visible - 30.0) / MAPS_PER_ROW as f32).clamp(40.0, 160.0);
         let channels: Vec<usize> = (0..CHANNEL_COUNT).collect();
+        let mut hovered = None;
         // Rows of fixed length: a wrapping layout cannot know a column's size before it is
         // drawn, and ran the last map off the panel's edge.
         for row in channels.chunks(MAPS_PER_ROW) {
             ui.horizontal(|ui| {
-            for &c in row {
-                let texture = self.textures[c].get_or_insert_with(|| {
-                    ui.ctx().load_texture(CHANNEL_NAMES[c], self.maps[c].clone(), egui::TextureOptions::NEAREST)
-                });
-                ui.vertical(|ui| {
-                    ui.small(CHANNEL_NAMES[c]);
-                    let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::click());
-                    ui.painter().image(texture.id(), rect, egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)), Color32::WHITE);
-                    // Texel centres sit at (k + ½)/N, the LUT's own uv mapping (DESIGN §2).
-                    let to_screen = |t: f64| ((t * (n - 1) as f64 + 0.5) / n as f64) as f32 * side;
-                    let p = rect.min + Vec2::new(to_screen(u), to_screen(v));
-                    let stroke = egui::Stroke::new(1.0, Color32::WHITE);
-                    ui.painter().hline(rect.x_range(), p.y, stroke);
-                    ui.painter().vline(p.x, rect.y_range(), stroke);
-                    let name = format!("{} heat map", CHANNEL_NAMES[c]);
-                    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
-                    let response = response.on_hover_text(format!("{}: x = r = √α (column), y = sqrt(1 − cos θo) (row). Click to choose a cell", CHANNEL_NAMES[c]));
-                    if response.clicked()
-                        && let Some(pos) = response.interact_pointer_pos()
-                    {
-                        let cell = ((pos - rect.min) / side * n as f32).floor();
-                        let i = (cell.x.max(0.0) as usize).min(n - 1);
-                        let j = (cell.y.max(0.0) as usize).min(n - 1);
-                        s.scene.material.alpha = lut.alpha(i);
-                        s.theta_o_deg = cell_theta(j, n).to_degrees();
-                    }
-                });
-            }
+                for &c in row {
+                    let texture = self.textures[c].get_or_insert_with(|| {
+                        ui.ctx().load_texture(
+                            CHANNEL_NAMES[c],
+                            self.maps[c].clone(),
+                            egui::TextureOptions::NEAREST,
+                        )
+                    });
+                    ui.vertical(|ui| {
+                        let title = if c == self.focus {
+                            egui::RichText::new(CHANNEL_NAMES[c]).small().strong()
+                        } else {
+                            egui::RichText::new(CHANNEL_NAMES[c]).small()
+                        };
+                        ui.label(title);
+                        let (rect, response) =
+                            ui.allocate_exact_size(Vec2::splat(side), egui::Sense::click());
+                        ui.painter().image(
+                            texture.id(),
+                            rect,
+                            egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
+                            Color32::WHITE,
+                        );
+                        // Texel centres sit at (k + ½)/N, the LUT's own uv mapping (DESIGN §2).
+                        let to_screen =
+                            |t: f64| ((t * (n - 1) as f64 + 0.5) / n as f64) as f32 * side;
+                        let p = rect.min + Vec2::new(to_screen(u), to_screen(v));
+                        let stroke = egui::Stroke::new(1.0, Color32::WHITE);
+                        ui.painter().hline(rect.x_range(), p.y, stroke);
+                        ui.painter().vline(p.x, rect.y_range(), stroke);
+                        let name = format!("{} heat map", CHANNEL_NAMES[c]);
+                        response.widget_info(|| {
+                            egui::WidgetInfo::labeled(egui::Role::Image, true, &name)
+                        });
+                        let cell_at = |pos: Pos2| {
+                            let cell = ((pos - rect.min) / side * n as f32).floor();
+                            (
+                                (cell.x.max(0.0) as usize).min(n - 1),
+                                (cell.y.max(0.0) as usize).min(n - 1),
+                            )
+                        };
+                        if let Some(pos) = response.hover_pos() {
+                            let (i, j) = cell_at(pos);
+                            hovered = Some((c, i, j, f64::from(lut.cell(i, j).0[c])));
+                        }
+                        if response.clicked()
+                            && let Some(pos) = response.interact_pointer_pos()
+                        {
+                            let (i, j) = cell_at(pos);
+                            self.focus = c;
+                            choose_cell(s, lut, (i, j));
+                        }
+                    });
+                }
             });
         }
+        self.hovered = hovered;
     }
 
     /// The refit's button, its progress and cancel, then the result: stored and refitted
@@ -271,12 +345,20 @@ impl MatrixPanel {
             .iter()
             .map(|&[i, f]| [i, f.max(1e-300).log10()])
             .collect();
+        ui.add_space(4.0);
         egui_plot::Plot::new("nelder-mead")
-            .height(90.0)
+            .height(110.0)
             .x_axis_label("iteration")
             .y_axis_label("log10 objective")
             .allow_scroll(false)
-            .show(ui, |p| p.line(egui_plot::Line::new("objective", points)));
+            .include_x(0.0)
+            .include_x((points.len() as f64 - 1.0).max(1.0))
+            .show(ui, |p| {
+                // Markers too: a fit that stops at its first iteration is one point, and a
+                // line through one point draws nothing.
+                p.points(egui_plot::Points::new("objective", points.clone()).radius(2.0));
+                p.line(egui_plot::Line::new("objective", points));
+            });
     }
 
     /// Blocks until a running refit is done (tests).
@@ -292,16 +374,63 @@ impl MatrixPanel {
     }
 }
 
+/// Chooses cell (i, j): the lab's α and θo move to its centre.
+fn choose_cell(s: &mut LabState, lut: &Lut, (i, j): (usize, usize)) {
+    s.scene.material.alpha = lut.alpha(i);
+    s.theta_o_deg = cell_theta(j, lut.size).to_degrees();
+}
+
+/// The `err` channel of the lobe channel `c` belongs to (`spec.scale` to the specular one).
+fn worst_channel(c: usize) -> usize {
+    let diffuse = CHANNEL_NAMES[c].starts_with("diff");
+    Channel::err(if diffuse {
+        Lobe::Diffuse
+    } else {
+        Lobe::Specular
+    }) as usize
+}
+
+/// A channel's colour scale: errors over decades (0.1% … their largest), a channel with both
+/// signs diverging about zero, any other viridis from its least to its largest value.
+fn channel_scale(lut: &Lut, c: usize) -> ColourScale {
+    let values = lut.cells.iter().map(|cell| f64::from(cell.0[c]));
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+        (a.min(x), b.max(x))
+    });
+    let name = CHANNEL_NAMES[c];
+    if name.ends_with(".err") {
+        // 0.1%: the fit's own noise floor (64² strata, DESIGN §4); errors below read alike.
+        ColourScale::log(1e-3, hi, format!("{name} (log)")).in_percent()
+    } else if lo < 0.0 && hi > 0.0 {
+        ColourScale::signed(lo.abs().max(hi), name)
+    } else {
+        ColourScale::linear(lo, hi, name)
+    }
+}
+
+/// A matrix entry in a fixed width: fixed-point where four decimals read it, else scientific
+/// (a -9995.0363 beside a 0.0000 ran together).
+fn entry(x: f64) -> String {
+    if x != 0.0 && !(1e-3..1e4).contains(&x.abs()) {
+        format!("{x:>11.3e}")
+    } else {
+        format!("{x:>11.4}")
+    }
+}
+
 fn matrix(ui: &mut egui::Ui, title: &str, m: DMat3, hover: &str) {
     ui.vertical(|ui| {
         ui.small(title).on_hover_text(hover);
-        egui::Grid::new(title).striped(true).show(ui, |ui| {
-            for row in mat3_rows(m) {
-                for x in row {
-                    ui.monospace(format!("{x:>9.4}"));
+        egui::Grid::new(title)
+            .striped(true)
+            .spacing([8.0, 2.0])
+            .show(ui, |ui| {
+                for row in mat3_rows(m) {
+                    for x in row {
+                        ui.monospace(entry(x));
+                    }
+                    ui.end_row();
                 }
-                ui.end_row();
-            }
-        });
+            });
     });
 }

@@ -54,10 +54,31 @@ impl Measurement {
                     rel_rmse: r.rel_rmse,
                 })
                 .collect(),
-            scaling: Vec::new(),
+            scaling: study_scaling(rows),
             device: format!("{source}: {} rows", rows.len()),
         }
     }
+}
+
+/// fps against the light count from a study's rows: per method (its variant of table A),
+/// its first α and culling setting, 1000 / median ms.
+fn study_scaling(rows: &[crate::study::StudyRow]) -> Vec<(Method, Vec<[f64; 2]>)> {
+    let Some(first) = rows.first() else {
+        return Vec::new();
+    };
+    Method::ALL
+        .into_iter()
+        .filter_map(|m| {
+            let mut series: Vec<[f64; 2]> = rows
+                .iter()
+                .filter(|r| r.alpha == first.alpha && r.cull == first.cull)
+                .filter(|r| r.variant == m.name())
+                .map(|r| [r.lights as f64, 1000.0 / r.ms_median])
+                .collect();
+            series.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            (series.len() >= 2).then_some((m, series))
+        })
+        .collect()
 }
 
 /// One render to time: a point of the error chart, or of the fps curves.

@@ -2,6 +2,7 @@
 //! the LUT, the plane in split or difference view, the paper's Figure 2 clipping cases, and
 //! speed against accuracy — and the global controls beside them. State persists between runs.
 
+pub mod axes;
 pub mod chart;
 pub mod clipping;
 pub mod completion;
@@ -12,6 +13,7 @@ pub mod matrix;
 pub mod measure;
 pub mod other;
 pub mod pacer;
+pub mod pixel_table;
 pub mod plane;
 pub mod refit;
 pub mod screenshot;
@@ -43,6 +45,11 @@ pub struct LabApp {
     /// A screenshot on its way to a file.
     pub screenshot: Option<PendingScreenshot>,
 }
+
+/// The smallest central area that shows all five panels at once: below it each panel is
+/// too small to read (the clipping pictures and the matrix numbers first), so they go
+/// under tabs.
+const GRID_MIN: egui::Vec2 = egui::vec2(1100.0, 640.0);
 
 /// eframe's storage key.
 const STORAGE_KEY: &str = "ltc-lab-state";
@@ -89,28 +96,58 @@ impl LabApp {
         self.shading.in_flight() || self.chart.busy() || self.matrix.busy()
     }
 
-    /// The whole window: the side panel, then the panels (one maximised, or all in a grid).
+    /// The whole window: the side panel (unless folded), then the panels — one maximised,
+    /// all in a grid, or, below `GRID_MIN`, one at a time under tabs.
     pub fn show(&mut self, ui: &mut egui::Ui) {
-        egui::Panel::left("controls")
-            .resizable(true)
-            .default_size(250.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    let action = controls::show(
-                        ui,
-                        &mut self.state,
-                        &self.shading,
-                        &self.other,
-                        &mut self.message,
-                    );
-                    if let Some(action) = action {
-                        self.act(action);
-                    }
+        if !self.state.controls_hidden {
+            egui::Panel::left("controls")
+                .resizable(true)
+                .default_size(250.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        let action = controls::show(
+                            ui,
+                            &mut self.state,
+                            &self.shading,
+                            &self.other,
+                            &mut self.message,
+                        );
+                        if let Some(action) = action {
+                            self.act(action);
+                        }
+                    });
                 });
+        }
+        egui::CentralPanel::default().show(ui, |ui| {
+            let size = ui.available_size();
+            let tabs = size.x < GRID_MIN.x || size.y < GRID_MIN.y;
+            ui.horizontal(|ui| {
+                let label = if self.state.controls_hidden {
+                    ">> controls"
+                } else {
+                    "<< controls"
+                };
+                if ui
+                    .small_button(label)
+                    .on_hover_text("Fold the side panel away, or back")
+                    .clicked()
+                {
+                    self.state.controls_hidden = !self.state.controls_hidden;
+                }
+                if tabs && self.state.maximised.is_none() {
+                    for id in PanelId::ALL {
+                        ui.selectable_value(&mut self.state.tab, id, id.title());
+                    }
+                }
             });
-        egui::CentralPanel::default().show(ui, |ui| match self.state.maximised {
-            Some(id) => self.panel_frame(ui, id),
-            None => self.grid(ui),
+            match (self.state.maximised, tabs) {
+                (Some(id), _) => self.panel_frame(ui, id),
+                (None, true) => {
+                    let id = self.state.tab;
+                    self.panel_frame(ui, id);
+                }
+                (None, false) => self.grid(ui),
+            }
         });
     }
 
@@ -184,7 +221,10 @@ impl LabApp {
                     self.plane
                         .show(ui, &mut self.state, &mut self.shading, tables);
                 }
-                PanelId::Clipping => self.clipping.show(ui, &mut self.state, &self.lut),
+                PanelId::Clipping => {
+                    self.clipping
+                        .show(ui, &mut self.state, &self.lut, &self.other);
+                }
                 PanelId::Chart => self
                     .chart
                     .show(ui, &mut self.state, &self.lut, &self.shading),

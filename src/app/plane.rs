@@ -7,8 +7,9 @@
 use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
-use crate::app::display::{ShownImage, colour_bar};
+use crate::app::display::{ShownImage, colour_bar, difference_scale};
 use crate::app::other::OtherTable;
+use crate::app::pixel_table::{self, pinned_terms};
 use crate::app::shading::Shading;
 use crate::app::state::{Compare, LabState};
 use crate::cpu::{clip_counts, shade_exact, shade_ltc};
@@ -34,6 +35,8 @@ pub struct PlanePanel {
     drag: Option<Drag>,
     /// The inspector's last reading, for tests.
     pub inspected: Option<PixelReading>,
+    /// The pinned pixel's lights, as last shown.
+    pub pinned: Option<crate::pixel::PixelTerms>,
     /// Hide the live GPU times (they change run to run; snapshot tests hide them).
     pub hide_timings: bool,
 }
@@ -125,7 +128,20 @@ impl PlanePanel {
             }
         });
         progress_line(ui, shading, self.hide_timings);
-        let avail = ui.available_size() - Vec2::new(0.0, 40.0);
+        // A fixed strip under the image for the readout (and the pinned pixel's lights), so
+        // that nothing covers it and the image does not jump when it changes.
+        let table_h = if s.pinned.is_some() {
+            (ui.available_height() * 0.35).clamp(60.0, 220.0)
+        } else {
+            0.0
+        };
+        let strip = 44.0
+            + if s.pinned.is_some() {
+                table_h + 24.0
+            } else {
+                0.0
+            };
+        let avail = ui.available_size() - Vec2::new(0.0, strip);
         let aspect = 16.0 / 9.0;
         let size = if avail.x / avail.y > aspect {
             Vec2::new(avail.y * aspect, avail.y)
@@ -221,8 +237,18 @@ impl PlanePanel {
             );
         }
         self.interact(&response, s, rect, width, height, &markers, divider_x);
+        if let Some([u, v]) = s.pinned {
+            let p = rect.min + Vec2::new(u as f32 * rect.width(), v as f32 * rect.height());
+            let stroke = egui::Stroke::new(1.5, Color32::from_rgb(255, 240, 80));
+            painter.circle_stroke(p, 6.0, stroke);
+            painter.hline(p.x - 10.0..=p.x - 4.0, p.y, stroke);
+            painter.hline(p.x + 4.0..=p.x + 10.0, p.y, stroke);
+            painter.vline(p.x, p.y - 10.0..=p.y - 4.0, stroke);
+            painter.vline(p.x, p.y + 4.0..=p.y + 10.0, stroke);
+        }
+        self.pinned = pinned_terms(s, lut, (width, height));
         if s.view == View::Diff {
-            colour_bar(ui);
+            colour_bar(ui, &difference_scale(a, b), 220.0);
         }
         // No tooltip on the image: it would cover the reading below it while one hovers.
         if let Some(pos) = response.hover_pos() {
@@ -240,8 +266,9 @@ impl PlanePanel {
                 r.case1,
                 r.case2
             )),
-            None => ui.label("hover a pixel to inspect it; drag a light's marker to move it (Shift: its height), drag the divider"),
+            None => ui.label("hover a pixel to read it, click to pin it and open its lights; drag a light's marker to move it (Shift: its height), drag the divider"),
         };
+        pixel_table::show(ui, s, self.pinned.as_ref(), table_h);
     }
 
     fn interact(
@@ -281,6 +308,13 @@ impl PlanePanel {
                 .iter()
                 .find(|(_, p)| p.distance(pos) < 8.0)
                 .map(|(k, _)| *k);
+            // A click beside the markers pins the pixel under it.
+            if s.selected_light.is_none() {
+                let u = f64::from((pos.x - rect.min.x) / rect.width());
+                let v = f64::from((pos.y - rect.min.y) / rect.height());
+                s.pinned = Some([u.clamp(0.0, 1.0), v.clamp(0.0, 1.0)]);
+                s.lobe_light = None;
+            }
         }
         if response.dragged()
             && let Some(pos) = response.interact_pointer_pos()
@@ -385,7 +419,7 @@ fn inspect(
         a,
         b,
         relative_error: (luminance(a) - lb).abs() / lb.max(1e-12),
-        case1: counts.below_horizon,
+        case1: counts.lifted,
         case2: counts.pushed_below,
     })
 }

@@ -86,15 +86,27 @@ pub struct LabState {
     pub light_count: usize,
     pub seed: u64,
     pub selected_light: Option<usize>,
+    /// The plane's pinned pixel, in image coordinates (0–1), opened into its lights.
+    pub pinned: Option<[f64; 2]>,
+    /// The pinned pixel's lights table: the column sorted by, and whether descending.
+    pub light_sort: (LightColumn, bool),
+    /// A light of the pinned pixel shown on the lobe panel: ω in the shading frame.
+    pub lobe_light: Option<[f64; 3]>,
     pub lobe: Lobe,
     /// 0: the clamped cosine (M = I); 1: the fitted LTC.
     pub morph: f64,
     pub orbit_yaw: f32,
     pub orbit_pitch: f32,
     pub colour_difference: bool,
-    pub clip_panel: Clipping,
+    /// The clipping panel's row whose case map legend and profile are shown.
     pub clip_scene: ClipScene,
+    /// The clipping panel's α, lights and table (the rules are `clipping`, the lab's).
+    pub clip_setup: ClipSetup,
     pub maximised: Option<PanelId>,
+    /// The panel shown when the window is too small for the grid (tabs).
+    pub tab: PanelId,
+    /// The side panel folded away.
+    pub controls_hidden: bool,
     pub scene_path: String,
     pub screenshot_path: String,
     /// A LUT file to shade with; empty: the embedded table.
@@ -111,6 +123,22 @@ pub struct LabState {
     pub refit: Option<crate::app::refit::RefitResult>,
 }
 
+/// The columns of the pinned pixel's lights table (sortable).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum LightColumn {
+    Index,
+    Elevation,
+    ElevationCos,
+    Case,
+    DSpec,
+    Jacobian,
+    Fresnel,
+    Irradiance,
+    Ltc,
+    Exact,
+    ErrorShare,
+}
+
 /// The Figure-2 scene whose case map and profile the clipping panel shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum ClipScene {
@@ -120,12 +148,50 @@ pub enum ClipScene {
 }
 
 impl ClipScene {
+    pub const ALL: [Self; 3] = [Self::Normal, Self::Case1, Self::Case2];
+
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
     pub fn preset(self) -> &'static str {
         match self {
             Self::Normal => "figure2-normal",
             Self::Case1 => "figure2-case1",
             Self::Case2 => "figure2-case2",
         }
+    }
+}
+
+/// What the clipping panel shades its Figure-2 scenes with: per scene (normal, case 1,
+/// case 2) its α and its light's position, and table A or B.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ClipSetup {
+    pub alpha: [f64; 3],
+    pub light: [[f64; 3]; 3],
+    pub table_b: bool,
+}
+
+impl Default for ClipSetup {
+    /// The presets' α and lights (assets/scenes/figure2-*.toml).
+    fn default() -> Self {
+        let scenes = ClipScene::ALL.map(|c| preset(c.preset()));
+        Self {
+            alpha: scenes.each_ref().map(|s| s.material.alpha),
+            light: scenes.each_ref().map(|s| s.lights[0].position),
+            table_b: false,
+        }
+    }
+}
+
+impl ClipSetup {
+    /// The scene `which` with this setup's α and light; `light_of` picks whose light (the
+    /// normal light of (a)/(b) is shaded with the case row's α).
+    pub fn scene(&self, which: ClipScene, light_of: ClipScene) -> Scene {
+        let mut s = preset(which.preset());
+        s.material.alpha = self.alpha[light_of.index()];
+        s.lights[0].position = self.light[which.index()];
+        s
     }
 }
 
@@ -147,14 +213,19 @@ impl Default for LabState {
             cull: true,
             seed: 27,
             selected_light: None,
+            pinned: None,
+            light_sort: (LightColumn::ErrorShare, true),
+            lobe_light: None,
             lobe: Lobe::Specular,
             morph: 1.0,
             orbit_yaw: 0.6,
             orbit_pitch: 0.35,
             colour_difference: false,
-            clip_panel: Clipping::BOTH,
             clip_scene: ClipScene::Case1,
+            clip_setup: ClipSetup::default(),
             maximised: None,
+            tab: PanelId::Plane,
+            controls_hidden: false,
             scene_path: "scene.toml".into(),
             screenshot_path: "ltc-lab.png".into(),
             lut_path: String::new(),

@@ -225,25 +225,62 @@ impl LtcPair {
     }
 }
 
-/// Which clipping case a light direction falls in for a lobe (DESIGN §1, the paper's §2.5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Which clipping case a light direction falls in for a lobe (DESIGN §1, the paper's §2.5):
+/// the four combinations of above/below the horizon before and after `M⁻¹`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum ClipCase {
-    /// Above the horizon before and after the transform.
+    /// Above the horizon before and after the transform: shaded as fitted.
     Visible,
-    /// Case 1: below the horizon (`n·l ≤ 0`).
-    BelowHorizon,
-    /// Case 2: above the horizon but `(M⁻¹l).z ≤ 0`.
+    /// Case 1: below the horizon (`n·l ≤ 0`) but lifted above it by `M⁻¹` — without the
+    /// horizon rule it glows (the paper's Figure 2c).
+    Lifted,
+    /// Case 2: above the horizon but pushed below it (`(M⁻¹l).z ≤ 0`) — without the
+    /// transformed rule it is negative light.
     PushedBelow,
+    /// Below the horizon and still below after `M⁻¹`: either rule removes it.
+    StaysBelow,
+}
+
+impl ClipCase {
+    pub const ALL: [Self; 4] = [
+        Self::Visible,
+        Self::Lifted,
+        Self::PushedBelow,
+        Self::StaysBelow,
+    ];
+
+    /// How the lab's legends and tables name it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Visible => "visible",
+            Self::Lifted => "case 1 (lifted)",
+            Self::PushedBelow => "case 2 (pushed below)",
+            Self::StaysBelow => "below, stays below",
+        }
+    }
 }
 
 impl Ltc {
     pub fn clip_case(&self, l: DVec3) -> ClipCase {
-        if l.z <= 0.0 {
-            ClipCase::BelowHorizon
-        } else if (self.cos_from_brdf * l).z <= 0.0 {
-            ClipCase::PushedBelow
+        let lifted_or_kept = (self.cos_from_brdf * l).z > 0.0;
+        match (l.z > 0.0, lifted_or_kept) {
+            (true, true) => ClipCase::Visible,
+            (true, false) => ClipCase::PushedBelow,
+            (false, true) => ClipCase::Lifted,
+            (false, false) => ClipCase::StaysBelow,
+        }
+    }
+}
+
+impl LtcPair {
+    /// The case of a light for both lobes: an artifact of either lobe (case 1 or case 2)
+    /// names it; `l` is above or below the horizon for both alike.
+    pub fn clip_case(&self, l: DVec3) -> ClipCase {
+        let (s, d) = (self.spec.clip_case(l), self.diff.clip_case(l));
+        if s == d || d == ClipCase::Visible || d == ClipCase::StaysBelow {
+            s
         } else {
-            ClipCase::Visible
+            d
         }
     }
 }

@@ -1,0 +1,223 @@
+//! The plane's pinned pixel opened into its lights: its exact and LTC radiance and their
+//! error, and a table of its lights — where each is before and after M^-1, its clipping case,
+//! D, the Jacobian, the magnitudes and Fresnel, E, and its LTC and exact contribution with
+//! its share of the pixel's error — sortable by any column. A row's click shows that light
+//! on the lobe panel.
+
+use crate::app::state::{LabState, LightColumn};
+use crate::colormap::short_number;
+use crate::ltc::lut::Lut;
+use crate::metrics::luminance;
+use crate::pixel::{LightTerm, PixelTerms, elevation_azimuth, pixel_terms};
+use crate::render::LutFilter;
+
+/// At most this many rows (the largest contributions first when sorted so): a table of
+/// 20 000 lights is unreadable, and the sums above it cover every light.
+const MAX_ROWS: usize = 200;
+
+/// The pinned pixel's terms with table A, as the plane renders it (`None`: none pinned, or
+/// it is off the plane).
+pub fn pinned_terms(
+    s: &LabState,
+    lut: &Lut,
+    (width, height): (usize, usize),
+) -> Option<PixelTerms> {
+    let [u, v] = s.pinned?;
+    let scene = s.shaded_scene();
+    let p = scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
+    pixel_terms(
+        &scene,
+        lut,
+        &p,
+        s.clipping,
+        s.normalization,
+        LutFilter::Bilinear,
+    )
+}
+
+const COLUMNS: [(LightColumn, &str, &str); 11] = [
+    (
+        LightColumn::Index,
+        "#",
+        "The light's index in the scene; click a row to show it on the lobe panel",
+    ),
+    (
+        LightColumn::Elevation,
+        "ω elev, az",
+        "Toward the light in the shading frame: elevation above the plane and azimuth from the view's side, degrees",
+    ),
+    (
+        LightColumn::ElevationCos,
+        "ω' elev, az",
+        "ω' = M^-1 ω (specular lobe): where the clamped cosine sees the light",
+    ),
+    (
+        LightColumn::Case,
+        "case",
+        "visible; case 1: below, lifted by M^-1; case 2: above, pushed below; below, stays below",
+    ),
+    (
+        LightColumn::DSpec,
+        "D_s, D_d",
+        "The specular and diffuse D(ω) with the rules in force (1/sr)",
+    ),
+    (
+        LightColumn::Jacobian,
+        "J",
+        "|M^-1| / |M^-1 ω|³ (specular): how M^-1 stretches solid angle toward ω",
+    ),
+    (
+        LightColumn::Fresnel,
+        "F(v·h)",
+        "The exact BRDF's Schlick Fresnel toward this light (the LTC's is folded into the pixel's specular magnitude, above)",
+    ),
+    (
+        LightColumn::Irradiance,
+        "E",
+        "I·w(d)/d² on luminance (w: the range window)",
+    ),
+    (
+        LightColumn::Ltc,
+        "LTC",
+        "This light's LTC radiance (luminance)",
+    ),
+    (
+        LightColumn::Exact,
+        "exact",
+        "This light's exact radiance (luminance)",
+    ),
+    (
+        LightColumn::ErrorShare,
+        "error share",
+        "(L_LTC − L_exact) of this light over the pixel's; the shares sum to 100%",
+    ),
+];
+
+fn sort_key(t: &PixelTerms, l: &LightTerm, c: LightColumn) -> f64 {
+    match c {
+        LightColumn::Index => l.index as f64,
+        LightColumn::Elevation => elevation_azimuth(l.omega).0,
+        LightColumn::ElevationCos => elevation_azimuth(l.omega_cos).0,
+        LightColumn::Case => l.case as usize as f64,
+        LightColumn::DSpec => l.d_spec,
+        LightColumn::Jacobian => l.jacobian,
+        LightColumn::Fresnel => l.fresnel,
+        LightColumn::Irradiance => l.irradiance,
+        LightColumn::Ltc => luminance(l.ltc),
+        LightColumn::Exact => luminance(l.exact),
+        LightColumn::ErrorShare => t.error_share(l).abs(),
+    }
+}
+
+/// The rows in the table's order.
+pub fn sorted_rows(t: &PixelTerms, (column, descending): (LightColumn, bool)) -> Vec<&LightTerm> {
+    let mut rows: Vec<&LightTerm> = t.terms.iter().collect();
+    rows.sort_by(|a, b| {
+        let o = sort_key(t, a, column).total_cmp(&sort_key(t, b, column));
+        if descending { o.reverse() } else { o }
+    });
+    rows
+}
+
+/// The readout's sums, then the lights table in `table_height` points.
+pub fn show(ui: &mut egui::Ui, s: &mut LabState, terms: Option<&PixelTerms>, table_height: f32) {
+    let Some(t) = terms else {
+        return;
+    };
+    let [u, v] = s.pinned.unwrap_or_default();
+    ui.horizontal_wrapped(|ui| {
+        ui.label(format!(
+            "pinned ({u:.3}, {v:.3}), θo {:.1}°: LTC {} | exact {} (luminance), error {:+.2}%, {} lights",
+            t.theta_o.to_degrees(),
+            short_number(luminance(t.ltc)),
+            short_number(luminance(t.exact)),
+            100.0 * t.relative_error(),
+            t.terms.len()
+        ))
+        .on_hover_text("LTC with table A and the rules in force against the exact BRDF, in f64 on the CPU; it updates with every change");
+        if let Some(l) = t.terms.first() {
+            ui.small(format!(
+                "magnitudes: specular F0·n_s + (1−F0)·f_s = {}, diffuse n_d = {}",
+                short_number(l.spec_magnitude),
+                short_number(l.diff_magnitude)
+            ))
+            .on_hover_text("The LTC lobes' magnitudes at this pixel's θo (the same for all its lights)");
+        }
+        if ui.small_button("unpin").clicked() {
+            s.pinned = None;
+            s.lobe_light = None;
+        }
+    });
+    let rows = sorted_rows(t, s.light_sort);
+    egui::ScrollArea::both()
+        .id_salt("pixel lights")
+        .max_height(table_height)
+        .auto_shrink([false, true])
+        .show(ui, |ui| {
+            egui::Grid::new("pixel lights grid")
+                .striped(true)
+                .spacing([10.0, 2.0])
+                .show(ui, |ui| {
+                    for (c, name, hover) in COLUMNS {
+                        let arrow = match s.light_sort {
+                            (sorted, true) if sorted == c => " v",
+                            (sorted, false) if sorted == c => " ^",
+                            _ => "",
+                        };
+                        if ui
+                            .small_button(format!("{name}{arrow}"))
+                            .on_hover_text(hover)
+                            .clicked()
+                        {
+                            s.light_sort = if s.light_sort.0 == c {
+                                (c, !s.light_sort.1)
+                            } else {
+                                (c, true)
+                            };
+                        }
+                    }
+                    ui.end_row();
+                    for l in rows.iter().take(MAX_ROWS) {
+                        row(ui, s, t, l);
+                        ui.end_row();
+                    }
+                });
+            if rows.len() > MAX_ROWS {
+                ui.small(format!(
+                    "… {} more lights (their sums are above)",
+                    rows.len() - MAX_ROWS
+                ));
+            }
+        });
+}
+
+fn row(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms, l: &LightTerm) {
+    let shown = s.lobe_light == Some(l.omega.to_array());
+    if ui
+        .selectable_label(shown, format!("{}", l.index))
+        .on_hover_text("Show this light's ω and M^-1 ω on the lobe panel, at this pixel's θo")
+        .clicked()
+    {
+        s.lobe_light = (!shown).then_some(l.omega.to_array());
+        s.theta_o_deg = t.theta_o.to_degrees();
+        s.selected_light = Some(l.index);
+    }
+    let angles = |w| {
+        let (e, a) = elevation_azimuth(w);
+        format!("{e:.1}°, {a:.0}°")
+    };
+    ui.monospace(angles(l.omega));
+    ui.monospace(angles(l.omega_cos));
+    ui.small(l.case.name());
+    ui.monospace(format!(
+        "{}, {}",
+        short_number(l.d_spec),
+        short_number(l.d_diff)
+    ));
+    ui.monospace(short_number(l.jacobian));
+    ui.monospace(format!("{:.4}", l.fresnel));
+    ui.monospace(short_number(l.irradiance));
+    ui.monospace(short_number(luminance(l.ltc)));
+    ui.monospace(short_number(luminance(l.exact)));
+    ui.monospace(format!("{:+.1}%", 100.0 * t.error_share(l)));
+}
