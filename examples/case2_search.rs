@@ -7,7 +7,7 @@
 use ltc_lab::cpu::render;
 use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::metrics::luminance;
+use ltc_lab::metrics::luminance_range;
 use ltc_lab::render::{Method, RenderSettings};
 use ltc_lab::scene::preset;
 
@@ -25,18 +25,8 @@ fn main() {
                     s.lights[0].position = [x, y, z];
                     let mut r = RenderSettings::single(96, 54, Method::Ltc);
                     r.clipping = Clipping::HORIZON;
-                    let f = render(&s, lut, &r);
-                    let l: Vec<f64> = f
-                        .pixels
-                        .iter()
-                        .zip(&f.on_plane)
-                        .filter(|p| *p.1)
-                        .map(|(p, _)| luminance(*p))
-                        .collect();
-                    let max = l.iter().cloned().fold(0.0, f64::max);
-                    let min = l.iter().cloned().fold(0.0, f64::min);
-                    let neg = l.iter().filter(|&&v| v < 0.0).count();
-                    results.push((-min / max, alpha, [x, y, z], min, max, neg));
+                    let r = luminance_range(&render(&s, lut, &r));
+                    results.push((-r.min / r.max, alpha, [x, y, z], r.min, r.max, r.negative));
                 }
             }
         }

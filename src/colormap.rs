@@ -1,6 +1,7 @@
 //! The lab's two false-colour maps, the same in every panel, PNG and shader: viridis for
-//! magnitudes, a dark-centred diverging map for signed values; and the scales that put a
-//! value on them (linear, logarithmic, symmetric) with round tick values for colour bars.
+//! magnitudes, a dark-centred diverging map for signed values; the scales that put a value
+//! on them (linear, logarithmic) with round tick values for colour bars; and the symmetric
+//! log the plots' signed axes use.
 
 /// Viridis at nine even stops, sRGB: R's `viridisLite::viridis(9)` (#440154 … #FDE725),
 /// itself matplotlib's map. Perceptually uniform and readable in grey.
@@ -62,8 +63,6 @@ pub enum Scale {
     Linear { lo: f64, hi: f64 },
     /// `lo` … `hi` (both > 0) by decades.
     Log { lo: f64, hi: f64 },
-    /// −`max` … `max` by `symlog` with linear threshold `c`: both signs readable over decades.
-    SymLog { max: f64, c: f64 },
 }
 
 /// A value's colour: a map and a scale, with a name and unit for the colour bar.
@@ -124,21 +123,6 @@ impl ColourScale {
         }
     }
 
-    /// Signed values in ±`max`, diverging, on a symmetric log scale over `decades` below
-    /// `max` (a glow 1/1000 of the peak and the peak both readable).
-    pub fn signed_log(max: f64, decades: f64, label: impl Into<String>) -> Self {
-        let max = max.abs().max(1e-300);
-        Self {
-            map: ColourMap::Diverging,
-            scale: Scale::SymLog {
-                max,
-                c: max * 10f64.powf(-decades),
-            },
-            label: label.into(),
-            percent: false,
-        }
-    }
-
     /// The same scale with its values read as percentages.
     pub fn in_percent(self) -> Self {
         Self {
@@ -164,7 +148,6 @@ impl ColourScale {
         let t = match self.scale {
             Scale::Linear { lo, hi } => (x - lo) / (hi - lo),
             Scale::Log { lo, hi } => (x.max(lo).ln() - lo.ln()) / (hi.ln() - lo.ln()),
-            Scale::SymLog { max, c } => 0.5 + 0.5 * symlog(x, c) / symlog(max, c),
         };
         t.clamp(0.0, 1.0)
     }
@@ -174,7 +157,6 @@ impl ColourScale {
         match self.scale {
             Scale::Linear { lo, hi } => lo + t * (hi - lo),
             Scale::Log { lo, hi } => (lo.ln() + t * (hi.ln() - lo.ln())).exp(),
-            Scale::SymLog { max, c } => symlog_inverse((2.0 * t - 1.0) * symlog(max, c), c),
         }
     }
 
@@ -196,13 +178,6 @@ impl ColourScale {
         let values = match self.scale {
             Scale::Linear { lo, hi } => nice_ticks(lo, hi, 5),
             Scale::Log { lo, hi } => decades(lo, hi),
-            Scale::SymLog { max, c } => {
-                let top = decades(c, max);
-                let mut v: Vec<f64> = top.iter().rev().map(|x| -x).collect();
-                v.push(0.0);
-                v.extend(top);
-                v
-            }
         };
         values.into_iter().map(|v| (self.position(v), v)).collect()
     }

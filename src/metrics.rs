@@ -37,6 +37,27 @@ pub fn mean_abs_luminance(frame: &Frame) -> f64 {
     if count > 0 { sum / count as f64 } else { 0.0 }
 }
 
+/// The least and largest luminance over the plane's pixels (each clamped through zero: 0
+/// without any of that sign), and how many are negative — the clipping pictures' exposure
+/// and the size of case 2's negative light.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LuminanceRange {
+    pub min: f64,
+    pub max: f64,
+    pub negative: usize,
+}
+
+pub fn luminance_range(frame: &Frame) -> LuminanceRange {
+    plane_pixels(frame).fold(LuminanceRange::default(), |r, (_, c)| {
+        let l = luminance(c);
+        LuminanceRange {
+            min: r.min.min(l),
+            max: r.max.max(l),
+            negative: r.negative + usize::from(l < 0.0),
+        }
+    })
+}
+
 fn plane_pixels(frame: &Frame) -> impl Iterator<Item = (usize, DVec3)> + '_ {
     frame
         .pixels

@@ -54,6 +54,21 @@ fn settle(h: &mut Harness<'static, LabApp>) {
     h.run_steps(2);
 }
 
+/// A primary click at `at`, as a pointer would: move there, press, release.
+fn click_at(h: &mut Harness<'static, LabApp>, at: egui::Pos2) {
+    h.hover_at(at);
+    h.run_steps(1);
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: Default::default(),
+        });
+        h.run_steps(1);
+    }
+}
+
 /// The plane's finished image, read back from the lab's device.
 fn plane_image(h: &Harness<'static, LabApp>) -> Frame {
     h.state()
@@ -178,21 +193,7 @@ fn clicking_a_heat_map_cell_selects_it() {
     let rect = h.get_by_label("spec.norm heat map").rect();
     // Cell (i, j) = (10, 50) of 64: its centre, in the map's pixels.
     let at = rect.min + (egui::vec2(10.5, 50.5) / 64.0) * rect.size();
-    h.hover_at(at);
-    h.run_steps(1);
-    h.event(egui::Event::PointerButton {
-        pos: at,
-        button: egui::PointerButton::Primary,
-        pressed: true,
-        modifiers: Default::default(),
-    });
-    h.run_steps(1);
-    h.event(egui::Event::PointerButton {
-        pos: at,
-        button: egui::PointerButton::Primary,
-        pressed: false,
-        modifiers: Default::default(),
-    });
+    click_at(&mut h, at);
     h.run_steps(3);
     let app = h.state();
     let lut = &app.lut;
@@ -695,11 +696,7 @@ fn a_pinned_pixel_opens_into_its_lights_and_one_shows_on_the_lobe() {
         rect.min.x + rect.width() * 0.2,
         rect.min.y + rect.height() * 0.8,
     );
-    h.hover_at(at);
-    h.run_steps(1);
-    h.drag_at(at);
-    h.run_steps(1);
-    h.drop_at(at);
+    click_at(&mut h, at);
     settle(&mut h);
     let app = h.state();
     let [u, v] = app.state.pinned.expect("the click pinned a pixel");
@@ -743,10 +740,22 @@ fn the_lobe_difference_at_80_degrees_shows_the_gap() {
         return;
     };
     h.snapshot_options("lobe_difference_80deg", &options(800 * 600));
+    let view = h.get_by_label("lobe view").rect();
     let image = h.render().expect("a rendered frame");
-    // The sphere is no longer one grey: both signs of the difference show, as saturated
-    // diverging colours (the map's orange and blue halves), on a few hundred pixels each.
-    let orange = image.pixels().filter(|p| p[0] > 150 && p[2] < 90).count();
-    let blue = image.pixels().filter(|p| p[2] > 150 && p[0] < 90).count();
-    assert!(orange > 300 && blue > 300, "orange {orange}, blue {blue}");
+    // Inside the sphere's view only (the colour bar under it holds both halves of the map):
+    // both signs of the difference show in the diverging map's hues, not its dark centre —
+    // orange: red well above blue with some green (the red arrow, (255, 0, 0), has none);
+    // blue: blue well above red — each over thousands of pixels, where the arrows cover a
+    // few hundred. The bug drew a sphere of the centre colour (26, 26, 31): neither.
+    let inside = |x: u32, y: u32| view.contains(egui::pos2(x as f32 + 0.5, y as f32 + 0.5));
+    let (mut orange, mut blue) = (0, 0);
+    for (x, y, p) in image.enumerate_pixels() {
+        if !inside(x, y) {
+            continue;
+        }
+        let [r, g, b] = [p[0], p[1], p[2]].map(i32::from);
+        orange += usize::from(r > 80 && r > b + 40 && g >= 20);
+        blue += usize::from(b > 80 && b > r + 40);
+    }
+    assert!(orange > 2000 && blue > 2000, "orange {orange}, blue {blue}");
 }

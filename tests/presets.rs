@@ -6,7 +6,7 @@ use std::path::Path;
 use ltc_lab::cpu::{clip_counts_image, render};
 use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::metrics::luminance;
+use ltc_lab::metrics::luminance_range;
 use ltc_lab::render::{Method, RenderSettings};
 use ltc_lab::scene::Scene;
 
@@ -48,17 +48,8 @@ fn figure2_presets_place_the_paper_light() {
 fn negative_ratio(s: &Scene, lut: &Lut, (w, h): (usize, usize)) -> (f64, usize) {
     let mut r = RenderSettings::single(w, h, Method::Ltc);
     r.clipping = Clipping::HORIZON;
-    let f = render(s, lut, &r);
-    let lum: Vec<f64> = f
-        .pixels
-        .iter()
-        .zip(&f.on_plane)
-        .filter(|p| *p.1)
-        .map(|(p, _)| luminance(*p))
-        .collect();
-    let max = lum.iter().copied().fold(0.0, f64::max);
-    let min = lum.iter().copied().fold(0.0, f64::min);
-    (-min / max, lum.iter().filter(|&&v| v < 0.0).count())
+    let range = luminance_range(&render(s, lut, &r));
+    (-range.min / range.max, range.negative)
 }
 
 /// A coarser grid than `examples/case2_search.rs` (whose search the preset documents): the

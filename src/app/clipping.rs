@@ -17,7 +17,7 @@ use crate::colormap::{diverging, round_sig, short_number};
 use crate::cpu::{ClipCounts, clip_counts_map, render};
 use crate::ltc::lut::Lut;
 use crate::ltc::{ClipCase, Clipping, Normalization};
-use crate::metrics::luminance;
+use crate::metrics::{LuminanceRange, luminance, luminance_range};
 use crate::output::srgb_encode;
 use crate::render::{Frame, Method, RenderSettings};
 
@@ -38,7 +38,7 @@ struct Key {
 pub struct Thumb {
     pub frame: Frame,
     pub image: egui::ColorImage,
-    texture: Option<egui::TextureHandle>,
+    texture: egui::TextureHandle,
     /// The exposure factors of the positive and (if any) negative parts.
     pub factor: f64,
     pub negative_factor: Option<f64>,
@@ -49,8 +49,7 @@ pub struct Thumb {
 pub struct CaseRow {
     pub thumbs: Vec<Thumb>,
     pub case_map: Vec<Option<ClipCounts>>,
-    map_image: egui::ColorImage,
-    map_texture: Option<egui::TextureHandle>,
+    map_texture: egui::TextureHandle,
     /// Pixels per class, in `ClipCase::ALL`'s order.
     pub class_counts: [usize; 4],
     /// BRDF, LTC with both rules, LTC as toggled, LTC without this case's rule.
@@ -111,7 +110,7 @@ impl ClippingPanel {
         } else {
             lut
         };
-        self.ensure(s, table);
+        self.ensure(ui.ctx(), s, table);
         egui::ScrollArea::vertical()
             .auto_shrink([false; 2])
             .show(ui, |ui| {
@@ -168,7 +167,7 @@ impl ClippingPanel {
         let size = Vec2::new(w, w * PICTURE.1 as f32 / PICTURE.0 as f32);
         let line = self.line_or_default(s);
         let show_line = s.clip_scene == row;
-        let Some(case_row) = self.rows.get_mut(r) else {
+        let Some(case_row) = self.rows.get(r) else {
             return;
         };
         let mut drawn: Option<(Pos2, Pos2, bool)> = None;
@@ -177,31 +176,9 @@ impl ClippingPanel {
             for k in 0..count {
                 ui.vertical(|ui| {
                     ui.set_width(size.x);
-                    let (texture, caption, hover) = if k < case_row.thumbs.len() {
-                        let t = &mut case_row.thumbs[k];
-                        let texture = t
-                            .texture
-                            .get_or_insert_with(|| {
-                                ui.ctx().load_texture(
-                                    format!("clip{r}-{k}"),
-                                    t.image.clone(),
-                                    egui::TextureOptions::LINEAR,
-                                )
-                            })
-                            .id();
-                        (texture, t.caption.clone(), Some(&t.frame))
-                    } else {
-                        let texture = case_row
-                            .map_texture
-                            .get_or_insert_with(|| {
-                                ui.ctx().load_texture(
-                                    format!("clipmap{r}"),
-                                    case_row.map_image.clone(),
-                                    egui::TextureOptions::NEAREST,
-                                )
-                            })
-                            .id();
-                        (texture, "case map".to_string(), None)
+                    let (texture, caption, hover) = match case_row.thumbs.get(k) {
+                        Some(t) => (t.texture.id(), t.caption.clone(), Some(&t.frame)),
+                        None => (case_row.map_texture.id(), "case map".to_string(), None),
                     };
                     let (rect, response) =
                         ui.allocate_exact_size(size, egui::Sense::click_and_drag());
@@ -385,7 +362,7 @@ impl ClippingPanel {
     }
 
     /// Renders both rows again when the rules, α, a light or the table changed.
-    fn ensure(&mut self, s: &LabState, lut: &Lut) {
+    fn ensure(&mut self, ctx: &egui::Context, s: &LabState, lut: &Lut) {
         let key = Key {
             clip: s.clipping,
             normalization: s.normalization,
@@ -394,13 +371,16 @@ impl ClippingPanel {
         if self.key.as_ref() == Some(&key) {
             return;
         }
-        self.rows = ROWS.iter().map(|&row| case_row(&key, row, lut)).collect();
+        self.rows = ROWS
+            .iter()
+            .map(|&row| case_row(ctx, &key, row, lut))
+            .collect();
         self.key = Some(key);
     }
 }
 
 /// One case's pictures, case map and profile renders.
-fn case_row(key: &Key, row: ClipScene, lut: &Lut) -> CaseRow {
+fn case_row(ctx: &egui::Context, key: &Key, row: ClipScene, lut: &Lut) -> CaseRow {
     let (w, h) = PICTURE;
     let shot = |which: ClipScene, method: Method, clip: Clipping| {
         let mut r = RenderSettings::single(w, h, method);
@@ -429,7 +409,7 @@ fn case_row(key: &Key, row: ClipScene, lut: &Lut) -> CaseRow {
         .into_iter()
         .enumerate()
         .map(|(k, (name, frame))| {
-            let mut t = thumb(frame);
+            let mut t = thumb(ctx, &format!("clip {} {k}", row.preset()), frame);
             let exposure = match t.negative_factor {
                 Some(n) => format!(
                     "+×{} −×{}",
@@ -452,16 +432,15 @@ fn case_row(key: &Key, row: ClipScene, lut: &Lut) -> CaseRow {
     let case_map = clip_counts_map(&scene, lut, w, h);
     let mut class_counts = [0; 4];
     for c in case_map.iter().flatten().filter_map(ClipCounts::class) {
-        class_counts[ClipCase::ALL.iter().position(|&x| x == c).unwrap_or(0)] += 1;
+        class_counts[c.index()] += 1;
     }
     let map_image = egui::ColorImage::new(
         [w, h],
         case_map
             .iter()
             .map(|c| {
-                c.and_then(|c| c.class()).map_or(BACKGROUND, |class| {
-                    CLASS_COLOURS[ClipCase::ALL.iter().position(|&x| x == class).unwrap_or(0)]
-                })
+                c.and_then(|c| c.class())
+                    .map_or(BACKGROUND, |class| CLASS_COLOURS[class.index()])
             })
             .collect(),
     );
@@ -477,8 +456,11 @@ fn case_row(key: &Key, row: ClipScene, lut: &Lut) -> CaseRow {
         ],
         thumbs,
         case_map,
-        map_image,
-        map_texture: None,
+        map_texture: ctx.load_texture(
+            format!("clip map {}", row.preset()),
+            map_image,
+            egui::TextureOptions::NEAREST,
+        ),
         class_counts,
         default_line,
     }
@@ -486,26 +468,19 @@ fn case_row(key: &Key, row: ClipScene, lut: &Lut) -> CaseRow {
 
 /// A picture exposed to its own content: a positive one so that its brightest pixel is
 /// white; a signed one in the diverging map, each sign scaled to its own peak.
-pub fn thumb(frame: Frame) -> Thumb {
-    let lum: Vec<f64> = frame
-        .pixels
-        .iter()
-        .zip(&frame.on_plane)
-        .map(|(p, &on)| if on { luminance(*p) } else { 0.0 })
-        .collect();
-    let max = lum.iter().copied().fold(0.0f64, f64::max);
-    let min = lum.iter().copied().fold(0.0f64, f64::min);
+pub fn thumb(ctx: &egui::Context, name: &str, frame: Frame) -> Thumb {
+    let LuminanceRange { min, max, .. } = luminance_range(&frame);
     let factor = 1.0 / max;
     let negative_factor = (min < 0.0).then(|| -1.0 / min);
     let pixels = frame
         .pixels
         .iter()
         .zip(&frame.on_plane)
-        .zip(&lum)
-        .map(|((p, &on), &l)| {
+        .map(|(p, &on)| {
             if !on {
                 return BACKGROUND;
             }
+            let l = luminance(*p);
             match negative_factor {
                 // Each sign to its own peak, encoded like the positive pictures (sRGB), so
                 // that the dim tail of the negative light reads as it would as light.
@@ -526,10 +501,11 @@ pub fn thumb(frame: Frame) -> Thumb {
             }
         })
         .collect();
+    let image = egui::ColorImage::new([frame.width, frame.height], pixels);
     Thumb {
-        image: egui::ColorImage::new([frame.width, frame.height], pixels),
+        texture: ctx.load_texture(name, image.clone(), egui::TextureOptions::LINEAR),
+        image,
         frame,
-        texture: None,
         factor,
         negative_factor,
         caption: String::new(),

@@ -98,7 +98,7 @@ fn sort_key(t: &PixelTerms, l: &LightTerm, c: LightColumn) -> f64 {
         LightColumn::Index => l.index as f64,
         LightColumn::Elevation => elevation_azimuth(l.omega).0,
         LightColumn::ElevationCos => elevation_azimuth(l.omega_cos).0,
-        LightColumn::Case => l.case as usize as f64,
+        LightColumn::Case => l.case.index() as f64,
         LightColumn::DSpec => l.d_spec,
         LightColumn::Jacobian => l.jacobian,
         LightColumn::Fresnel => l.fresnel,

@@ -249,6 +249,11 @@ impl ClipCase {
         Self::StaysBelow,
     ];
 
+    /// Its place in `ALL` (the declaration order).
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
     /// How the lab's legends and tables name it.
     pub fn name(self) -> &'static str {
         match self {
