@@ -12,6 +12,7 @@ use crate::app::measure::{MEASURE_SIZE, MeasureJob, Measurement, Point, REPEATS}
 use crate::app::shading::Shading;
 use crate::app::state::LabState;
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
+use crate::colormap::{round_sig, short_number};
 use crate::ltc::lut::Lut;
 use crate::render::Method;
 
@@ -69,7 +70,8 @@ impl ChartPanel {
                             s.measurement = Some(Measurement::from_study(&rows, path));
                             self.error = None;
                         }
-                        Err(e) => self.error = Some(format!("load study {path}: {e}")),
+                        // The error names the file already.
+                        Err(e) => self.error = Some(format!("load study: {e}")),
                     }
                 }
             }
@@ -98,7 +100,14 @@ impl ChartPanel {
                     .y_axis_label("relative RMSE (log; exact at 1e-7)")
                     .y_axis_formatter(exponent);
                 log_axis(plot, true)
-                    .legend(egui_plot::Legend::default().position(egui_plot::Corner::LeftBottom))
+                    .label_formatter(|pos| log_reading(pos, "ms", "error"))
+                    // Small and see-through: a study has a dozen variants, over the points.
+                    .legend(
+                        egui_plot::Legend::default()
+                            .position(egui_plot::Corner::LeftBottom)
+                            .text_style(egui::TextStyle::Small)
+                            .background_alpha(0.5),
+                    )
                     .allow_scroll(false)
                     .show(ui, |p| {
                         // One series per variant (every α and light count of a study).
@@ -122,6 +131,7 @@ impl ChartPanel {
                             p.points(
                                 egui_plot::Points::new(name.to_string(), series)
                                     .radius(5.0)
+                                    .shape(variant_shape(name))
                                     .color(method_colour(name)),
                             );
                         }
@@ -135,6 +145,7 @@ impl ChartPanel {
                     .allow_scroll(false);
                 // Both axes by decades: the GTX 1060's thousands of fps and a CPU driver's
                 // few share the plot without flattening either.
+                let plot = plot.label_formatter(|pos| log_reading(pos, "lights", "fps"));
                 log_axis(log_axis(plot, true), false).show(ui, |p| {
                     let log = |series: &[[f64; 2]]| -> Vec<[f64; 2]> {
                         series
@@ -221,6 +232,43 @@ pub fn method_colour(label: &str) -> Color32 {
         .filter(|(_, m)| label.starts_with(m.name()))
         .max_by_key(|(_, m)| m.name().len())
         .map_or(Color32::from_gray(180), |(k, _)| PALETTE[k % PALETTE.len()])
+}
+
+/// The marker of a method's variant ("ltc-lut16" of ltc): a circle for the method itself,
+/// another shape for each variant, so that variants of one colour stay apart.
+fn variant_shape(label: &str) -> egui_plot::MarkerShape {
+    let method = Method::ALL
+        .iter()
+        .filter(|m| label.starts_with(m.name()))
+        .max_by_key(|m| m.name().len());
+    let variant = method.map_or(label, |m| &label[m.name().len()..]);
+    if variant.is_empty() {
+        return egui_plot::MarkerShape::Circle;
+    }
+    // Any variant name maps to one of the nine other shapes, the same one every run.
+    let k = variant
+        .bytes()
+        .fold(0usize, |h, b| h.wrapping_mul(31).wrapping_add(b.into()));
+    egui_plot::MarkerShape::all()
+        .nth(1 + k % 9)
+        .unwrap_or(egui_plot::MarkerShape::Square)
+}
+
+/// The hover reading of a plot with log10 coordinates: the series and both values.
+fn log_reading(pos: &egui_plot::HoverPosition<'_>, x: &str, y: &str) -> Option<String> {
+    let value = |v: f64| short_number(round_sig(10f64.powf(v)));
+    match pos {
+        egui_plot::HoverPosition::NearDataPoint {
+            plot_name,
+            position,
+            ..
+        } => Some(format!(
+            "{plot_name}\n{} {x}, {y} {}",
+            value(position.x),
+            value(position.y)
+        )),
+        egui_plot::HoverPosition::Elsewhere { .. } => None,
+    }
 }
 
 /// The bundled reference study (assets/study/reference.csv: its device and size are in its

@@ -111,12 +111,13 @@ impl ClippingPanel {
             lut
         };
         self.ensure(ui.ctx(), s, table);
+        let size = picture_size(ui);
         egui::ScrollArea::vertical()
             .auto_shrink([false; 2])
             .show(ui, |ui| {
                 for (r, &row) in ROWS.iter().enumerate() {
                     self.row_controls(ui, s, row);
-                    self.row_pictures(ui, s, r, row);
+                    self.row_pictures(ui, s, r, row, size);
                 }
                 self.legend(ui, s);
                 self.profile(ui, s);
@@ -162,9 +163,14 @@ impl ClippingPanel {
     }
 
     /// A row's four pictures and its case map; drag on any to draw the profile's line.
-    fn row_pictures(&mut self, ui: &mut egui::Ui, s: &mut LabState, r: usize, row: ClipScene) {
-        let w = ((ui.available_width() - 24.0) / 5.0).clamp(40.0, 320.0);
-        let size = Vec2::new(w, w * PICTURE.1 as f32 / PICTURE.0 as f32);
+    fn row_pictures(
+        &mut self,
+        ui: &mut egui::Ui,
+        s: &mut LabState,
+        r: usize,
+        row: ClipScene,
+        size: Vec2,
+    ) {
         let line = self.line_or_default(s);
         let show_line = s.clip_scene == row;
         let Some(case_row) = self.rows.get(r) else {
@@ -207,26 +213,26 @@ impl ClippingPanel {
                         && let Some(p) = response.ctx.input(|i| i.pointer.press_origin())
                     {
                         drawn = Some((to_unit(p), to_unit(p), true));
-                    }
-                    if response.dragged()
+                    } else if response.dragged()
                         && let Some(p) = response.interact_pointer_pos()
                     {
                         drawn = Some((Pos2::ZERO, to_unit(p), false));
                     }
-                    if let Some(p) = response.hover_pos() {
+                    ui.small(caption);
+                    // The reading on its own line, under the caption, so that neither hides
+                    // the other; blank (but kept) when the pointer is elsewhere.
+                    let reading = response.hover_pos().map(|p| {
                         let u = to_unit(p);
-                        let text = match hover {
+                        match hover {
                             Some(frame) => format!(
-                                "luminance {}",
+                                "luminance {} (linear, scene units)",
                                 short_number(sample(frame, u).unwrap_or(0.0))
                             ),
                             None => class_at(&case_row.case_map, u)
                                 .map_or("off the plane".into(), |c| c.name().to_string()),
-                        };
-                        ui.small(text);
-                    } else {
-                        ui.small(caption);
-                    }
+                        }
+                    });
+                    ui.small(reading.unwrap_or_default());
                 });
             }
         });
@@ -279,6 +285,7 @@ impl ClippingPanel {
                 None => "each picture is exposed so that its brightest pixel is white; its factor is printed under it".into(),
             };
             ui.small(text);
+            ui.small("(a), (b): the same light moved above the plane, for reference; (c), (d): this case's light; hover a picture to read it");
         }
     }
 
@@ -395,11 +402,11 @@ fn case_row(ctx: &egui::Context, key: &Key, row: ClipScene, lut: &Lut) -> CaseRo
     };
     let pictures = [
         (
-            "(a) LTC, light above",
+            "(a) LTC ref.",
             shot(ClipScene::Normal, Method::Ltc, key.clip),
         ),
         (
-            "(b) BRDF, light above",
+            "(b) BRDF ref.",
             shot(ClipScene::Normal, Method::Brdf, key.clip),
         ),
         ("(c) LTC", shot(row, Method::Ltc, key.clip)),
@@ -410,14 +417,14 @@ fn case_row(ctx: &egui::Context, key: &Key, row: ClipScene, lut: &Lut) -> CaseRo
         .enumerate()
         .map(|(k, (name, frame))| {
             let mut t = thumb(ctx, &format!("clip {} {k}", row.preset()), frame);
-            let exposure = match t.negative_factor {
-                Some(n) => format!(
-                    "+×{} −×{}",
-                    short_number(round_sig(t.factor)),
-                    short_number(round_sig(n))
-                ),
-                None if t.factor.is_finite() => format!("×{}", short_number(round_sig(t.factor))),
-                None => "black".into(),
+            let factor = |f: f64| format!("×{}", short_number(round_sig(f)));
+            // `factor` is 1/max: finite and positive only where some light is positive.
+            let positive = (t.factor.is_finite() && t.factor > 0.0).then(|| factor(t.factor));
+            let exposure = match (positive, t.negative_factor) {
+                (Some(p), Some(n)) => format!("+{p} −{}", factor(n)),
+                (Some(p), None) => p,
+                (None, Some(n)) => format!("−{} (all negative)", factor(n)),
+                (None, None) => "black".into(),
             };
             let rules = if k == 2 {
                 format!(", {rules}")
@@ -464,6 +471,25 @@ fn case_row(ctx: &egui::Context, key: &Key, row: ClipScene, lut: &Lut) -> CaseRo
         class_counts,
         default_line,
     }
+}
+
+/// The pictures' size: five abreast within the panel's width (its scroll bar and the gaps
+/// between them included), and small enough in a short panel that both rows, the legend and
+/// the profile's plot fit its height.
+fn picture_size(ui: &egui::Ui) -> Vec2 {
+    let spacing = ui.spacing();
+    let across =
+        ui.available_width() - 4.0 * spacing.item_spacing.x - spacing.scroll.bar_width - 8.0;
+    // Per row: its controls and the two caption lines (about 70 points); then the legend's
+    // lines and the profile's 140-point plot with its buttons (about 230).
+    let down = (ui.available_height() - 2.0 * 70.0 - 230.0) / 2.0;
+    let aspect = PICTURE.1 as f32 / PICTURE.0 as f32;
+    // Not below 110 points, where the glow and the case map stop being readable: a short
+    // panel scrolls to the profile instead.
+    let w = (across / 5.0)
+        .min((down / aspect).max(110.0))
+        .clamp(40.0, 320.0);
+    Vec2::new(w, w * aspect)
 }
 
 /// A picture exposed to its own content: a positive one so that its brightest pixel is
@@ -572,13 +598,13 @@ fn class_hover(case: ClipCase) -> &'static str {
     match case {
         ClipCase::Visible => "Above the horizon before and after M^-1: shaded as fitted",
         ClipCase::Lifted => {
-            "Below the horizon but lifted above it by M^-1: glows unless the case-1 rule clips it"
+            "Below the horizon but lifted above it by M^-1 (of either lobe, specular or diffuse): glows unless the case-1 rule clips it. The other lobe may stay below: with both rules off, that part is negative"
         }
         ClipCase::PushedBelow => {
-            "Above the horizon but pushed below by M^-1: negative light unless the case-2 rule clips it"
+            "Above the horizon but pushed below by M^-1 (of either lobe): negative light unless the case-2 rule clips it"
         }
         ClipCase::StaysBelow => {
-            "Below the horizon and still below after M^-1: either rule removes it (without both, it is negative)"
+            "Below the horizon and still below after M^-1: either rule removes it; with both rules off it is negative light"
         }
     }
 }

@@ -70,6 +70,7 @@ pub fn show(
             ),
         );
     }
+    message_line(ui, message);
     ui.separator();
     material(ui, s);
     ui.separator();
@@ -79,8 +80,13 @@ pub fn show(
     ui.separator();
     ui.strong("Scene");
     scene_files(ui, s, message);
-    let mut action = table(ui, s, other, message);
-    action = action.or_else(|| save_buttons(ui, s));
+    let action = table(ui, s, other, message);
+    action.or_else(|| save_buttons(ui, s))
+}
+
+/// The last file operation's outcome, at the top of the side panel: at the bottom it would
+/// be below the fold of a small window, and a click would seem to do nothing.
+fn message_line(ui: &mut egui::Ui, message: &Option<Message>) {
     if let Some(m) = message {
         let colour = if m.is_error {
             egui::Color32::from_rgb(230, 90, 80)
@@ -89,7 +95,6 @@ pub fn show(
         };
         ui.colored_label(colour, &m.text);
     }
-    action
 }
 
 fn material(ui: &mut egui::Ui, s: &mut LabState) {
@@ -127,8 +132,17 @@ fn lights(ui: &mut egui::Ui, s: &mut LabState, max: usize) {
             .text("intensity ×"),
     )
     .on_hover_text("Multiplies every light's I in E = I/d² · w(d)");
+    explain(ui, "× every light's I (not saved to the scene)");
     ui.add(egui::Slider::new(&mut s.range_override, 0.0..=10.0).text("range R"))
         .on_hover_text("The window w(d) = clamp(1 − (d/R)⁴, 0, 1)²; 0 keeps each light's own range (absent = ∞)");
+    explain(
+        ui,
+        if s.range_override > 0.0 {
+            "every light fades to 0 at distance R"
+        } else {
+            "0: each light's own range from the scene"
+        },
+    );
     if let Some(k) = s.selected_light.filter(|&k| k < s.scene.lights.len()) {
         ui.add(egui::Slider::new(&mut s.scene.lights[k].position[2], -1.0..=3.0).text(format!("height of light {k}")))
             .on_hover_text("z of the selected light; below 0 it is under the plane (clipping case 1). Shift-drag its marker for the same");
@@ -331,4 +345,9 @@ fn save_buttons(ui: &mut egui::Ui, s: &mut LabState) -> Option<Action> {
         )
     })
     .inner
+}
+
+/// A small grey line under a control saying what it does, where a tooltip alone would hide it.
+fn explain(ui: &mut egui::Ui, text: &str) {
+    ui.label(egui::RichText::new(text).weak());
 }

@@ -277,10 +277,14 @@ impl LobePanel {
         ));
         let origin = project(DVec3::ZERO).0;
         let font = egui::FontId::proportional(12.0);
-        let arrow = |d: DVec3, c: Color32, name: &str| {
-            let tip = project(d * reach).0;
+        // Arrows shortened to stay in the view (a margin for their labels), labels placed
+        // after all arrows, each moved down past the ones it would cover.
+        let inside = rect.shrink2(egui::vec2(48.0, 16.0));
+        let mut labels: Vec<(Pos2, Color32, &str)> = Vec::new();
+        let mut arrow = |d: DVec3, c: Color32, name: &'static str| {
+            let tip = shorten_into(origin, project(d * reach).0, inside);
             painter.arrow(origin, tip - origin, egui::Stroke::new(2.0, c));
-            painter.text(tip, egui::Align2::LEFT_BOTTOM, name, font.clone(), c);
+            labels.push((tip, c, name));
         };
         arrow(DVec3::Z, Color32::WHITE, "n");
         arrow(v, Color32::YELLOW, "v");
@@ -301,8 +305,38 @@ impl LobePanel {
             let image = (ltc.cos_from_brdf * w).normalize_or_zero();
             arrow(image, Color32::from_rgb(80, 230, 230), "ω' = M^-1 ω");
         }
+        let mut placed: Vec<egui::Rect> = Vec::new();
+        for (tip, c, name) in labels {
+            let galley = painter.layout_no_wrap(name.to_string(), font.clone(), c);
+            let mut at =
+                egui::Rect::from_min_size(tip - egui::vec2(0.0, galley.size().y), galley.size());
+            while let Some(hit) = placed.iter().find(|r| r.intersects(at)) {
+                at = at.translate(egui::vec2(0.0, hit.max.y - at.min.y + 1.0));
+            }
+            painter.galley(at.min, galley, c);
+            placed.push(at);
+        }
         difference
     }
+}
+
+/// The point on the segment from `origin` to `tip` nearest `tip` that lies in `area` (the
+/// whole segment where `tip` does; `origin` is inside).
+fn shorten_into(origin: Pos2, tip: Pos2, area: egui::Rect) -> Pos2 {
+    let d = tip - origin;
+    let mut t = 1.0f32;
+    for (o, dd, lo, hi) in [
+        (origin.x, d.x, area.min.x, area.max.x),
+        (origin.y, d.y, area.min.y, area.max.y),
+    ] {
+        if o + t * dd > hi && dd > 0.0 {
+            t = (hi - o) / dd;
+        }
+        if o + t * dd < lo && dd < 0.0 {
+            t = (lo - o) / dd;
+        }
+    }
+    origin + d * t.max(0.0)
 }
 
 /// Where the exact lobe peaks: the best of a coarse grid of the upper hemisphere.
@@ -418,6 +452,11 @@ fn slice_plot(
         .height(height)
         .legend(egui_plot::Legend::default())
         .x_axis_label("θ in the plane of incidence (°)")
+        .y_axis_label("1/sr")
+        // Ticks every 10°, 30° and 90° (the default's 10s and 100s label only 0 here).
+        .x_grid_spacer(egui_plot::uniform_grid_spacer(|_| [10.0, 30.0, 90.0]))
+        .include_x(-90.0)
+        .include_x(90.0)
         .allow_scroll(false)
         .show(ui, |p| {
             p.line(

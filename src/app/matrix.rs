@@ -6,9 +6,10 @@
 use egui::{Color32, Pos2, Vec2};
 use glam::DMat3;
 
+use crate::app::axes::log_axis;
 use crate::app::display::{colour_bar, rgb};
 use crate::app::other::OtherTable;
-use crate::app::refit::Refit;
+use crate::app::refit::{Objective, Refit};
 use crate::app::state::LabState;
 use crate::colormap::{ColourScale, short_number};
 use crate::ltc::lobe::Lobe;
@@ -102,6 +103,8 @@ impl MatrixPanel {
         };
         let err = sample.get(Channel::err(s.lobe));
         egui::ScrollArea::vertical().auto_shrink([false; 2]).show(ui, |ui| {
+            // Long lines wrap at the panel's edge rather than run past it.
+            ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Wrap);
             ui.label(format!(
                 "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
                 if s.lobe == Lobe::Specular { "specular" } else { "diffuse" },
@@ -114,12 +117,13 @@ impl MatrixPanel {
             let inv = ltc.cos_from_brdf;
             let m22 = mat3_rows(inv)[2][2];
             let matrices = [
-                ("M^-1 as stored (÷ middle)", inv, "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it divided by its middle element"),
+                ("M^-1 at (θo, α), bilinear (÷ middle)", inv, "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it divided by its middle element, and this is the four cells about (θo, α) interpolated as the shader does"),
                 ("M", ltc.brdf_from_cos, "brdf_from_cos: maps the clamped cosine onto the lobe"),
                 ("paper's form (÷ m22)", inv * (1.0 / m22), "[[a,0,b],[0,c,0],[d,0,1]]: the same M^-1 divided by its bottom-right element"),
             ];
-            // As many matrices per row as fit (each ~200 points wide in monospace).
-            let per_row = ((ui.available_width() / 200.0) as usize).clamp(1, 3);
+            // As many matrices per row as fit (each ~260 points wide in monospace, with the
+            // gap after it).
+            let per_row = ((ui.available_width() / 260.0) as usize).clamp(1, 3);
             for row in matrices.chunks(per_row) {
                 ui.horizontal(|ui| {
                     for (title, m, hover) in row {
@@ -143,12 +147,13 @@ impl MatrixPanel {
                     let t = table.sample(s.alpha(), theta.cos());
                     let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
                     let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
+                    let e4 = |c| entry(t.get(c)).trim().to_string();
                     ui.label(format!(
-                        "{which} ({name}): M^-1 = [[{:.3}, 0, {:.3}], [0, 1, 0], [{:.3}, 0, {:.3}]], scale {:.3}, error {:.1}%",
-                        t.get(m[0]),
-                        t.get(m[1]),
-                        t.get(m[2]),
-                        t.get(m[3]),
+                        "{which} ({name}): M^-1 = [[{}, 0, {}], [0, 1, 0], [{}, 0, {}]], scale {:.3}, error {:.1}%",
+                        e4(m[0]),
+                        e4(m[1]),
+                        e4(m[2]),
+                        e4(m[3]),
                         scale,
                         100.0 * t.get(e)
                     ))
@@ -207,7 +212,10 @@ impl MatrixPanel {
         let visible = ui
             .available_width()
             .min(ui.clip_rect().right() - ui.cursor().left());
-        let side = ((visible - 30.0) / MAPS_PER_ROW as f32).clamp(40.0, 160.0);
+        // Less the gaps between the maps and the scroll bar beside them.
+        let gaps = (MAPS_PER_ROW - 1) as f32 * ui.spacing().item_spacing.x;
+        let side = ((visible - gaps - ui.spacing().scroll.bar_width - 4.0) / MAPS_PER_ROW as f32)
+            .clamp(40.0, 160.0);
         let channels: Vec<usize> = (0..CHANNEL_COUNT).collect();
         let mut hovered = None;
         // Rows of fixed length: a wrapping layout cannot know a column's size before it is
@@ -287,12 +295,21 @@ impl MatrixPanel {
                     }
                 }
                 None => {
-                    if ui
-                        .button("refit this cell")
-                        .on_hover_text("Runs ltc_code's fit (Nelder–Mead, 32×32 strata from both distributions, |·|³ error) on the nearest cell, from the stored cell's parameters, live; then compares stored and refitted lobes by their pointwise error")
-                        .clicked()
-                    {
-                        self.refit = Some(Refit::start(s.lobe, self.current_cell, lut));
+                    let made_by = Objective::of_lut(lut);
+                    ui.label("refit this cell:");
+                    for objective in Objective::BOTH {
+                        let what = match objective {
+                            Objective::LtcCode => "ltc_code's fit (Nelder–Mead on m00, m22, m02 from 32² strata of both distributions, |·|³ error)",
+                            Objective::Point => "the point fit (Nelder–Mead on m00, m02, m20, m22 and the specular scale, relative L1 error by a 64² quadrature that follows the lobe, three restarts)",
+                        };
+                        let made = if objective == made_by { " Table A minimizes this objective." } else { "" };
+                        if ui
+                            .add(egui::Button::new(objective.name()).selected(objective == made_by))
+                            .on_hover_text(format!("Runs {what} on the nearest cell from the stored cell's parameters, live; then compares stored and refitted lobes by the same pointwise error.{made}"))
+                            .clicked()
+                        {
+                            self.refit = Some(Refit::start(s.lobe, self.current_cell, lut, objective));
+                        }
                     }
                 }
             }
@@ -315,50 +332,79 @@ impl MatrixPanel {
         ui.horizontal(|ui| {
             matrix(
                 ui,
-                "stored M^-1 (÷ middle)",
+                &format!("cell ({}, {}) as stored (÷ middle)", r.cell.0, r.cell.1),
                 crate::ltc::mat3_from_rows(r.stored),
                 "The table's cell as stored",
             );
             matrix(
                 ui,
-                "refitted M^-1 (÷ middle)",
+                &format!("cell ({}, {}) refitted (÷ middle)", r.cell.0, r.cell.1),
                 crate::ltc::mat3_from_rows(r.cos_from_brdf),
                 "The refit's result",
             );
         });
-        let how = if r.cancelled {
-            "cancelled"
-        } else if r.converged {
-            "converged"
-        } else {
-            "stopped at the iteration limit"
+        let how = match (r.cancelled, r.objective, r.converged) {
+            (true, ..) => "cancelled",
+            (false, Objective::Point, _) => "its restarts done",
+            (false, Objective::LtcCode, true) => "converged",
+            (false, Objective::LtcCode, false) => "stopped at the iteration limit",
         };
+        if r.scale != 1.0 || r.stored_scale != 1.0 {
+            ui.label(format!(
+                "spec scale s: stored {:.3}, refitted {:.3}",
+                r.stored_scale, r.scale
+            ))
+            .on_hover_text("The point fit's factor on the specular magnitude (spec.scale)");
+        }
         ui.label(format!(
-            "pointwise error: stored {:.2}%, refitted {:.2}% — {} iterations, {how}",
+            "pointwise error: stored {:.2}%, refitted {:.2}% ({}: {} iterations, {how})",
             100.0 * r.stored_error,
             100.0 * r.error,
+            r.objective.name(),
             r.iterations
         ))
-        .on_hover_text("∫|n·D − f·cos| / ∫ f·cos (DESIGN §4), both measured with 64² strata from both distributions");
+        .on_hover_text("∫|s·n·D − f·cos| / ∫ f·cos (DESIGN §4), both lobes measured alike with 64² strata from both distributions, whichever objective the refit minimized");
         let points: Vec<[f64; 2]> = r
             .history
             .iter()
             .map(|&[i, f]| [i, f.max(1e-300).log10()])
             .collect();
         ui.add_space(4.0);
-        egui_plot::Plot::new("nelder-mead")
+        let plot = egui_plot::Plot::new("nelder-mead")
             .height(110.0)
             .x_axis_label("iteration")
-            .y_axis_label("log10 objective")
+            .y_axis_label(match r.objective {
+                // ltc_code's sum is not normalized: it scales with the lobe's peak cubed,
+                // 1e10 and more for the sharpest cells.
+                Objective::LtcCode => "|·|^3 (log)",
+                Objective::Point => "L1 (log)",
+            })
             .allow_scroll(false)
             .include_x(0.0)
-            .include_x((points.len() as f64 - 1.0).max(1.0))
-            .show(ui, |p| {
-                // Markers too: a fit that stops at its first iteration is one point, and a
-                // line through one point draws nothing.
-                p.points(egui_plot::Points::new("objective", points.clone()).radius(2.0));
-                p.line(egui_plot::Line::new("objective", points));
+            .include_x((points.len() as f64 - 1.0).max(1.0));
+        // 0.2 decades beyond the curve each way: 0.4 decades always hold a 1, 2 or 5 × 10^k
+        // tick (the widest gap, 2 to 5, is 0.398 decades), so a flat curve has a label.
+        let (lo, hi) = points
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p[1]), hi.max(p[1]))
             });
+        let plot = if lo.is_finite() {
+            plot.include_y(lo - 0.2).include_y(hi + 0.2)
+        } else {
+            plot
+        };
+        let colour = Color32::from_rgb(70, 140, 255);
+        log_axis(plot, false).show(ui, |p| {
+            // Markers too: a fit that stops at its first iteration is one point, and a line
+            // through one point draws nothing.
+            p.points(
+                egui_plot::Points::new("objective", points.clone())
+                    .radius(2.0)
+                    .color(colour),
+            );
+            p.line(egui_plot::Line::new("objective", points).color(colour));
+        });
     }
 
     /// Blocks until a running refit is done (tests).
@@ -420,6 +466,8 @@ fn entry(x: f64) -> String {
 
 fn matrix(ui: &mut egui::Ui, title: &str, m: DMat3, hover: &str) {
     ui.vertical(|ui| {
+        // A number is never broken across lines (the panel wraps its long lines).
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
         ui.small(title).on_hover_text(hover);
         egui::Grid::new(title)
             .striped(true)

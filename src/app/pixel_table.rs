@@ -6,6 +6,7 @@
 
 use crate::app::state::{LabState, LightColumn};
 use crate::colormap::short_number;
+use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
 use crate::metrics::luminance;
 use crate::pixel::{LightTerm, PixelTerms, elevation_azimuth, pixel_terms};
@@ -208,7 +209,12 @@ fn row(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms, l: &LightTerm) {
     };
     ui.monospace(angles(l.omega));
     ui.monospace(angles(l.omega_cos));
-    ui.small(l.case.name());
+    // ω' is the specular lobe's; where the case is the diffuse lobe's artifact, say so.
+    if l.case == ClipCase::of(l.omega, l.omega_cos) {
+        ui.small(l.case.name());
+    } else {
+        ui.small(format!("{} (diffuse lobe)", l.case.name()));
+    }
     ui.monospace(format!(
         "{}, {}",
         short_number(l.d_spec),

@@ -127,7 +127,10 @@ impl PlanePanel {
                 s.light_count = s.scene.lights.len();
             }
         });
-        progress_line(ui, shading, self.hide_timings);
+        ui.horizontal_wrapped(|ui| {
+            exposure_slider(ui, s);
+            progress_line(ui, shading, self.hide_timings);
+        });
         // A fixed strip under the image for the readout (and the pinned pixel's lights), so
         // that nothing covers it and the image does not jump when it changes.
         let table_h = if s.pinned.is_some() {
@@ -251,12 +254,13 @@ impl PlanePanel {
             colour_bar(ui, &difference_scale(a, b), 220.0);
         }
         // No tooltip on the image: it would cover the reading below it while one hovers.
-        if let Some(pos) = response.hover_pos() {
+        // Read afresh every frame, so that it follows every change; none off the image.
+        self.inspected = response.hover_pos().and_then(|pos| {
             let x = f64::from((pos.x - rect.min.x) / rect.width()) * width as f64;
             let y = f64::from((pos.y - rect.min.y) / rect.height()) * height as f64;
             let b_table = (s.compare == Compare::TableB).then_some(&other.lut);
-            self.inspected = inspect(s, (lut, b_table), x, y, width, height);
-        }
+            inspect(s, (lut, b_table), x, y, width, height)
+        });
         match &self.inspected {
             Some(r) => ui.label(format!(
                 "pixel: {a} {:.4} | {b} {:.4} (luminance), relative difference {:.2}%; lights in case 1: {}, case 2: {}",
@@ -361,6 +365,18 @@ impl PlanePanel {
         )?;
         crate::output::write_frame(&frame, path, exposure).map_err(|e| e.to_string())
     }
+}
+
+/// The scene's exposure: shown radiance and saved PNGs are `L · exposure` before the tone map.
+fn exposure_slider(ui: &mut egui::Ui, s: &mut LabState) {
+    // 1/64..64: six stops each way covers paper-100 (peaks near 1) down to the clipping
+    // scenes' faint light without leaving the slider's fine range.
+    ui.add(
+        egui::Slider::new(&mut s.scene.exposure, 1.0 / 64.0..=64.0)
+            .logarithmic(true)
+            .text("exposure"),
+    )
+    .on_hover_text("Display only: each pixel shows L · exposure through the tone map x/(1+x) and sRGB; it does not restart the render. Saved PNGs use it, EXRs keep L. The difference view has its own fixed scale");
 }
 
 /// "3 200 / 20 000 lights, 16% — 312 ms GPU over 40 frames" while the render fills, the

@@ -1,25 +1,73 @@
-//! "Refit this cell": the fitter run live on one cell of the table, on a worker thread, from
-//! the stored cell's own parameters; its objective per iteration for the plot, a cancel, and
-//! the result kept with the lab's state (the lobe panel shows the refitted lobe).
+//! "Refit this cell": a fitter run live on one cell of the table, on a worker thread, from
+//! the stored cell's own parameters: ltc_code's (the classic table's) or the point fit's
+//! (the point table's). Its objective per iteration for the plot, a cancel, and the result
+//! kept with the lab's state (the lobe panel shows the refitted lobe).
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
 
-use glam::DMat3;
 use serde::{Deserialize, Serialize};
 
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
+use crate::ltc::fit_point::{
+    CellQuadrature, PointFit, QUADRATURE_STRATA, fit_cell_observed, fits_scale,
+};
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{Channel, Lut};
+use crate::ltc::lut::{Channel, Lut, normalized_cos_from_brdf};
 use crate::ltc::nelder_mead::CONTINUE;
 use crate::ltc::{Ltc, cos_from_brdf_from_entries, mat3_from_rows, mat3_rows};
+
+/// Which fitter a refit runs: each shipped table is the minimum of its own objective, so a
+/// cell is refitted with the one that made it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Objective {
+    /// ltc_code's fit (`fit.rs`): Nelder–Mead on the |·|³ error from both distributions; the
+    /// classic table.
+    #[default]
+    LtcCode,
+    /// The point fit (`fit_point.rs`): the relative L1 error by the lobe-following
+    /// quadrature, the four entries and the specular scale free; the point table.
+    Point,
+}
+
+impl Objective {
+    pub const BOTH: [Objective; 2] = [Objective::LtcCode, Objective::Point];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Objective::LtcCode => "ltc_code",
+            Objective::Point => "point L1",
+        }
+    }
+
+    /// The objective that made `lut`, as far as its cells tell: the point fit is the only
+    /// fitter here that frees the specular scale, and it moves it off 1 in some cells.
+    pub fn of_lut(lut: &Lut) -> Self {
+        if lut.cells.iter().any(|c| c.get(Channel::SpecScale) != 1.0) {
+            Objective::Point
+        } else {
+            Objective::LtcCode
+        }
+    }
+}
+
+fn one() -> f64 {
+    1.0
+}
 
 /// A finished refit: what the plot and the lobe panel need, kept between runs.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RefitResult {
     pub lobe: Lobe,
     pub cell: (usize, usize),
+    #[serde(default)]
+    pub objective: Objective,
+    /// The scale on the magnitude (`spec.scale`) of the refit and of the stored cell.
+    #[serde(default = "one")]
+    pub scale: f64,
+    #[serde(default = "one")]
+    pub stored_scale: f64,
     /// (iteration, best objective).
     pub history: Vec<[f64; 2]>,
     /// The refitted `M⁻¹`, rows, and the lobe's albedos.
@@ -40,6 +88,7 @@ pub struct RefitResult {
 impl RefitResult {
     pub fn ltc(&self) -> Ltc {
         Ltc::from_cos_from_brdf(mat3_from_rows(self.cos_from_brdf), self.norm, self.fresnel)
+            .with_scale(self.scale)
     }
 }
 
@@ -62,46 +111,80 @@ pub struct Refit {
 const ERROR_SAMPLES: usize = 64;
 
 impl Refit {
-    /// Refits cell `(i, j)` of `lut` for `lobe`, starting from the stored cell.
-    pub fn start(lobe: Lobe, (i, j): (usize, usize), lut: &Lut) -> Self {
+    /// Refits cell `(i, j)` of `lut` for `lobe` by `objective`, starting from the stored cell.
+    pub fn start(lobe: Lobe, (i, j): (usize, usize), lut: &Lut, objective: Objective) -> Self {
         let (tx, rx) = mpsc::channel();
         let settings = FitSettings {
             size: lut.size,
             alpha_min: lut.alpha_min,
             ..FitSettings::default()
         };
-        let stored = cos_from_brdf_from_entries(
-            Channel::entries(lobe).map(|c| f64::from(lut.cell(i, j).get(c))),
-        );
+        let stored = PointFit::stored(lut.cell(i, j), lobe);
         let cancel = Arc::new(AtomicBool::new(false));
         let stop = cancel.clone();
         std::thread::spawn(move || {
             let strata = FitStrata::new(&settings);
             let problem = CellProblem::new(lobe, i, j, &settings, &strata);
-            let start = problem.params_of(stored);
-            let fit = problem.fit(start, &settings, &strata, |k, f| {
+            let mut observe = |k: usize, f: f64| {
                 let _ = tx.send(Event::Iteration(k, f));
                 if stop.load(Ordering::Relaxed) {
                     std::ops::ControlFlow::Break(())
                 } else {
                     CONTINUE
                 }
-            });
-            let error =
-                |ltc: &Ltc| pointwise_error(lobe, problem.view, problem.alpha, ltc, ERROR_SAMPLES);
-            let stored_ltc = Ltc::from_cos_from_brdf(stored, problem.norm, problem.fresnel);
+            };
+            let (fit, iterations, converged) = match objective {
+                Objective::LtcCode => {
+                    let start = problem.params_of(cos_from_brdf_from_entries(stored.entries));
+                    let fit = problem.fit(start, &settings, &strata, &mut observe);
+                    let entries = normalized_cos_from_brdf(&fit.ltc);
+                    let point = PointFit {
+                        entries,
+                        scale: 1.0,
+                    };
+                    (point, fit.iterations, fit.converged)
+                }
+                Objective::Point => {
+                    let nodes = crate::ltc::lobe::strata(QUADRATURE_STRATA);
+                    let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
+                    let mut count = 0;
+                    let mut counted = |k, f| {
+                        count = k;
+                        observe(k, f)
+                    };
+                    let free_scale = fits_scale(lobe);
+                    let point = fit_cell_observed(
+                        &q,
+                        problem.norm,
+                        &[stored],
+                        free_scale,
+                        &settings,
+                        &mut counted,
+                    );
+                    // Its restarts end where Nelder–Mead stops moving: there is no
+                    // iteration limit to hit for the whole fit, only per run.
+                    (point, count, true)
+                }
+            };
+            let ltc = |p: &PointFit| p.ltc(problem.norm, problem.fresnel);
+            let error = |p: &PointFit| {
+                pointwise_error(lobe, problem.view, problem.alpha, &ltc(p), ERROR_SAMPLES)
+            };
             let result = RefitResult {
                 lobe,
                 cell: (i, j),
+                objective,
+                scale: fit.scale,
+                stored_scale: stored.scale,
                 history: Vec::new(),
-                cos_from_brdf: mat3_rows(normalized(fit.ltc.cos_from_brdf)),
-                norm: fit.ltc.norm,
-                fresnel: fit.ltc.fresnel,
-                stored: mat3_rows(stored),
-                error: error(&fit.ltc),
-                stored_error: error(&stored_ltc),
-                iterations: fit.iterations,
-                converged: fit.converged,
+                cos_from_brdf: mat3_rows(cos_from_brdf_from_entries(fit.entries)),
+                norm: problem.norm,
+                fresnel: problem.fresnel,
+                stored: mat3_rows(cos_from_brdf_from_entries(stored.entries)),
+                error: error(&fit),
+                stored_error: error(&stored),
+                iterations,
+                converged,
                 cancelled: stop.load(Ordering::Relaxed),
             };
             let _ = tx.send(Event::Done(Box::new(result)));
@@ -110,7 +193,11 @@ impl Refit {
             lobe,
             cell: (i, j),
             history: Vec::new(),
-            max_iterations: settings.max_iterations,
+            max_iterations: match objective {
+                // Each start's runs, each up to the limit.
+                Objective::Point => settings.max_iterations * crate::ltc::fit_point::RESTARTS,
+                Objective::LtcCode => settings.max_iterations,
+            },
             cancel,
             rx,
         }
@@ -139,9 +226,4 @@ impl Refit {
     pub fn progress(&self) -> f32 {
         self.history.len() as f32 / self.max_iterations.max(1) as f32
     }
-}
-
-/// `M⁻¹` divided by its middle element, as the table stores it (DESIGN §2).
-fn normalized(m: DMat3) -> DMat3 {
-    m * (1.0 / mat3_rows(m)[1][1])
 }

@@ -155,6 +155,9 @@ struct InFlight {
 struct CpuShading {
     rx: Option<mpsc::Receiver<Frame>>,
     texture: Option<egui::TextureHandle>,
+    /// The last finished frame and the exposure its texture was encoded with, so that an
+    /// exposure change re-encodes it instead of rendering again.
+    frame: Option<(Frame, f64)>,
 }
 
 impl Shading {
@@ -169,6 +172,7 @@ impl Shading {
             cpu: gpu.is_none().then_some(CpuShading {
                 rx: None,
                 texture: None,
+                frame: None,
             }),
             gpu,
             lut: lut.clone(),
@@ -319,7 +323,11 @@ impl Shading {
         if self.in_flight() {
             return None;
         }
-        self.gpu.as_ref().map(|g| g.renderer.read(&g.ctx))
+        match (&self.gpu, &self.cpu) {
+            (Some(g), _) => Some(g.renderer.read(&g.ctx)),
+            (None, Some(cpu)) => cpu.frame.as_ref().map(|(f, _)| f.clone()),
+            (None, None) => None,
+        }
     }
 }
 
@@ -523,22 +531,35 @@ impl CpuShading {
         self.rx = Some(rx);
     }
 
+    /// Encodes the last frame into the texture where it was encoded with another exposure.
+    fn encode(&mut self, ui: &egui::Context, exposure: f64) {
+        let Some((frame, shown)) = &mut self.frame else {
+            return;
+        };
+        if *shown == exposure {
+            return;
+        }
+        *shown = exposure;
+        let image = crate::app::display::frame_image(frame, exposure);
+        match &mut self.texture {
+            Some(t) => t.set(image, egui::TextureOptions::LINEAR),
+            None => {
+                self.texture = Some(ui.load_texture("plane", image, egui::TextureOptions::LINEAR));
+            }
+        }
+    }
+
     /// Takes a finished render into the texture; whether the current one is done.
     fn collect(&mut self, ui: &egui::Context, exposure: f64) -> bool {
         let Some(rx) = &self.rx else {
+            self.encode(ui, exposure);
             return true;
         };
         match rx.try_recv() {
             Ok(frame) => {
-                let image = crate::app::display::frame_image(&frame, exposure);
-                match &mut self.texture {
-                    Some(t) => t.set(image, egui::TextureOptions::LINEAR),
-                    None => {
-                        self.texture =
-                            Some(ui.load_texture("plane", image, egui::TextureOptions::LINEAR));
-                    }
-                }
+                self.frame = Some((frame, f64::NAN));
                 self.rx = None;
+                self.encode(ui, exposure);
                 true
             }
             Err(mpsc::TryRecvError::Empty) => false,

@@ -39,9 +39,9 @@ pub struct Args {
     /// Show one panel maximised: lobe, matrix, plane, clipping, chart, or all five.
     #[arg(long, value_parser = parse_panel, default_value = "all")]
     panel: Panels,
-    /// Window size, WxH.
-    #[arg(long, default_value = "1600x900", value_parser = parse_size)]
-    size: (usize, usize),
+    /// Window size, WxH [default: the last session's, or 1600x900].
+    #[arg(long, value_parser = parse_size)]
+    size: Option<(usize, usize)>,
     /// Start with this scene instead of the saved state.
     #[arg(long)]
     scene: Option<PathBuf>,
@@ -65,7 +65,7 @@ impl Default for Args {
         Self {
             screenshot: None,
             panel: Panels(None),
-            size: DEFAULT_SIZE,
+            size: None,
             scene: None,
             measure: false,
             lights: None,
@@ -91,7 +91,7 @@ pub fn run(a: Args) -> Result<()> {
             ),
         ));
     }
-    let (w, h) = a.size;
+    let (w, h) = a.size.unwrap_or(DEFAULT_SIZE);
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("LTC Lab")
@@ -101,8 +101,9 @@ pub fn run(a: Args) -> Result<()> {
             wgpu_setup: ltc_lab::app::shading::wgpu_setup(),
             ..Default::default()
         },
-        // A screenshot shows the defaults, not whatever the last session left.
-        persist_window: a.screenshot.is_none(),
+        // A screenshot shows the defaults, not whatever the last session left; a size asked
+        // for wins over the last session's.
+        persist_window: a.screenshot.is_none() && a.size.is_none(),
         ..Default::default()
     };
     let (panel, measure, lights) = (a.panel.0, a.measure, a.lights);

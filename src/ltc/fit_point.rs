@@ -8,6 +8,8 @@
 //! table's own error metric (`pointwise_error`) rates lower — so no cell is worse than the
 //! classic table.
 
+use std::ops::ControlFlow;
+
 use glam::DVec3;
 use rayon::prelude::*;
 
@@ -153,6 +155,19 @@ pub fn fit_cell(
     free_scale: bool,
     settings: &FitSettings,
 ) -> PointFit {
+    fit_cell_observed(q, norm, starts, free_scale, settings, &mut |_, _| CONTINUE)
+}
+
+/// `fit_cell`, telling `observe` the best objective so far at every Nelder–Mead iteration
+/// (counted across starts and restarts); a `Break` ends the fit with the best point found.
+pub fn fit_cell_observed(
+    q: &CellQuadrature,
+    norm: f64,
+    starts: &[PointFit],
+    free_scale: bool,
+    settings: &FitSettings,
+    observe: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
+) -> PointFit {
     let objective = |fit: &PointFit| {
         if fit.is_valid() {
             q.relative_l1(fit, norm)
@@ -166,17 +181,28 @@ pub fn fit_cell(
         .iter()
         .min_by(|a, b| objective(a).total_cmp(&objective(b)))
         .expect("at least one start");
-    for &first in starts {
+    let (mut count, mut lowest, stopped) = (0, objective(&best), std::cell::Cell::new(false));
+    let mut step = |_: usize, f: f64| {
+        count += 1;
+        lowest = lowest.min(f);
+        let flow = observe(count, lowest);
+        stopped.set(flow.is_break());
+        flow
+    };
+    'starts: for &first in starts {
         let mut start = first;
         for _ in 0..RESTARTS {
             start = if free_scale {
-                descend::<5>(start, &objective, settings)
+                descend::<5>(start, &objective, settings, &mut step)
             } else {
-                descend::<4>(start, &objective, settings)
+                descend::<4>(start, &objective, settings, &mut step)
             };
-        }
-        if objective(&start) < objective(&best) {
-            best = start;
+            if objective(&start) < objective(&best) {
+                best = start;
+            }
+            if stopped.get() {
+                break 'starts;
+            }
         }
     }
     best
@@ -188,6 +214,7 @@ fn descend<const D: usize>(
     start: PointFit,
     objective: &impl Fn(&PointFit) -> f64,
     settings: &FitSettings,
+    observe: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
 ) -> PointFit {
     let largest = start.entries.iter().fold(0.0f64, |a, y| a.max(y.abs()));
     let step = start.entries.map(|x| x.abs().max(1e-3 * largest));
@@ -207,13 +234,13 @@ fn descend<const D: usize>(
         settings.tolerance,
         settings.max_iterations,
         |p| objective(&at(p)),
-        |_, _| CONTINUE,
+        observe,
     );
     at(&m.point)
 }
 
 /// Nelder–Mead runs per start (each from the previous one's result).
-const RESTARTS: usize = 3;
+pub const RESTARTS: usize = 3;
 
 /// A cell of the point table: `current`, with each lobe the point fit improved replaced
 /// (entries, scale, error; `norm` and `fresnel` stay the true albedos).

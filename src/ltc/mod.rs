@@ -242,6 +242,17 @@ pub enum ClipCase {
 }
 
 impl ClipCase {
+    /// The case of a direction `l` that `M⁻¹` maps to `transformed` (either need not be
+    /// unit): which sides of the horizon the two are on.
+    pub fn of(l: DVec3, transformed: DVec3) -> Self {
+        match (l.z > 0.0, transformed.z > 0.0) {
+            (true, true) => ClipCase::Visible,
+            (true, false) => ClipCase::PushedBelow,
+            (false, true) => ClipCase::Lifted,
+            (false, false) => ClipCase::StaysBelow,
+        }
+    }
+
     pub const ALL: [Self; 4] = [
         Self::Visible,
         Self::Lifted,
@@ -267,13 +278,7 @@ impl ClipCase {
 
 impl Ltc {
     pub fn clip_case(&self, l: DVec3) -> ClipCase {
-        let lifted_or_kept = (self.cos_from_brdf * l).z > 0.0;
-        match (l.z > 0.0, lifted_or_kept) {
-            (true, true) => ClipCase::Visible,
-            (true, false) => ClipCase::PushedBelow,
-            (false, true) => ClipCase::Lifted,
-            (false, false) => ClipCase::StaysBelow,
-        }
+        ClipCase::of(l, self.cos_from_brdf * l)
     }
 }
 
