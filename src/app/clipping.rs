@@ -252,29 +252,28 @@ impl ClippingPanel {
         }
     }
 
-    /// The four classes' colours, names and pixel counts for the selected case.
+    /// The four classes' colours, names and pixel counts for both cases.
     fn legend(&self, ui: &mut egui::Ui, s: &LabState) {
+        for (name, counts) in ["case 1", "case 2"]
+            .into_iter()
+            .zip(self.rows.iter().map(|r| r.class_counts))
+        {
+            ui.horizontal_wrapped(|ui| {
+                ui.small(format!(
+                    "case map of {name} (pixels of {}×{}; the rest is off the plane):",
+                    PICTURE.0, PICTURE.1
+                ));
+                for (k, case) in ClipCase::ALL.into_iter().enumerate() {
+                    let (rect, _) = ui.allocate_exact_size(Vec2::splat(10.0), egui::Sense::hover());
+                    ui.painter().rect_filled(rect, 2.0, CLASS_COLOURS[k]);
+                    ui.small(format!("{} {}", case.name(), counts[k]))
+                        .on_hover_text(class_hover(case));
+                }
+            });
+        }
         let Some(row) = self.selected_row(s) else {
             return;
         };
-        ui.horizontal_wrapped(|ui| {
-            ui.small(format!(
-                "case map of {} (pixels of {}×{}):",
-                if s.clip_scene == ClipScene::Case2 {
-                    "case 2"
-                } else {
-                    "case 1"
-                },
-                PICTURE.0,
-                PICTURE.1
-            ));
-            for (k, case) in ClipCase::ALL.into_iter().enumerate() {
-                let (rect, _) = ui.allocate_exact_size(Vec2::splat(10.0), egui::Sense::hover());
-                ui.painter().rect_filled(rect, 2.0, CLASS_COLOURS[k]);
-                ui.small(format!("{} {}", case.name(), row.class_counts[k]))
-                    .on_hover_text(class_hover(case));
-            }
-        });
         if let Some(t) = row.thumbs.get(2) {
             let text = match t.negative_factor {
                 Some(n) => format!(
@@ -331,6 +330,8 @@ impl ClippingPanel {
         let plot = egui_plot::Plot::new("clip profile")
             .legend(egui_plot::Legend::default())
             .x_axis_label("distance along the line (pixels of the pictures)")
+            // Ticks every 10, 50 and 100 pixels (the default's 10s and 100s label one tick).
+            .x_grid_spacer(egui_plot::uniform_grid_spacer(|_| [10.0, 50.0, 100.0]))
             .y_axis_label("luminance (symlog)")
             .min_size(Vec2::new(80.0, 140.0))
             .allow_scroll(false);

@@ -131,6 +131,11 @@ impl PlanePanel {
             exposure_slider(ui, s);
             progress_line(ui, shading, self.hide_timings);
         });
+        // A black plane is the right answer here, but would look like a fault.
+        let lights = &s.scene.lights;
+        if s.clipping.horizon && !lights.is_empty() && lights.iter().all(|l| l.position[2] <= 0.0) {
+            ui.small("every light is at or below the plane: the case-1 rule (n·l ≤ 0 -> 0) keeps it black; turn the rule off, or see the Clipping panel, for the glow M^-1 would lift");
+        }
         // A fixed strip under the image for the readout (and the pinned pixel's lights), so
         // that nothing covers it and the image does not jump when it changes.
         let table_h = if s.pinned.is_some() {
