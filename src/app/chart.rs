@@ -225,23 +225,24 @@ pub fn method_colour(label: &str) -> Color32 {
         Color32::from_rgb(200, 110, 230),
         Color32::from_rgb(60, 210, 210),
     ];
-    // The longest method name the label starts with ("ltc-fast-point" is ltc-fast's).
+    method_of(label).map_or(Color32::from_gray(180), |(k, _)| PALETTE[k % PALETTE.len()])
+}
+
+/// The method a series label names, with its index in `Method::ALL`: the longest method
+/// name the label starts with ("ltc-fast-point" is ltc-fast's).
+fn method_of(label: &str) -> Option<(usize, Method)> {
     Method::ALL
         .iter()
+        .copied()
         .enumerate()
         .filter(|(_, m)| label.starts_with(m.name()))
         .max_by_key(|(_, m)| m.name().len())
-        .map_or(Color32::from_gray(180), |(k, _)| PALETTE[k % PALETTE.len()])
 }
 
 /// The marker of a method's variant ("ltc-lut16" of ltc): a circle for the method itself,
 /// another shape for each variant, so that variants of one colour stay apart.
 fn variant_shape(label: &str) -> egui_plot::MarkerShape {
-    let method = Method::ALL
-        .iter()
-        .filter(|m| label.starts_with(m.name()))
-        .max_by_key(|m| m.name().len());
-    let variant = method.map_or(label, |m| &label[m.name().len()..]);
+    let variant = method_of(label).map_or(label, |(_, m)| &label[m.name().len()..]);
     if variant.is_empty() {
         return egui_plot::MarkerShape::Circle;
     }

@@ -6,11 +6,12 @@
 
 use crate::app::state::{LabState, LightColumn};
 use crate::colormap::short_number;
-use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
+use crate::ltc::{ClipCase, Clipping, Normalization};
 use crate::metrics::luminance;
 use crate::pixel::{LightTerm, PixelTerms, elevation_azimuth, pixel_terms};
 use crate::render::LutFilter;
+use crate::scene::Scene;
 
 /// At most this many rows (the largest contributions first when sorted so): a table of
 /// 20 000 lights is unreadable, and the sums above it cover every light.
@@ -18,11 +19,7 @@ const MAX_ROWS: usize = 200;
 
 /// The pinned pixel's terms with table A, as the plane renders it (`None`: none pinned, or
 /// it is off the plane).
-pub fn pinned_terms(
-    s: &LabState,
-    lut: &Lut,
-    (width, height): (usize, usize),
-) -> Option<PixelTerms> {
+fn pinned_terms(s: &LabState, lut: &Lut, (width, height): (usize, usize)) -> Option<PixelTerms> {
     let [u, v] = s.pinned?;
     let scene = s.shaded_scene();
     let p = scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
@@ -34,6 +31,64 @@ pub fn pinned_terms(
         s.normalization,
         LutFilter::Bilinear,
     )
+}
+
+/// What the pinned pixel's terms depend on. They are computed again only when it changes:
+/// every light in f64 takes 17 ms at 100 000 lights (release build, 2-core CPU), a whole
+/// frame, and the lab repaints every frame while the plane is summed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PinnedKey {
+    scene: Scene,
+    intensity_scale: f64,
+    range_override: f64,
+    pinned: Option<[f64; 2]>,
+    size: (usize, usize),
+    clipping: Clipping,
+    normalization: Normalization,
+    lut: Lut,
+}
+
+impl PinnedKey {
+    fn of(s: &LabState, lut: &Lut, size: (usize, usize)) -> Self {
+        Self {
+            scene: s.scene.clone(),
+            intensity_scale: s.intensity_scale,
+            range_override: s.range_override,
+            pinned: s.pinned,
+            size,
+            clipping: s.clipping,
+            normalization: s.normalization,
+            lut: lut.clone(),
+        }
+    }
+
+    /// Whether the terms made under this key are still the current ones (compared field by
+    /// field, without copying the scene or the table).
+    fn holds_for(&self, s: &LabState, lut: &Lut, size: (usize, usize)) -> bool {
+        self.pinned == s.pinned
+            && self.size == size
+            && self.clipping == s.clipping
+            && self.normalization == s.normalization
+            && self.intensity_scale == s.intensity_scale
+            && self.range_override == s.range_override
+            && self.scene == s.scene
+            && self.lut == *lut
+    }
+}
+
+/// The pinned pixel's lights, as `cached` holds them or computed again where they changed.
+pub fn update_pinned(
+    cached: &mut Option<(PinnedKey, Option<PixelTerms>)>,
+    s: &LabState,
+    lut: &Lut,
+    size: (usize, usize),
+) {
+    if !cached
+        .as_ref()
+        .is_some_and(|(k, _)| k.holds_for(s, lut, size))
+    {
+        *cached = Some((PinnedKey::of(s, lut, size), pinned_terms(s, lut, size)));
+    }
 }
 
 const COLUMNS: [(LightColumn, &str, &str); 11] = [

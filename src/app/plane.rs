@@ -9,7 +9,7 @@ use glam::DVec3;
 
 use crate::app::display::{ShownImage, colour_bar, difference_scale};
 use crate::app::other::OtherTable;
-use crate::app::pixel_table::{self, pinned_terms};
+use crate::app::pixel_table;
 use crate::app::shading::Shading;
 use crate::app::state::{Compare, LabState};
 use crate::cpu::{clip_counts, shade_exact, shade_ltc};
@@ -35,8 +35,8 @@ pub struct PlanePanel {
     drag: Option<Drag>,
     /// The inspector's last reading, for tests.
     pub inspected: Option<PixelReading>,
-    /// The pinned pixel's lights, as last shown.
-    pub pinned: Option<crate::pixel::PixelTerms>,
+    /// The pinned pixel's lights, as last shown, and what they were computed for.
+    pinned: Option<(pixel_table::PinnedKey, Option<crate::pixel::PixelTerms>)>,
     /// Hide the live GPU times (they change run to run; snapshot tests hide them).
     pub hide_timings: bool,
 }
@@ -69,6 +69,11 @@ impl PlanePanel {
             cull: s.cull,
             ..RenderSettings::single(width, height, s.method_ltc)
         }
+    }
+
+    /// The pinned pixel's lights, as last shown.
+    pub fn pinned(&self) -> Option<&crate::pixel::PixelTerms> {
+        self.pinned.as_ref().and_then(|(_, terms)| terms.as_ref())
     }
 
     pub fn show(
@@ -254,7 +259,7 @@ impl PlanePanel {
             painter.vline(p.x, p.y - 10.0..=p.y - 4.0, stroke);
             painter.vline(p.x, p.y + 4.0..=p.y + 10.0, stroke);
         }
-        self.pinned = pinned_terms(s, lut, (width, height));
+        pixel_table::update_pinned(&mut self.pinned, s, lut, (width, height));
         if s.view == View::Diff {
             colour_bar(ui, &difference_scale(a, b), 220.0);
         }
@@ -277,7 +282,7 @@ impl PlanePanel {
             )),
             None => ui.label("hover a pixel to read it, click to pin it and open its lights; drag a light's marker to move it (Shift: its height), drag the divider"),
         };
-        pixel_table::show(ui, s, self.pinned.as_ref(), table_h);
+        pixel_table::show(ui, s, self.pinned(), table_h);
     }
 
     fn interact(

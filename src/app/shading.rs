@@ -557,6 +557,7 @@ impl CpuShading {
         };
         match rx.try_recv() {
             Ok(frame) => {
+                // NaN equals no exposure, so `encode` encodes the new frame.
                 self.frame = Some((frame, f64::NAN));
                 self.rx = None;
                 self.encode(ui, exposure);
