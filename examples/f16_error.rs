@@ -1,7 +1,7 @@
 //! The half-precision forms' error against the f64 reference, per pixel: for paper-100 and
 //! the lab's 20 000-light scene, each f16 form on the GPU against the CPU's f64 `ltc` (the
 //! same math), as max and mean of `|L_gpu − L_f64| / max(L_f64, 1% of the mean)` on
-//! luminance over the plane (DESIGN §4's difference map), with f32 `ltc-fast` beside them.
+//! luminance over the plane (docs/design.md §4's difference map), with f32 `ltc-fast` beside them.
 //!
 //! `cargo run --release --example f16_error` (needs a GPU adapter with SHADER_F16).
 

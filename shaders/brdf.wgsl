@@ -1,4 +1,4 @@
-// The exact BRDF of DESIGN §1, mirroring src/brdf.rs function by function (same names). All
+// The exact BRDF of docs/design.md §1, mirroring src/brdf.rs function by function (same names). All
 // in the shading frame's terms: n = +z, so the dot products with n are z components.
 
 const PI: f32 = 3.141592653589793;
@@ -46,7 +46,7 @@ fn g2_correlated(n_v: f32, n_l: f32, alpha: f32) -> f32 {
     return 1.0 / (1.0 + lambda_ggx(n_v, alpha) + lambda_ggx(n_l, alpha));
 }
 
-// Schlick's Fresnel, Schlick 1994 eq. 15 (the exponent on (1 − v·h), DESIGN §1).
+// Schlick's Fresnel, Schlick 1994 eq. 15 (the exponent on (1 − v·h), docs/design.md §1).
 fn f_schlick(f0: f32, v_h: f32) -> f32 {
     let x = clamp(1.0 - v_h, 0.0, 1.0);
     let x2 = x * x;
@@ -94,7 +94,7 @@ fn window_falloff_d2(d2: f32, range: f32) -> f32 {
     return w * w;
 }
 
-// E = I/d² · w(d) (DESIGN §1), zero for a light at the shading point.
+// E = I/d² · w(d) (docs/design.md §1), zero for a light at the shading point.
 fn irradiance_scale(intensity: f32, d: f32, range: f32) -> f32 {
     if d < MIN_LIGHT_DISTANCE {
         return 0.0;

@@ -8,8 +8,10 @@ const CLIP_TRANSFORMED: u32 = 2u;
 const NORMALIZATION_CORRECTED: u32 = 0u;
 const NORMALIZATION_PAPER_LITERAL: u32 = 1u;
 
-// The LUT as GpuLut packs it (src/gpu/ltc.rs): per cell three vec4s —
-// [spec m00 m02 m20 m22], [diff m00 m02 m20 m22], [spec.norm spec.fresnel diff.norm spec.scale].
+// The LUT as pack_lut packs it (src/gpu/ltc.rs): per cell three vec4s —
+// [spec m00 m02 m20 m22], [diff m00 m02 m20 m22],
+// [scale·spec.norm scale·spec.fresnel diff.norm spec.scale] (the products filtered, as an
+// exported table stores them).
 @group(0) @binding(2) var<storage, read> lut: array<vec4<f32>>;
 
 const LUT_VEC4S_PER_CELL: u32 = 3u;
@@ -111,7 +113,8 @@ fn lut_uv(alpha: f32, cos_theta_o: f32, size: u32) -> vec2<f32> {
     return rs * ((n - 1.0) / n) + 0.5 / n;
 }
 
-// Lut::ltc_pair: both lobes at (α, cos θo).
+// Lut::ltc_pair: both lobes at (α, cos θo); the specular magnitudes divided by the filtered
+// scale, as LutSample::ltc_pair does, so that scale × norm is the filtered product.
 fn lut_ltc_pair(alpha: f32, cos_theta_o: f32, size: u32, base: u32) -> LtcPair {
     let uv = lut_uv(alpha, cos_theta_o, size);
     var t: LutTexel;
@@ -123,7 +126,7 @@ fn lut_ltc_pair(alpha: f32, cos_theta_o: f32, size: u32, base: u32) -> LtcPair {
     let spec = cos_from_brdf_from_entries(t.spec_m);
     let diff = cos_from_brdf_from_entries(t.diff_m);
     return LtcPair(
-        Ltc(spec, abs(determinant(spec)), t.norms.x, t.norms.y, t.norms.w),
+        Ltc(spec, abs(determinant(spec)), t.norms.x / t.norms.w, t.norms.y / t.norms.w, t.norms.w),
         Ltc(diff, abs(determinant(diff)), t.norms.z, 0.0, 1.0),
     );
 }

@@ -47,7 +47,7 @@ fn ltc_d_pair(w: array<vec2<f16>, 3>, transformed: bool) -> vec2<f16> {
 }
 
 // Lights j and j + 1 of the workgroup's load in the two lanes of vec2<f16>: the form measured
-// fastest on the reference H100 (1.46× f32 ltc-fast, ../shared/gpu/README.md). Positions are
+// fastest on the reference H100 (1.46× f32 ltc-fast, docs/design.md §4.5). Positions are
 // relative to the workgroup's centre in f32 (`shared_relative`, made once per light at the
 // load), the falloff per light in f32; the direction, M⁻¹l and D of both lights in f16 lanes.
 // Lanes that add nothing (at the shading point, below the horizon, out of range, or no second

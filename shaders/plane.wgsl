@@ -1,12 +1,12 @@
 // Shades the plane z = 0 seen by the camera, one thread per pixel and one 16×16 workgroup per
-// tile, lights read in workgroup-shared loads of 256 (DESIGN §4). A render is summed in chunks
+// tile, lights read in workgroup-shared loads of 256 (docs/design.md §4). A render is summed in chunks
 // of each pixel's light list (all lights, or the tile's list when culling), the sums kept per
 // pixel between chunks, so that the lab can spread a render over frames; `resolve` turns the
 // sums into the image. Composed after brdf.wgsl, ltc.wgsl and scene.wgsl. The CPU reference is
 // src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
 
 // Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
-const METHOD_BRDF: u32 = 0u;      // the exact BRDF as DESIGN §1 writes it
+const METHOD_BRDF: u32 = 0u;      // the exact BRDF as docs/design.md §1 writes it
 const METHOD_BRDF_FAST: u32 = 1u; // the same, with Filament's V_SmithGGXCorrelated
 const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻¹ l per lobe
 const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnormalized u, eq. 27
@@ -131,7 +131,7 @@ fn prepare(p_in: Pixel) -> Pixel {
     return p;
 }
 
-// The exact BRDF as DESIGN §1 writes it: normalize, half vector, each term by its function.
+// The exact BRDF as docs/design.md §1 writes it: normalize, half vector, each term by its function.
 fn add_brdf(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
     let u = light.position_range.xyz - p.x;
     let d = length(u);

@@ -1,4 +1,4 @@
-//! The exact BRDF of DESIGN §1: GGX specular with height-correlated Smith masking and
+//! The exact BRDF of docs/design.md §1: GGX specular with height-correlated Smith masking and
 //! Burley's diffuse, one small function per term, generic over `f32` (rendering) and `f64`
 //! (fitting, integration). Everything is written in the shading frame: `n = +z`, and the
 //! dot products with `n` are the `z` components.
@@ -52,7 +52,7 @@ impl<T: Real> Dots<T> {
     }
 }
 
-/// GGX normal distribution, Walter et al. 2007 eq. 33 (DESIGN §1); zero for `n·h ≤ 0`.
+/// GGX normal distribution, Walter et al. 2007 eq. 33 (docs/design.md §1); zero for `n·h ≤ 0`.
 /// The denominator `(n·h)²(α² − 1) + 1` is evaluated as `(n·h)²α² + (1 − n·h)(1 + n·h)`:
 /// equal in exact arithmetic, but the first form cancels to 0 in f32 at `n·h = 1` for
 /// α < 2.4e-4 (Filament's `D_GGX` avoids the same cancellation with `|n × h|²`).
@@ -98,7 +98,7 @@ pub fn smith_view_factor<T: Real>(n_v: T, a2: T) -> T {
 }
 
 /// Schlick's Fresnel, Schlick 1994 eq. 15, with the exponent on `(1 − v·h)` — the paper's
-/// eq. 6 misprints it as `(1 − (v·h)⁵)` (DESIGN §1).
+/// eq. 6 misprints it as `(1 − (v·h)⁵)` (docs/design.md §1).
 pub fn f_schlick<T: Real>(f0: T, v_h: T) -> T {
     let x = (T::one() - v_h).max(T::zero()).min(T::one());
     f0 + (T::one() - f0) * x.powi(5)
@@ -112,7 +112,7 @@ pub fn fd_burley<T: Real>(n_v: T, n_l: T, l_h: T, alpha: T) -> T {
     scatter(n_l) * scatter(n_v) / T::PI()
 }
 
-/// The cosine-weighted specular lobe `D F G / (4 n·v n·l) · n·l` (DESIGN §1). Written with
+/// The cosine-weighted specular lobe `D F G / (4 n·v n·l) · n·l` (docs/design.md §1). Written with
 /// the `n·l` cancelled so that grazing lights cost no division by a vanishing cosine.
 pub fn specular_cos<T: Real>(d: &Dots<T>, alpha: T, f0: T) -> T {
     if d.n_v <= T::zero() || d.n_l <= T::zero() || d.v_h <= T::zero() || d.l_h <= T::zero() {
@@ -122,7 +122,7 @@ pub fn specular_cos<T: Real>(d: &Dots<T>, alpha: T, f0: T) -> T {
         / (T::lit(4.0) * d.n_v)
 }
 
-/// The cosine-weighted diffuse lobe `fd · n·l` for base colour 1 (DESIGN §1).
+/// The cosine-weighted diffuse lobe `fd · n·l` for base colour 1 (docs/design.md §1).
 pub fn diffuse_cos<T: Real>(d: &Dots<T>, alpha: T) -> T {
     if d.n_v <= T::zero() || d.n_l <= T::zero() {
         return T::zero();
@@ -161,7 +161,7 @@ pub fn brdf_cos<T: Real>(v: V3<T>, l: V3<T>, alpha: T, f0: T) -> Lobes<T> {
 pub const MIN_LIGHT_DISTANCE: f64 = 1e-6;
 
 /// Windowed inverse-square falloff `w(d) = clamp(1 − (d/R)⁴, 0, 1)²` (Karis 2013, "Real
-/// Shading in UE4", eq. 9; DESIGN §1). An infinite range gives `w = 1`.
+/// Shading in UE4", eq. 9; docs/design.md §1). An infinite range gives `w = 1`.
 pub fn window_falloff<T: Real>(d: T, range: T) -> T {
     window_falloff_d2(d * d, range)
 }
@@ -178,7 +178,7 @@ pub fn window_falloff_d2<T: Real>(d2: T, range: T) -> T {
 }
 
 /// The irradiance scale of a point light of intensity `I` at distance `d`: `E = I/d² · w(d)`
-/// (DESIGN §1); zero for a light at the shading point (see `MIN_LIGHT_DISTANCE`).
+/// (docs/design.md §1); zero for a light at the shading point (see `MIN_LIGHT_DISTANCE`).
 pub fn irradiance_scale<T: Real>(intensity: T, d: T, range: T) -> T {
     if d < T::lit(MIN_LIGHT_DISTANCE) {
         return T::zero();
@@ -212,7 +212,7 @@ pub fn point_light_exact<T: Real>(
     }
 }
 
-/// The unit view vector `v = (sin θo, 0, cos θo)` of DESIGN §1.
+/// The unit view vector `v = (sin θo, 0, cos θo)` of docs/design.md §1.
 pub fn view_from_theta<T: Real>(theta_o: T) -> V3<T> {
     [theta_o.sin(), T::zero(), theta_o.cos()]
 }

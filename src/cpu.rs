@@ -1,5 +1,5 @@
 //! The CPU reference renderer: the plane seen by the camera, shaded in f64 with the exact
-//! BRDF (eq. 28) or the LTC approximation (eq. 30 with DESIGN §1's corrections), rows in
+//! BRDF (eq. 28) or the LTC approximation (eq. 30 with docs/design.md §1's corrections), rows in
 //! parallel with rayon. It is the ground truth every GPU test compares against.
 
 use glam::DVec3;

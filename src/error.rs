@@ -58,12 +58,27 @@ impl Error {
         }
     }
 
-    /// The process exit code of DESIGN §6: 2 for bad input, 1 for the machine.
+    /// The process exit code of docs/design.md §6: 2 for bad input, 1 for the machine.
     pub fn exit_code(&self) -> u8 {
         match self.kind {
             ErrorKind::Input => 2,
             ErrorKind::Machine => 1,
         }
+    }
+}
+
+/// A number in a message as people write it: plainly near 1, in exponent form far from it
+/// (`1e-300`, not Rust's 300 digits of `Display`), and always the shortest text that reads
+/// back as the same value.
+pub fn number<T>(x: T) -> String
+where
+    T: Copy + Into<f64> + std::fmt::Display + std::fmt::LowerExp,
+{
+    let magnitude = x.into().abs();
+    if magnitude == 0.0 || !magnitude.is_finite() || (1e-4..1e6).contains(&magnitude) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
     }
 }
 
@@ -77,3 +92,28 @@ fn io_reason(e: &std::io::Error) -> String {
 }
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+#[cfg(test)]
+mod tests {
+    use super::number;
+
+    #[test]
+    fn numbers_read_as_people_write_them_and_read_back_exactly() {
+        for (x, text) in [
+            (f64::MIN_POSITIVE, "2.2250738585072014e-308"),
+            (1e-300, "1e-300"),
+            (0.5, "0.5"),
+            (0.0, "0"),
+            (123456.0, "123456"),
+            (1e20, "1e20"),
+            (f64::INFINITY, "inf"),
+        ] {
+            assert_eq!(number(x), text);
+            if x.is_finite() {
+                assert_eq!(number(x).parse::<f64>().unwrap(), x);
+            }
+        }
+        assert_eq!(number(1e-5_f32), "1e-5");
+        assert_eq!(number(0.1_f32), "0.1", "f32 keeps its own shortest form");
+    }
+}

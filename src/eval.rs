@@ -1,11 +1,11 @@
 //! `ltc-lab eval`: light directions from a CSV file, evaluated with the exact lobes and their
-//! LTC approximation through the LUT (DESIGN §6).
+//! LTC approximation through the LUT (docs/design.md §6).
 
 use glam::DVec3;
 
 use crate::brdf::{brdf_cos, view_from_theta};
-use crate::error::{Error, Result};
-use crate::ltc::lut::{Lut, THETA_MAX};
+use crate::error::{Error, Result, number};
+use crate::ltc::lut::{ALPHA_MIN, Lut, THETA_MAX};
 use crate::ltc::{Clipping, Normalization};
 
 /// The input's header: θo in degrees, α, the unit light direction in the shading frame, F0.
@@ -17,9 +17,15 @@ pub const OUTPUT_COLUMNS: &str = "brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse";
 /// How far from unit length `l` may be: CSV values typed with 4 decimals are off by ~1e-4.
 pub const UNIT_TOLERANCE: f64 = 1e-3;
 
+/// The most rows `eval` takes: a million cases is a few seconds of work and ~100 MB of
+/// output; a larger file is more likely a mistake than a question.
+pub const MAX_ROWS: usize = 1_000_000;
+
 /// One validated row.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Case {
+    /// The row's six values as the file wrote them, echoed in the output unchanged.
+    pub text: String,
     pub theta_o_degrees: f64,
     pub alpha: f64,
     /// Unit length (normalized after the check).
@@ -38,10 +44,18 @@ pub fn parse_cases(text: &str, name: &str) -> Result<Vec<Case>> {
             format!("the header must be '{HEADER}'"),
         ));
     }
-    lines
-        .filter(|(_, line)| !line.trim().is_empty())
-        .map(|(k, line)| parse_case(line, &format!("{name} line {}", k + 1)))
-        .collect()
+    let rows = lines.filter(|(_, line)| !line.trim().is_empty());
+    let mut cases = Vec::new();
+    for (k, line) in rows {
+        if cases.len() == MAX_ROWS {
+            return Err(Error::input(
+                format!("{name} line {}", k + 1),
+                format!("more than {MAX_ROWS} cases: split the file"),
+            ));
+        }
+        cases.push(parse_case(line, &format!("{name} line {}", k + 1))?);
+    }
+    Ok(cases)
 }
 
 fn parse_case(line: &str, at: &str) -> Result<Case> {
@@ -64,26 +78,36 @@ fn parse_case(line: &str, at: &str) -> Result<Case> {
     if !(0.0..=90.0).contains(&theta_o) {
         return Err(Error::input(
             at,
-            format!("theta_o must be in [0, 90] degrees, got {theta_o}"),
+            format!("theta_o must be in [0, 90] degrees, got {}", fields[0]),
         ));
     }
-    if !(alpha > 0.0 && alpha <= 1.0) {
+    // The scene's range (and the tables' α_min): below it D's peak 1/(πα²) outgrows f64 at
+    // the mirror direction (α = 1e-200 gave inf and NaN).
+    if !(ALPHA_MIN..=1.0).contains(&alpha) {
         return Err(Error::input(
             at,
-            format!("alpha must be in (0, 1], got {alpha}"),
+            format!(
+                "alpha must be in [{}, 1], got {}",
+                number(ALPHA_MIN),
+                fields[1]
+            ),
         ));
     }
     if !(0.0..=1.0).contains(&f0) {
-        return Err(Error::input(at, format!("f0 must be in [0, 1], got {f0}")));
+        return Err(Error::input(
+            at,
+            format!("f0 must be in [0, 1], got {}", fields[5]),
+        ));
     }
     let l = DVec3::new(lx, ly, lz);
     if (l.length() - 1.0).abs() > UNIT_TOLERANCE {
         return Err(Error::input(
             at,
-            format!("l must be unit length, |l| = {}", l.length()),
+            format!("l must be unit length, |l| = {}", number(l.length())),
         ));
     }
     Ok(Case {
+        text: fields.join(","),
         theta_o_degrees: theta_o,
         alpha,
         l: l.normalize(),
@@ -91,7 +115,7 @@ fn parse_case(line: &str, at: &str) -> Result<Case> {
     })
 }
 
-/// The case's row of output: its columns, then `f·cos` of both lobes for a unit-irradiance
+/// The case's row of output: its columns as read, then `f·cos` of both lobes for a unit-irradiance
 /// light and base colour 1, exact and through the LUT's bilinear sampler with both clipping
 /// rules (eq. 30). The grazing row is ltc_code's `THETA_MAX`.
 pub fn evaluate(c: &Case, lut: &Lut) -> String {
@@ -102,17 +126,8 @@ pub fn evaluate(c: &Case, lut: &Lut) -> String {
         lut.ltc_pair(c.alpha, v)
             .ltc_lobes(c.l, c.f0, Clipping::BOTH, Normalization::Corrected);
     format!(
-        "{},{},{},{},{},{},{:e},{:e},{:e},{:e}",
-        c.theta_o_degrees,
-        c.alpha,
-        c.l.x,
-        c.l.y,
-        c.l.z,
-        c.f0,
-        exact.specular,
-        exact.diffuse,
-        approx.specular,
-        approx.diffuse
+        "{},{:e},{:e},{:e},{:e}",
+        c.text, exact.specular, exact.diffuse, approx.specular, approx.diffuse
     )
 }
 
@@ -146,6 +161,11 @@ mod tests {
             ("0,nan,0,0,1,0.04", "'nan'"),
             ("0,inf,0,0,1,0.04", "'inf'"),
             ("0,0,0,0,1,0.04", "alpha"),
+            ("0,1e-100,0,0,1,0.04", "got 1e-100"),
+            (
+                "0,0.00005,0,0,1,0.04",
+                "alpha must be in [0.0001, 1], got 0.00005",
+            ),
             ("0,-0.5,0,0,1,0.04", "alpha"),
             ("95,0.3,0,0,1,0.04", "theta_o"),
             ("-1,0.3,0,0,1,0.04", "theta_o"),

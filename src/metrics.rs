@@ -1,4 +1,4 @@
-//! Image error, measured the same way everywhere (DESIGN §4).
+//! Image error, measured the same way everywhere (docs/design.md §4).
 
 use glam::DVec3;
 
@@ -95,7 +95,7 @@ pub fn relative_error(a: f64, e: f64, floor: f64) -> f64 {
     (a - e).abs() / e.max(floor)
 }
 
-/// The image error of DESIGN §4.
+/// The image error of docs/design.md §4.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageError {
     /// `sqrt(Σ (L_a − L_e)²) / sqrt(Σ L_e²)` over the plane's pixels (luminance).

@@ -36,7 +36,7 @@ fn to_u8(x: f64) -> u8 {
 }
 
 /// The false-colour scale of relative differences: logarithmic from 0.1% to 100% (LTC
-/// errors span three decades, DESIGN §4 / issue 6's measurements: 1% to 100%).
+/// errors span three decades, docs/design.md §4 / issue 6's measurements: 1% to 100%).
 pub const DIFF_SCALE_DECADES: [f64; 4] = [1e-3, 1e-2, 1e-1, 1.0];
 
 /// Position of a relative difference on the colour scale, in [0, 1].
@@ -90,8 +90,10 @@ fn with_colour_bar(img: &image::RgbImage) -> image::RgbImage {
     let mut out = image::RgbImage::from_pixel(w, img.height() + extra, image::Rgb(BACKGROUND));
     image::imageops::replace(&mut out, img, 0, 0);
     let top = img.height() + pad;
-    let margin = 4 * scale;
-    let span = w.saturating_sub(2 * margin).max(1);
+    // The margins shrink with an image narrower than they are (a 1-pixel-wide render still
+    // gets its bar), so that `margin + span ≤ w`.
+    let margin = (4 * scale).min(w / 4);
+    let span = w - 2 * margin;
     for x in 0..span {
         let colour = crate::colormap::viridis(f64::from(x) / f64::from(span.max(2) - 1));
         for y in top..top + bar {

@@ -1,6 +1,6 @@
 //! What a render is, for every renderer alike (the CPU reference, the GPU, the lab): how the
 //! lights are summed (`Method`), what a pixel shows (`View`), the rest of the settings, the
-//! image that comes back (`Frame`), and the shading point and frame of DESIGN §1.
+//! image that comes back (`Frame`), and the shading point and frame of docs/design.md §1.
 
 use glam::DVec3;
 
@@ -11,7 +11,7 @@ use crate::ltc::{Clipping, Normalization};
 /// forms are the same math as their literal twins there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub enum Method {
-    /// The exact BRDF as DESIGN §1 writes it (eq. 28).
+    /// The exact BRDF as docs/design.md §1 writes it (eq. 28).
     Brdf,
     /// The exact BRDF with Filament's `V_SmithGGXCorrelated` and no root for `E`.
     BrdfFast,
@@ -90,7 +90,7 @@ pub enum View {
     Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
 )]
 pub enum LutFilter {
-    /// Bilinear, as a GPU sampler (DESIGN §2).
+    /// Bilinear, as a GPU sampler (docs/design.md §2).
     #[default]
     Bilinear,
     /// The nearest cell.
@@ -236,7 +236,7 @@ pub struct SurfacePoint {
     pub view: DVec3,
 }
 
-/// The shading frame of DESIGN §1 at a point with normal `+z`: `t1` along the view's
+/// The shading frame of docs/design.md §1 at a point with normal `+z`: `t1` along the view's
 /// tangential part, `t2 = n × t1`. Maps world vectors to frame coordinates.
 #[derive(Clone, Copy, Debug)]
 pub struct ShadingFrame {

@@ -1,4 +1,4 @@
-//! The scene of DESIGN §3 and no more: a plane `z = 0`, its material, a camera (and its
+//! The scene of docs/design.md §3 and no more: a plane `z = 0`, its material, a camera (and its
 //! rays) and point lights, read from small TOML presets (`assets/scenes/`), with a seeded
 //! light generator.
 
@@ -7,7 +7,7 @@ use std::path::Path;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, number};
 use crate::render::SurfacePoint;
 
 /// The shipped presets, embedded so that the lab and the benchmarks run from anywhere.
@@ -68,7 +68,7 @@ pub struct Plane {
     pub half_size: f64,
 }
 
-/// GGX specular over Burley diffuse (DESIGN §1).
+/// GGX specular over Burley diffuse (docs/design.md §1).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Material {
@@ -200,12 +200,14 @@ impl Scene {
 
     /// Why the scene cannot be rendered, if it cannot.
     pub fn validate(&self) -> std::result::Result<(), String> {
-        within(
-            "plane.half_size",
-            &[self.plane.half_size],
-            f64::MIN_POSITIVE,
-            MAX_COORDINATE,
-        )?;
+        finite("plane.half_size", &[self.plane.half_size])?;
+        if !(self.plane.half_size > 0.0 && self.plane.half_size <= MAX_COORDINATE) {
+            return Err(format!(
+                "plane.half_size must be in (0, {}], got {}",
+                number(MAX_COORDINATE),
+                number(self.plane.half_size)
+            ));
+        }
         let m = &self.material;
         within("material.base_color", &m.base_color, 0.0, 1.0)?;
         within("material.f0", &[m.f0], 0.0, 1.0)?;
@@ -233,7 +235,7 @@ impl Scene {
         if !(c.fov_y_degrees > 0.0 && c.fov_y_degrees < 180.0) {
             return Err(format!(
                 "camera.fov_y_degrees must be in (0, 180), got {}",
-                c.fov_y_degrees
+                number(c.fov_y_degrees)
             ));
         }
         let forward = DVec3::from(c.target) - DVec3::from(c.position);
@@ -242,7 +244,10 @@ impl Scene {
         }
         finite("exposure", &[self.exposure])?;
         if self.exposure <= 0.0 {
-            return Err(format!("exposure must be > 0, got {}", self.exposure));
+            return Err(format!(
+                "exposure must be > 0, got {}",
+                number(self.exposure)
+            ));
         }
         for (k, l) in self.lights.iter().enumerate() {
             check_light(&format!("lights[{k}]"), l)?;
@@ -365,8 +370,25 @@ pub const MAX_INTENSITY: f64 = 1e6;
 fn finite(what: &str, xs: &[f64]) -> std::result::Result<(), String> {
     match xs {
         _ if xs.iter().all(|x| x.is_finite()) => Ok(()),
-        [x] => Err(format!("{what} must be a finite number, got {x}")),
-        _ => Err(format!("{what} must be finite numbers, got {xs:?}")),
+        [x] => Err(format!(
+            "{what} must be a finite number, got {}",
+            number(*x)
+        )),
+        _ => Err(format!(
+            "{what} must be finite numbers, got {}",
+            numbers(xs)
+        )),
+    }
+}
+
+/// One value as written, or a list `[a, b, c]`.
+fn numbers(xs: &[f64]) -> String {
+    match xs {
+        [x] => number(*x),
+        _ => format!(
+            "[{}]",
+            xs.iter().map(|&x| number(x)).collect::<Vec<_>>().join(", ")
+        ),
     }
 }
 
@@ -375,8 +397,12 @@ fn within(what: &str, xs: &[f64], lo: f64, hi: f64) -> std::result::Result<(), S
     finite(what, xs)?;
     match xs.iter().find(|x| !(lo..=hi).contains(*x)) {
         None => Ok(()),
-        Some(_) if xs.len() == 1 => Err(format!("{what} must be in [{lo}, {hi}], got {}", xs[0])),
-        Some(_) => Err(format!("{what} must be in [{lo}, {hi}], got {xs:?}")),
+        Some(_) => Err(format!(
+            "{what} must be in [{}, {}], got {}",
+            number(lo),
+            number(hi),
+            numbers(xs)
+        )),
     }
 }
 
@@ -384,7 +410,7 @@ fn within(what: &str, xs: &[f64], lo: f64, hi: f64) -> std::result::Result<(), S
 /// keeps a range too small for f32 positive rather than let it round to 0, "infinite").
 fn check_range(what: &str, range: Option<f64>) -> std::result::Result<(), String> {
     match range {
-        Some(r) if r.is_nan() || r <= 0.0 => Err(format!("{what} must be > 0, got {r}")),
+        Some(r) if r.is_nan() || r <= 0.0 => Err(format!("{what} must be > 0, got {}", number(r))),
         _ => Ok(()),
     }
 }

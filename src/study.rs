@@ -1,4 +1,4 @@
-//! Speed against accuracy (DESIGN §4): every shading variant timed on the GPU in one run and
+//! Speed against accuracy (docs/design.md §4): every shading variant timed on the GPU in one run and
 //! compared with the exact BRDF image of the same scene, for the paper-100 set-up at several
 //! light counts and roughnesses.
 

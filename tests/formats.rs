@@ -532,3 +532,42 @@ fn the_wgsl_export_validates() {
     .unwrap_or_else(|e| panic!("does not validate:\n{}", e.emit_to_string(&src)));
     assert!(wgsl.contains("alpha_min: 1e-4"), "the header");
 }
+
+/// Reading ltc_code's layout measures nothing it was not asked to (the import of a 256²
+/// table spent 34 s measuring spec.err for a one-row `eval`): the table comes back with its
+/// spec.err unmeasured, and `measure_spec_err` measures each cell once, only when called.
+#[test]
+fn an_imported_tables_error_is_measured_only_when_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    let lut = Lut::embedded();
+    let path = dir.path().join("t.js");
+    let header = Header::new(lut, "test", Some(Table::Classic));
+    formats::export(lut, &header, Export::LtcCodeJs, Precision::F32, &path).unwrap();
+    let mut loaded = formats::read(&path).unwrap();
+    assert!(!loaded.spec_err_measured);
+    assert!(
+        loaded
+            .lut
+            .cells
+            .iter()
+            .all(|c| c.get(Channel::SpecErr) == 0.0),
+        "measured while reading"
+    );
+    let cells = std::sync::atomic::AtomicUsize::new(0);
+    let count = || {
+        cells.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    };
+    loaded.measure_spec_err(&count);
+    loaded.measure_spec_err(&count);
+    assert_eq!(cells.into_inner(), 64 * 64, "each cell once");
+    assert!(loaded.spec_err_measured);
+    assert!(
+        loaded
+            .lut
+            .cells
+            .iter()
+            .all(|c| c.get(Channel::SpecErr) > 0.0)
+    );
+    // A native table holds its measurement already.
+    assert!(formats::load(None, Table::Point).unwrap().spec_err_measured);
+}

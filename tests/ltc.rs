@@ -1,5 +1,5 @@
 //! LTC evaluation: it is a distribution (∫ D = 1), the identity gives the clamped cosine,
-//! scaling M⁻¹ changes nothing, and each clipping rule does exactly what DESIGN §1 says.
+//! scaling M⁻¹ changes nothing, and each clipping rule does exactly what docs/design.md §1 says.
 
 mod common;
 

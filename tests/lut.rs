@@ -67,6 +67,8 @@ fn sampler_interpolates_between_cells_and_clamps_outside() {
     };
     for (k, v) in [1.0f32, 2.0, 3.0, 5.0].iter().enumerate() {
         lut.cells[k].0[Channel::SpecNorm as usize] = *v;
+        // The classic table's scale: the magnitude filtered is the magnitude itself.
+        lut.cells[k].0[Channel::SpecScale as usize] = 1.0;
     }
     let at = |u: f64, v: f64| lut.sample_uv(u, v).get(Channel::SpecNorm);
     // Texel centres of a 2×2 texture at 0.25 and 0.75.
@@ -153,7 +155,7 @@ fn exr_written(lut: &Lut, skip: &str, alpha_min: exr::prelude::AttributeValue) -
     out.into_inner()
 }
 
-/// DESIGN §2's 13 channels make a complete table: without `spec.scale` (the point fit's
+/// docs/design.md §2's 13 channels make a complete table: without `spec.scale` (the point fit's
 /// addition) the magnitudes are used as they are; any other missing channel is refused, and a
 /// scale that is not positive too.
 #[test]
@@ -194,4 +196,52 @@ fn alpha_min_may_be_written_as_f32() {
         let err = Lut::from_exr_bytes(&exr_written(lut, "", bad), "bad.exr").unwrap_err();
         assert!(err.to_string().contains("ltc.alpha_min"), "{err}");
     }
+}
+
+/// The point table's fitted scale is folded into its magnitudes per cell before filtering (as
+/// its export in ltc_code's layout stores them), so that both shade the same: between cells
+/// the product is interpolated, not the scale and the magnitude apart.
+#[test]
+fn the_specular_magnitude_is_filtered_as_the_product_of_scale_and_albedo() {
+    let mut lut = Lut {
+        size: 2,
+        alpha_min: 1e-4,
+        cells: vec![LutCell([0.0; CHANNEL_COUNT]); 4],
+    };
+    let (norms, scales) = ([0.2f32, 0.9, 0.4, 0.8], [1.0f32, 0.5, 0.8, 0.6]);
+    for k in 0..4 {
+        let cell = &mut lut.cells[k].0;
+        for (c, x) in [
+            (Channel::SpecM00, 1.0),
+            (Channel::SpecM22, 1.0),
+            (Channel::DiffM00, 1.0),
+            (Channel::DiffM22, 1.0),
+            (Channel::SpecNorm, norms[k]),
+            (Channel::SpecFresnel, 0.5 * norms[k]),
+            (Channel::SpecScale, scales[k]),
+        ] {
+            cell[c as usize] = x;
+        }
+    }
+    // At the centre every cell weighs 1/4: the mean of the products, computed here in f64.
+    let products: f64 = (0..4)
+        .map(|k| f64::from(norms[k]) * f64::from(scales[k]))
+        .sum::<f64>()
+        / 4.0;
+    let mean_scale = scales.iter().map(|&s| f64::from(s)).sum::<f64>() / 4.0;
+    let mean_norm = norms.iter().map(|&n| f64::from(n)).sum::<f64>() / 4.0;
+    assert!(
+        (products - mean_scale * mean_norm).abs() > 1e-3,
+        "the test must tell the two rules apart"
+    );
+    let sample = lut.sample_uv(0.5, 0.5);
+    let spec = sample.ltc_pair().spec;
+    // A handful of f64 roundings (blend, divide, multiply): 1e-15.
+    assert!(
+        (spec.magnitude() - products).abs() <= 1e-15,
+        "{}",
+        spec.magnitude()
+    );
+    assert!((sample.get(Channel::SpecScale) - mean_scale).abs() <= 1e-15);
+    assert!((sample.ltc_pair().spec_magnitude(0.0) - 0.5 * products).abs() <= 1e-15);
 }

@@ -181,7 +181,7 @@ fn shading_rules(ui: &mut egui::Ui, s: &mut LabState) {
         })
         .response
         .on_hover_text(
-            "brdf: eq. 28 as DESIGN §1 writes it; brdf-fast: Filament's V_SmithGGXCorrelated",
+            "brdf: eq. 28 as docs/design.md §1 writes it; brdf-fast: Filament's V_SmithGGXCorrelated",
         );
     ui.checkbox(&mut s.clipping.horizon, "clip case 1 (n·l ≤ 0)")
         .on_hover_text("Eq. 30's first rule: a light below the surface contributes nothing. Off: M^-1 can lift it above the horizon (the glow of Figure 2c)");
@@ -189,7 +189,7 @@ fn shading_rules(ui: &mut egui::Ui, s: &mut LabState) {
         .on_hover_text("max(ω'.z, 0) in D: a light pushed below the horizon by M^-1 contributes nothing. Off: it contributes negative light");
     let mut paper = s.normalization == Normalization::PaperLiteral;
     ui.checkbox(&mut paper, "paper-literal normalization")
-        .on_hover_text("The paper's eq. 25 as printed: no 1/π in D and no magnitudes n_s, f_s, n_d (DESIGN §1 corrects both)");
+        .on_hover_text("The paper's eq. 25 as printed: no 1/π in D and no magnitudes n_s, f_s, n_d (docs/design.md §1 corrects both)");
     s.normalization = if paper {
         Normalization::PaperLiteral
     } else {
@@ -307,12 +307,14 @@ fn table(
 /// what the file could not hold (ltc_code's layout has no diffuse lobe), as ". note".
 fn load(path: &str) -> Result<(Lut, String, String), String> {
     let path = path.trim();
-    let loaded = if path.is_empty() {
+    let mut loaded = if path.is_empty() {
         formats::load(None, Table::Classic)
     } else {
         formats::read(Path::new(path))
     }
     .map_err(|e| e.to_string())?;
+    // The matrix panel's heat maps show spec.err.
+    loaded.measure_spec_err(&|| {});
     let name = if path.is_empty() {
         "the embedded LUT"
     } else {

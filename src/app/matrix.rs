@@ -140,7 +140,7 @@ impl MatrixPanel {
                 ltc.scale,
                 100.0 * err
             ))
-            .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (DESIGN §4)");
+            .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4)");
             // Tables A and B at this (θo, α), side by side.
             ui.vertical(|ui| {
                 for (which, name, table) in [("A", a_name, lut), ("B", other.name.as_str(), &other.lut)] {
@@ -157,7 +157,7 @@ impl MatrixPanel {
                         scale,
                         100.0 * t.get(e)
                     ))
-                    .on_hover_text("Table A (the one shaded with) and table B (the other fit: the other shipped table, or one loaded with \"as B\") at this (θo, α), bilinear; error is each table's pointwise error (DESIGN §4) of this lobe");
+                    .on_hover_text("Table A (the one shaded with) and table B (the other fit: the other shipped table, or one loaded with \"as B\") at this (θo, α), bilinear; error is each table's pointwise error (docs/design.md §4) of this lobe");
                 }
             });
             self.refit_controls(ui, s, lut);
@@ -245,7 +245,7 @@ impl MatrixPanel {
                             egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
                             Color32::WHITE,
                         );
-                        // Texel centres sit at (k + ½)/N, the LUT's own uv mapping (DESIGN §2).
+                        // Texel centres sit at (k + ½)/N, the LUT's own uv mapping (docs/design.md §2).
                         let to_screen =
                             |t: f64| ((t * (n - 1) as f64 + 0.5) / n as f64) as f32 * side;
                         let p = rect.min + Vec2::new(to_screen(u), to_screen(v));
@@ -363,7 +363,7 @@ impl MatrixPanel {
             r.objective.name(),
             r.iterations
         ))
-        .on_hover_text("∫|s·n·D − f·cos| / ∫ f·cos (DESIGN §4), both lobes measured alike with 64² strata from both distributions, whichever objective the refit minimized");
+        .on_hover_text("∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4), both lobes measured alike with 64² strata from both distributions, whichever objective the refit minimized");
         let points: Vec<[f64; 2]> = r
             .history
             .iter()
@@ -445,7 +445,7 @@ fn channel_scale(lut: &Lut, c: usize) -> ColourScale {
     });
     let name = CHANNEL_NAMES[c];
     if name.ends_with(".err") {
-        // 0.1%: the fit's own noise floor (64² strata, DESIGN §4); errors below read alike.
+        // 0.1%: the fit's own noise floor (64² strata, docs/design.md §4); errors below read alike.
         ColourScale::log(1e-3, hi, format!("{name} (log)")).in_percent()
     } else if lo < 0.0 && hi > 0.0 {
         ColourScale::signed(lo.abs().max(hi), name)

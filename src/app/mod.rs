@@ -278,7 +278,7 @@ impl LabApp {
         };
         self.message = Some(match outcome {
             Ok(path) => Message::note(format!("saved {}", path.display())),
-            Err(e) => Message::error(e),
+            Err(e) => Message::error(e.to_string()),
         });
         self.screenshot = None;
     }

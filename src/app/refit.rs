@@ -76,7 +76,7 @@ pub struct RefitResult {
     pub fresnel: f64,
     /// The stored cell's `M⁻¹` (rows, divided by its middle element).
     pub stored: [[f64; 3]; 3],
-    /// Pointwise error (DESIGN §4) of the refit and of the stored cell, measured alike.
+    /// Pointwise error (docs/design.md §4) of the refit and of the stored cell, measured alike.
     pub error: f64,
     pub stored_error: f64,
     pub iterations: usize,

@@ -4,6 +4,8 @@
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
+use crate::error::Error;
+
 type Slot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
 
 /// A requested screenshot: the file the user named, and the slot eframe's callback fills.
@@ -24,7 +26,7 @@ impl PendingScreenshot {
 
     /// Asks for the window's pixels, then saves them once they arrive: `None` while waiting,
     /// then the outcome (the file written, or why not).
-    pub fn poll(&mut self, ctx: &egui::Context) -> Option<Result<PathBuf, String>> {
+    pub fn poll(&mut self, ctx: &egui::Context) -> Option<Result<PathBuf, Error>> {
         if !self.requested {
             let slot = self.slot.clone();
             ctx.request_screenshot(move |image| *slot.lock().expect("not poisoned") = Some(image));
@@ -39,17 +41,20 @@ impl PendingScreenshot {
         Some(self.save(&image))
     }
 
-    fn save(&self, image: &egui::ColorImage) -> Result<PathBuf, String> {
+    /// A file that cannot be written is the path's fault (`Error::io` says which), as in
+    /// every command; an image that cannot be encoded is the machine's.
+    fn save(&self, image: &egui::ColorImage) -> Result<PathBuf, Error> {
+        let name = self.path.display().to_string();
         let rgba = image::RgbaImage::from_raw(
             image.width() as u32,
             image.height() as u32,
             image.as_raw().to_vec(),
         )
-        .ok_or("the screenshot had an unexpected size")?;
+        .ok_or_else(|| Error::machine(&name, "the screenshot had an unexpected size"))?;
         let mut png = std::io::Cursor::new(Vec::new());
         rgba.write_to(&mut png, image::ImageFormat::Png)
-            .map_err(|e| format!("{}: {e}", self.path.display()))?;
-        crate::files::write_atomically(&self.path, &png.into_inner()).map_err(|e| e.to_string())?;
+            .map_err(|e| Error::machine(&name, format!("cannot encode the PNG: {e}")))?;
+        crate::files::write_atomically(&self.path, &png.into_inner())?;
         Ok(self.path.clone())
     }
 }
@@ -106,7 +111,7 @@ pub struct ScreenshotApp<A> {
     started: std::time::Instant,
     last_frame: Option<std::time::Instant>,
     pub frames: Arc<Mutex<Vec<FrameRecord>>>,
-    pub result: Arc<Mutex<Option<Result<(), String>>>>,
+    pub result: Arc<Mutex<Option<Result<(), Error>>>>,
 }
 
 impl<A> ScreenshotApp<A> {
@@ -148,9 +153,12 @@ impl<A: eframe::App + Settling> eframe::App for ScreenshotApp<A> {
         };
         let timed_out = self.started.elapsed() > SETTLE_TIMEOUT;
         if timed_out && busy {
-            *self.result.lock().expect("not poisoned") = Some(Err(format!(
-                "the window was still busy after {} s",
-                SETTLE_TIMEOUT.as_secs()
+            *self.result.lock().expect("not poisoned") = Some(Err(Error::machine(
+                "lab",
+                format!(
+                    "the window was still busy after {} s",
+                    SETTLE_TIMEOUT.as_secs()
+                ),
             )));
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         } else if count >= SCREENSHOT_AFTER_FRAMES as usize

@@ -1,10 +1,10 @@
-//! `ltc-lab fit`: both lobes over an N×N (θo, α) table, written as the LUT (DESIGN §2).
+//! `ltc-lab fit`: both lobes over an N×N (θo, α) table, written as the LUT (docs/design.md §2).
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use ltc_lab::error::{Error, Result};
-use ltc_lab::files::check_writable;
+use ltc_lab::files::{Claim, check_writable};
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::fit_point::{REFINEMENTS, fit_point_table};
 use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut, Table};
@@ -24,7 +24,8 @@ pub struct Args {
     #[arg(long)]
     out: Option<PathBuf>,
     /// Replace the default output file if it exists (a file named with --out is replaced
-    /// anyway: you named it).
+    /// anyway: you named it). Without it, the default file is taken when the fit starts, so
+    /// that one written meanwhile by another run is not replaced either.
     #[arg(long)]
     force: bool,
 }
@@ -45,19 +46,13 @@ pub fn run(a: &Args) -> Result<()> {
             ),
         ));
     }
-    let out = output_path(a)?;
+    let out = output(a)?;
     let settings = FitSettings {
         size: a.size,
         ..FitSettings::default()
     };
     let n = a.size;
-    let bar = indicatif::ProgressBar::new((2 * n * n) as u64);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "fitting {bar:40} {pos}/{len} cells  {elapsed_precise}",
-        )
-        .expect("a valid template"),
-    );
+    let bar = super::progress_bar("fitting", 2 * n * n);
     let start = Instant::now();
     let (lut, at_limit) = match a.objective {
         Table::Classic => {
@@ -80,7 +75,7 @@ pub fn run(a: &Args) -> Result<()> {
     };
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    lut.write(&out)?;
+    let out = out.write(&lut)?;
     eprintln!(
         "fitted {n}×{n} cells × 2 lobes in {seconds:.1} s on {} threads (α_min = {}); wrote {}",
         rayon::current_num_threads(),
@@ -105,9 +100,25 @@ pub fn run(a: &Args) -> Result<()> {
     Ok(())
 }
 
+/// Where the table goes: a file that is replaced, or the default name taken at the start.
+enum Output {
+    Replace(PathBuf),
+    Claimed(Claim),
+}
+
+impl Output {
+    /// Writes the table; the file written.
+    fn write(self, lut: &Lut) -> Result<PathBuf> {
+        match self {
+            Self::Replace(path) => lut.write(&path).map(|()| path),
+            Self::Claimed(claim) => claim.fill(&lut.to_exr_bytes()),
+        }
+    }
+}
+
 /// The output, checked before the fit: an `.exr` in an existing directory; the default
-/// file is replaced only with `--force`.
-fn output_path(a: &Args) -> Result<PathBuf> {
+/// file is replaced only with `--force`, and is otherwise claimed now.
+fn output(a: &Args) -> Result<Output> {
     let (out, named) = match &a.out {
         Some(p) => (p.clone(), true),
         None => (PathBuf::from(a.objective.path()), false),
@@ -119,13 +130,16 @@ fn output_path(a: &Args) -> Result<PathBuf> {
         ));
     }
     check_writable(&out)?;
-    if !named && out.exists() && !a.force {
-        return Err(Error::input(
+    if named || a.force {
+        return Ok(Output::Replace(out));
+    }
+    match Claim::exactly(&out)? {
+        Some(claim) => Ok(Output::Claimed(claim)),
+        None => Err(Error::input(
             out.display().to_string(),
             "exists: name it with --out to replace it, or pass --force",
-        ));
+        )),
     }
-    Ok(out)
 }
 
 fn is_exr(p: &Path) -> bool {

@@ -82,6 +82,9 @@ pub fn run(a: Args) -> Result<()> {
     if let Some(p) = &a.frame_log {
         ltc_lab::files::check_writable(p)?;
     }
+    if let (Some(shot), Some(log)) = (&a.screenshot, &a.frame_log) {
+        ltc_lab::files::check_distinct(&[("--screenshot", shot), ("--frame-log", log)])?;
+    }
     if let Some(n) = a.lights.filter(|&n| n > ltc_lab::scene::MAX_LIGHTS) {
         return Err(Error::input(
             "--lights",
@@ -126,7 +129,8 @@ pub fn run(a: Args) -> Result<()> {
         }
         app
     };
-    let outcome = match a.screenshot {
+    let window = |e: eframe::Error| Error::machine("lab", format!("cannot open the window: {e}"));
+    match a.screenshot {
         Some(path) => {
             let result = std::sync::Arc::new(std::sync::Mutex::new(None));
             let frames = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
@@ -150,10 +154,15 @@ pub fn run(a: Args) -> Result<()> {
                 ltc_lab::files::write_atomically(p, frame_log_csv(&records).as_bytes())?;
             }
             let taken = result.lock().expect("not poisoned").take();
+            // The screenshot's own error keeps its kind: a path that cannot be written is the
+            // user's to fix (exit 2), as in every command.
             match (run, taken) {
                 (Ok(()), Some(outcome)) => outcome,
-                (Ok(()), None) => Err("the window closed before the screenshot".into()),
-                (Err(e), _) => Err(e.to_string()),
+                (Ok(()), None) => Err(Error::machine(
+                    "lab",
+                    "the window closed before the screenshot",
+                )),
+                (Err(e), _) => Err(window(e)),
             }
         }
         None => eframe::run_native(
@@ -165,9 +174,8 @@ pub fn run(a: Args) -> Result<()> {
                 Ok(Box::new(prepare(app)))
             }),
         )
-        .map_err(|e| e.to_string()),
-    };
-    outcome.map_err(|e| Error::machine("lab", format!("cannot open the window: {e}")))
+        .map_err(window),
+    }
 }
 
 /// A screenshot is a PNG in an existing directory.

@@ -2,7 +2,9 @@
 
 use std::path::PathBuf;
 
+use ltc_lab::atlas::atlas_files;
 use ltc_lab::error::{Error, Result};
+use ltc_lab::files::check_distinct;
 use ltc_lab::ltc::formats::dds::Precision;
 use ltc_lab::ltc::formats::{Export, Header, export};
 use ltc_lab::ltc::lut::CHANNEL_NAMES;
@@ -34,7 +36,13 @@ pub struct Args {
 }
 
 pub fn run(a: &Args) -> Result<()> {
-    let lut = a.lut.load()?;
+    check_export_beside_atlas(a)?;
+    // The dump and the atlas show spec.err; the summary and an export do not need it.
+    let lut = if a.dump || a.atlas.is_some() {
+        a.lut.load_measured()?
+    } else {
+        a.lut.load()?
+    };
     if let (Some(format), Some(out)) = (a.export, &a.out) {
         let shipped = a.lut.lut.is_none().then_some(a.lut.table);
         let header = Header::new(&lut, &a.lut.describe(), shipped);
@@ -85,4 +93,21 @@ pub fn run(a: &Args) -> Result<()> {
         }
     }
     print(&out)
+}
+
+/// A file export must be neither the atlas directory nor one of its files: one output would
+/// replace the other, or fail after the first was written.
+fn check_export_beside_atlas(a: &Args) -> Result<()> {
+    let (Some(format), Some(out), Some(dir)) = (a.export, &a.out, &a.atlas) else {
+        return Ok(());
+    };
+    // ltc-code-dds writes a directory of its own names, none of them an atlas file.
+    if matches!(format, Export::LtcCodeDds) {
+        return Ok(());
+    }
+    let files: Vec<PathBuf> = atlas_files().iter().map(|f| dir.join(f)).collect();
+    let mut outputs = vec![("--atlas", dir.as_path())];
+    outputs.extend(files.iter().map(|f| ("--atlas", f.as_path())));
+    outputs.push(("--out", out.as_path()));
+    check_distinct(&outputs)
 }

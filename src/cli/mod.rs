@@ -1,4 +1,4 @@
-//! The command line of DESIGN §6, one module per subcommand; here what they share: the
+//! The command line of docs/design.md §6, one module per subcommand; here what they share: the
 //! argument parsers built from the library's own names (the library knows no clap), the LUT
 //! choice, and standard output that ends quietly on a closed pipe.
 
@@ -26,7 +26,7 @@ use ltc_lab::ltc::lut::{Lut, Table};
     name = "ltc-lab",
     version,
     about = "Point lights shaded with Linearly Transformed Cosines: fit, evaluate, render, measure.",
-    after_help = "Exit codes: 0 done; 1 the machine failed (no GPU adapter, a GPU or I/O error); 2 bad input (a file, an argument or a value, named on stderr)."
+    after_help = "Exit codes: 0 done; 1 the machine failed (no GPU adapter, a GPU or I/O error); 2 bad input (a file, an argument or a value, named on stderr); 130 interrupted (SIGINT, SIGTERM or SIGHUP), with every unfinished output removed."
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -99,13 +99,29 @@ pub struct LutArgs {
 }
 
 impl LutArgs {
-    /// The table; what a foreign layout could not hold is said on stderr.
+    /// The table to shade with; what a foreign layout could not hold is said on stderr.
     pub fn load(&self) -> Result<Cow<'static, Lut>> {
+        Ok(self.loaded()?.lut)
+    }
+
+    /// The table with its `spec.err` measured, for what shows it: a table in ltc_code's
+    /// layout does not hold it, and is measured here behind a progress bar.
+    pub fn load_measured(&self) -> Result<Cow<'static, Lut>> {
+        let mut loaded = self.loaded()?;
+        if !loaded.spec_err_measured {
+            let bar = progress_bar("measuring spec.err", loaded.lut.cells.len());
+            loaded.measure_spec_err(&|| bar.inc(1));
+            bar.finish_and_clear();
+        }
+        Ok(loaded.lut)
+    }
+
+    fn loaded(&self) -> Result<formats::Loaded> {
         let loaded = formats::load(self.lut.as_deref(), self.table)?;
         if let Some(note) = &loaded.note {
             eprintln!("ltc-lab: note: {note}");
         }
-        Ok(loaded.lut)
+        Ok(loaded)
     }
 
     /// What the table is, for messages.
@@ -165,10 +181,30 @@ impl Range {
     }
 }
 
+/// A progress bar on stderr (drawn only on a terminal) counting `len` cells.
+pub fn progress_bar(what: &str, len: usize) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(&format!(
+            "{what} {{bar:40}} {{pos}}/{{len}} cells  {{elapsed_precise}}"
+        ))
+        .expect("a valid template"),
+    );
+    bar
+}
+
+/// The most timed frames `bench` and `study` take per measurement: a median of 10 000 frames
+/// is stable far below the spread between runs, and a run stays within hours even at a
+/// second a frame; more is a typo that would run for ever.
+pub const MAX_FRAMES: usize = 10_000;
+
 /// `--frames` and `--lights` of `bench` and `study`.
 pub fn check_frames_and_lights(frames: usize, lights: &[usize]) -> Result<()> {
-    if frames == 0 {
-        return Err(Error::input("--frames", "must be at least 1"));
+    if !(1..=MAX_FRAMES).contains(&frames) {
+        return Err(Error::input(
+            "--frames",
+            format!("must be in 1..={MAX_FRAMES}, got {frames}"),
+        ));
     }
     let max = ltc_lab::scene::MAX_LIGHTS;
     match lights.iter().find(|&&n| n == 0 || n > max) {

@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use ltc_lab::cpu;
-use ltc_lab::error::{Error, Result};
-use ltc_lab::files::{check_writable, write_atomically, write_new};
+use ltc_lab::error::{Error, Result, number};
+use ltc_lab::files::{Claim, check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::formats;
@@ -68,7 +68,8 @@ pub struct Args {
     #[arg(long, default_value = "512x512", value_parser = parse_size)]
     size: (usize, usize),
     /// Output file (.png or .exr); default `<scene>-<method>.png`, or the next free
-    /// `<scene>-<method>-2.png`…: a default name never replaces a file.
+    /// `<scene>-<method>-2.png`…, taken when the render starts: a default name never
+    /// replaces a file, and two renders at once never share one.
     #[arg(long)]
     out: Option<PathBuf>,
     /// Render on the CPU (the f64 reference) instead of the GPU.
@@ -78,7 +79,7 @@ pub struct Args {
     /// only) or none.
     #[arg(long, value_parser = one_of(&Clipping::ALL, Clipping::name), default_value = "both")]
     clip: Clipping,
-    /// corrected (DESIGN §1) or paper (eq. 25 as printed: no 1/π, no magnitudes).
+    /// corrected (docs/design.md §1) or paper (eq. 25 as printed: no 1/π, no magnitudes).
     #[arg(long, value_parser = one_of(&Normalization::ALL, Normalization::name), default_value = "corrected")]
     normalization: Normalization,
     /// Where the split view changes from LTC (left) to BRDF (right), 0–1 of the width.
@@ -103,7 +104,7 @@ pub fn run(a: &Args) -> Result<()> {
     if !a.divider.is_finite() || !(0.0..=1.0).contains(&a.divider) {
         return Err(Error::input(
             "--divider",
-            format!("must be in [0, 1], got {}", a.divider),
+            format!("must be in [0, 1], got {}", number(a.divider)),
         ));
     }
     let mut settings = a.method.settings(a.size);
@@ -111,13 +112,19 @@ pub fn run(a: &Args) -> Result<()> {
     settings.normalization = a.normalization;
     settings.divider = a.divider;
     settings.cull = a.cull;
-    let default_out = a.out.is_none();
     let out = a
         .out
         .clone()
         .unwrap_or_else(|| default_name(&a.scene, a.method));
     let format = ImageFormat::of(&out)?;
     check_writable(&out)?;
+    // Taken before any work: a file that appears meanwhile, or another run, gets another
+    // name. Dropped on an error, the empty file goes again.
+    let claim = a
+        .out
+        .is_none()
+        .then(|| Claim::first_free(&out))
+        .transpose()?;
     let scene = Scene::load(&a.scene)?;
     let lut = a.lut.load()?;
     let lut_b = table_b(a)?;
@@ -156,11 +163,12 @@ pub fn run(a: &Args) -> Result<()> {
         ));
     }
     let bytes = frame_bytes(&frame, format, scene.exposure);
-    let written = if default_out {
-        write_new(&out, &bytes)?
-    } else {
-        write_atomically(&out, &bytes)?;
-        out
+    let written = match claim {
+        Some(claim) => claim.fill(&bytes)?,
+        None => {
+            write_atomically(&out, &bytes)?;
+            out
+        }
     };
     eprintln!(
         "rendered {} lights at {}×{} on {device} in {seconds:.3} s; wrote {}",

@@ -4,9 +4,10 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use ltc_lab::error::{Error, Result};
-use ltc_lab::files::{Outputs, free_directory};
+use ltc_lab::error::{Error, Result, number};
+use ltc_lab::files::Outputs;
 use ltc_lab::gpu::GpuContext;
+use ltc_lab::ltc::lut::ALPHA_MIN;
 use ltc_lab::study;
 
 use super::{CullArgs, LutArgs, Range, check_frames_and_lights, parse_size, print};
@@ -18,7 +19,8 @@ const FILES: [&str; 2] = ["study.csv", "study.png"];
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// Directory for study.csv and study.png (made if missing; files in it are replaced).
-    /// Default: ./study, or the first of study-2, study-3… that holds neither file.
+    /// Default: ./study, or the first of study-2, study-3… that holds neither file, taken
+    /// when the study starts so that two studies at once never share one.
     #[arg(long)]
     out: Option<PathBuf>,
     #[arg(long, default_value = "320x180", value_parser = parse_size)]
@@ -40,18 +42,24 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<()> {
     check_frames_and_lights(a.frames, &a.lights)?;
-    if let Some(&alpha) = a.alpha.iter().find(|&&x| !(x > 0.0 && x <= 1.0)) {
+    // The scene's range: a material below α_min is refused everywhere else.
+    let alphas = ALPHA_MIN..=1.0;
+    if let Some(&alpha) = a.alpha.iter().find(|x| !alphas.contains(*x)) {
         return Err(Error::input(
             "--alpha",
-            format!("each α must be in (0, 1], got {alpha}"),
+            format!(
+                "each α must be in [{}, 1], got {}",
+                number(ALPHA_MIN),
+                number(alpha)
+            ),
         ));
     }
     let lut = a.lut.load()?;
-    let dir = match &a.out {
-        Some(d) => d.clone(),
-        None => free_directory(Path::new(DEFAULT_DIR), &FILES)?,
+    let mut out = match &a.out {
+        Some(d) => Outputs::new(d, &FILES)?,
+        None => Outputs::claim_free_directory(Path::new(DEFAULT_DIR), &FILES)?,
     };
-    let mut out = Outputs::new(&dir, &FILES)?;
+    let dir = out.dir().to_path_buf();
     let ctx = GpuContext::new()?;
     ltc_lab::bench::check(&ctx, &a.lights, a.size)?;
     let device = ctx.describe();

@@ -10,7 +10,9 @@ use crate::ltc::lut::{Channel, Lut};
 pub const SOURCE: &str = include_str!("../../shaders/ltc.wgsl");
 
 /// Three vec4s per cell, as `lut_texel` in ltc.wgsl reads them:
-/// `[spec m00 m02 m20 m22] [diff m00 m02 m20 m22] [spec.norm spec.fresnel diff.norm spec.scale]`.
+/// `[spec m00 m02 m20 m22] [diff m00 m02 m20 m22] [scale·spec.norm scale·spec.fresnel diff.norm
+/// spec.scale]`: the specular magnitudes with the scale folded in per cell, as
+/// `LutCell::shaded` (and ltc_code's layout) has them, rounded to f32 once as an export does.
 /// The `err` channels are not needed for shading and stay on the CPU.
 pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
     use Channel::*;
@@ -31,8 +33,8 @@ pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
                     c.get(DiffM22),
                 ],
                 [
-                    c.get(SpecNorm),
-                    c.get(SpecFresnel),
+                    c.shaded(SpecNorm as usize) as f32,
+                    c.shaded(SpecFresnel as usize) as f32,
                     c.get(DiffNorm),
                     c.get(SpecScale),
                 ],

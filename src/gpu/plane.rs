@@ -63,7 +63,7 @@ pub enum ShaderChecks {
     /// wgpu's defaults (every render but the benchmark).
     Checked,
     /// Without bounds checks: the benchmark path, as a fast engine would ship (5–17% faster
-    /// on the reference GPU, `../shared/gpu/README.md`).
+    /// on the reference GPU, docs/design.md §4.5).
     Trusted,
 }
 

@@ -1,4 +1,4 @@
-//! The LTC fitter: the method of selfshadow/ltc_code `fit/fitLTC.cpp` as DESIGN §2 describes
+//! The LTC fitter: the method of selfshadow/ltc_code `fit/fitLTC.cpp` as docs/design.md §2 describes
 //! it, in f64. Per cell (θo, α): a frame whose z axis is the lobe's average direction, free
 //! `m00, m11, m02` in `M = [x y z] · [[m00, 0, m02], [0, m11, 0], [0, 0, 1]]`, the error
 //! `Σ |f cos − n D|³ / (pdf_ltc + pdf_brdf)` over 32×32 midpoint strata sampled from both
@@ -96,7 +96,7 @@ pub fn fit_error(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, strata: &[Stratum]
     })
 }
 
-/// The pointwise error of DESIGN §4: `∫ |s n D − f cos| dω / ∫ f cos dω` (`s` the fitted
+/// The pointwise error of docs/design.md §4: `∫ |s n D − f cos| dω / ∫ f cos dω` (`s` the fitted
 /// scale, 1 but in the point table; `n = ∫ f cos`, the true albedo), estimated by the
 /// same two-distribution (balance-heuristic) sampling with `n × n` strata each, weighted
 /// with the lobe's true sampling density (unbiased at grazing views, unlike the fit's).

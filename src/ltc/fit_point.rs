@@ -1,5 +1,5 @@
 //! The point-light fit (issue 6): the same isotropic family, fitted to what a point light
-//! sees. The objective is the pointwise relative L1 error of DESIGN §4,
+//! sees. The objective is the pointwise relative L1 error of docs/design.md §4,
 //! `∫ |s n D − f cos| dω / ∫ f cos dω`, by a deterministic quadrature that follows the lobe
 //! (`CellQuadrature`). Free are all four entries `m00, m02, m20, m22` of the normalized
 //! `M⁻¹` (middle element 1, `det > 0` kept) and, for the specular lobe, the scale `s` on its
@@ -142,7 +142,7 @@ impl PointFit {
 pub const SCALE_MIN: f64 = 0.5;
 
 /// Which parameters the point fit frees for a lobe: the magnitude's scale only for the
-/// specular lobe (the diffuse fit is within 2% already; DESIGN keeps its magnitude `n_d`).
+/// specular lobe (the diffuse fit is within 2% already; docs/design.md §1 keeps its magnitude `n_d`).
 pub fn fits_scale(lobe: Lobe) -> bool {
     lobe == Lobe::Specular
 }

@@ -1,4 +1,4 @@
-//! The exact lobes an LTC is fitted to (DESIGN §2), with the importance sampling that
+//! The exact lobes an LTC is fitted to (docs/design.md §2), with the importance sampling that
 //! ltc_code's `brdf_ggx.h` and `brdf_disneyDiffuse.h` use: GGX normals for the specular lobe
 //! (F = 1), the cosine for the diffuse lobe (c = 1). All in f64.
 

@@ -1,4 +1,4 @@
-//! The LTC look-up table of DESIGN §2: an N×N f32 EXR (x = column i ↔ roughness, y = row j ↔
+//! The LTC look-up table of docs/design.md §2: an N×N f32 EXR (x = column i ↔ roughness, y = row j ↔
 //! view angle) with 14 named channels, its bilinear sampler (exactly the GPU's addressing),
 //! and the shipped 64×64 table embedded in the binary.
 
@@ -21,10 +21,34 @@ use crate::ltc::{Ltc, LtcPair, cos_from_brdf_from_entries, mat3_rows};
 /// a column of its resolution. Any value below 2.5e-4 keeps every column distinct.
 pub const ALPHA_MIN: f64 = 1e-4;
 
+/// The largest table this program reads, in cells per side, checked before anything is
+/// allocated: 4096² cells hold 940 MB as f32 (14 channels), 64 times the shipped 64² per axis
+/// and 4 times the largest `ltc-lab fit` makes (1024); a file that claims more is refused.
+pub const MAX_SIZE: usize = 4096;
+
+/// Refuses a table side outside `2..=MAX_SIZE`, naming what claimed it.
+pub fn check_size(width: usize, height: usize) -> std::result::Result<usize, String> {
+    if width != height || width < 2 {
+        return Err(format!(
+            "the table is {width}×{height}: a table is square, at least 2×2"
+        ));
+    }
+    if width > MAX_SIZE {
+        return Err(format!(
+            "the table claims {width}×{width} cells: this program reads tables of at most {MAX_SIZE}×{MAX_SIZE}"
+        ));
+    }
+    Ok(width)
+}
+
+/// The fewest bytes an OpenEXR chunk takes: its 8-byte entry in the offset table, and its
+/// y coordinate and data size (4 bytes each) before any data.
+const EXR_MIN_CHUNK_BYTES: usize = 16;
+
 /// ltc_code clamps θo just below 90° (1.57 rad) so that the grazing row has `n·v > 0`.
 pub const THETA_MAX: f64 = 1.57;
 
-/// The LUT axes of DESIGN §2: column `i` ↔ `r = i/(N−1)`, `α = max(r², α_min)`.
+/// The LUT axes of docs/design.md §2: column `i` ↔ `r = i/(N−1)`, `α = max(r², α_min)`.
 pub fn cell_alpha(i: usize, size: usize, alpha_min: f64) -> f64 {
     let r = i as f64 / (size - 1) as f64;
     (r * r).max(alpha_min)
@@ -36,7 +60,7 @@ pub fn cell_theta(j: usize, size: usize) -> f64 {
     (1.0 - x * x).clamp(-1.0, 1.0).acos().min(THETA_MAX)
 }
 
-/// The stored form of DESIGN §2: `M⁻¹` divided by its middle element, as
+/// The stored form of docs/design.md §2: `M⁻¹` divided by its middle element, as
 /// `[m00, m02, m20, m22]` of `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
 pub fn normalized_cos_from_brdf(ltc: &Ltc) -> [f64; 4] {
     let r = mat3_rows(ltc.cos_from_brdf);
@@ -44,7 +68,7 @@ pub fn normalized_cos_from_brdf(ltc: &Ltc) -> [f64; 4] {
     [r[0][0] / s, r[0][2] / s, r[2][0] / s, r[2][2] / s]
 }
 
-/// The channels in DESIGN §2's order; `Channel as usize` indexes a cell.
+/// The channels in docs/design.md §2's order; `Channel as usize` indexes a cell.
 pub const CHANNEL_NAMES: [&str; CHANNEL_COUNT] = [
     "spec.m00",
     "spec.m02",
@@ -223,7 +247,7 @@ impl Table {
 pub struct LutCell(pub [f32; CHANNEL_COUNT]);
 
 impl LutCell {
-    /// From fitted lobes: `M⁻¹` normalized by its middle element (DESIGN §2).
+    /// From fitted lobes: `M⁻¹` normalized by its middle element (docs/design.md §2).
     pub fn from_fits(spec: &Ltc, spec_err: f64, diff: &Ltc, diff_err: f64) -> Self {
         let s = normalized_cos_from_brdf(spec);
         let d = normalized_cos_from_brdf(diff);
@@ -249,28 +273,78 @@ impl LutCell {
     pub fn get(&self, c: Channel) -> f32 {
         self.0[c as usize]
     }
+
+    /// Channel `c` as the table is shaded with it: the specular magnitudes with the fitted
+    /// scale folded in per cell, as ltc_code's layout stores them (docs/design.md §2), so that
+    /// a table and its export filter the same products and shade alike.
+    pub fn shaded(&self, c: usize) -> f64 {
+        let x = f64::from(self.0[c]);
+        if c == Channel::SpecNorm as usize || c == Channel::SpecFresnel as usize {
+            f64::from(self.0[Channel::SpecScale as usize]) * x
+        } else {
+            x
+        }
+    }
 }
 
-/// A sampled cell in f64: what the renderer and `eval` use.
+/// What an EXR's header claims, checked before its pixels are allocated: every layer within
+/// `MAX_SIZE`, and the file long enough for the chunks it declares (a header claiming 100000²
+/// over a 4×4 body would otherwise allocate 40 GB first).
+fn check_exr_header(bytes: &[u8]) -> std::result::Result<(), String> {
+    // Unreadable headers are left to the full reader, which says what is wrong.
+    let Ok(meta) = exr::meta::MetaData::read_from_buffered(Cursor::new(bytes), false) else {
+        return Ok(());
+    };
+    let mut chunks = 0usize;
+    for header in &meta.headers {
+        let size = header.layer_size;
+        check_size(size.width(), size.height())?;
+        chunks = chunks.saturating_add(header.chunk_count);
+    }
+    let least = chunks.saturating_mul(EXR_MIN_CHUNK_BYTES);
+    if bytes.len() < least {
+        return Err(format!(
+            "its header declares {chunks} chunks (at least {least} bytes) but the file holds {} bytes: it is cut short or its header is wrong",
+            bytes.len()
+        ));
+    }
+    Ok(())
+}
+
+/// A sampled cell in f64: what the renderer and `eval` use. `spec.norm` and `spec.fresnel`
+/// hold the filtered products `spec.scale × magnitude` (`LutCell::shaded`), `spec.scale` the
+/// filtered scale.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LutSample(pub [f64; CHANNEL_COUNT]);
 
 impl LutSample {
+    /// One cell, unfiltered.
+    pub fn of_cell(cell: &LutCell) -> Self {
+        Self(std::array::from_fn(|c| cell.shaded(c)))
+    }
+
     pub fn get(&self, c: Channel) -> f64 {
         self.0[c as usize]
     }
 
-    /// Both lobes as `Ltc`s: `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
+    /// Both lobes as `Ltc`s: `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`. The specular
+    /// magnitudes are divided by the filtered scale, so that `norm` stays the albedo while
+    /// `scale × norm` is the filtered product the table shades with.
     pub fn ltc_pair(&self) -> LtcPair {
         use Channel::*;
-        let lobe = |lobe: Lobe, norm: Channel, fresnel: f64| {
+        let lobe = |lobe: Lobe, norm: f64, fresnel: f64| {
             let m = cos_from_brdf_from_entries(Channel::entries(lobe).map(|c| self.get(c)));
-            Ltc::from_cos_from_brdf(m, self.get(norm), fresnel)
+            Ltc::from_cos_from_brdf(m, norm, fresnel)
         };
+        let scale = self.get(SpecScale);
         LtcPair {
-            spec: lobe(Lobe::Specular, SpecNorm, self.get(SpecFresnel))
-                .with_scale(self.get(SpecScale)),
-            diff: lobe(Lobe::Diffuse, DiffNorm, 0.0),
+            spec: lobe(
+                Lobe::Specular,
+                self.get(SpecNorm) / scale,
+                self.get(SpecFresnel) / scale,
+            )
+            .with_scale(scale),
+            diff: lobe(Lobe::Diffuse, self.get(DiffNorm), 0.0),
         }
     }
 }
@@ -319,6 +393,7 @@ impl Lut {
 
     pub fn from_exr_bytes(bytes: &[u8], name: &str) -> Result<Lut> {
         let bad = |m: String| Error::input(name, m);
+        check_exr_header(bytes).map_err(bad)?;
         let image = read()
             .no_deep_data()
             .largest_resolution_level()
@@ -329,11 +404,7 @@ impl Lut {
             .map_err(|e| bad(format!("not a readable OpenEXR LTC table ({e})")))?;
         let layer = &image.layer_data;
         let (w, h) = (layer.size.width(), layer.size.height());
-        if w != h || w < 2 {
-            return Err(bad(format!(
-                "the table must be square, at least 2×2; it is {w}×{h}"
-            )));
-        }
+        check_size(w, h).map_err(bad)?;
         // Written as f64 by this project; another writer may use f32.
         let alpha_min = match layer.attributes.other.get(&Text::from(ALPHA_MIN_ATTRIBUTE)) {
             Some(AttributeValue::F64(a)) => *a,
@@ -347,7 +418,8 @@ impl Lut {
         };
         if !(alpha_min > 0.0 && alpha_min < 1.0) {
             return Err(bad(format!(
-                "attribute {ALPHA_MIN_ATTRIBUTE} must be in (0, 1), got {alpha_min}"
+                "attribute {ALPHA_MIN_ATTRIBUTE} must be in (0, 1), got {}",
+                crate::error::number(alpha_min)
             )));
         }
         let mut cells = vec![LutCell([0.0; CHANNEL_COUNT]); w * h];
@@ -358,7 +430,7 @@ impl Lut {
                 .iter()
                 .find(|ch| ch.name == **channel_name)
             else {
-                // DESIGN §2's 13 channels make a complete table: without the point fit's
+                // docs/design.md §2's 13 channels make a complete table: without the point fit's
                 // scale, the magnitudes are used as they are.
                 if c == Channel::SpecScale as usize {
                     cells.iter_mut().for_each(|cell| cell.0[c] = 1.0);
@@ -399,7 +471,8 @@ impl Lut {
                 let limits = channel_limits(c);
                 if !limits.contains(x) {
                     return Err(format!(
-                        "{name} at {at} is {x}, outside {} ({})",
+                        "{name} at {at} is {}, outside {} ({})",
+                        crate::error::number(x),
                         limits.interval(),
                         limits.why
                     ));
@@ -410,8 +483,9 @@ impl Lut {
                 let det = m00 * m22 - m02 * m20;
                 if det <= 0.0 {
                     return Err(format!(
-                        "the {} matrix at {at} has determinant {det} (must be > 0)",
-                        &CHANNEL_NAMES[Channel::entries(lobe)[0] as usize][..4]
+                        "the {} matrix at {at} has determinant {} (must be > 0)",
+                        &CHANNEL_NAMES[Channel::entries(lobe)[0] as usize][..4],
+                        crate::error::number(det)
                     ));
                 }
             }
@@ -462,7 +536,7 @@ impl Lut {
         &self.cells[j * self.size + i]
     }
 
-    /// The GPU texture coordinate of DESIGN §2:
+    /// The GPU texture coordinate of docs/design.md §2:
     /// `uv = (r, sqrt(1 − cos θo)) · (N−1)/N + 0.5/N`, `r = sqrt(α)`.
     pub fn uv(&self, alpha: f64, cos_theta_o: f64) -> (f64, f64) {
         let r = alpha.max(0.0).sqrt();
@@ -503,8 +577,8 @@ impl Lut {
             self.cell(i1, j1),
         );
         LutSample(std::array::from_fn(|c| {
-            let top = f64::from(c00.0[c]) * (1.0 - fx) + f64::from(c10.0[c]) * fx;
-            let bottom = f64::from(c01.0[c]) * (1.0 - fx) + f64::from(c11.0[c]) * fx;
+            let top = c00.shaded(c) * (1.0 - fx) + c10.shaded(c) * fx;
+            let bottom = c01.shaded(c) * (1.0 - fx) + c11.shaded(c) * fx;
             top * (1.0 - fy) + bottom * fy
         }))
     }
@@ -520,7 +594,7 @@ impl Lut {
         let (u, v) = self.uv(alpha, cos_theta_o);
         let n = self.size;
         let index = |t: f64| ((t * n as f64).floor().max(0.0) as usize).min(n - 1);
-        LutSample(self.cell(index(u), index(v)).0.map(f64::from))
+        LutSample::of_cell(self.cell(index(u), index(v)))
     }
 
     /// The LTCs for a view `v` (unit, shading frame) and roughness.
@@ -528,12 +602,12 @@ impl Lut {
         self.sample(alpha, v.z).ltc_pair()
     }
 
-    /// α of column `i` (DESIGN §2).
+    /// α of column `i` (docs/design.md §2).
     pub fn alpha(&self, i: usize) -> f64 {
         cell_alpha(i, self.size, self.alpha_min)
     }
 
-    /// θo (radians) of row `j` (DESIGN §2).
+    /// θo (radians) of row `j` (docs/design.md §2).
     pub fn theta_o(&self, j: usize) -> f64 {
         cell_theta(j, self.size)
     }

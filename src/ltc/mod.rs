@@ -1,4 +1,4 @@
-//! Linearly Transformed Cosines (Heitz et al. 2016) for point lights, DESIGN §1.
+//! Linearly Transformed Cosines (Heitz et al. 2016) for point lights, docs/design.md §1.
 //!
 //! A distribution `D(ω)` is the clamped cosine pushed through a 3×3 matrix `M`
 //! (`brdf_from_cos`); it is evaluated through `M⁻¹` (`cos_from_brdf`):
@@ -71,7 +71,7 @@ impl Default for Clipping {
 /// How the LTC sum is normalized.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Normalization {
-    /// DESIGN §1: `D` carries its 1/π, and each lobe its magnitude (`F0 n_s + (1−F0) f_s` for
+    /// docs/design.md §1: `D` carries its 1/π, and each lobe its magnitude (`F0 n_s + (1−F0) f_s` for
     /// specular, `n_d` for diffuse).
     #[default]
     Corrected,
@@ -199,14 +199,14 @@ pub struct LtcPair {
 }
 
 impl LtcPair {
-    /// The specular magnitude for a material with `F0` (DESIGN §1): `F0 n_s + (1 − F0) f_s`,
+    /// The specular magnitude for a material with `F0` (docs/design.md §1): `F0 n_s + (1 − F0) f_s`,
     /// times the fitted scale.
     pub fn spec_magnitude(&self, f0: f64) -> f64 {
         self.spec.scale * (f0 * self.spec.norm + (1.0 - f0) * self.spec.fresnel)
     }
 
     /// The LTC approximation of both cosine-weighted lobes for a unit-irradiance light in
-    /// direction `l` (unit, shading frame), base colour 1 (eq. 30 with DESIGN's corrections).
+    /// direction `l` (unit, shading frame), base colour 1 (eq. 30 with the corrections of docs/design.md §1).
     pub fn ltc_lobes(
         &self,
         l: DVec3,
@@ -225,7 +225,7 @@ impl LtcPair {
     }
 }
 
-/// Which clipping case a light direction falls in for a lobe (DESIGN §1, the paper's §2.5):
+/// Which clipping case a light direction falls in for a lobe (docs/design.md §1, the paper's §2.5):
 /// the four combinations of above/below the horizon before and after `M⁻¹`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum ClipCase {
@@ -296,7 +296,7 @@ impl LtcPair {
 }
 
 /// `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]` from the four entries a LUT cell stores,
-/// in the channels' order `m00, m02, m20, m22` (DESIGN §2).
+/// in the channels' order `m00, m02, m20, m22` (docs/design.md §2).
 pub fn cos_from_brdf_from_entries(m: [f64; 4]) -> DMat3 {
     mat3_from_rows([[m[0], 0.0, m[1]], [0.0, 1.0, 0.0], [m[2], 0.0, m[3]]])
 }

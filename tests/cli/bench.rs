@@ -166,3 +166,15 @@ fn bench_measures_culled_and_unculled_with_a_range() {
         Some(2)
     );
 }
+
+/// Every count has a stated maximum, checked before any work: 10¹⁰ frames once aborted
+/// allocating 240 GB, and 10⁹ ran for ever. Refused without an adapter too (the check comes
+/// first).
+#[test]
+fn bench_refuses_more_frames_than_its_maximum() {
+    for frames in ["10000000000", "1000000000", "10001"] {
+        let o = ltc_lab(&["bench", "--frames", frames]);
+        assert_refused(&o, "--frames");
+        assert!(stderr(&o).contains("1..=10000"), "{}", stderr(&o));
+    }
+}

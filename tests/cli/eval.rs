@@ -135,7 +135,7 @@ fn eval_reports_a_full_disk_without_a_backtrace() {
 /// `writeJS` writes it (2×2 cells, distinct entries), gives the values that layout defines:
 /// `M⁻¹ = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w))` (columns),
 /// `D = max((M⁻¹l).z, 0) |det M⁻¹| / (π |M⁻¹l|⁴)`, times `F0·t2.x + (1 − F0)·t2.y`, with
-/// the DESIGN §2 lookup (at r = 0.5 the two columns' average). The diffuse lobe is the
+/// the docs/design.md §2 lookup (at r = 0.5 the two columns' average). The diffuse lobe is the
 /// embedded table's.
 #[test]
 fn eval_with_an_ltc_code_table_follows_that_layouts_definition() {
@@ -215,4 +215,77 @@ fn eval_with_an_ltc_code_table_follows_that_layouts_definition() {
     }
     // A mirrored light sees a different value: the m02/m20 entries are not symmetric.
     assert!((rows[0][8] - rows[2][8]).abs() > 1e-3 * rows[0][8]);
+}
+
+/// α is taken over the range the rest of the program takes (the scene's and the tables'
+/// [1e-4, 1]): at its smallest, the mirror direction gives finite values; below it, a row is
+/// refused naming its line (α = 1e-100 once wrote inf and NaN with exit 0). The inputs are
+/// echoed as the file wrote them (α = 1e-200 was echoed as 200 zeros).
+#[test]
+fn eval_takes_the_programs_alpha_range_and_echoes_its_inputs_as_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases.csv");
+    // θo = 30°: v = (sin 30°, 0, cos 30°), its mirror direction l = (−sin 30°, 0, cos 30°).
+    let rows = [
+        "30,1e-4,-0.5,0,0.8660254037844386,0.04",
+        "30,0.50,-0.5,0.0,0.86603,1.0",
+    ];
+    std::fs::write(
+        &cases,
+        format!("theta_o,alpha,lx,ly,lz,f0\n{}\n{}\n", rows[0], rows[1]),
+    )
+    .unwrap();
+    let o = ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    for (line, row) in text.lines().skip(1).zip(rows) {
+        assert!(
+            line.starts_with(&format!("{row},")),
+            "{line} does not echo {row}"
+        );
+        let values: Vec<f64> = line
+            .split(',')
+            .skip(6)
+            .map(|x| x.parse().unwrap())
+            .collect();
+        assert!(values.iter().all(|x| x.is_finite()), "{line}");
+    }
+    // At α = 1e-4 the mirror direction sees GGX's peak (D = 1/(πα²) ≈ 3e7), finite and equal
+    // to the f64 reference (as in `eval_prints_one_row_per_case`).
+    let peak: f64 = text
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .nth(6)
+        .unwrap()
+        .parse()
+        .unwrap();
+    let theta = 30f64.to_radians();
+    let reference = brdf_cos(
+        view_from_theta(theta),
+        [-theta.sin(), 0.0, theta.cos()],
+        1e-4,
+        0.04,
+    );
+    assert!(
+        (peak - reference.specular).abs() <= 1e-9 * reference.specular && peak > 1e5,
+        "{peak} against {}",
+        reference.specular
+    );
+    for alpha in ["1e-100", "1e-200", "0.00005"] {
+        std::fs::write(
+            &cases,
+            format!("theta_o,alpha,lx,ly,lz,f0\n30,{alpha},-0.5,0,0.8660254037844386,0.04\n"),
+        )
+        .unwrap();
+        let o = ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]);
+        assert_refused(&o, "line 2");
+        assert!(
+            stderr(&o).contains(&format!("got {alpha}")),
+            "{}",
+            stderr(&o)
+        );
+        assert!(stderr(&o).len() < 200, "{}", stderr(&o));
+    }
 }

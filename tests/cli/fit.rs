@@ -81,3 +81,37 @@ fn fit_never_replaces_the_default_table_unasked() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(Path::new(&dir.path().join("luts/ltc_point.exr")).exists());
 }
+
+/// Without --out, `luts/ltc.exr` is taken when the fit starts (it used to be checked then
+/// and written at the end, replacing a table that appeared meanwhile): while a fit runs, its
+/// empty claim is there, and a second default fit is refused rather than sharing the name.
+/// SIGTERM then removes the claim (exit 130, through the handler). A 1024² fit takes hours,
+/// so it is still running whenever the claim is looked at.
+#[test]
+fn a_default_fit_claims_its_table_at_the_start() {
+    let dir = tempfile::tempdir().unwrap();
+    let luts = dir.path().join("luts");
+    std::fs::create_dir(&luts).unwrap();
+    let table = luts.join("ltc.exr");
+    let mut child = exe()
+        .current_dir(dir.path())
+        .args(["fit", "--size", "1024"])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    crate::study::wait_until(&mut child, "luts/ltc.exr claimed", || table.exists());
+    let claim_len = std::fs::metadata(&table).unwrap().len();
+    let second = ltc_lab_in(dir.path(), &["fit", "--size", "2"]);
+    // Ended before anything is asserted, so that a failure leaves no fit running for hours.
+    crate::study::terminate(&child);
+    let status = crate::study::wait_for_exit(&mut child);
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(claim_len, 0, "not an empty claim");
+    assert_refused(&second, "luts/ltc.exr");
+    assert_eq!(status.code(), Some(130), "{}", stderr(&o));
+    assert!(
+        std::fs::read_dir(&luts).unwrap().next().is_none(),
+        "the claim or a temporary file was left"
+    );
+}

@@ -20,3 +20,30 @@ fn lab_refuses_bad_arguments_before_opening_a_window() {
         "/nonexistent.toml",
     );
 }
+
+/// Two outputs of one command never name the same file: `--screenshot X --frame-log X`
+/// wrote the CSV over the screenshot and exited 0.
+#[test]
+fn lab_refuses_two_outputs_with_one_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let shot = dir.path().join("x.png");
+    let same = dir.path().join(".").join("x.png");
+    let o = ltc_lab(&[
+        "lab",
+        "--screenshot",
+        shot.to_str().unwrap(),
+        "--frame-log",
+        same.to_str().unwrap(),
+    ]);
+    assert_refused(&o, "--frame-log");
+    assert!(!shot.exists());
+}
+
+/// A screenshot path that cannot be written is bad input, as in `render`: exit 2 before a
+/// window opens (it exited 1, "cannot open the window: … operation not permitted"). Under
+/// /sys even root may not create a file.
+#[test]
+fn an_unwritable_screenshot_path_is_bad_input() {
+    let o = ltc_lab(&["lab", "--screenshot", "/sys/ltc-lab-shot.png"]);
+    assert_refused(&o, "/sys/ltc-lab-shot.png");
+}

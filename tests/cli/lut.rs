@@ -254,3 +254,212 @@ fn lut_reads_ltc_codes_layouts_and_says_what_they_lack() {
         "square.js",
     );
 }
+
+/// One DDS texture whose header claims `side × side` texels of `fourcc` (113 = RGBA16F,
+/// 116 = RGBA32F) over a 32 KiB body of zeros.
+fn dds_claiming(side: u32, fourcc: u32) -> Vec<u8> {
+    let mut header = [0u32; 31];
+    header[0] = 124;
+    header[1] = 0x100F;
+    header[2] = side;
+    header[3] = side;
+    header[5] = 1;
+    header[6] = 1;
+    header[18] = 32;
+    header[19] = 0x4; // DDPF_FOURCC
+    header[20] = fourcc;
+    header[26] = 0x1000;
+    let mut bytes = b"DDS ".to_vec();
+    bytes.extend(header.iter().flat_map(|w| w.to_le_bytes()));
+    bytes.resize(bytes.len() + 32 * 1024, 0);
+    bytes
+}
+
+/// A DDS pair claiming 2^30×2^30 RGBA32F or 2^31×2^31 RGBA16F over 32 KiB (whose byte count
+/// wrapped to 0 and then panicked) is refused before any allocation, naming the file and the
+/// limit, with its sidecar header and without.
+#[test]
+fn lut_refuses_dds_textures_that_claim_more_than_the_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    for (side, fourcc) in [(1u32 << 30, 116u32), (1 << 31, 113), (4097, 116)] {
+        for sidecar in [true, false] {
+            let pair = dir.path().join(format!("{side}-{fourcc}-{sidecar}"));
+            std::fs::create_dir(&pair).unwrap();
+            for f in ["ltc_1.dds", "ltc_2.dds"] {
+                std::fs::write(pair.join(f), dds_claiming(side, fourcc)).unwrap();
+            }
+            if sidecar {
+                std::fs::write(pair.join("ltc_dds.txt"), "alpha_min: 1e-4\n").unwrap();
+            }
+            let first = pair.join("ltc_1.dds");
+            let o = ltc_lab(&["lut", "--lut", first.to_str().unwrap()]);
+            assert_refused(&o, first.to_str().unwrap());
+            assert!(stderr(&o).contains("at most 4096×4096"), "{}", stderr(&o));
+        }
+    }
+}
+
+/// `bytes` (an EXR) with its data window rewritten to `(0, 0)–(last, last)`.
+fn exr_claiming(bytes: &[u8], last: i32) -> Vec<u8> {
+    let key = b"dataWindow\0box2i\0";
+    let at = bytes
+        .windows(key.len())
+        .position(|w| w == key)
+        .expect("an EXR header has a data window")
+        + key.len()
+        + 4; // the attribute's size
+    let mut out = bytes.to_vec();
+    for (k, v) in [0, 0, last, last].into_iter().enumerate() {
+        out[at + 4 * k..at + 4 * k + 4].copy_from_slice(&v.to_le_bytes());
+    }
+    out
+}
+
+/// An EXR table whose header claims 100000² over a 4×4 body (which aborted allocating 40 GB)
+/// is refused naming the limit; one that claims 4096² (within the limit) over the same body
+/// is refused for the chunks it cannot hold, before they are allocated.
+#[test]
+fn lut_refuses_an_exr_whose_header_claims_more_than_its_body() {
+    let shipped = Lut::embedded();
+    let small = Lut {
+        size: 4,
+        alpha_min: shipped.alpha_min,
+        cells: (0..16)
+            .map(|k| *shipped.cell(k % 4 * 21, k / 4 * 21))
+            .collect(),
+    };
+    let bytes = small.to_exr_bytes();
+    assert_eq!(
+        Lut::from_exr_bytes(&bytes, "small").unwrap(),
+        small,
+        "the body itself is a good table"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    for (last, said) in [(99_999, "at most 4096×4096"), (4095, "chunks")] {
+        let p = dir.path().join(format!("claims-{last}.exr"));
+        std::fs::write(&p, exr_claiming(&bytes, last)).unwrap();
+        let o = ltc_lab(&["lut", "--lut", p.to_str().unwrap()]);
+        assert_refused(&o, p.to_str().unwrap());
+        assert!(stderr(&o).contains(said), "{}", stderr(&o));
+    }
+}
+
+/// The point table exported for ltc_code shades what the lab shades: `eval --table point` and
+/// `eval --lut exported.js` agree at grazing views, where the fitted scale varies most from
+/// cell to cell (they differed by up to 6.6e-4 while the native table filtered the scale and
+/// the magnitudes apart and multiplied after). Tolerance 1e-6 relative: the export rounds
+/// each cell's product scale × magnitude to f32 once (≤ 2^-24 ≈ 6e-8 relative), a bilinear
+/// blend of positive values keeps that relative bound, and the matrices are the same f32s.
+#[test]
+fn an_exported_point_table_shades_as_the_point_table() {
+    let dir = tempfile::tempdir().unwrap();
+    let js = dir.path().join("point.js");
+    export_js(&["--table", "point"], &js);
+    let mut cases = String::from("theta_o,alpha,lx,ly,lz,f0\n");
+    for theta_o in [60.0, 78.0, 83.0, 84.5, 86.0, 88.0] {
+        for alpha in [0.03, 0.1, 0.27, 0.55, 0.9] {
+            for elevation in [5.0_f64, 20.0, 45.0, 80.0] {
+                for (azimuth, f0) in [(180.0_f64, 0.04), (150.0, 1.0), (0.0, 0.5)] {
+                    let (e, a) = (elevation.to_radians(), azimuth.to_radians());
+                    let l = [e.cos() * a.cos(), e.cos() * a.sin(), e.sin()];
+                    cases.push_str(&format!(
+                        "{theta_o},{alpha},{},{},{},{f0}\n",
+                        l[0], l[1], l[2]
+                    ));
+                }
+            }
+        }
+    }
+    let csv = dir.path().join("grazing.csv");
+    std::fs::write(&csv, cases).unwrap();
+    let ltc_spec = |lut: &[&str]| -> Vec<f64> {
+        let mut args = vec!["eval", "--cases", csv.to_str().unwrap()];
+        args.extend_from_slice(lut);
+        let o = ltc_lab(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        String::from_utf8(o.stdout)
+            .unwrap()
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').nth(8).unwrap().parse().unwrap())
+            .collect()
+    };
+    let native = ltc_spec(&["--table", "point"]);
+    let exported = ltc_spec(&["--lut", js.to_str().unwrap()]);
+    assert_eq!(native.len(), 6 * 5 * 4 * 3);
+    let lit = native.iter().filter(|&&x| x > 0.0).count();
+    assert!(lit > native.len() / 2, "only {lit} cases lit");
+    for (k, (a, b)) in native.iter().zip(&exported).enumerate() {
+        assert!(
+            (a - b).abs() <= 1e-6 * a.abs(),
+            "case {k}: point table {a:e}, its export {b:e}"
+        );
+    }
+}
+
+/// A table in ltc_code's layout is not measured to shade with it: `eval` does not measure
+/// its spec.err (`lut --dump`, which shows it, does, and every cell gets a measurement
+/// close to the one the classic fit stored for the same lobe).
+#[test]
+fn an_imported_table_is_measured_only_where_its_error_is_shown() {
+    let dir = tempfile::tempdir().unwrap();
+    let js = dir.path().join("classic.js");
+    export_js(&[], &js);
+    let o = ltc_lab(&["lut", "--dump", "--lut", js.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let column = 4 + Channel::SpecErr as usize;
+    let shipped = Lut::embedded();
+    let mut rows = 0;
+    for line in text.lines().skip(1) {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let stored = f64::from(
+            shipped
+                .cell(v[0] as usize, v[1] as usize)
+                .get(Channel::SpecErr),
+        );
+        // The same estimator (64² strata) on the same lobe, except that the fit measured its
+        // f64 matrix and the export holds f32: at α ≤ 2.5e-4 (columns 0 and 1), where the lobe
+        // is as narrow as f32's steps in M⁻¹'s ~1/α entries allow, that moves the error by up to
+        // 1.3e-4 and 2% (measured); elsewhere far less. Bound: 3% + 5e-4.
+        assert!(
+            (v[column] - stored).abs() <= 0.03 * stored + 5e-4,
+            "cell ({}, {}): measured {}, stored {stored}",
+            v[0],
+            v[1],
+            v[column]
+        );
+        rows += 1;
+    }
+    assert_eq!(rows, 64 * 64);
+}
+
+/// Two outputs of one command never name the same path: an export into the atlas directory
+/// itself (or onto one of its files) is refused before anything is written.
+#[test]
+fn lut_refuses_an_export_onto_its_atlas() {
+    let dir = tempfile::tempdir().unwrap();
+    let atlas = dir.path().join("atlas");
+    for out in [atlas.clone(), atlas.join("spec_err.png")] {
+        let o = ltc_lab(&[
+            "lut",
+            "--export",
+            "c",
+            "--out",
+            out.to_str().unwrap(),
+            "--atlas",
+            atlas.to_str().unwrap(),
+        ]);
+        assert_refused(&o, "--out");
+        assert!(!atlas.exists(), "the atlas was written");
+    }
+}
+
+/// `lut <table> --export ltc-code-js --out <out>`, which must succeed.
+fn export_js(table: &[&str], out: &std::path::Path) {
+    let mut args = vec!["lut"];
+    args.extend_from_slice(table);
+    args.extend(["--export", "ltc-code-js", "--out", out.to_str().unwrap()]);
+    let o = ltc_lab(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+}

@@ -518,3 +518,157 @@ fn render_compares_two_tables_and_culls_without_changing_the_image() {
     ]);
     assert_refused(&o, "--method");
 }
+
+/// A difference map 1 to 4 pixels wide gets its colour bar inside the image (it panicked
+/// with "Image index (4, 10) out of bounds"), on the CPU and the GPU.
+#[test]
+fn a_tiny_difference_map_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    for cpu in devices() {
+        for width in 1..=4 {
+            let out = dir.path().join(format!("diff-{width}-{cpu}.png"));
+            let (size, scene) = (format!("{width}x10"), preset("figure2-case1.toml"));
+            let mut args = vec![
+                "render",
+                "--scene",
+                &scene,
+                "--method",
+                "diff",
+                "--size",
+                &size,
+                "--out",
+                out.to_str().unwrap(),
+            ];
+            if cpu {
+                args.push("--cpu");
+            }
+            let o = ltc_lab(&args);
+            assert_no_panic(o.status.code(), &stderr(&o));
+            assert!(o.status.success(), "{width} px: {}", stderr(&o));
+            let img = image::open(&out).unwrap();
+            assert_eq!(img.width(), width);
+            assert!(img.height() > 10, "no colour bar under the map");
+        }
+    }
+}
+
+/// A refused scene says so in a line a person reads: `plane.half_size = 0` printed f64's
+/// smallest positive number in full (a 417-character message).
+#[test]
+fn a_refused_scene_prints_numbers_as_people_write_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = edited_scene(dir.path(), "flat.toml", |t| {
+        t.lines()
+            .map(|l| {
+                if l.starts_with("half_size") {
+                    "half_size = 0.0"
+                } else {
+                    l
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n")
+    });
+    let o = ltc_lab(&[
+        "render",
+        "--cpu",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--method",
+        "ltc",
+        "--out",
+        dir.path().join("x.png").to_str().unwrap(),
+    ]);
+    assert_refused(&o, "plane.half_size must be in (0, ");
+    assert!(stderr(&o).len() < 160, "{}", stderr(&o));
+}
+
+/// Spawns a default-named CPU render of `scene` in `dir`, its stderr piped.
+fn spawn_default_render(dir: &Path, scene: &Path) -> std::process::Child {
+    exe()
+        .current_dir(dir)
+        .args([
+            "render", "--cpu", "--method", "ltc", "--size", "8x8", "--scene",
+        ])
+        .arg(scene)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
+/// A FIFO for a scene: a render reading it waits until the test writes the scene, which
+/// holds the render at a known point without any timing.
+fn scene_fifo(dir: &Path, name: &str) -> std::path::PathBuf {
+    let fifo = dir.join(name);
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    fifo
+}
+
+/// The default name is taken when the render starts, before it reads its scene (it was
+/// taken only when the image was written): while the render waits on a FIFO for its scene,
+/// its empty claim is there and a second render of that name writes `-2`. Filled, the
+/// claim is the image the render reports.
+#[test]
+fn a_default_render_claims_its_name_at_the_start() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = scene_fifo(dir.path(), "held.toml");
+    let claimed = dir.path().join("held-ltc.png");
+    let mut first = spawn_default_render(dir.path(), &fifo);
+    crate::study::wait_until(&mut first, "held-ltc.png claimed", || claimed.exists());
+    // Another scene of the same name, which does not wait.
+    std::fs::create_dir(dir.path().join("other")).unwrap();
+    let same_name = dir.path().join("other/held.toml");
+    std::fs::copy(preset("figure2-normal.toml"), &same_name).unwrap();
+    let second = spawn_default_render(dir.path(), &same_name)
+        .wait_with_output()
+        .unwrap();
+    // The scene is given before anything is asserted, so that a failure leaves no render
+    // waiting for ever.
+    std::fs::write(&fifo, std::fs::read(preset("figure2-normal.toml")).unwrap()).unwrap();
+    let first = first.wait_with_output().unwrap();
+    for (o, name) in [(&second, "held-ltc-2.png"), (&first, "held-ltc.png")] {
+        assert!(o.status.success(), "{}", stderr(o));
+        assert!(
+            stderr(o).contains(&format!("wrote {name}")),
+            "{}",
+            stderr(o)
+        );
+    }
+    for name in ["held-ltc.png", "held-ltc-2.png"] {
+        assert_eq!(
+            image::open(dir.path().join(name)).unwrap().width(),
+            8,
+            "{name}"
+        );
+    }
+}
+
+/// A claim that is never filled goes again: on a refused scene, and on SIGTERM (exit 130
+/// through the handler) while the render waits for its scene.
+#[test]
+fn an_unfilled_default_name_is_removed() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = edited_scene(dir.path(), "bad.toml", |g| {
+        g.replace("alpha = 0.5", "alpha = 0")
+    });
+    let o = spawn_default_render(dir.path(), &bad)
+        .wait_with_output()
+        .unwrap();
+    assert_refused(&o, "bad.toml");
+    assert!(!dir.path().join("bad-ltc.png").exists(), "the claim stayed");
+    let fifo = scene_fifo(dir.path(), "held.toml");
+    let claimed = dir.path().join("held-ltc.png");
+    let mut child = spawn_default_render(dir.path(), &fifo);
+    crate::study::wait_until(&mut child, "held-ltc.png claimed", || claimed.exists());
+    crate::study::terminate(&child);
+    let status = crate::study::wait_for_exit(&mut child);
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(status.code(), Some(130), "{}", stderr(&o));
+    assert!(stderr(&o).contains("interrupted"), "{}", stderr(&o));
+    assert!(!claimed.exists(), "the interrupted render left its claim");
+}

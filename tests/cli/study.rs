@@ -64,8 +64,11 @@ fn study_refuses_bad_arguments() {
     for (args, what) in [
         (vec!["--alpha", "0"], "--alpha"),
         (vec!["--alpha", "1.5"], "--alpha"),
+        // Below the scene's α_min, as everywhere else (1e-100 was taken).
+        (vec!["--alpha", "1e-100"], "got 1e-100"),
         (vec!["--lights", "0"], "--lights"),
         (vec!["--frames", "0"], "--frames"),
+        (vec!["--frames", "10000000000"], "--frames"),
     ] {
         let mut all = vec!["study", "--out", "/tmp/never-study"];
         all.extend(args);
@@ -138,5 +141,144 @@ fn a_default_study_directory_never_replaces_an_earlier_study() {
         cwd.path().join("study-2/study.png").exists(),
         "{}",
         stderr(&o)
+    );
+}
+
+/// Sends SIGTERM (a `kill` does what a service manager or a closed terminal does).
+pub fn terminate(child: &std::process::Child) {
+    let sent = std::process::Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success(), "kill failed");
+}
+
+/// Waits until `reached` holds while `child` runs. The deadline only ends a test whose
+/// child never gets there (it is far beyond what a start takes on any machine); past it, or
+/// if the child ends first, the child is killed and the test fails saying `what`.
+pub fn wait_until(child: &mut std::process::Child, what: &str, reached: impl Fn() -> bool) {
+    use std::time::{Duration, Instant};
+    let start = Instant::now();
+    while !reached() {
+        let ended = child.try_wait().unwrap();
+        if ended.is_some() || start.elapsed() > Duration::from_secs(120) {
+            let _ = child.kill();
+            panic!("never saw {what} while it ran (ended: {ended:?})");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+/// The exit status of a child that was told to end; one that is still running after a
+/// deadline far beyond any clean-up is killed, and the test fails.
+pub fn wait_for_exit(child: &mut std::process::Child) -> std::process::ExitStatus {
+    use std::time::{Duration, Instant};
+    let start = Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return status;
+        }
+        if start.elapsed() > Duration::from_secs(120) {
+            let _ = child.kill();
+            panic!("still running after it was told to end");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+/// The directory a finished study says it wrote into.
+fn reported_dir(err: &str) -> String {
+    let (_, rest) = err.split_once("; wrote ").expect("no 'wrote' line");
+    rest.split_once("/study.csv")
+        .expect("no study.csv")
+        .0
+        .to_string()
+}
+
+/// Two studies at once without --out: each takes its own directory when it starts (both
+/// used to pick `study/`, say so, and one result was lost); both hold both files.
+#[test]
+fn two_default_studies_at_once_get_two_directories() {
+    use std::collections::BTreeSet;
+    use std::process::{Child, Stdio};
+    if gpu().is_none() {
+        return;
+    }
+    let cwd = tempfile::tempdir().unwrap();
+    let args = [
+        "study", "--size", "32x18", "--lights", "10", "--alpha", "0.5", "--frames", "1",
+    ];
+    let runs: Vec<Child> = (0..2)
+        .map(|_| {
+            crate::exe()
+                .current_dir(cwd.path())
+                .args(args)
+                .stdout(Stdio::null())
+                .stderr(Stdio::piped())
+                .spawn()
+                .unwrap()
+        })
+        .collect();
+    let mut dirs = BTreeSet::new();
+    for r in runs {
+        let o = r.wait_with_output().unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        dirs.insert(reported_dir(&stderr(&o)));
+    }
+    assert_eq!(dirs, BTreeSet::from(["study".into(), "study-2".into()]));
+    for d in &dirs {
+        let dir = cwd.path().join(d);
+        assert!(
+            !ltc_lab::study::read_csv(&dir.join("study.csv"))
+                .unwrap()
+                .is_empty()
+        );
+        image::open(dir.join("study.png")).unwrap();
+        assert_eq!(
+            std::fs::read_dir(&dir).unwrap().count(),
+            2,
+            "{d}: extra files"
+        );
+    }
+}
+
+/// SIGTERM during `study --out d` removes the directory it made (a signal skips Drop, which
+/// left `d` empty) and exits 130 through the handler, not by the signal. The workload is one
+/// a fast GPU needs seconds for (and lavapipe minutes): the signal, sent as soon as the
+/// study says it started, lands during the work.
+#[test]
+fn an_interrupted_study_leaves_nothing_behind() {
+    use std::io::{BufRead, BufReader, Read};
+    use std::process::Stdio;
+    if gpu().is_none() {
+        return;
+    }
+    let root = tempfile::tempdir().unwrap();
+    let dir = root.path().join("d");
+    let mut child = crate::exe()
+        .args(["study", "--out", dir.to_str().unwrap()])
+        .args(["--size", "640x360", "--lights", "1000", "--frames", "1000"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut err = BufReader::new(child.stderr.take().unwrap());
+    let mut seen = String::new();
+    while !seen.contains("study on") {
+        let mut line = String::new();
+        let read = err.read_line(&mut line).unwrap();
+        assert_ne!(read, 0, "the study ended before it started: {seen}");
+        seen.push_str(&line);
+    }
+    assert!(dir.is_dir(), "the study works without its directory?");
+    terminate(&child);
+    let status = wait_for_exit(&mut child);
+    err.read_to_string(&mut seen).unwrap();
+    assert_eq!(status.code(), Some(130), "{status:?}: {seen}");
+    assert!(seen.contains("interrupted"), "{seen}");
+    assert!(!dir.exists(), "the interrupted study left its directory");
+    assert!(
+        std::fs::read_dir(root.path()).unwrap().next().is_none(),
+        "temporary files left"
     );
 }

@@ -7,6 +7,7 @@
 use half::f16;
 
 use crate::error::{Error, Result};
+use crate::ltc::lut::check_size;
 
 /// Texel precision of a DDS texture.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -135,12 +136,17 @@ pub fn read(bytes: &[u8], name: &str) -> Result<(usize, Vec<[f32; 4]>, Precision
             })?;
         (precision, HEADER_BYTES)
     };
-    if width != height || width < 2 {
-        return Err(bad(format!(
-            "the texture is {width}×{height}: a table is square, at least 2×2"
-        )));
-    }
-    let need = width * height * precision.texel_bytes();
+    let width = check_size(width, height).map_err(bad)?;
+    // Within MAX_SIZE the byte count cannot overflow; checked all the same, since a header
+    // that claims 2^30×2^30 once wrapped it to 0.
+    let need = width
+        .checked_mul(width)
+        .and_then(|cells| cells.checked_mul(precision.texel_bytes()))
+        .ok_or_else(|| {
+            bad(format!(
+                "a {width}×{width} texture has more bytes than fit in memory"
+            ))
+        })?;
     let data = &bytes[data_start..];
     if data.len() < need {
         return Err(bad(format!(

@@ -5,6 +5,7 @@
 use crate::error::{Error, Result};
 use crate::ltc::formats::Header;
 use crate::ltc::formats::packing::Packed;
+use crate::ltc::lut::check_size;
 
 /// The arrays' names: ltc_code's, then three.js's.
 const NAMES: [[&str; 2]; 2] = [["g_ltc_1", "g_ltc_2"], ["LTC_MAT_1", "LTC_MAT_2"]];
@@ -43,16 +44,16 @@ pub fn read(text: &str, name: &str) -> Result<Packed> {
     Ok(Packed { size, tex1, tex2 })
 }
 
-/// The side of a square table of `cells` cells (at least 2×2).
+/// The side of a square table of `cells` cells (at least 2×2, at most `MAX_SIZE`²).
 pub fn square_side(cells: usize, what: &str, name: &str) -> Result<usize> {
     let n = (cells as f64).sqrt().round() as usize;
-    if n < 2 || n * n != cells {
+    if n.checked_mul(n) != Some(cells) {
         return Err(Error::input(
             name,
             format!("{what} holds {cells} cells, not the N×N (N ≥ 2) of a table"),
         ));
     }
-    Ok(n)
+    check_size(n, n).map_err(|m| Error::input(name, format!("{what}: {m}")))
 }
 
 /// The numbers between `<array> = [` and `]`, four to a cell.
@@ -117,9 +118,5 @@ pub fn write(p: &Packed, header: &Header) -> String {
 
 /// The shortest text that reads back as the same f32 (exponent form far from 1).
 pub fn number(x: f32) -> String {
-    if x == 0.0 || (1e-4..1e6).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
+    crate::error::number(x)
 }

@@ -23,6 +23,21 @@ pub struct Loaded {
     /// For ltc_code's layout: where the diffuse lobe and α_min came from. Every command that
     /// shades with the table says it.
     pub note: Option<String>,
+    /// Whether `spec.err` holds a measurement. ltc_code's layout has no such channel, and
+    /// measuring it costs about a millisecond a cell on one core (34 s for a 256² table on
+    /// two), so a table read from it is measured only by what shows the error
+    /// (`measure_spec_err`), never to shade.
+    pub spec_err_measured: bool,
+}
+
+impl Loaded {
+    /// Measures `spec.err` if the file did not hold it, calling `on_cell` after each cell.
+    pub fn measure_spec_err(&mut self, on_cell: &(dyn Fn() + Sync)) {
+        if !self.spec_err_measured {
+            packing::measure_spec_err(self.lut.to_mut(), on_cell);
+            self.spec_err_measured = true;
+        }
+    }
 }
 
 /// The shipped `table`, or the file at `path` in any format this module reads.
@@ -32,6 +47,7 @@ pub fn load(path: Option<&Path>, table: Table) -> Result<Loaded> {
         None => Ok(Loaded {
             lut: Cow::Borrowed(Lut::shipped(table)),
             note: None,
+            spec_err_measured: true,
         }),
     }
 }
@@ -84,6 +100,7 @@ fn native(lut: Lut) -> Result<Loaded> {
     Ok(Loaded {
         lut: Cow::Owned(lut),
         note: None,
+        spec_err_measured: true,
     })
 }
 
@@ -140,7 +157,7 @@ fn read_dds_pair(first: &Path, second: &Path) -> Result<Loaded> {
 }
 
 /// A table in ltc_code's layout: the specular lobe from it, the diffuse lobe from the
-/// embedded table, `spec.err` measured here; validated as any table.
+/// embedded table, `spec.err` not yet measured; validated as any table.
 fn foreign(packed: &Packed, alpha_min: Option<f64>, what: &str, name: &str) -> Result<Loaded> {
     let (alpha_min, how) = match alpha_min {
         Some(a) if a > 0.0 && a < 1.0 => (a, "from its header"),
@@ -154,9 +171,10 @@ fn foreign(packed: &Packed, alpha_min: Option<f64>, what: &str, name: &str) -> R
     Ok(Loaded {
         lut: Cow::Owned(lut),
         note: Some(format!(
-            "{name}: {what} ({n}×{n}) hold the specular lobe only; the diffuse lobe is the embedded classic table's; spec.err is measured here; α_min = {alpha_min:e} {how}",
+            "{name}: {what} ({n}×{n}) hold the specular lobe only; the diffuse lobe is the embedded classic table's; spec.err is measured here where it is shown; α_min = {alpha_min:e} {how}",
             n = packed.size
         )),
+        spec_err_measured: false,
     })
 }
 

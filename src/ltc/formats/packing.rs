@@ -1,6 +1,6 @@
 //! ltc_code's packing of the specular LTC into two RGBA textures (selfshadow/ltc_code
-//! `fit/fitLTC.cpp`, `packTab`), both ways. The mapping, with this project's channels (DESIGN
-//! §2: `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]` in rows, divided by its middle
+//! `fit/fitLTC.cpp`, `packTab`), both ways. The mapping, with this project's channels
+//! (docs/design.md §2: `M⁻¹ = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]` in rows, divided by its middle
 //! element, exactly as ltc_code divides `invM` by `invM[1][1]`):
 //!
 //! | texel | ltc_code (glm, column-major `invM[col][row]`) | this project |
@@ -16,7 +16,7 @@
 //!
 //! A shader rebuilds `M⁻¹` as `mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w))`
 //! (GLSL and WGSL take columns). Cells are in ltc_code's order `a + t·N`: roughness `a`
-//! fastest, the view row `t` slowest, the axes of DESIGN §2.
+//! fastest, the view row `t` slowest, the axes of docs/design.md §2.
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -24,7 +24,7 @@ use rayon::prelude::*;
 use crate::brdf::view_from_theta;
 use crate::ltc::fit::pointwise_error;
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{Channel, Lut, LutCell};
+use crate::ltc::lut::{Channel, Lut, LutCell, LutSample};
 use crate::ltc::sphere::sphere_table_value;
 
 /// ltc_code's two textures, `size × size` texels each, row-major from `(a, t) = (0, 0)`.
@@ -69,14 +69,14 @@ pub fn pack(lut: &Lut) -> Packed {
     }
 }
 
-/// Strata per side of the pointwise error computed for an imported table: the classic fit's
+/// Strata per side of the pointwise error measured for an imported table: the classic fit's
 /// `FitSettings::error_samples`, so that both tables' `spec.err` are measured alike.
 pub const ERROR_SAMPLES: usize = 64;
 
 /// A table from ltc_code's textures: the specular lobe from them (scale 1, its magnitudes as
-/// packed), its pointwise error measured here, and the diffuse lobe — which ltc_code's layout
-/// does not have — sampled from `diffuse` on the same axes (its cells exactly where the sizes
-/// match).
+/// packed) and the diffuse lobe — which ltc_code's layout does not have — sampled from
+/// `diffuse` on the same axes (its cells exactly where the sizes match). `spec.err`, which the
+/// layout lacks too, is left at 0 for `measure_spec_err`: it costs about a millisecond a cell.
 pub fn unpack(p: &Packed, alpha_min: f64, diffuse: &Lut) -> Lut {
     let n = p.size;
     let mut lut = Lut {
@@ -88,7 +88,6 @@ pub fn unpack(p: &Packed, alpha_min: f64, diffuse: &Lut) -> Lut {
         .into_par_iter()
         .map(|k| {
             let (i, j) = (k % n, k / n);
-            let (alpha, theta) = (lut.alpha(i), lut.theta_o(j));
             let last = (n - 1) as f64;
             let (u, v) = diffuse.uv_of_axes(i as f64 / last, j as f64 / last);
             let mut cell = LutCell(diffuse.sample_uv(u, v).0.map(|x| x as f32));
@@ -98,17 +97,26 @@ pub fn unpack(p: &Packed, alpha_min: f64, diffuse: &Lut) -> Lut {
             cell.0[Channel::SpecNorm as usize] = p.tex2[k][0];
             cell.0[Channel::SpecFresnel as usize] = p.tex2[k][1];
             cell.0[Channel::SpecScale as usize] = 1.0;
-            let v = DVec3::from(view_from_theta(theta));
-            let spec = crate::ltc::lut::LutSample(cell.0.map(f64::from))
-                .ltc_pair()
-                .spec;
-            let err = pointwise_error(Lobe::Specular, v, alpha, &spec, ERROR_SAMPLES);
-            cell.0[Channel::SpecErr as usize] = err as f32;
+            cell.0[Channel::SpecErr as usize] = 0.0;
             cell
         })
         .collect();
     lut.cells = cells;
     lut
+}
+
+/// Measures every cell's `spec.err` (in parallel), calling `on_cell` after each.
+pub fn measure_spec_err(lut: &mut Lut, on_cell: &(dyn Fn() + Sync)) {
+    let n = lut.size;
+    let (alpha_min, size) = (lut.alpha_min, lut.size);
+    lut.cells.par_iter_mut().enumerate().for_each(|(k, cell)| {
+        let alpha = crate::ltc::lut::cell_alpha(k % n, size, alpha_min);
+        let v = DVec3::from(view_from_theta(crate::ltc::lut::cell_theta(k / n, size)));
+        let spec = LutSample::of_cell(cell).ltc_pair().spec;
+        let err = pointwise_error(Lobe::Specular, v, alpha, &spec, ERROR_SAMPLES);
+        cell.0[Channel::SpecErr as usize] = err as f32;
+        on_cell();
+    });
 }
 
 /// α_min of a table that does not record it: ltc_code fits the normal-view cell of its

@@ -1,5 +1,5 @@
 //! The table as source code for an engine: a C header with both textures as float arrays,
-//! and WGSL with two `const` arrays and the lookup of DESIGN §2 (the same addressing and
+//! and WGSL with two `const` arrays and the lookup of docs/design.md §2 (the same addressing and
 //! bilinear filtering as `shaders/ltc.wgsl`, clamp-to-edge).
 
 use crate::ltc::formats::Header;

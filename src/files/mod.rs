@@ -1,0 +1,169 @@
+//! Files in and out, so that nothing is lost: a named output is replaced only by a complete
+//! one, a default name never replaces anything, and a set of outputs lands all together or
+//! not at all.
+//!
+//! A default name is claimed when the command starts (an empty file, or a directory, made
+//! exclusively), so that two runs at once never pick the same one and a file that appears
+//! while the command works is never replaced; the output replaces the claim at the end.
+//!
+//! Everything unfinished (temporary files, claimed names, directories made for outputs) is
+//! listed in one registry while it exists, so that an interrupt can remove it all
+//! ([`exit_interrupted`]): a signal skips every `Drop`. Each such path is made and finished
+//! (renamed into place or removed) while the registry is locked, so an interrupt sees every
+//! path either listed or finished, never in between.
+
+mod claim;
+mod outputs;
+#[cfg(test)]
+mod tests;
+mod unfinished;
+
+use std::fs;
+use std::path::{Component, Path, PathBuf};
+
+use crate::error::{Error, Result};
+use unfinished::{next_serial, rename_into_place, unfinished, write_listed};
+
+pub use claim::Claim;
+pub use outputs::Outputs;
+pub use unfinished::exit_interrupted;
+
+/// A text file, without a leading UTF-8 byte-order mark (spreadsheets write one).
+pub fn read_text(path: &Path) -> Result<String> {
+    let name = path.display().to_string();
+    let text = fs::read_to_string(path).map_err(|e| Error::io(&name, "read", &e))?;
+    Ok(match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_string(),
+        None => text,
+    })
+}
+
+/// The directory a file goes into (`.` for a bare name).
+fn parent_dir(path: &Path) -> PathBuf {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
+}
+
+/// Whether `path` can be written: its directory exists and takes new files (a file is made
+/// and removed there: permissions alone do not tell, e.g. for root in /sys), and it is not
+/// itself a directory. Checked before long work, so that a typo costs nothing.
+pub fn check_writable(path: &Path) -> Result<()> {
+    let name = path.display().to_string();
+    let dir = parent_dir(path);
+    if !dir.is_dir() {
+        return Err(Error::input(name, "its directory does not exist"));
+    }
+    if path.is_dir() {
+        return Err(Error::input(name, "is a directory"));
+    }
+    if path.file_name().is_none() {
+        return Err(Error::input(name, "not a file path"));
+    }
+    probe_directory(&dir).map_err(|e| Error::io(name, "write into its directory", &e))
+}
+
+/// Makes and removes a uniquely named file in `dir`. The registry is held throughout, so an
+/// interrupt cannot fall between the two and leave the probe behind.
+pub(super) fn probe_directory(dir: &Path) -> std::io::Result<()> {
+    let probe = dir.join(format!(
+        ".ltc-lab.{}-{}.probe",
+        std::process::id(),
+        next_serial()
+    ));
+    let _list = unfinished();
+    fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&probe)?;
+    fs::remove_file(&probe)
+}
+
+/// Refuses two outputs of one command that name the same file (the second would replace
+/// the first): `outputs` are (flag, path) pairs, and the later flag of a pair is named.
+/// Paths match if they are equal once made absolute and rid of `.` and `..`, or if their
+/// directories exist and are the same directory (through links) and the file names agree.
+pub fn check_distinct(outputs: &[(&str, &Path)]) -> Result<()> {
+    for (k, &(flag, path)) in outputs.iter().enumerate() {
+        if let Some(&(earlier, first)) = outputs[..k].iter().find(|(_, p)| same_file(p, path)) {
+            return Err(Error::input(
+                flag,
+                format!("names the same file as {earlier} ({})", first.display()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn same_file(a: &Path, b: &Path) -> bool {
+    if lexical(a) == lexical(b) {
+        return true;
+    }
+    let real = |p: &Path| Some(fs::canonicalize(parent_dir(p)).ok()?.join(p.file_name()?));
+    matches!((real(a), real(b)), (Some(x), Some(y)) if x == y)
+}
+
+/// `path` made absolute, with `.` dropped and `..` taken off the path lexically.
+fn lexical(path: &Path) -> PathBuf {
+    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let mut out = PathBuf::new();
+    for c in absolute.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                out.pop();
+            }
+            other => out.push(other),
+        }
+    }
+    out
+}
+
+/// A temporary name beside `path`, unique to this process and call.
+pub(super) fn temporary_beside(path: &Path) -> PathBuf {
+    let file_name = path
+        .file_name()
+        .map_or("out".into(), |f| f.to_string_lossy());
+    parent_dir(path).join(format!(
+        ".{file_name}.{}-{}.partial",
+        std::process::id(),
+        next_serial()
+    ))
+}
+
+/// Writes `bytes` to `path` (a file the user named, which may be replaced) through a
+/// temporary file beside it: a failure leaves no partial output and the old file intact.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
+    check_writable(path)?;
+    let name = path.display().to_string();
+    let tmp = temporary_beside(path);
+    write_listed(&tmp, bytes)
+        .and_then(|()| rename_into_place(&tmp, path))
+        .map_err(|e| Error::io(name, "write", &e))
+}
+
+/// `path`, or `stem-2.ext`, `stem-3.ext`… : the candidates for a default output name.
+pub(super) fn numbered(path: &Path, k: usize) -> PathBuf {
+    if k == 1 {
+        return path.to_path_buf();
+    }
+    let stem = path
+        .file_stem()
+        .map_or("out".into(), |s| s.to_string_lossy());
+    let name = match path.extension() {
+        Some(ext) => format!("{stem}-{k}.{}", ext.to_string_lossy()),
+        None => format!("{stem}-{k}"),
+    };
+    // A bare name stays bare (`study-2`, not `./study-2`): it is what the command reports.
+    path.with_file_name(name)
+}
+
+/// How many numbered names a default output tries before giving up.
+pub(super) const MAX_NUMBERED: usize = 10_000;
+
+/// Writes `bytes` under a default name that must never replace a file: `path` if it is
+/// free, else the first free `stem-2.ext`, `stem-3.ext`… Returns the name written.
+pub fn write_new(path: &Path, bytes: &[u8]) -> Result<PathBuf> {
+    Claim::first_free(path)?.fill(bytes)
+}
