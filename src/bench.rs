@@ -154,9 +154,9 @@ pub fn check(
     ctx: &GpuContext,
     light_counts: &[usize],
     (width, height): (usize, usize),
-) -> Result<()> {
+) -> crate::gpu::limits::Result<()> {
     for &n in light_counts {
-        PlaneRenderer::check_light_count(ctx, "--lights", n)?;
+        PlaneRenderer::check_light_count(ctx, n)?;
     }
     crate::gpu::target::check_size(ctx, width, height)
 }

@@ -124,7 +124,15 @@ impl StudyRow {
         };
         let int = |k: usize| -> Result<usize> {
             f[k].parse::<usize>()
-                .map_err(|_| Error::input(at, format!("'{}' is not a whole number", f[k])))
+                .ok()
+                .filter(|&n| n > 0)
+                .ok_or_else(|| Error::input(at, format!("'{}' is not a whole number ≥ 1", f[k])))
+        };
+        // A time of 0 makes fps = 1000/0: the chart froze on it.
+        let time = |k: usize| -> Result<f64> {
+            Some(num(k)?)
+                .filter(|&t| t > 0.0)
+                .ok_or_else(|| Error::input(at, format!("ms_median '{}' must be > 0", f[k])))
         };
         let cull = match f[5] {
             "on" => true,
@@ -148,7 +156,7 @@ impl StudyRow {
             height: int(4)?,
             cull,
             range,
-            ms_median: num(7)?,
+            ms_median: time(7)?,
             rel_rmse: num(9)?,
             max_rel_err: num(10)?,
             p99_rel_err: num(11)?,

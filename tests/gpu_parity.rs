@@ -315,10 +315,10 @@ fn light_counts_zero_one_and_too_many() {
         max >= 20_000,
         "the lab's 20 000-light slider must fit: {max}"
     );
-    PlaneRenderer::check_light_count(&g.ctx, "scene", max).unwrap();
+    PlaneRenderer::check_light_count(&g.ctx, max).unwrap();
     let light_bytes = std::mem::size_of::<ltc_lab::gpu::scene::GpuLight>();
     assert!(max <= ltc_lab::gpu::limits::buffer_max_lights(&g.ctx, light_bytes));
-    let err = PlaneRenderer::check_light_count(&g.ctx, "scene", max + 1)
+    let err = PlaneRenderer::check_light_count(&g.ctx, max + 1)
         .expect_err("one light too many is refused");
     assert!(err.to_string().contains("do not fit"), "{err}");
 }

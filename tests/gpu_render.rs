@@ -295,3 +295,26 @@ fn f16_pairs_are_finite_and_within_half_precision() {
     );
     assert!(f.pixels.iter().all(|p| p.is_finite()) && f.pixels.iter().any(|p| *p != DVec3::ZERO));
 }
+
+/// The library speaks of values, the CLI of flags: a refused image size or light count says
+/// which value and which limit, and names no flag (the lab's window once showed an error
+/// about `--size`).
+#[test]
+fn limits_name_the_value_not_a_flag() {
+    use ltc_lab::gpu::limits::Limited;
+    let Some(g) = gpu_common::gpu() else { return };
+    let side = g.ctx.limits.max_texture_dimension_2d as usize + 1;
+    let too_many = ltc_lab::gpu::plane::PlaneRenderer::max_lights(&g.ctx) + 1;
+    for (lights, size, value) in [
+        (1, (side, 8), Limited::ImageSize),
+        (too_many, (8, 8), Limited::LightCount),
+    ] {
+        let e = ltc_lab::bench::check(&g.ctx, &[lights], size).unwrap_err();
+        assert_eq!(e.value, value, "{e}");
+        let text = ltc_lab::error::Error::from(e).to_string();
+        assert!(
+            text.starts_with(value.name()) && !text.contains("--"),
+            "{text}"
+        );
+    }
+}

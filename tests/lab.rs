@@ -867,3 +867,80 @@ fn dragging_on_a_clipping_picture_draws_the_profiles_line() {
         );
     }
 }
+
+/// No read or persisted timing can hang the lab: a study.csv whose ms_median is 0 (fps =
+/// 1000/0 froze the chart at 100% CPU) is refused naming its line, and a saved chart with an
+/// infinite fps is dropped at start with a message in the window instead of a black one.
+#[test]
+fn zero_or_infinite_timings_are_refused_where_they_are_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let zero = dir.path().join("zero.csv");
+    std::fs::write(
+        &zero,
+        format!(
+            "{}\nltc,0.27,100,320,180,on,2,0,0.23,1e-2,1e-1,1e-2\n",
+            ltc_lab::study::StudyRow::CSV_HEADER
+        ),
+    )
+    .unwrap();
+    let e = ltc_lab::study::read_csv(&zero).unwrap_err();
+    assert!(
+        e.to_string().contains("zero.csv line 2") && e.message.contains("ms_median"),
+        "{e}"
+    );
+    let mut state = maximised(PanelId::Chart);
+    let mut saved = ltc_lab::app::measure::Measurement::default();
+    saved
+        .scaling
+        .push((ltc_lab::render::Method::Ltc, vec![[100.0, f64::INFINITY]]));
+    state.measurement = Some(saved.clone());
+    let Some(h) = lab((1000.0, 600.0), state) else {
+        return;
+    };
+    // Dropped; the chart may show its bundled reference study instead, which plots.
+    let shown = h.state().state.measurement.clone();
+    assert_ne!(shown.as_ref(), Some(&saved));
+    assert!(shown.is_none_or(|m| m.validate().is_ok()));
+    assert!(
+        h.query_by_label_contains("the saved chart was dropped")
+            .is_some(),
+        "no message in the window"
+    );
+}
+
+/// A scene with more lights than the adapter shades is cut to the adapter's limit in the
+/// scene too, not only on the slider, and the window says so (`lab --lights 100000` on
+/// lavapipe kept 100 000 lights behind a slider at 65 024 and showed a black plane).
+#[test]
+fn more_lights_than_the_adapter_shades_are_cut_and_said() {
+    let Some(g) = gpu_common::gpu() else { return };
+    let max = PlaneRenderer::max_lights(&g.ctx);
+    if max >= ltc_lab::scene::MAX_LIGHTS {
+        gpu_common::skipped("this adapter shades every light a scene may hold");
+        return;
+    }
+    let mut state = maximised(PanelId::Chart);
+    state.set_light_count(max + 1);
+    let render_state = egui_kittest::wgpu::create_render_state(
+        ltc_lab::app::shading::wgpu_setup(),
+        egui_wgpu::RendererOptions::PREDICTABLE,
+    );
+    let app = LabApp::new(state, Some(&render_state));
+    assert_eq!(app.state.scene.lights.len(), max);
+    assert_eq!(app.state.light_count, max);
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(800.0, 500.0))
+        .renderer(WgpuTestRenderer::from_render_state(render_state))
+        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
+    h.run_steps(2);
+    assert!(
+        h.query_by_label_contains(&format!("the first {max} are kept"))
+            .is_some(),
+        "the cut is not said in the window"
+    );
+    assert!(
+        h.query_by_label_contains(&format!("at most {max} lights: this adapter's limit"))
+            .is_some(),
+        "the slider's limit is not said beside it"
+    );
+}

@@ -276,12 +276,8 @@ fn gpu_light_counts_zero_one_and_the_maximum() {
         "{max} lights give {many}, one gives {one}"
     );
     if PlaneRenderer::max_lights(&g.ctx) < 1 << 22 {
-        let err = PlaneRenderer::check_light_count(
-            &g.ctx,
-            "scene",
-            PlaneRenderer::max_lights(&g.ctx) + 1,
-        )
-        .unwrap_err();
+        let err = PlaneRenderer::check_light_count(&g.ctx, PlaneRenderer::max_lights(&g.ctx) + 1)
+            .unwrap_err();
         assert!(err.to_string().contains("lights do not fit"), "{err}");
     }
 }

@@ -79,7 +79,7 @@ pub fn show(
     shading_rules(ui, s);
     ui.separator();
     ui.strong("Scene");
-    scene_files(ui, s, message);
+    scene_files(ui, s, shading.max_lights(), message);
     let action = table(ui, s, other, message);
     action.or_else(|| save_buttons(ui, s))
 }
@@ -157,6 +157,10 @@ fn lights(ui: &mut egui::Ui, s: &mut LabState, max: usize) {
             s.set_light_count(count);
         }
     });
+    // The slider clamps a typed count without a word: say it where it was typed.
+    if max < MAX_LIGHT_SLIDER && s.light_count >= max {
+        ui.small(format!("at most {max} lights: this adapter's limit"));
+    }
     ui.checkbox(&mut s.cull, "cull by range")
         .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. The image is the same to the bit; with short ranges it is much faster");
 }
@@ -198,7 +202,12 @@ fn shading_rules(ui: &mut egui::Ui, s: &mut LabState) {
 }
 
 /// The presets, and a scene file to load or save (only the file named is written).
-fn scene_files(ui: &mut egui::Ui, s: &mut LabState, message: &mut Option<Message>) {
+fn scene_files(
+    ui: &mut egui::Ui,
+    s: &mut LabState,
+    max_lights: usize,
+    message: &mut Option<Message>,
+) {
     ui.horizontal_wrapped(|ui| {
         for (name, _) in PRESETS {
             if ui
@@ -206,9 +215,7 @@ fn scene_files(ui: &mut egui::Ui, s: &mut LabState, message: &mut Option<Message
                 .on_hover_text("Load this shipped preset")
                 .clicked()
             {
-                s.scene = preset(name);
-                s.light_count = s.scene.lights.len();
-                s.selected_light = None;
+                *message = s.use_scene(preset(name), max_lights).map(Message::error);
             }
         }
     });
@@ -223,11 +230,10 @@ fn scene_files(ui: &mut egui::Ui, s: &mut LabState, message: &mut Option<Message
             .clicked()
         {
             *message = Some(match Scene::load(Path::new(&s.scene_path)) {
-                Ok(scene) => {
-                    s.light_count = scene.lights.len();
-                    s.scene = scene;
-                    Message::note(format!("loaded {}", s.scene_path))
-                }
+                Ok(scene) => match s.use_scene(scene, max_lights) {
+                    Some(cut) => Message::error(format!("loaded {}; {cut}", s.scene_path)),
+                    None => Message::note(format!("loaded {}", s.scene_path)),
+                },
                 Err(e) => Message::error(e.to_string()),
             });
         }

@@ -60,6 +60,38 @@ impl Measurement {
     }
 }
 
+impl Measurement {
+    /// Why the chart cannot plot this, if it cannot: every time and fps finite and > 0, every
+    /// error finite and ≥ 0. A zero time (fps = 1000/0) or an infinite one froze the plot's
+    /// axes at 100% CPU; a persisted one did so at every start.
+    pub fn validate(&self) -> Result<(), String> {
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        if let Some(p) = self
+            .points
+            .iter()
+            .find(|p| !(positive(p.ms) && p.rel_rmse.is_finite() && p.rel_rmse >= 0.0))
+        {
+            return Err(format!(
+                "point '{}' has time {} ms and error {}: times must be finite and > 0, errors finite",
+                p.label,
+                crate::error::number(p.ms),
+                crate::error::number(p.rel_rmse)
+            ));
+        }
+        for (method, fps) in &self.scaling {
+            if let Some([lights, f]) = fps.iter().find(|[n, f]| !positive(*n) || !positive(*f)) {
+                return Err(format!(
+                    "{} at {} lights has {} fps: both must be finite and > 0",
+                    method.name(),
+                    crate::error::number(*lights),
+                    crate::error::number(*f)
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
 /// fps against the light count from a study's rows: per method (its variant of table A),
 /// its first α and culling setting, 1000 / median ms.
 fn study_scaling(rows: &[crate::study::StudyRow]) -> Vec<(Method, Vec<[f64; 2]>)> {

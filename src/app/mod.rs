@@ -57,13 +57,23 @@ const STORAGE_KEY: &str = "ltc-lab-state";
 impl LabApp {
     /// The lab drawing with the window's wgpu device (`render_state`: eframe's, or a test
     /// harness's); without one, the plane is drawn by the CPU reference.
-    pub fn new(state: LabState, render_state: Option<&egui_wgpu::RenderState>) -> Self {
+    pub fn new(mut state: LabState, render_state: Option<&egui_wgpu::RenderState>) -> Self {
+        // A saved chart that cannot be plotted is dropped, and the window says why.
+        let refused = state.measurement.as_ref().and_then(|m| m.validate().err());
+        if refused.is_some() {
+            state.measurement = None;
+        }
+        let refused =
+            refused.map(|why| format!("the saved chart was dropped ({why}): measure again"));
         // The chosen shipped table; a persisted `lut_path` is loaded again only on request,
         // so a file that vanished since cannot stop the lab from starting.
         let lut = Lut::shipped(state.table).clone();
         let other = other::OtherTable::shipped_other(state.table);
         let mut shading = shading::Shading::new(&lut, render_state);
         shading.set_lut_b(Some(&other.lut));
+        // No more lights than this adapter shades: the slider and the scene agree.
+        let cut = state.keep_lights(shading.max_lights());
+        let notice: Vec<String> = [refused, cut].into_iter().flatten().collect();
         Self {
             lut_name: state.table.name().to_string(),
             other,
@@ -75,7 +85,7 @@ impl LabApp {
             chart: chart::ChartPanel::default(),
             lut,
             shading,
-            message: None,
+            message: (!notice.is_empty()).then(|| Message::error(notice.join("; "))),
             screenshot: None,
         }
     }

@@ -255,6 +255,28 @@ impl LabState {
         s
     }
 
+    /// Shows `scene` (a preset, a loaded file, the one the lab started with), its lights cut
+    /// to the `max_lights` this adapter shades, which it then says; the light selection is
+    /// cleared, as it may name a light the new scene lacks.
+    pub fn use_scene(&mut self, scene: Scene, max_lights: usize) -> Option<String> {
+        self.scene = scene;
+        self.selected_light = None;
+        self.keep_lights(max_lights)
+    }
+
+    /// Cuts the scene's lights to the `max_lights` this adapter shades, and says so.
+    pub fn keep_lights(&mut self, max_lights: usize) -> Option<String> {
+        let held = self.scene.lights.len();
+        self.scene.lights.truncate(max_lights);
+        self.light_count = self.scene.lights.len();
+        self.selected_light = self.selected_light.filter(|&k| k < self.light_count);
+        (held > max_lights).then(|| {
+            format!(
+                "the scene holds {held} lights, more than the {max_lights} this adapter shades at once: the first {max_lights} are kept"
+            )
+        })
+    }
+
     /// `count` lights from the seeded generator, as the lights slider makes them (heights
     /// 0.05–0.6, paper-100's intensities and range); they replace the current ones.
     pub fn set_light_count(&mut self, count: usize) {

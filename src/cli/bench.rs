@@ -40,7 +40,7 @@ pub fn run(a: &Args) -> Result<()> {
     }
     let lut = a.lut.load()?;
     let ctx = GpuContext::new()?;
-    ltc_lab::bench::check(&ctx, &a.lights, a.size)?;
+    ltc_lab::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
     let device = ctx.describe();
     eprintln!("benchmarking on {device}");
     if !ctx.has_timestamps() {

@@ -18,6 +18,7 @@ use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Parser, Subcommand};
 
 use ltc_lab::error::{Error, Result};
+use ltc_lab::gpu::limits::{LimitError, Limited};
 use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::{Lut, Table};
 
@@ -214,6 +215,16 @@ pub fn check_frames_and_lights(frames: usize, lights: &[usize]) -> Result<()> {
         )),
         None => Ok(()),
     }
+}
+
+/// A value beyond the adapter's limits, named by the flag it came from.
+pub fn flag_of(e: LimitError) -> Error {
+    let flag = match e.value {
+        Limited::ImageSize => "--size",
+        Limited::LightCount => "--lights",
+        Limited::TableSize => "--lut",
+    };
+    e.named(flag)
 }
 
 /// Writes `text` to standard output. A closed pipe (`| head -1`) ends the output quietly: the

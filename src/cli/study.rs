@@ -61,7 +61,7 @@ pub fn run(a: &Args) -> Result<()> {
     };
     let dir = out.dir().to_path_buf();
     let ctx = GpuContext::new()?;
-    ltc_lab::bench::check(&ctx, &a.lights, a.size)?;
+    ltc_lab::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
     let device = ctx.describe();
     eprintln!("study on {device}");
     let start = Instant::now();

@@ -1,8 +1,57 @@
 //! What the adapter can hold, checked before any work: the lights, the image and its
-//! read-back, the LUT. Each refusal names the input and the limit it exceeds.
+//! read-back, the LUT. Each refusal is a `LimitError`: which value and the limit it exceeds;
+//! the caller names where the value came from (the CLI its flag, a scene its file).
 
-use crate::error::{Error, Result};
+use crate::error::Error;
 use crate::gpu::GpuContext;
+
+/// The values the adapter limits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Limited {
+    /// An image's width and height.
+    ImageSize,
+    /// How many lights are shaded at once.
+    LightCount,
+    /// A LUT's cells per side.
+    TableSize,
+}
+
+impl Limited {
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::ImageSize => "image size",
+            Self::LightCount => "light count",
+            Self::TableSize => "LUT",
+        }
+    }
+}
+
+/// A value beyond the adapter's limits, and the sentence naming the limit.
+#[derive(Debug, thiserror::Error)]
+#[error("{}: {message}", value.name())]
+pub struct LimitError {
+    pub value: Limited,
+    pub message: String,
+}
+
+impl LimitError {
+    fn new(value: Limited, message: String) -> Self {
+        Self { value, message }
+    }
+
+    /// Bad input named `input` (a flag, a file) instead of the value.
+    pub fn named(self, input: &str) -> Error {
+        Error::input(input, self.message)
+    }
+}
+
+impl From<LimitError> for Error {
+    fn from(e: LimitError) -> Self {
+        Error::input(e.value.name(), e.message)
+    }
+}
+
+pub type Result<T, E = LimitError> = std::result::Result<T, E>;
 
 /// The bytes one storage binding may hold on this device.
 fn storage_binding_bytes(ctx: &GpuContext) -> u64 {
@@ -34,18 +83,12 @@ pub fn max_lights(ctx: &GpuContext, light_bytes: usize) -> usize {
     light_loop_limit(ctx).map_or(buffer, |l| l.min(buffer))
 }
 
-/// Refuses more lights than one storage binding holds or the driver's loops can sum;
-/// `input` names where the count came from (`scene.toml`, `--lights`).
-pub fn check_light_count(
-    ctx: &GpuContext,
-    input: &str,
-    count: usize,
-    light_bytes: usize,
-) -> Result<()> {
+/// Refuses more lights than one storage binding holds or the driver's loops can sum.
+pub fn check_light_count(ctx: &GpuContext, count: usize, light_bytes: usize) -> Result<()> {
     let buffer = buffer_max_lights(ctx, light_bytes);
     if count > buffer {
-        return Err(Error::input(
-            input,
+        return Err(LimitError::new(
+            Limited::LightCount,
             format!(
                 "{count} lights do not fit in one GPU storage buffer on {}: at most {buffer} lights of {light_bytes} bytes (max_storage_buffer_binding_size {})",
                 ctx.info.name,
@@ -54,10 +97,10 @@ pub fn check_light_count(
         ));
     }
     if let Some(limit) = light_loop_limit(ctx).filter(|&l| count > l) {
-        return Err(Error::input(
-            input,
+        return Err(LimitError::new(
+            Limited::LightCount,
             format!(
-                "{count} lights do not fit in one shader invocation on {}: its driver ends shader loops after {limit} lights (use --cpu, or a hardware GPU)",
+                "{count} lights do not fit in one shader invocation on {}: its driver ends shader loops after {limit} lights (render on the CPU, or on a hardware GPU)",
                 ctx.info.name
             ),
         ));
@@ -75,8 +118,8 @@ pub fn check_image_size(
 ) -> Result<()> {
     let max_side = ctx.limits.max_texture_dimension_2d as usize;
     if width > max_side || height > max_side {
-        return Err(Error::input(
-            "--size",
+        return Err(LimitError::new(
+            Limited::ImageSize,
             format!(
                 "{width}×{height} exceeds the GPU's largest texture side (max_texture_dimension_2d {max_side})"
             ),
@@ -84,8 +127,8 @@ pub fn check_image_size(
     }
     let bytes = readback_bytes(width, height, texel_bytes);
     if bytes > ctx.limits.max_buffer_size {
-        return Err(Error::input(
-            "--size",
+        return Err(LimitError::new(
+            Limited::ImageSize,
             format!(
                 "{width}×{height} needs a {} read-back buffer, more than the GPU's max_buffer_size ({})",
                 mib(bytes),
@@ -107,8 +150,8 @@ pub fn readback_bytes(width: usize, height: usize, texel_bytes: u32) -> u64 {
 pub fn check_lut_size(ctx: &GpuContext, lut_size: usize, packed_bytes: u64) -> Result<()> {
     let max = storage_binding_bytes(ctx);
     if packed_bytes > max {
-        return Err(Error::input(
-            "LUT",
+        return Err(LimitError::new(
+            Limited::TableSize,
             format!(
                 "a {lut_size}×{lut_size} table needs {} of GPU storage, more than {}'s max_storage_buffer_binding_size ({})",
                 mib(packed_bytes),

@@ -213,15 +213,15 @@ impl PlaneRenderer {
         limits::max_lights(ctx, std::mem::size_of::<GpuLight>())
     }
 
-    /// Refuses more lights than this device shades; `input` names the count's source.
-    pub fn check_light_count(ctx: &GpuContext, input: &str, count: usize) -> Result<()> {
-        limits::check_light_count(ctx, input, count, std::mem::size_of::<GpuLight>())
+    /// Refuses more lights than this device shades.
+    pub fn check_light_count(ctx: &GpuContext, count: usize) -> limits::Result<()> {
+        limits::check_light_count(ctx, count, std::mem::size_of::<GpuLight>())
     }
 
     /// Refuses what this device cannot render, before any work: the lights, a method it has
     /// no shaders for, a second table it was not given, the image.
     pub fn check(&self, ctx: &GpuContext, scene: &Scene, settings: &RenderSettings) -> Result<()> {
-        Self::check_light_count(ctx, "scene", scene.lights.len())?;
+        Self::check_light_count(ctx, scene.lights.len()).map_err(|e| e.named("scene"))?;
         if let Some(m) = settings.methods().into_iter().find(|&m| !self.supports(m)) {
             return Err(Error::input(
                 m.name(),
@@ -231,7 +231,7 @@ impl PlaneRenderer {
         if settings.table_b && self.tables.b.is_none() {
             return Err(Error::input("table B", "no second table was given"));
         }
-        target::check_size(ctx, settings.width, settings.height)
+        Ok(target::check_size(ctx, settings.width, settings.height)?)
     }
 
     /// Starts a render of `scene`: lights, uniforms and the target of its size, made or kept;

@@ -4,7 +4,6 @@
 
 use glam::DVec3;
 
-use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::limits;
 use crate::gpu::scene::tiles;
@@ -36,7 +35,7 @@ pub struct Target {
 }
 
 /// Refuses an image whose texture, sums or read-back the device cannot hold.
-pub fn check_size(ctx: &GpuContext, width: usize, height: usize) -> Result<()> {
+pub fn check_size(ctx: &GpuContext, width: usize, height: usize) -> limits::Result<()> {
     limits::check_image_size(ctx, width, height, TEXEL_BYTES)?;
     let sums = (width * height) as u64 * SUM_BYTES;
     let max = ctx
@@ -44,13 +43,13 @@ pub fn check_size(ctx: &GpuContext, width: usize, height: usize) -> Result<()> {
         .max_storage_buffer_binding_size
         .min(ctx.limits.max_buffer_size);
     if sums > max {
-        return Err(Error::input(
-            "--size",
-            format!(
+        return Err(limits::LimitError {
+            value: limits::Limited::ImageSize,
+            message: format!(
                 "{width}×{height} needs {sums} bytes per buffer for its per-pixel sums, more than {}'s max_storage_buffer_binding_size ({max} bytes)",
                 ctx.info.name
             ),
-        ));
+        });
     }
     Ok(())
 }
