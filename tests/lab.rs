@@ -944,3 +944,22 @@ fn more_lights_than_the_adapter_shades_are_cut_and_said() {
         "the slider's limit is not said beside it"
     );
 }
+
+/// An image that is out of date is never shown as if current: at 0 lights the plane is
+/// black (the last 100-light image stayed on screen under "done: 0 / 0 lights").
+#[test]
+fn no_lights_leave_no_old_image_on_the_plane() {
+    let Some(mut h) = lab((800.0, 500.0), maximised(PanelId::Plane)) else {
+        return;
+    };
+    let lit = |f: &Frame| f.pixels.iter().filter(|p| p.x + p.y + p.z > 0.0).count();
+    assert!(
+        lit(&plane_image(&h)) > 0,
+        "the default scene lights the plane"
+    );
+    h.state_mut().state.set_light_count(0);
+    settle(&mut h);
+    let frame = plane_image(&h);
+    assert_eq!(h.state().shading.progress.total, 0);
+    assert_eq!(lit(&frame), 0, "the last image is still there");
+}

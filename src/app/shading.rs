@@ -272,6 +272,11 @@ impl Shading {
                     ..Progress::default()
                 };
                 self.key = Some(key);
+                // No lights: nothing to sum, but the last image must go. One empty chunk
+                // resolves the cleared sums: the plane black, as it is.
+                if self.error.is_none() && self.progress.total == 0 {
+                    g.chunk(ui, &mut self.progress, self.budget_ms, kind, scene.exposure);
+                }
             }
             let gate_open = self.gate.as_ref().is_none_or(|open| open());
             let ready = g.ready(&mut self.progress);

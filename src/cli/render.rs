@@ -202,7 +202,10 @@ fn table_b(a: &Args) -> Result<Option<std::borrow::Cow<'static, Lut>>> {
 
 /// The GPU render, checked against the adapter's limits before any work.
 fn render_gpu(scene: &Scene, tables: Tables<'_>, s: &RenderSettings) -> Result<(Frame, String)> {
-    let ctx = GpuContext::new()?;
+    let ctx = GpuContext::new().map_err(|e| Error {
+        message: format!("{} (--cpu)", e.message),
+        ..e
+    })?;
     ltc_lab::gpu::target::check_size(&ctx, s.width, s.height).map_err(super::flag_of)?;
     let mut renderer = PlaneRenderer::new(&ctx, tables.a, ShaderChecks::Checked)?;
     if s.table_b {

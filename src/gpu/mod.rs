@@ -5,6 +5,7 @@ pub mod bin;
 pub mod binding;
 pub mod brdf;
 pub mod display;
+pub mod driver_output;
 pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
@@ -66,6 +67,21 @@ impl GpuContext {
     /// The default adapter without a window (`WGPU_BACKEND` picks the backend), with
     /// timestamp queries where it has them and its own limits (for the largest light buffer).
     pub fn new() -> Result<Self, Error> {
+        let (opened, drivers_said) = driver_output::held_back(Self::open);
+        opened.map_err(|e| match drivers_said.as_str() {
+            "" => e,
+            said => Error {
+                message: format!(
+                    "{} (the driver said: {})",
+                    e.message,
+                    said.replace('\n', "; ")
+                ),
+                ..e
+            },
+        })
+    }
+
+    fn open() -> Result<Self, Error> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
@@ -79,7 +95,7 @@ impl GpuContext {
         .map_err(|e| {
             Error::machine(
                 "GPU",
-                format!("no adapter found ({e}); install a Vulkan driver (mesa-vulkan-drivers gives a CPU one) or render with --cpu"),
+                format!("no adapter found ({e}); install a Vulkan driver (mesa-vulkan-drivers gives a CPU one) or render on the CPU"),
             )
         })?;
         let info = adapter.get_info();

@@ -672,3 +672,58 @@ fn an_unfilled_default_name_is_removed() {
     assert!(stderr(&o).contains("interrupted"), "{}", stderr(&o));
     assert!(!claimed.exists(), "the interrupted render left its claim");
 }
+
+/// Where `XDG_RUNTIME_DIR` is not set (a container, an SSH session, `env -i`), no driver
+/// chatter comes ahead of the program's own message: Mesa's device-select layer made
+/// libwayland print "error: XDG_RUNTIME_DIR is invalid or not set in the environment." twice
+/// before every GPU command's output, and a refusal was three lines instead of one.
+#[test]
+fn no_driver_chatter_without_a_runtime_directory() {
+    let Some(g) = gpu() else { return };
+    // Beyond the GPU's limits but not --size's (as in the test above).
+    let max_side = g.ctx.limits.max_texture_dimension_2d as usize;
+    let size = if max_side < 16384 {
+        format!("{}x8", max_side + 1)
+    } else {
+        "16384x16384".into()
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("x.png");
+    let o = exe()
+        .env_remove("XDG_RUNTIME_DIR")
+        .args([
+            "render",
+            "--scene",
+            &preset("figure2-normal.toml"),
+            "--method",
+            "ltc",
+            "--size",
+            &size,
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_refused(&o, "--size");
+    let ok = exe()
+        .env_remove("XDG_RUNTIME_DIR")
+        .args([
+            "render",
+            "--scene",
+            &preset("figure2-normal.toml"),
+            "--method",
+            "ltc",
+            "--size",
+            "8x8",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(ok.status.success(), "{}", stderr(&ok));
+    assert!(
+        stderr(&ok).starts_with("rendered "),
+        "something came first: {}",
+        stderr(&ok)
+    );
+}

@@ -1,0 +1,52 @@
+//! What drivers print while an adapter opens. Mesa's Vulkan device-select layer connects to
+//! a Wayland display to find the default GPU, and where `XDG_RUNTIME_DIR` is not set (a
+//! container, an SSH session, `env -i`) libwayland prints "error: XDG_RUNTIME_DIR is invalid
+//! or not set in the environment." twice: ahead of the program's own output, or of its real
+//! error. wgpu always enables the Wayland surface extension, and the layer can only be
+//! turned off through the environment, which this program does not change. So the
+//! process's standard error is held back while the adapter opens: dropped when it opens,
+//! handed to the error when it does not.
+
+/// Runs `open` with standard error written to an unlinked temporary file; its result, and
+/// what was written meanwhile (empty where standard error could not be redirected).
+#[cfg(unix)]
+pub fn held_back<T>(open: impl FnOnce() -> T) -> (T, String) {
+    use std::io::{Read, Seek};
+    let Some((saved, mut file)) = redirect() else {
+        return (open(), String::new());
+    };
+    let out = open();
+    // Restored before anything else is said; a failure to restore leaves it where it is.
+    let _ = nix::unistd::dup2_stderr(&saved);
+    let mut bytes = Vec::new();
+    let _ = file.rewind().and_then(|()| file.read_to_end(&mut bytes));
+    (out, String::from_utf8_lossy(&bytes).trim().to_string())
+}
+
+#[cfg(not(unix))]
+pub fn held_back<T>(open: impl FnOnce() -> T) -> (T, String) {
+    (open(), String::new())
+}
+
+/// Standard error sent to a new temporary file: the saved descriptor and the file.
+#[cfg(unix)]
+fn redirect() -> Option<(std::os::fd::OwnedFd, std::fs::File)> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static SERIAL: AtomicUsize = AtomicUsize::new(0);
+    let path = std::env::temp_dir().join(format!(
+        ".ltc-lab-driver-output.{}-{}",
+        std::process::id(),
+        SERIAL.fetch_add(1, Ordering::Relaxed)
+    ));
+    let file = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create_new(true)
+        .open(&path)
+        .ok()?;
+    // Unlinked at once: nothing is left behind, whatever happens next.
+    std::fs::remove_file(&path).ok()?;
+    let saved = nix::unistd::dup(std::io::stderr()).ok()?;
+    nix::unistd::dup2_stderr(&file).ok()?;
+    Some((saved, file))
+}
