@@ -155,10 +155,12 @@ fn moving_alpha_changes_the_matrix_and_the_plane() {
     let before_alpha = h.state().state.alpha();
     let before_matrix = h.state().state.ltc_pair(&h.state().lut).spec.cos_from_brdf;
     let before_plane = plane_image(&h);
-    assert!(
-        h.query_by_label_contains(&format!("α = {before_alpha:.4}"))
+    // The matrix panel's own line ("specular lobe at θo = …, α = …"), not the lobe panel's.
+    let shown = |h: &Harness<'static, LabApp>, a: f64| {
+        h.query_by_label_contains(&format!(", α = {a:.4} (r = "))
             .is_some()
-    );
+    };
+    assert!(shown(&h, before_alpha));
     let slider = h.get_by_role_and_label(Role::Slider, "α");
     slider.focus();
     h.run_steps(1);
@@ -178,9 +180,8 @@ fn moving_alpha_changes_the_matrix_and_the_plane() {
         before_matrix,
         "the matrix did not change"
     );
-    let shown = |a: f64| h.query_by_label_contains(&format!("α = {a:.4}")).is_some();
     assert!(
-        shown(app.state.alpha()) && !shown(before_alpha),
+        shown(&h, app.state.alpha()) && !shown(&h, before_alpha),
         "the matrix panel does not show the new α"
     );
     let after_plane = plane_image(&h);
@@ -962,4 +963,80 @@ fn no_lights_leave_no_old_image_on_the_plane() {
     let frame = plane_image(&h);
     assert_eq!(h.state().shading.progress.total, 0);
     assert_eq!(lit(&frame), 0, "the last image is still there");
+}
+
+/// A table used from a file is named as table A everywhere and survives a restart: after
+/// *use LUT* with an ltc.js, "classic" stayed lit, and after a restart the classic table
+/// shaded while the field still showed ltc.js. A file gone since is said, not silently lost.
+#[test]
+fn a_table_from_a_file_is_the_one_shown_and_survives_a_restart() {
+    use egui_kittest::kittest::NodeT;
+    use ltc_lab::ltc::formats::{self, Export, Header, dds::Precision};
+    use ltc_lab::ltc::lut::{Lut, Table};
+    let Some(mut h) = lab((1600.0, 900.0), LabState::default()) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let js = dir.path().join("point.js");
+    let point = Lut::shipped(Table::Point);
+    let header = Header::new(point, "test", Some(Table::Point));
+    formats::export(point, &header, Export::LtcCodeJs, Precision::F32, &js).unwrap();
+    let selected = |h: &Harness<'static, LabApp>, label: &str| {
+        // egui reports a selectable label's state as toggled.
+        h.get_by_label(label).accesskit_node().toggled() == Some(egui::accesskit::Toggled::True)
+    };
+    assert!(selected(&h, "classic"));
+    h.state_mut().state.lut_path = js.display().to_string();
+    h.run_steps(1);
+    h.get_by_label("use LUT").click();
+    h.run_steps(2);
+    assert!(
+        !selected(&h, "classic") && !selected(&h, "point"),
+        "a shipped table still lit"
+    );
+    // Named in the side panel and on the lobe panel's face.
+    assert!(
+        h.query_all_by_label_contains(&format!("table A: {}", js.display()))
+            .count()
+            >= 2
+    );
+    // The next start shades with the same file.
+    let saved = h.state().state.clone();
+    let again = LabApp::new(saved.clone(), None);
+    assert_eq!(again.lut, h.state().lut);
+    assert_eq!(again.lut_name, js.display().to_string());
+    // Gone since: the shipped table shades, and the window says why.
+    std::fs::remove_file(&js).unwrap();
+    let lost = LabApp::new(saved, None);
+    assert_eq!(&lost.lut, Lut::embedded());
+    assert_eq!(lost.state.table_file, None);
+    let m = lost.message.expect("a message");
+    assert!(
+        m.is_error && m.text.contains("cannot be read again"),
+        "{}",
+        m.text
+    );
+    // Choosing a shipped table lights it again and forgets the file.
+    h.get_by_label("point").click();
+    h.run_steps(2);
+    assert!(selected(&h, "point"));
+    assert_eq!(h.state().state.table_file, None);
+}
+
+/// The lobe panel says on its face what it shows (θo, α, the table), so that a picture of it
+/// taken with the controls folded still has its parameters.
+#[test]
+fn the_lobe_panel_prints_its_parameters_on_its_face() {
+    let mut state = maximised(PanelId::Lobe);
+    state.theta_o_deg = 47.0;
+    state.controls_hidden = true;
+    let Some(h) = lab((900.0, 600.0), state) else {
+        return;
+    };
+    let alpha = h.state().state.alpha();
+    let face = format!("θo = 47.0°   α = {alpha:.4}   table A: classic");
+    assert!(
+        h.query_by_label_contains(&face).is_some(),
+        "no '{face}' on the lobe panel"
+    );
 }

@@ -263,18 +263,23 @@ fn table(
     let mut action = None;
     ui.horizontal(|ui| {
         ui.label("LTC table:");
-        let before = s.table;
         for (t, hover) in [
             (Table::Classic, "ltc_code's fit (luts/ltc.exr): made for area lights' integrals"),
             (Table::Point, "The point-light fit (luts/ltc_point.exr): minimizes ∫|n·D − f·cos| / ∫ f·cos, what one point light sees"),
         ] {
-            ui.selectable_value(&mut s.table, t, t.name()).on_hover_text(hover);
-        }
-        if s.table != before {
-            action = Some(Action::UseLut(Lut::shipped(s.table).clone(), s.table.name().into()));
-            s.lut_path.clear();
+            // A shipped table is lit only while no file shades instead of it.
+            let chosen = s.table_file.is_none() && s.table == t;
+            if ui.selectable_label(chosen, t.name()).on_hover_text(hover).clicked() && !chosen {
+                s.table = t;
+                s.table_file = None;
+                s.lut_path.clear();
+                action = Some(Action::UseLut(Lut::shipped(t).clone(), t.name().into()));
+            }
         }
     });
+    if let Some(file) = &s.table_file {
+        ui.small(format!("table A: {file}"));
+    }
     ui.horizontal(|ui| {
         ui.add(egui::TextEdit::singleline(&mut s.lut_path).desired_width(120.0).hint_text("embedded LUT"))
             .on_hover_text("An LTC table: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
@@ -282,6 +287,11 @@ fn table(
             *message = Some(match load(&s.lut_path) {
                 Ok((lut, name, note)) => {
                     let text = format!("shading with {name}{note}");
+                    // The embedded table (an empty field) is the shipped classic one.
+                    s.table_file = (!s.lut_path.trim().is_empty()).then(|| s.lut_path.trim().to_string());
+                    if s.table_file.is_none() {
+                        s.table = Table::Classic;
+                    }
                     action = Some(Action::UseLut(lut, name));
                     Message::note(text)
                 }
@@ -311,7 +321,7 @@ fn table(
 
 /// The table in the file at `path` (the embedded one where empty), its name for labels, and
 /// what the file could not hold (ltc_code's layout has no diffuse lobe), as ". note".
-fn load(path: &str) -> Result<(Lut, String, String), String> {
+pub(crate) fn load(path: &str) -> Result<(Lut, String, String), String> {
     let path = path.trim();
     let mut loaded = if path.is_empty() {
         formats::load(None, Table::Classic)

@@ -40,10 +40,27 @@ impl LobePanel {
         &mut self,
         ui: &mut egui::Ui,
         s: &mut LabState,
-        lut: &Lut,
+        (lut, lut_name): (&Lut, &str),
         refit: Option<(Lobe, Ltc)>,
         other: &OtherTable,
     ) {
+        // On the panel's face, so that a picture of it (a slide made with the controls
+        // folded) carries what it shows.
+        let b = if s.overlay_other_fit {
+            format!(", B: {}", other.name)
+        } else {
+            String::new()
+        };
+        let refitted = if refit.is_some_and(|(lobe, _)| lobe == s.lobe) {
+            " (refitted)"
+        } else {
+            ""
+        };
+        ui.strong(format!(
+            "θo = {:.1}°   α = {:.4}   table A: {lut_name}{refitted}{b}",
+            s.theta_o_deg,
+            s.alpha()
+        ));
         ui.horizontal(|ui| {
             ui.selectable_value(&mut s.lobe, Lobe::Specular, "specular")
                 .on_hover_text("GGX f_s·cos with F = 1 against n_s·D_s");

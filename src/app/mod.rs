@@ -65,17 +65,17 @@ impl LabApp {
         }
         let refused =
             refused.map(|why| format!("the saved chart was dropped ({why}): measure again"));
-        // The chosen shipped table; a persisted `lut_path` is loaded again only on request,
-        // so a file that vanished since cannot stop the lab from starting.
-        let lut = Lut::shipped(state.table).clone();
+        // Table A: the file it was loaded from, read again; one that vanished or broke since
+        // cannot stop the lab from starting: the shipped table shades, and the window says so.
+        let (lut, lut_name, lost) = table_a(&mut state);
         let other = other::OtherTable::shipped_other(state.table);
         let mut shading = shading::Shading::new(&lut, render_state);
         shading.set_lut_b(Some(&other.lut));
         // No more lights than this adapter shades: the slider and the scene agree.
         let cut = state.keep_lights(shading.max_lights());
-        let notice: Vec<String> = [refused, cut].into_iter().flatten().collect();
+        let notice: Vec<String> = [refused, lost, cut].into_iter().flatten().collect();
         Self {
-            lut_name: state.table.name().to_string(),
+            lut_name,
             other,
             state,
             lobe: lobe::LobePanel,
@@ -219,8 +219,9 @@ impl LabApp {
             match id {
                 PanelId::Lobe => {
                     let refit = self.matrix.refit_ltc(&self.state);
+                    let table = (&self.lut, self.lut_name.as_str());
                     self.lobe
-                        .show(ui, &mut self.state, &self.lut, refit, &self.other);
+                        .show(ui, &mut self.state, table, refit, &self.other);
                 }
                 PanelId::Matrix => {
                     let tables = (&self.lut, self.lut_name.as_str(), &self.other);
@@ -291,6 +292,30 @@ impl LabApp {
             Err(e) => Message::error(e.to_string()),
         });
         self.screenshot = None;
+    }
+}
+
+/// Table A as `state` says (its file read again, or the shipped table), its name, and why a
+/// file could not be read again (the file is then forgotten).
+fn table_a(state: &mut LabState) -> (Lut, String, Option<String>) {
+    let shipped = |state: &LabState| {
+        let t = state.table;
+        (Lut::shipped(t).clone(), t.name().to_string())
+    };
+    let Some(file) = state.table_file.clone() else {
+        let (lut, name) = shipped(state);
+        return (lut, name, None);
+    };
+    match controls::load(&file) {
+        Ok((lut, name, _)) => (lut, name, None),
+        Err(e) => {
+            state.table_file = None;
+            let (lut, name) = shipped(state);
+            let why = format!(
+                "table A was {file}, which cannot be read again ({e}): shading with the {name} table"
+            );
+            (lut, name, Some(why))
+        }
     }
 }
 

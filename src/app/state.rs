@@ -111,8 +111,10 @@ pub struct LabState {
     pub screenshot_path: String,
     /// A LUT file to shade with; empty: the embedded table.
     pub lut_path: String,
-    /// Which shipped table shades (classic or the point-light fit).
+    /// Which shipped table shades (classic or the point-light fit), unless `table_file`.
     pub table: Table,
+    /// The file table A was loaded from; read again at the next start.
+    pub table_file: Option<String>,
     /// Overlay table B's LTC in the lobe panel.
     pub overlay_other_fit: bool,
     /// The plane's side B.
@@ -230,6 +232,7 @@ impl Default for LabState {
             screenshot_path: "ltc-lab.png".into(),
             lut_path: String::new(),
             table: Table::Classic,
+            table_file: None,
             overlay_other_fit: true,
             compare: Compare::Brdf,
             measurement: None,
