@@ -1,7 +1,8 @@
 //! One surface point opened into its lights: for each, where it is in the shading frame and
 //! after `M⁻¹`, its clipping case, the factors of eq. 30 (D, the Jacobian, the magnitudes)
 //! and of eq. 28 (Fresnel), its irradiance, and its LTC and exact radiance — the terms whose
-//! sums are the pixel (`cpu::shade_ltc`, `cpu::shade_exact`).
+//! sums are the pixel (`cpu::shade_ltc`, `cpu::shade_exact`). Where two tables are compared,
+//! also its LTC radiance with table B, whose sum is the pixel of side B.
 
 use glam::DVec3;
 
@@ -11,7 +12,7 @@ use crate::ltc::lut::Lut;
 use crate::ltc::{ClipCase, Clipping, Normalization};
 use crate::metrics::luminance;
 use crate::render::{LutFilter, SurfacePoint};
-use crate::scene::Scene;
+use crate::scene::{Light, Scene};
 
 /// One light's share of a pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,15 +37,28 @@ pub struct LightTerm {
     /// `E = I·w(d)/d²` on luminance.
     pub irradiance: f64,
     pub distance: f64,
-    /// Its radiance toward the camera by LTC and exactly.
+    /// Its radiance toward the camera by LTC (table A) and exactly.
     pub ltc: DVec3,
     pub exact: DVec3,
+    /// Its LTC radiance with table B, where two tables are compared.
+    pub ltc_b: Option<DVec3>,
 }
 
 impl LightTerm {
     /// `L_LTC − L_exact` on luminance.
     pub fn error(&self) -> f64 {
         luminance(self.ltc) - luminance(self.exact)
+    }
+
+    /// Side B of the comparison: LTC with table B where two tables are compared, else the
+    /// exact BRDF.
+    pub fn side_b(&self) -> DVec3 {
+        self.ltc_b.unwrap_or(self.exact)
+    }
+
+    /// `L_A − L_B` on luminance (side A: LTC with table A).
+    pub fn difference(&self) -> f64 {
+        luminance(self.ltc) - luminance(self.side_b())
     }
 }
 
@@ -56,6 +70,11 @@ pub struct PixelTerms {
     pub terms: Vec<LightTerm>,
     pub ltc: DVec3,
     pub exact: DVec3,
+    /// The pixel by LTC with table B, where two tables are compared.
+    pub ltc_b: Option<DVec3>,
+    /// `Σ |L_A − L_B|` over the lights, once: every share divides by it, and a table sorted
+    /// by share asks for it `n log n` times.
+    abs_difference_sum: f64,
 }
 
 impl PixelTerms {
@@ -74,6 +93,29 @@ impl PixelTerms {
             term.error() / total
         }
     }
+
+    /// Side B of the comparison (`LightTerm::side_b`), summed.
+    pub fn side_b(&self) -> DVec3 {
+        self.ltc_b.unwrap_or(self.exact)
+    }
+
+    /// `(L_A − L_B) / L_B` on luminance.
+    pub fn relative_difference(&self) -> f64 {
+        let b = luminance(self.side_b());
+        (luminance(self.ltc) - b) / b.abs().max(1e-300)
+    }
+
+    /// A light's share of how far the two sides are apart: its `|L_A − L_B|` over the sum of
+    /// every light's (the shares are ≥ 0 and sum to one). Absolute, not signed as
+    /// `error_share` is: two tables' differences cancel between lights, and a light whose
+    /// difference another one cancels still makes the tables differ.
+    pub fn difference_share(&self, term: &LightTerm) -> f64 {
+        if self.abs_difference_sum == 0.0 {
+            0.0
+        } else {
+            term.difference().abs() / self.abs_difference_sum
+        }
+    }
 }
 
 /// Elevation above the tangent plane and azimuth from the view's side, degrees.
@@ -85,11 +127,12 @@ pub fn elevation_azimuth(w: DVec3) -> (f64, f64) {
     )
 }
 
-/// Every light of `scene` at `p`, LTC with `lut` and the given rules against the exact BRDF;
-/// `None` where the camera sees the plane from below.
+/// Every light of `scene` at `p`, LTC with table A and the given rules against the exact
+/// BRDF, and with table B too where there is one (`tables.1`); `None` where the camera sees
+/// the plane from below.
 pub fn pixel_terms(
     scene: &Scene,
-    lut: &Lut,
+    (lut, lut_b): (&Lut, Option<&Lut>),
     p: &SurfacePoint,
     clipping: Clipping,
     normalization: Normalization,
@@ -98,49 +141,67 @@ pub fn pixel_terms(
     if p.view.z <= 0.0 {
         return None;
     }
-    let m = &scene.material;
-    let px = LtcPixel::new(lut, m.alpha, p.view, filter);
-    let v = px.frame.tangent_from_world(p.view);
+    let alpha = scene.material.alpha;
+    let px = LtcPixel::new(lut, alpha, p.view, filter);
+    let px_b = lut_b.map(|b| LtcPixel::new(b, alpha, p.view, filter));
+    let rules = (clipping, normalization);
     let terms: Vec<LightTerm> = scene
         .lights
         .iter()
         .enumerate()
         .map(|(index, light)| {
-            let u = px
-                .frame
-                .tangent_from_world(DVec3::from(light.position) - p.position);
-            let distance = u.length();
-            let omega = u / distance;
-            let spec = &px.pair.spec;
-            let w = spec.cos_from_brdf * omega;
-            let h = (v + omega).normalize_or_zero();
-            LightTerm {
-                index,
-                omega,
-                omega_cos: w.normalize_or_zero(),
-                case: px.pair.clip_case(omega),
-                d_spec: spec.ltc_eval(omega, clipping, normalization),
-                d_diff: px.pair.diff.ltc_eval(omega, clipping, normalization),
-                jacobian: spec.det_cos_from_brdf / w.length().powi(3),
-                spec_magnitude: px.pair.spec_magnitude(m.f0),
-                diff_magnitude: px.pair.diff.magnitude(),
-                fresnel: f_schlick(m.f0, v.dot(h)),
-                irradiance: luminance(light.radiant_intensity())
-                    * irradiance_scale(1.0, distance, light.range_or_infinity()),
-                distance,
-                ltc: ltc_term(scene, &px, p, light, clipping, normalization),
-                exact: exact_term(scene, &px.frame, p, light),
-            }
+            let mut term = light_term(scene, &px, p, (index, light), rules);
+            term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, clipping, normalization));
+            term
         })
         .collect();
     // Summed in the lights' order, as `shade_ltc` and `shade_exact` sum them.
-    let (ltc, exact) = terms.iter().fold((DVec3::ZERO, DVec3::ZERO), |(a, b), t| {
-        (a + t.ltc, b + t.exact)
-    });
+    let sum = |f: &dyn Fn(&LightTerm) -> DVec3| terms.iter().fold(DVec3::ZERO, |a, t| a + f(t));
+    let v = px.frame.tangent_from_world(p.view);
     Some(PixelTerms {
         theta_o: v.z.clamp(-1.0, 1.0).acos(),
+        ltc: sum(&|t| t.ltc),
+        exact: sum(&|t| t.exact),
+        ltc_b: px_b.map(|_| sum(&|t| t.ltc_b.unwrap_or_default())),
+        abs_difference_sum: terms.iter().map(|t| t.difference().abs()).sum(),
         terms,
-        ltc,
-        exact,
     })
+}
+
+/// One light's terms at `p`, LTC with table A (`px`) against the exact BRDF.
+fn light_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    (index, light): (usize, &Light),
+    (clipping, normalization): (Clipping, Normalization),
+) -> LightTerm {
+    let m = &scene.material;
+    let v = px.frame.tangent_from_world(p.view);
+    let u = px
+        .frame
+        .tangent_from_world(DVec3::from(light.position) - p.position);
+    let distance = u.length();
+    let omega = u / distance;
+    let spec = &px.pair.spec;
+    let w = spec.cos_from_brdf * omega;
+    let h = (v + omega).normalize_or_zero();
+    LightTerm {
+        index,
+        omega,
+        omega_cos: w.normalize_or_zero(),
+        case: px.pair.clip_case(omega),
+        d_spec: spec.ltc_eval(omega, clipping, normalization),
+        d_diff: px.pair.diff.ltc_eval(omega, clipping, normalization),
+        jacobian: spec.det_cos_from_brdf / w.length().powi(3),
+        spec_magnitude: px.pair.spec_magnitude(m.f0),
+        diff_magnitude: px.pair.diff.magnitude(),
+        fresnel: f_schlick(m.f0, v.dot(h)),
+        irradiance: luminance(light.radiant_intensity())
+            * irradiance_scale(1.0, distance, light.range_or_infinity()),
+        distance,
+        ltc: ltc_term(scene, px, p, light, clipping, normalization),
+        exact: exact_term(scene, &px.frame, p, light),
+        ltc_b: None,
+    }
 }

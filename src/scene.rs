@@ -185,6 +185,29 @@ impl Scene {
         Ok(scene.expanded())
     }
 
+    /// The scene as a person would write it: light positions to 1e-4 scene units (a tenth of
+    /// a millimetre in metres), colours to 1e-3 (finer than 8-bit steps), intensities and
+    /// ranges to 4 significant digits. Dragged lights and generated ones otherwise save with
+    /// 16 decimals; every rounded value stays within the limits `validate` checks.
+    pub fn rounded_for_saving(&self) -> Scene {
+        let decimals = |x: f64, d: i32| (x * 10f64.powi(d)).round() / 10f64.powi(d);
+        let significant = |x: f64| {
+            if x == 0.0 || !x.is_finite() {
+                return x;
+            }
+            let d = 3 - x.abs().log10().floor() as i32;
+            decimals(x, d)
+        };
+        let mut out = self.clone();
+        for l in &mut out.lights {
+            l.position = l.position.map(|x| decimals(x, 4));
+            l.color = l.color.map(|x| decimals(x, 3));
+            l.intensity = significant(l.intensity);
+            l.range = l.range.map(significant);
+        }
+        out
+    }
+
     pub fn to_toml(&self) -> String {
         toml::to_string_pretty(self).expect("a scene always serializes")
     }

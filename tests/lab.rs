@@ -1040,3 +1040,384 @@ fn the_lobe_panel_prints_its_parameters_on_its_face() {
         "no '{face}' on the lobe panel"
     );
 }
+
+/// Notices appear where they move no control: a file's message at the top of the side panel
+/// pushed every control below it down, under the pointer. It can be dismissed.
+#[test]
+fn a_notice_moves_no_control() {
+    let Some(mut h) = lab((1600.0, 900.0), LabState::default()) else {
+        return;
+    };
+    let before = (
+        h.get_by_label("use LUT").rect(),
+        h.get_by_label("screenshot").rect(),
+    );
+    h.state_mut().state.lut_path = "/nonexistent/ltc.js".into();
+    h.run_steps(1);
+    h.get_by_label("use LUT").click();
+    h.run_steps(2);
+    assert!(
+        h.query_by_label_contains("still using the previous table")
+            .is_some(),
+        "no notice"
+    );
+    let after = (
+        h.get_by_label("use LUT").rect(),
+        h.get_by_label("screenshot").rect(),
+    );
+    assert_eq!(after, before, "a control moved");
+    h.get_by_label("×").click();
+    h.run_steps(2);
+    assert!(
+        h.query_by_label_contains("still using the previous table")
+            .is_none(),
+        "not dismissed"
+    );
+}
+
+/// A light can be placed by typing: the selected light has x, y, z fields (it could only be
+/// dragged), and a saved scene writes its numbers rounded (a dragged light was saved with 16
+/// decimals); the view becomes what the file holds.
+#[test]
+fn a_light_is_placed_by_typing_and_saved_rounded() {
+    let Some(mut h) = lab((1600.0, 900.0), maximised(PanelId::Lobe)) else {
+        return;
+    };
+    h.state_mut().state.selected_light = Some(3);
+    h.run_steps(2);
+    let field = h.get_by_role_and_label(Role::SpinButton, "y");
+    field.focus();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::SpinButton, "y")
+        .type_text("0.5");
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+    // Typed over the old value's selected text: the field holds what was typed.
+    assert_eq!(h.state().state.scene.lights[3].position[1], 0.5);
+    h.state_mut().state.scene.lights[3].position[0] = 0.123_456_789_012_345;
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("scene.toml");
+    h.state_mut().state.scene_path = path.display().to_string();
+    h.run_steps(1);
+    h.get_by_label("save").click();
+    h.run_steps(2);
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.contains("0.1235"), "not rounded: {text}");
+    assert!(!text.contains("0.123456"), "16 decimals saved");
+    let saved = ltc_lab::scene::Scene::load(&path).unwrap();
+    assert_eq!(
+        saved,
+        h.state().state.scene,
+        "the view is not what the file holds"
+    );
+}
+
+/// The layout scales with the window: at 3840×2160 egui's zoom doubles (1 up to 1920×1080),
+/// so pictures and text grow instead of floating small in empty space. Snapshots at the
+/// three sizes the lab is tried at (1024×640 is `layout_1024x640`).
+#[test]
+fn the_layout_scales_with_the_window() {
+    let Some(mut hd) = lab((1920.0, 1080.0), LabState::default()) else {
+        return;
+    };
+    assert_eq!(hd.ctx.zoom_factor(), 1.0);
+    // A 3840×2160 window, as eframe shows it: once zoomed, its size in points halves
+    // (kittest keeps a harness's size in points, so the test does what the window does).
+    let render_state = egui_kittest::wgpu::create_render_state(
+        ltc_lab::app::shading::wgpu_setup(),
+        egui_wgpu::RendererOptions::PREDICTABLE,
+    );
+    let mut app = LabApp::new(LabState::default(), Some(&render_state));
+    app.plane.hide_timings = true;
+    let mut uhd = Harness::builder()
+        .with_size(egui::vec2(1920.0, 1080.0))
+        .renderer(WgpuTestRenderer::from_render_state(render_state))
+        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
+    // The window resized to 3840×2160: one frame at that size fits the zoom; from then on
+    // the window is that many pixels, i.e. half as many points.
+    uhd.set_size(egui::vec2(3840.0, 2160.0));
+    // The zoom is set in one frame and applies from the next, which still has the old size
+    // in points (as a window's does, for a frame).
+    uhd.step();
+    uhd.step();
+    let zoom = uhd.ctx.zoom_factor();
+    assert_eq!(zoom, 2.0);
+    uhd.set_size(egui::vec2(3840.0, 2160.0) / zoom);
+    settle(&mut uhd);
+    assert_eq!(uhd.ctx.zoom_factor(), 2.0, "the zoom did not settle");
+    // The same widget, about twice as large in pixels: its rect in points times the zoom.
+    let pixels = |h: &Harness<'static, LabApp>| {
+        h.get_by_label("lobe view").rect().width() * h.ctx.zoom_factor()
+    };
+    assert!(
+        pixels(&uhd) > 1.8 * pixels(&hd),
+        "the lobe view did not grow: {} → {} px",
+        pixels(&hd),
+        pixels(&uhd)
+    );
+    let mut results = SnapshotResults::new();
+    hd.snapshot_options("layout_1920x1080", &options(1920 * 1080));
+    results.extend_harness(&mut hd);
+    uhd.snapshot_options("layout_3840x2160", &options(3840 * 2160));
+    results.extend_harness(&mut uhd);
+    results.unwrap();
+}
+
+/// One side of the plane alone (`view` A or B) as the lab's current render shades it, whole,
+/// on the lab's own device, with the lab's tables A and B.
+fn plane_side_alone(h: &Harness<'static, LabApp>, view: View) -> Frame {
+    let app = h.state();
+    let ctx = app.shading.context().expect("the lab has a GPU");
+    let key = app.shading.key().expect("a render started");
+    let mut r = PlaneRenderer::new(ctx, &app.lut, ShaderChecks::Checked).unwrap();
+    r.set_lut_b(ctx, Some(&app.other.lut)).unwrap();
+    let settings = ltc_lab::render::RenderSettings {
+        view,
+        ..key.settings
+    };
+    r.render(ctx, &key.scene, &settings).unwrap().0
+}
+
+/// Issue 19: in "A | B tables" the title says which tables are compared, and the pinned
+/// pixel opens into table A against table B per light: each light's LTC with either table,
+/// as the CPU reference shades that light alone, and its share of Σ|A − B|, sortable.
+#[test]
+fn with_two_tables_the_pinned_pixel_compares_table_a_with_table_b_per_light() {
+    // Wide enough that the table's last columns are on screen, not scrolled away.
+    let Some(mut h) = lab((1600.0, 800.0), maximised(PanelId::Plane)) else {
+        return;
+    };
+    assert!(h.query_by_label("Plane: LTC | BRDF").is_some());
+    h.get_by_label("A | B tables").click();
+    settle(&mut h);
+    assert!(
+        h.query_by_label("Plane: table A (classic) | table B (point)")
+            .is_some(),
+        "the title does not name the tables compared"
+    );
+    let rect = h.get_by_label("plane image").rect();
+    click_at(
+        &mut h,
+        egui::pos2(
+            rect.min.x + rect.width() * 0.2,
+            rect.min.y + rect.height() * 0.8,
+        ),
+    );
+    settle(&mut h);
+    // The value columns name the tables; the exact BRDF is not a column here.
+    for header in ["table A", "table B", "share of |A−B| v"] {
+        assert!(h.query_by_label(header).is_some(), "no column {header:?}");
+    }
+    assert!(h.query_by_label("exact").is_none() && h.query_by_label("error share v").is_none());
+    // The readout compares the tables, too.
+    assert!(
+        h.query_by_label_contains("(luminance), difference")
+            .is_some()
+    );
+    let app = h.state();
+    let t = app.plane.pinned().expect("the pinned pixel's lights");
+    let scene = app.state.shaded_scene();
+    let (w, hgt) = app.plane.shown.unwrap().size;
+    let [u, v] = app.state.pinned.unwrap();
+    let p = scene
+        .surface_point_at(u * w as f64, v * hgt as f64, w, hgt)
+        .unwrap();
+    let (s, filter) = (&app.state, ltc_lab::render::LutFilter::Bilinear);
+    let shade = |lut, lights: &[ltc_lab::scene::Light]| {
+        ltc_lab::cpu::shade_ltc(&scene, lut, &p, lights, s.clipping, s.normalization, filter)
+    };
+    let (a, b) = (&app.lut, &app.other.lut);
+    // Summed in the same order as the reference sums: the same f64 operations.
+    assert_eq!(t.ltc_b, Some(shade(b, &scene.lights)));
+    assert_eq!(t.ltc, shade(a, &scene.lights));
+    let y = ltc_lab::metrics::luminance;
+    let alone = |lut, i: usize| y(shade(lut, &scene.lights[i..=i]));
+    let largest = |f: &dyn Fn(usize) -> f64| {
+        (0..scene.lights.len())
+            .max_by(|&i, &j| f(i).total_cmp(&f(j)))
+            .unwrap()
+    };
+    // Sorted by the share of |A − B|, largest first: the light whose own |A − B| is largest.
+    let top = |h: &Harness<'static, LabApp>| {
+        let app = h.state();
+        let t = app.plane.pinned().unwrap();
+        ltc_lab::app::pixel_table::sorted_rows(t, app.state.light_sort)[0].index
+    };
+    assert_eq!(top(&h), largest(&|i| (alone(a, i) - alone(b, i)).abs()));
+    // Sorted by table B's column: the brightest light under table B.
+    let by_b = largest(&|i| alone(b, i));
+    h.get_by_label("table B").click();
+    h.run_steps(2);
+    assert_eq!(top(&h), by_b);
+}
+
+/// Issue 19: *worst pixel* pins the pixel where the two sides differ most, LTC against the
+/// BRDF and then table A against table B: the largest |L_A − L_B| / max(L_B, floor) of the
+/// two sides rendered alone and compared here in f64 with the difference view's floor
+/// (metrics::relative_floor), within the GPU's diff-view tolerance (tests/gpu_common).
+#[test]
+fn the_worst_pixel_button_pins_the_largest_difference_in_either_mode() {
+    let Some(mut h) = lab((1000.0, 700.0), maximised(PanelId::Plane)) else {
+        return;
+    };
+    for mode in ["LTC | BRDF", "A | B tables"] {
+        h.get_by_label(mode).click();
+        settle(&mut h);
+        h.state_mut().state.pinned = None;
+        h.get_by_label("worst pixel").click();
+        settle(&mut h);
+        assert_eq!(h.state().state.view, View::Diff, "{mode}");
+        let [u, v] = h.state().state.pinned.expect("worst pixel pinned none");
+        let (sa, sb) = (plane_side_alone(&h, View::A), plane_side_alone(&h, View::B));
+        let floor = ltc_lab::metrics::relative_floor(&sb, &sa);
+        let y = ltc_lab::metrics::luminance;
+        let rel =
+            |k: usize| ltc_lab::metrics::relative_error(y(sa.pixels[k]), y(sb.pixels[k]), floor);
+        let worst = (0..sb.pixels.len())
+            .filter(|&k| sb.on_plane[k])
+            .map(rel)
+            .fold(0.0, f64::max);
+        let x = (u * sb.width as f64) as usize;
+        let row = (v * sb.height as f64) as usize;
+        let pinned = rel(row * sb.width + x);
+        assert!(
+            pinned >= worst - gpu_common::diff_tolerance(worst),
+            "{mode}: pinned ({x}, {row}) differs by {pinned}, the worst pixel by {worst}"
+        );
+        // The pixel's lights are open, in the mode's comparison.
+        let t = h.state().plane.pinned().expect("the worst pixel's lights");
+        assert_eq!(t.ltc_b.is_some(), mode == "A | B tables");
+    }
+}
+
+/// Issue 19: *+ light* puts each new light where it is seen: projected inside the image,
+/// away from the split's divider and from every other light's marker.
+#[test]
+fn a_new_light_is_seen_away_from_the_divider_and_the_other_lights() {
+    let Some(mut h) = lab((1000.0, 700.0), maximised(PanelId::Plane)) else {
+        return;
+    };
+    let held = h.state().state.scene.lights.len();
+    for _ in 0..2 {
+        h.get_by_label("+ light").click();
+        h.run_steps(2);
+    }
+    let app = h.state();
+    let scene = &app.state.scene;
+    assert_eq!(scene.lights.len(), held + 2);
+    let (w, hgt) = app.plane.shown.unwrap().size;
+    let seen = |k: usize| {
+        scene
+            .project(glam::DVec3::from(scene.lights[k].position), w, hgt)
+            .unwrap()
+    };
+    let divider = app.state.divider * w as f64;
+    for k in held..held + 2 {
+        let (x, y) = seen(k);
+        let p = scene.lights[k].position;
+        assert!(p[2] > 0.0, "light {k} at {p:?} is not above the plane");
+        assert!(
+            (0.0..w as f64).contains(&x) && (0.0..hgt as f64).contains(&y),
+            "light {k} at ({x}, {y}) is outside the {w}×{hgt} image"
+        );
+        // 5% of the width: the divider's grab band (8 points) and a marker (6) are far
+        // narrower at this size, so the marker is clear of both.
+        assert!(
+            (x - divider).abs() > 0.05 * w as f64,
+            "light {k} at x = {x} sits on the divider at {divider}"
+        );
+        // 16 px: two markers (radius ≤ 6) picked within 8 points stay apart at 1 point per
+        // pixel (kittest's scale).
+        for other in (0..scene.lights.len()).filter(|&o| o != k) {
+            let (ox, oy) = seen(other);
+            assert!(
+                (ox - x).hypot(oy - y) > 16.0,
+                "light {k} lies on light {other}"
+            );
+        }
+    }
+}
+
+/// Both axes of both charts span whole decades around their data, so that each has at least
+/// two labelled ticks (times spanning 30–90 ms, as GL llvmpipe's did, showed one or none).
+#[test]
+fn chart_axes_span_whole_decades() {
+    use ltc_lab::app::chart::decade_span;
+    assert_eq!(decade_span([30.0, 90.0].into_iter()), [1.0, 2.0]);
+    assert_eq!(decade_span([0.02, 250.0].into_iter()), [-2.0, 3.0]);
+    assert_eq!(decade_span([100.0].into_iter()), [2.0, 3.0]);
+    assert_eq!(decade_span([f64::NAN, 0.0, -1.0].into_iter()), [0.0, 1.0]);
+}
+
+/// The chart's legends sit outside the points (they covered them), the LTC/BRDF speed ratio
+/// is given per light count, and the timed renders' spread is drawn as bars
+/// (`chart_ranges`, looked at).
+#[test]
+fn the_chart_keeps_its_legends_outside_and_gives_the_speed_ratio() {
+    use ltc_lab::app::measure::{Measurement, Point};
+    use ltc_lab::render::Method;
+    let Some(h) = lab((900.0, 560.0), maximised(PanelId::Chart)) else {
+        return;
+    };
+    let plots = [
+        h.get_by_label("time vs error plot").rect(),
+        h.get_by_label("fps vs lights plot").rect(),
+    ];
+    let entries: Vec<egui::Rect> = h
+        .query_all_by_label("ltc-fast")
+        .chain(h.query_all_by_label("paper LTC (GTX 1060)"))
+        .map(|n| n.rect())
+        .collect();
+    assert!(entries.len() >= 3, "legend entries missing");
+    for e in &entries {
+        assert!(
+            plots.iter().all(|p| !p.intersects(*e)),
+            "a legend entry {e:?} lies over a plot {plots:?}"
+        );
+    }
+    // The ratio, from the measurement shown (the bundled study): ltc-fast's fps over brdf's.
+    let m = h.state().state.measurement.clone().unwrap();
+    let fps = |method: Method| m.scaling.iter().find(|(x, _)| *x == method).unwrap().1[0];
+    let (ltc, brdf) = (fps(Method::LtcFast), fps(Method::Brdf));
+    assert_eq!(ltc[0], brdf[0]);
+    let said = format!("×{:.2} at {} lights", ltc[1] / brdf[1], ltc[0]);
+    assert!(
+        h.query_by_label_contains(&said).is_some(),
+        "no '{said}' under the chart"
+    );
+    // A live measurement's spread: bars through each point.
+    let ranged = Measurement {
+        points: vec![
+            Point {
+                label: "ltc-fast".into(),
+                ms: 40.0,
+                rel_rmse: 1e-2,
+                ms_range: Some([30.0, 70.0]),
+            },
+            Point {
+                label: "brdf".into(),
+                ms: 90.0,
+                rel_rmse: 0.0,
+                ms_range: Some([85.0, 140.0]),
+            },
+        ],
+        scaling: vec![
+            (Method::LtcFast, vec![[100.0, 25.0], [1000.0, 2.5]]),
+            (Method::Brdf, vec![[100.0, 11.0], [1000.0, 1.1]]),
+        ],
+        scaling_range: vec![
+            (
+                Method::LtcFast,
+                vec![[100.0, 15.0, 33.0], [1000.0, 2.0, 3.0]],
+            ),
+            (Method::Brdf, vec![[100.0, 7.0, 12.0], [1000.0, 0.9, 1.2]]),
+        ],
+        device: "a test's numbers".into(),
+    };
+    let mut state = maximised(PanelId::Chart);
+    state.measurement = Some(ranged);
+    let mut h = lab((900.0, 560.0), state).unwrap();
+    let said = "LTC/BRDF speed (ltc-fast over brdf): ×2.27 at 100 lights, ×2.27 at 1000 lights";
+    assert!(h.query_by_label_contains(said).is_some(), "no '{said}'");
+    h.snapshot_options("chart_ranges", &options(900 * 560));
+}

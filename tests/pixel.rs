@@ -1,11 +1,15 @@
 //! A pixel opened into its lights (`pixel::pixel_terms`): the lights' contributions sum to
-//! the pixel's radiance by both methods, as the CPU reference shades it.
+//! the pixel's radiance by both methods, as the CPU reference shades it; with two tables,
+//! each table's contributions sum to its side's pixel, and the shares of their difference
+//! are each light's own difference as the CPU reference shades that light alone.
 
-use ltc_lab::cpu::{shade_exact, shade_ltc};
+use glam::DVec3;
+use ltc_lab::cpu::{render, shade_exact, shade_ltc};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Normalization};
+use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
-use ltc_lab::render::LutFilter;
+use ltc_lab::render::{LutFilter, Method, RenderSettings, Tables, View};
 use ltc_lab::scene::preset;
 
 #[test]
@@ -24,7 +28,7 @@ fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
                 continue;
             };
             let n = Normalization::Corrected;
-            let t = pixel_terms(&scene, lut, &p, clip, n, LutFilter::Bilinear).unwrap();
+            let t = pixel_terms(&scene, (lut, None), &p, clip, n, LutFilter::Bilinear).unwrap();
             let ltc = shade_ltc(&scene, lut, &p, &scene.lights, clip, n, LutFilter::Bilinear);
             let exact = shade_exact(&scene, &p, &scene.lights);
             let sum_ltc = t.terms.iter().fold(glam::DVec3::ZERO, |a, l| a + l.ltc);
@@ -67,4 +71,127 @@ fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
         }
     }
     assert!(pixels >= 9, "only {pixels} pixels on the plane");
+}
+
+/// Two tables compared: each light is evaluated with table A and with table B, and each
+/// side's contributions sum to that side's pixel as the CPU reference renders it (`render`
+/// with view A, and view B with `table_b`: the renderer's own choice of table); each light's
+/// share of |A − B| is its difference as `shade_ltc` shades it alone with either table.
+#[test]
+fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_lights_own() {
+    let (a, b) = (Lut::embedded(), Lut::embedded_point());
+    let (w, h) = (48, 27);
+    let mut pixels = 0;
+    for (name, clip) in [
+        ("paper-100", Clipping::BOTH),
+        ("figure2-case1", Clipping::TRANSFORMED),
+        ("figure2-normal", Clipping::BOTH),
+    ] {
+        let scene = preset(name);
+        let n = Normalization::Corrected;
+        let settings = |view| RenderSettings {
+            view,
+            table_b: true,
+            method_b: Method::Ltc,
+            clipping: clip,
+            normalization: n,
+            ..RenderSettings::single(w, h, Method::Ltc)
+        };
+        let side = |view| render(&scene, Tables { a, b }, &settings(view));
+        let (frame_a, frame_b) = (side(View::A), side(View::B));
+        for (x, y) in [(6, 22), (24, 13), (38, 15), (45, 4), (12, 8), (30, 24)] {
+            let Some(p) = scene.surface_point(x, y, w, h) else {
+                continue;
+            };
+            let t = pixel_terms(&scene, (a, Some(b)), &p, clip, n, LutFilter::Bilinear).unwrap();
+            let k = y * w + x;
+            let sum_b = t
+                .terms
+                .iter()
+                .fold(DVec3::ZERO, |s, l| s + l.ltc_b.unwrap());
+            // Up to 100 terms of f64 summed in the renderer's order: 100 roundings of the
+            // sum's magnitude, 1e-13 relative.
+            let close = |u: DVec3, v: DVec3| {
+                (u - v).abs().max_element() <= 1e-13 * v.abs().max_element().max(1e-300)
+            };
+            assert!(close(t.ltc, frame_a.pixels[k]), "{name} ({x}, {y}): side A");
+            assert!(
+                close(sum_b, frame_b.pixels[k]),
+                "{name} ({x}, {y}): {sum_b} vs {}",
+                frame_b.pixels[k]
+            );
+            assert!(close(t.side_b(), frame_b.pixels[k]));
+            // Each light alone through the CPU reference with either table.
+            let alone = |lut, i: usize| {
+                let one = &scene.lights[i..=i];
+                luminance(shade_ltc(
+                    &scene,
+                    lut,
+                    &p,
+                    one,
+                    clip,
+                    n,
+                    LutFilter::Bilinear,
+                ))
+            };
+            let diffs: Vec<f64> = (0..scene.lights.len())
+                .map(|i| (alone(a, i) - alone(b, i)).abs())
+                .collect();
+            let total: f64 = diffs.iter().sum();
+            if total == 0.0 {
+                // No light reaches the point (case 1's light, where M^-1 lifts none of it):
+                // no share either.
+                assert!(t.terms.iter().all(|l| t.difference_share(l) == 0.0));
+                continue;
+            }
+            let mut shares = 0.0;
+            for l in &t.terms {
+                let share = t.difference_share(l);
+                // One light's difference and a sum of ≤ 100 of them, each a few roundings
+                // of f64 apart from the reference's: 1e-12 of a share ≤ 1.
+                assert!(
+                    (share - diffs[l.index] / total).abs() <= 1e-12,
+                    "{name} ({x}, {y}) light {}: {share} vs {}",
+                    l.index,
+                    diffs[l.index] / total
+                );
+                shares += share;
+            }
+            assert!(
+                (shares - 1.0).abs() < 1e-12,
+                "{name}: shares sum to {shares}"
+            );
+            pixels += 1;
+        }
+        // The two tables must make the sides differ, or the sums above would not tell them
+        // apart.
+        let apart = frame_a
+            .pixels
+            .iter()
+            .zip(&frame_b.pixels)
+            .any(|(u, v)| (luminance(*u) - luminance(*v)).abs() > 1e-6 * luminance(*v).abs());
+        assert!(apart, "{name}: table B renders as table A");
+    }
+    assert!(pixels >= 9, "only {pixels} pixels where the tables differ");
+}
+
+/// Without table B, nothing of it is made up: the terms compare LTC with the exact BRDF.
+#[test]
+fn without_table_b_side_b_is_the_exact_brdf() {
+    let scene = preset("paper-100");
+    let p = scene.surface_point(30, 20, 64, 36).unwrap();
+    let n = Normalization::Corrected;
+    let filter = LutFilter::Bilinear;
+    let t = pixel_terms(
+        &scene,
+        (Lut::embedded(), None),
+        &p,
+        Clipping::BOTH,
+        n,
+        filter,
+    )
+    .unwrap();
+    assert!(t.ltc_b.is_none() && t.terms.iter().all(|l| l.ltc_b.is_none()));
+    assert_eq!(t.side_b(), t.exact);
+    assert_eq!(t.relative_difference(), t.relative_error());
 }

@@ -82,109 +82,15 @@ impl ChartPanel {
         if let Some(e) = &self.error {
             ui.colored_label(Color32::LIGHT_RED, e);
         }
+        let Some(m) = &s.measurement else { return };
         let half = (ui.available_width() / 2.0 - 6.0).max(80.0);
         let height = ui.available_height().max(80.0);
         ui.horizontal(|ui| {
             ui.allocate_ui(egui::vec2(half, height), |ui| {
-                // The axes of `study.png` (src/plot.rs): log time, log error, exact at 1e-7.
-                let exponent = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
-                    // Only whole exponents: finer grid marks would round to repeated labels.
-                    if (mark.value - mark.value.round()).abs() < 1e-9 {
-                        format!("1e{:.0}", mark.value)
-                    } else {
-                        String::new()
-                    }
-                };
-                let plot = egui_plot::Plot::new("time vs error")
-                    .x_axis_label("GPU ms per frame (log)")
-                    .y_axis_label("relative RMSE (log; exact at 1e-7)")
-                    .y_axis_formatter(exponent);
-                log_axis(plot, true)
-                    .label_formatter(|pos| log_reading(pos, "ms", "error"))
-                    // Small and see-through: a study has a dozen variants, over the points.
-                    .legend(
-                        egui_plot::Legend::default()
-                            .position(egui_plot::Corner::LeftBottom)
-                            .text_style(egui::TextStyle::Small)
-                            .background_alpha(0.5),
-                    )
-                    .allow_scroll(false)
-                    .show(ui, |p| {
-                        // One series per variant (every α and light count of a study).
-                        let points: Vec<&Point> =
-                            s.measurement.iter().flat_map(|m| &m.points).collect();
-                        let mut names: Vec<&str> =
-                            points.iter().map(|p| p.label.as_str()).collect();
-                        names.sort_unstable();
-                        names.dedup();
-                        for name in names {
-                            let series: Vec<[f64; 2]> = points
-                                .iter()
-                                .filter(|pt| pt.label == name)
-                                .map(|pt| {
-                                    [
-                                        pt.ms.log10(),
-                                        pt.rel_rmse.max(crate::plot::ERROR_FLOOR).log10(),
-                                    ]
-                                })
-                                .collect();
-                            p.points(
-                                egui_plot::Points::new(name.to_string(), series)
-                                    .radius(5.0)
-                                    .shape(variant_shape(name))
-                                    .color(method_colour(name)),
-                            );
-                        }
-                    });
+                ui.vertical(|ui| time_error_plot(ui, m, height));
             });
             ui.allocate_ui(egui::vec2(half, height), |ui| {
-                let plot = egui_plot::Plot::new("fps vs lights")
-                    .x_axis_label("lights (log)")
-                    .y_axis_label("fps (log)")
-                    .legend(egui_plot::Legend::default())
-                    .allow_scroll(false);
-                // Both axes by decades: the GTX 1060's thousands of fps and a CPU driver's
-                // few share the plot without flattening either.
-                let plot = plot.label_formatter(|pos| log_reading(pos, "lights", "fps"));
-                log_axis(log_axis(plot, true), false).show(ui, |p| {
-                    let log = |series: &[[f64; 2]]| -> Vec<[f64; 2]> {
-                        series
-                            .iter()
-                            .filter(|q| q[0] > 0.0 && q[1] > 0.0)
-                            .map(|q| [q[0].log10(), q[1].log10()])
-                            .collect()
-                    };
-                    let paper = |fps: [f64; 4]| -> Vec<[f64; 2]> {
-                        let points: Vec<[f64; 2]> = PAPER_LIGHTS
-                            .iter()
-                            .zip(fps)
-                            .map(|(&n, f)| [n as f64, f])
-                            .collect();
-                        log(&points)
-                    };
-                    // The paper's lines dashed, in colours no measured method uses.
-                    p.line(
-                        egui_plot::Line::new("paper BRDF (GTX 1060)", paper(PAPER_BRDF_FPS))
-                            .color(PAPER_BRDF_COLOUR)
-                            .style(egui_plot::LineStyle::dashed_dense()),
-                    );
-                    p.line(
-                        egui_plot::Line::new("paper LTC (GTX 1060)", paper(PAPER_LTC_FPS))
-                            .color(PAPER_LTC_COLOUR)
-                            .style(egui_plot::LineStyle::dashed_dense()),
-                    );
-                    for (m, series) in s.measurement.iter().flat_map(|m| &m.scaling) {
-                        p.line(
-                            egui_plot::Line::new(m.name(), log(series))
-                                .color(method_colour(m.name())),
-                        );
-                        p.points(
-                            egui_plot::Points::new(m.name(), log(series))
-                                .radius(3.0)
-                                .color(method_colour(m.name())),
-                        );
-                    }
-                });
+                ui.vertical(|ui| fps_plot(ui, m, s, height));
             });
         });
     }
@@ -208,6 +114,274 @@ impl ChartPanel {
     pub fn busy(&self) -> bool {
         self.job.is_some()
     }
+}
+
+/// A legend entry: the series' name, colour and marker (`None`: a dashed line).
+type Entry = (String, Color32, Option<egui_plot::MarkerShape>);
+
+/// GPU time against image error, one marker per variant, with the timed renders' spread as
+/// a bar; its legend under it.
+fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
+    let mut names: Vec<&str> = m.points.iter().map(|p| p.label.as_str()).collect();
+    names.sort_unstable();
+    names.dedup();
+    let entries: Vec<Entry> = names
+        .iter()
+        .map(|&n| (n.to_string(), method_colour(n), Some(variant_shape(n))))
+        .collect();
+    let error = |p: &Point| p.rel_rmse.max(crate::plot::ERROR_FLOOR).log10();
+    let times = m
+        .points
+        .iter()
+        .flat_map(|p| [p.ms].into_iter().chain(p.ms_range.into_iter().flatten()));
+    let errors = m.points.iter().map(|p| 10f64.powf(error(p)));
+    // The axes of `study.png` (src/plot.rs): log time, log error, exact at 1e-7.
+    let plot = egui_plot::Plot::new("time vs error")
+        .height(plot_height(ui, height, &entries))
+        .x_axis_label("GPU ms per frame (log)")
+        .y_axis_label("relative RMSE (log; exact at 1e-7)");
+    let plot = decades(log_axis(log_axis(plot, true), false), times, errors)
+        .label_formatter(|pos| log_reading(pos, "ms", "error"))
+        .allow_scroll(false);
+    let response = plot.show(ui, |p| {
+        for name in &names {
+            let mine = m.points.iter().filter(|pt| pt.label == *name);
+            for pt in mine.clone() {
+                if let Some([lo, hi]) = pt.ms_range {
+                    let y = error(pt);
+                    let bar = vec![[lo.log10(), y], [hi.log10(), y]];
+                    p.line(egui_plot::Line::new(name.to_string(), bar).color(method_colour(name)));
+                }
+            }
+            let series: Vec<[f64; 2]> = mine.map(|pt| [pt.ms.log10(), error(pt)]).collect();
+            p.points(
+                egui_plot::Points::new(name.to_string(), series)
+                    .radius(5.0)
+                    .shape(variant_shape(name))
+                    .color(method_colour(name)),
+            );
+        }
+    });
+    name_plot(&response.response, "time vs error plot");
+    legend(ui, &entries);
+}
+
+/// fps against the light count (the paper's Table 1 as dashed references), with the timed
+/// renders' spread as bars; its legend and the LTC/BRDF ratio under it.
+fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &LabState, height: f32) {
+    let mut entries: Vec<Entry> = vec![
+        ("paper BRDF (GTX 1060)".into(), PAPER_BRDF_COLOUR, None),
+        ("paper LTC (GTX 1060)".into(), PAPER_LTC_COLOUR, None),
+    ];
+    entries.extend(m.scaling.iter().map(|(method, _)| {
+        let name = method.name();
+        (
+            name.to_string(),
+            method_colour(name),
+            Some(egui_plot::MarkerShape::Circle),
+        )
+    }));
+    let paper: Vec<[f64; 2]> = PAPER_LIGHTS.iter().map(|&n| [n as f64, 0.0]).collect();
+    let xs = m
+        .scaling
+        .iter()
+        .flat_map(|(_, s)| s.iter().map(|q| q[0]))
+        .chain(paper.iter().map(|q| q[0]));
+    let ys = m.scaling.iter().flat_map(|(_, s)| s.iter().map(|q| q[1]));
+    let ys = ys.chain(PAPER_BRDF_FPS).chain(PAPER_LTC_FPS);
+    // The paper's Table 1 comparison first, where a small window still shows it.
+    let ratio = speed_ratio(m, s);
+    if let Some(line) = &ratio {
+        ui.small(line);
+    }
+    let header = if ratio.is_some() {
+        ui.spacing().interact_size.y
+    } else {
+        0.0
+    };
+    let plot = egui_plot::Plot::new("fps vs lights")
+        .height(plot_height(ui, height - header, &entries))
+        .x_axis_label("lights (log)")
+        .y_axis_label("fps (log)")
+        .allow_scroll(false);
+    // Both axes by decades: the GTX 1060's thousands of fps and a CPU driver's few share the
+    // plot without flattening either.
+    let plot = decades(log_axis(log_axis(plot, true), false), xs, ys)
+        .label_formatter(|pos| log_reading(pos, "lights", "fps"));
+    let response = plot.show(ui, |p| {
+        for (name, colour, fps) in [
+            ("paper BRDF (GTX 1060)", PAPER_BRDF_COLOUR, PAPER_BRDF_FPS),
+            ("paper LTC (GTX 1060)", PAPER_LTC_COLOUR, PAPER_LTC_FPS),
+        ] {
+            let line = PAPER_LIGHTS
+                .iter()
+                .zip(fps)
+                .map(|(&n, f)| [(n as f64).log10(), f.log10()]);
+            p.line(
+                egui_plot::Line::new(name, line.collect::<Vec<_>>())
+                    .color(colour)
+                    .style(egui_plot::LineStyle::dashed_dense()),
+            );
+        }
+        for (method, series) in &m.scaling {
+            let (name, colour) = (method.name(), method_colour(method.name()));
+            let log: Vec<[f64; 2]> = series
+                .iter()
+                .filter(|q| q[0] > 0.0 && q[1] > 0.0)
+                .map(|q| [q[0].log10(), q[1].log10()])
+                .collect();
+            p.line(egui_plot::Line::new(name, log.clone()).color(colour));
+            p.points(egui_plot::Points::new(name, log).radius(3.0).color(colour));
+            let spread = m.scaling_range.iter().filter(|(r, _)| r == method);
+            for [n, lo, hi] in spread.flat_map(|(_, r)| r) {
+                let bar = vec![[n.log10(), lo.log10()], [n.log10(), hi.log10()]];
+                p.line(egui_plot::Line::new(name, bar).color(colour));
+            }
+        }
+    });
+    name_plot(&response.response, "fps vs lights plot");
+    legend(ui, &entries);
+}
+
+/// LTC's fps over the BRDF's at each light count both were measured at, for the lab's LTC
+/// and BRDF forms (or the first of each measured): the paper's Table 1 comparison.
+pub fn speed_ratio(m: &Measurement, s: &LabState) -> Option<String> {
+    let pick = |chosen: Method, family: &str| {
+        m.scaling
+            .iter()
+            .find(|(x, _)| *x == chosen)
+            .or_else(|| m.scaling.iter().find(|(x, _)| x.name().starts_with(family)))
+    };
+    let (ltc, ltc_fps) = pick(s.method_ltc, "ltc")?;
+    let (brdf, brdf_fps) = pick(s.method_brdf, "brdf")?;
+    let ratios: Vec<String> = ltc_fps
+        .iter()
+        .filter_map(|[n, f]| {
+            let b = brdf_fps.iter().find(|q| q[0] == *n)?;
+            // Plain counts: a thin space between thousands is where a line would break.
+            Some(format!("×{:.2} at {n} lights", f / b[1]))
+        })
+        .collect();
+    (!ratios.is_empty()).then(|| {
+        format!(
+            "LTC/BRDF speed ({} over {}): {}",
+            ltc.name(),
+            brdf.name(),
+            ratios.join(", ")
+        )
+    })
+}
+
+/// The plot's height, leaving room under it for its legend: its entries' widths (marker,
+/// small text, gap) wrapped into rows of the available width, plus one row of slack for the
+/// wrapping.
+fn plot_height(ui: &egui::Ui, height: f32, entries: &[Entry]) -> f32 {
+    let font = egui::TextStyle::Small.resolve(ui.style());
+    let widths = entries.iter().map(|(name, _, _)| {
+        let text = ui.fonts_mut(|f| f.layout_no_wrap(name.clone(), font.clone(), Color32::WHITE));
+        10.0 + 4.0 + text.size().x + 12.0
+    });
+    let rows = (widths.sum::<f32>() / ui.available_width().max(1.0)).ceil() + 1.0;
+    let row = ui.spacing().interact_size.y;
+    (height - rows * row).max(60.0)
+}
+
+/// The plot's bounds widened to whole decades on both axes, so that each always has at least
+/// two labelled ticks (a narrow span of times showed one or none).
+fn decades<'a>(
+    plot: egui_plot::Plot<'a>,
+    xs: impl Iterator<Item = f64>,
+    ys: impl Iterator<Item = f64>,
+) -> egui_plot::Plot<'a> {
+    let [x0, x1] = decade_span(xs);
+    let [y0, y1] = decade_span(ys);
+    plot.include_x(x0).include_x(x1).include_y(y0).include_y(y1)
+}
+
+/// log10 of the whole decades around the positive finite `values`: at least one decade.
+pub fn decade_span(values: impl Iterator<Item = f64>) -> [f64; 2] {
+    let logs = values.filter(|v| v.is_finite() && *v > 0.0).map(f64::log10);
+    let (lo, hi) = logs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+        (a.min(v), b.max(v))
+    });
+    if !lo.is_finite() {
+        return [0.0, 1.0];
+    }
+    let (lo, hi) = (lo.floor(), hi.ceil());
+    [lo, hi.max(lo + 1.0)]
+}
+
+/// A plot's accessible name, so that it can be found as a user finds it.
+fn name_plot(response: &egui::Response, name: &str) {
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Figure, true, name));
+}
+
+/// The series' names with their markers, under the plot: egui_plot's legend sits inside
+/// the plot, over the points.
+fn legend(ui: &mut egui::Ui, entries: &[Entry]) {
+    ui.horizontal_wrapped(|ui| {
+        ui.spacing_mut().item_spacing = egui::vec2(4.0, 0.0);
+        let font = egui::TextStyle::Small.resolve(ui.style());
+        let ink = ui.visuals().text_color();
+        for (name, colour, shape) in entries {
+            // Marker and name as one widget, so that a row never ends with a lone marker.
+            let text = ui.fonts_mut(|f| f.layout_no_wrap(name.clone(), font.clone(), ink));
+            let size = egui::vec2(14.0 + text.size().x, text.size().y.max(10.0));
+            let (rect, response) = ui.allocate_exact_size(size, egui::Sense::hover());
+            response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Label, true, name));
+            let dot = egui::Rect::from_center_size(
+                egui::pos2(rect.left() + 5.0, rect.center().y),
+                egui::vec2(10.0, 10.0),
+            );
+            marker(ui.painter(), dot, *colour, *shape);
+            ui.painter()
+                .galley(rect.left_top() + egui::vec2(14.0, 0.0), text, ink);
+            ui.add_space(8.0);
+        }
+    });
+}
+
+/// A legend's marker: the plot's marker shape, or a dash for a dashed line.
+fn marker(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    colour: Color32,
+    shape: Option<egui_plot::MarkerShape>,
+) {
+    use egui_plot::MarkerShape as M;
+    let (c, r) = (rect.center(), rect.width() * 0.45);
+    let stroke = egui::Stroke::new(1.5, colour);
+    let polygon =
+        |points: Vec<egui::Pos2>| egui::Shape::convex_polygon(points, colour, egui::Stroke::NONE);
+    let at = |dx: f32, dy: f32| c + egui::vec2(dx * r, dy * r);
+    let shape = match shape {
+        None => egui::Shape::line_segment([at(-1.0, 0.0), at(1.0, 0.0)], stroke),
+        Some(M::Circle) => egui::Shape::circle_filled(c, r, colour),
+        Some(M::Square) => egui::Shape::rect_filled(
+            egui::Rect::from_center_size(c, egui::vec2(1.6 * r, 1.6 * r)),
+            0.0,
+            colour,
+        ),
+        Some(M::Diamond) => polygon(vec![
+            at(0.0, -1.0),
+            at(1.0, 0.0),
+            at(0.0, 1.0),
+            at(-1.0, 0.0),
+        ]),
+        Some(M::Up) => polygon(vec![at(0.0, -1.0), at(1.0, 0.8), at(-1.0, 0.8)]),
+        Some(M::Down) => polygon(vec![at(0.0, 1.0), at(-1.0, -0.8), at(1.0, -0.8)]),
+        Some(M::Left) => polygon(vec![at(-1.0, 0.0), at(0.8, -1.0), at(0.8, 1.0)]),
+        Some(M::Right) => polygon(vec![at(1.0, 0.0), at(-0.8, 1.0), at(-0.8, -1.0)]),
+        Some(M::Plus) => egui::Shape::Vec(vec![
+            egui::Shape::line_segment([at(-1.0, 0.0), at(1.0, 0.0)], stroke),
+            egui::Shape::line_segment([at(0.0, -1.0), at(0.0, 1.0)], stroke),
+        ]),
+        Some(M::Cross | M::Asterisk) => egui::Shape::Vec(vec![
+            egui::Shape::line_segment([at(-0.8, -0.8), at(0.8, 0.8)], stroke),
+            egui::Shape::line_segment([at(-0.8, 0.8), at(0.8, -0.8)], stroke),
+        ]),
+    };
+    painter.add(shape);
 }
 
 /// The paper's reference lines' colours (greys, so that no measured method shares them).

@@ -70,7 +70,6 @@ pub fn show(
             ),
         );
     }
-    message_line(ui, message);
     ui.separator();
     material(ui, s);
     ui.separator();
@@ -84,17 +83,25 @@ pub fn show(
     action.or_else(|| save_buttons(ui, s))
 }
 
-/// The last file operation's outcome, at the top of the side panel: at the bottom it would
-/// be below the fold of a small window, and a click would seem to do nothing.
-fn message_line(ui: &mut egui::Ui, message: &Option<Message>) {
-    if let Some(m) = message {
-        let colour = if m.is_error {
-            egui::Color32::from_rgb(230, 90, 80)
-        } else {
-            ui.visuals().text_color()
-        };
+/// The last file operation's outcome, in a bar along the bottom of the window: always in
+/// view, even in a small window, and it moves no control (the panels' contents hang from
+/// their tops; at the top of the side panel it pushed every control down under the pointer).
+/// Whether it was dismissed.
+pub fn message_bar(ui: &mut egui::Ui, m: &Message) -> bool {
+    let colour = if m.is_error {
+        egui::Color32::from_rgb(230, 90, 80)
+    } else {
+        ui.visuals().text_color()
+    };
+    ui.horizontal(|ui| {
+        let dismissed = ui
+            .small_button("×")
+            .on_hover_text("Dismiss this notice")
+            .clicked();
         ui.colored_label(colour, &m.text);
-    }
+        dismissed
+    })
+    .inner
 }
 
 fn material(ui: &mut egui::Ui, s: &mut LabState) {
@@ -144,8 +151,12 @@ fn lights(ui: &mut egui::Ui, s: &mut LabState, max: usize) {
         },
     );
     if let Some(k) = s.selected_light.filter(|&k| k < s.scene.lights.len()) {
-        ui.add(egui::Slider::new(&mut s.scene.lights[k].position[2], -1.0..=3.0).text(format!("height of light {k}")))
-            .on_hover_text("z of the selected light; below 0 it is under the plane (clipping case 1). Shift-drag its marker for the same");
+        light_position(
+            ui,
+            k,
+            &mut s.scene.lights[k].position,
+            s.scene.plane.half_size,
+        );
     }
     let mut count = s.light_count;
     ui.horizontal(|ui| {
@@ -201,6 +212,26 @@ fn shading_rules(ui: &mut egui::Ui, s: &mut LabState) {
     };
 }
 
+/// The selected light's x, y (over the plane) and z, typed or dragged.
+fn light_position(ui: &mut egui::Ui, k: usize, position: &mut [f64; 3], half_size: f64) {
+    ui.horizontal(|ui| {
+        ui.label(format!("light {k}"));
+        for (i, (axis, range, hover)) in [
+            ("x", -half_size..=half_size, "Across the plane"),
+            ("y", -half_size..=half_size, "Along the plane, away from the camera"),
+            ("z", -1.0..=3.0, "Height: below 0 the light is under the plane (clipping case 1). Shift-drag its marker for the same"),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let label = ui.label(axis);
+            ui.add(egui::DragValue::new(&mut position[i]).speed(0.01).range(range).max_decimals(4))
+                .labelled_by(label.id)
+                .on_hover_text(hover);
+        }
+    });
+}
+
 /// The presets, and a scene file to load or save (only the file named is written).
 fn scene_files(
     ui: &mut egui::Ui,
@@ -242,6 +273,8 @@ fn scene_files(
             .on_hover_text("Write the scene to the file named on the left (and no other)")
             .clicked()
         {
+            // The view becomes what the file holds.
+            s.scene = s.scene.rounded_for_saving();
             let text = s.scene.to_toml();
             *message = Some(
                 match crate::files::write_atomically(Path::new(&s.scene_path), text.as_bytes()) {

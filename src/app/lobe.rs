@@ -111,7 +111,7 @@ impl LobePanel {
         match difference {
             Some(scale) => colour_bar(ui, &scale, 200.0),
             None => {
-                ui.small("orange: exact f·cos (filled); blue lines: LTC n·D; green lines: table B; n normal, v view, M x/y/z the columns of M");
+                ui.label("orange: exact f·cos (filled); blue lines: LTC n·D; green lines: table B; n normal, v view, M x/y/z the columns of M");
             }
         }
         slice_plot(ui, s.lobe, v, alpha, &ltc, other_ltc.as_ref(), plot_h);
@@ -280,8 +280,13 @@ impl LobePanel {
                 }
             }
         }
-        // The horizon circle, the normal, the view vector and the LTC's frame, labelled.
-        let reach = 0.5 * span_x.max(span_y).min(1.2);
+        // The horizon circle, the normal, the view vector and the LTC's frame, labelled. With
+        // the difference coloured on the unit sphere, the circle is its equator.
+        let reach = if difference.is_some() {
+            1.0
+        } else {
+            0.5 * span_x.max(span_y).min(1.2)
+        };
         let ring: Vec<Pos2> = (0..=64)
             .map(|k| {
                 let p = std::f64::consts::TAU * k as f64 / 64.0;
@@ -330,6 +335,8 @@ impl LobePanel {
             while let Some(hit) = placed.iter().find(|r| r.intersects(at)) {
                 at = at.translate(egui::vec2(0.0, hit.max.y - at.min.y + 1.0));
             }
+            // On a dark plate: a label over the lobe's mesh ("M z") was lost in its lines.
+            painter.rect_filled(at.expand(1.0), 2.0, Color32::from_black_alpha(170));
             painter.galley(at.min, galley, c);
             placed.push(at);
         }

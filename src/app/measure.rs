@@ -23,12 +23,16 @@ pub const MEASURE_SIZE: (usize, usize) = (320, 180);
 /// Timed renders per point (median): three, as a CPU driver takes seconds for each.
 pub const REPEATS: usize = 3;
 
-/// One measured method: GPU ms and relative RMSE against the exact BRDF.
+/// One measured method: GPU ms (the median of the timed renders) and relative RMSE against
+/// the exact BRDF.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Point {
     pub label: String,
     pub ms: f64,
     pub rel_rmse: f64,
+    /// The fastest and slowest of the timed renders (a study.csv has only the median).
+    #[serde(default)]
+    pub ms_range: Option<[f64; 2]>,
 }
 
 /// What the chart plots.
@@ -37,6 +41,9 @@ pub struct Measurement {
     pub points: Vec<Point>,
     /// (lights, fps) per method.
     pub scaling: Vec<(Method, Vec<[f64; 2]>)>,
+    /// (lights, slowest fps, fastest fps) per method, from the timed renders.
+    #[serde(default)]
+    pub scaling_range: Vec<(Method, Vec<[f64; 3]>)>,
     /// Where it comes from: the device and size, or a study file.
     pub device: String,
 }
@@ -52,9 +59,11 @@ impl Measurement {
                     label: r.variant.clone(),
                     ms: r.ms_median,
                     rel_rmse: r.rel_rmse,
+                    ms_range: None,
                 })
                 .collect(),
             scaling: study_scaling(rows),
+            scaling_range: Vec::new(),
             device: format!("{source}: {} rows", rows.len()),
         }
     }
@@ -78,6 +87,14 @@ impl Measurement {
                 crate::error::number(p.rel_rmse)
             ));
         }
+        let ranges = self.points.iter().flat_map(|p| p.ms_range).flatten();
+        let spreads = self.scaling_range.iter().flat_map(|(_, s)| s).flatten();
+        if let Some(x) = ranges.chain(spreads.copied()).find(|&x| !positive(x)) {
+            return Err(format!(
+                "a timed range holds {}: times and fps must be finite and > 0",
+                crate::error::number(x)
+            ));
+        }
         for (method, fps) in &self.scaling {
             if let Some([lights, f]) = fps.iter().find(|[n, f]| !positive(*n) || !positive(*f)) {
                 return Err(format!(
@@ -89,6 +106,18 @@ impl Measurement {
             }
         }
         Ok(())
+    }
+}
+
+/// Appends `point` to `method`'s series.
+fn push_to<const N: usize>(
+    series: &mut Vec<(Method, Vec<[f64; N]>)>,
+    method: Method,
+    point: [f64; N],
+) {
+    match series.iter_mut().find(|(m, _)| *m == method) {
+        Some((_, s)) => s.push(point),
+        None => series.push((method, vec![point])),
     }
 }
 
@@ -274,6 +303,7 @@ impl MeasureJob {
         let mut ms = std::mem::take(&mut self.repeat_ms);
         ms.sort_by(f64::total_cmp);
         let median = ms[ms.len() / 2];
+        let range = [ms[0], ms[ms.len() - 1]];
         let task = &self.tasks[self.next];
         match task.curve {
             None => {
@@ -283,14 +313,14 @@ impl MeasureJob {
                     label: task.label.clone(),
                     ms: median,
                     rel_rmse: image_error(&frame, exact).rel_rmse,
+                    ms_range: Some(range),
                 });
             }
             Some((method, n)) => {
-                let fps = 1e3 / median.max(1e-9);
-                match self.result.scaling.iter_mut().find(|(m, _)| *m == method) {
-                    Some((_, series)) => series.push([n as f64, fps]),
-                    None => self.result.scaling.push((method, vec![[n as f64, fps]])),
-                }
+                let fps = |ms: f64| 1e3 / ms.max(1e-9);
+                push_to(&mut self.result.scaling, method, [n as f64, fps(median)]);
+                let spread = [n as f64, fps(range[1]), fps(range[0])];
+                push_to(&mut self.result.scaling_range, method, spread);
             }
         }
         self.next += 1;

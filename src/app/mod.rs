@@ -44,6 +44,9 @@ pub struct LabApp {
     pub message: Option<Message>,
     /// A screenshot on its way to a file.
     pub screenshot: Option<PendingScreenshot>,
+    /// The window's size in points when the zoom was last looked at, and its size at zoom 1
+    /// when it was last fitted.
+    zoomed_for: Option<([u32; 2], [u32; 2])>,
 }
 
 /// The smallest central area that shows all five panels at once: below it each panel is
@@ -87,6 +90,7 @@ impl LabApp {
             shading,
             message: (!notice.is_empty()).then(|| Message::error(notice.join("; "))),
             screenshot: None,
+            zoomed_for: None,
         }
     }
 
@@ -109,6 +113,15 @@ impl LabApp {
     /// The whole window: the side panel (unless folded), then the panels — one maximised,
     /// all in a grid, or, below `GRID_MIN`, one at a time under tabs.
     pub fn show(&mut self, ui: &mut egui::Ui) {
+        self.fit_zoom(ui.ctx());
+        if let Some(m) = &self.message {
+            let dismissed = egui::Panel::bottom("notices")
+                .show(ui, |ui| controls::message_bar(ui, m))
+                .inner;
+            if dismissed {
+                self.message = None;
+            }
+        }
         if !self.state.controls_hidden {
             egui::Panel::left("controls")
                 .resizable(true)
@@ -202,7 +215,10 @@ impl LabApp {
         egui::Frame::group(ui.style()).show(ui, |ui| {
             ui.set_min_size(ui.available_size());
             ui.horizontal(|ui| {
-                ui.strong(id.title());
+                ui.strong(match id {
+                    PanelId::Plane => plane::title(&self.state, &self.lut_name, &self.other),
+                    _ => id.title().to_string(),
+                });
                 ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                     let maximised = self.state.maximised == Some(id);
                     let label = if maximised { "restore" } else { "maximise" };
@@ -282,6 +298,24 @@ impl LabApp {
         self.other = other;
     }
 
+    /// Fits egui's zoom to the window when the window's size changes (`auto_zoom`). A change
+    /// of the size in points that keeps the size at zoom 1 is a zoom (the user's Ctrl + / −,
+    /// or the one set here, which the window's size follows a frame late): it stands.
+    fn fit_zoom(&mut self, ctx: &egui::Context) {
+        let points = ctx.input(|i| i.viewport_rect().size());
+        let logical = points * ctx.zoom_factor();
+        let key = |v: egui::Vec2| [v.x.round() as u32, v.y.round() as u32];
+        let (points_key, logical_key) = (key(points), key(logical));
+        match self.zoomed_for {
+            Some((p, _)) if p == points_key => {}
+            Some((_, l)) if l == logical_key => self.zoomed_for = Some((points_key, l)),
+            _ => {
+                self.zoomed_for = Some((points_key, logical_key));
+                ctx.set_zoom_factor(auto_zoom(logical));
+            }
+        }
+    }
+
     /// Saves a screenshot the user asked for, once its pixels arrive.
     fn save_screenshot(&mut self, ctx: &egui::Context) {
         let Some(outcome) = self.screenshot.as_mut().and_then(|p| p.poll(ctx)) else {
@@ -293,6 +327,14 @@ impl LabApp {
         });
         self.screenshot = None;
     }
+}
+
+/// The zoom for a window `size` points large at zoom 1: 1 up to 1920×1080, the size the
+/// panels are laid out for, and growing with the window beyond it (2 at 3840×2160), so that
+/// pictures and text grow with a large screen instead of floating small in empty space.
+pub fn auto_zoom(size: egui::Vec2) -> f32 {
+    // At most 3: beyond it a wall-sized window is better served by Ctrl + / −.
+    (size.x / 1920.0).min(size.y / 1080.0).clamp(1.0, 3.0)
 }
 
 /// Table A as `state` says (its file read again, or the shipped table), its name, and why a

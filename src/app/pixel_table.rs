@@ -1,8 +1,9 @@
-//! The plane's pinned pixel opened into its lights: its exact and LTC radiance and their
-//! error, and a table of its lights — where each is before and after M^-1, its clipping case,
-//! D, the Jacobian, the magnitudes and Fresnel, E, and its LTC and exact contribution with
-//! its share of the pixel's error — sortable by any column. A row's click shows that light
-//! on the lobe panel.
+//! The plane's pinned pixel opened into its lights: its two sides' radiance and their
+//! difference, and a table of its lights — where each is before and after M^-1, its clipping
+//! case, D, the Jacobian, the magnitudes and Fresnel, E, and its contribution to either side
+//! with its share of their difference — sortable by any column. The sides are LTC and the
+//! exact BRDF, or (two tables compared) LTC with table A and with table B. A row's click
+//! shows that light on the lobe panel.
 
 use crate::app::state::{LabState, LightColumn};
 use crate::colormap::short_number;
@@ -17,15 +18,22 @@ use crate::scene::Scene;
 /// 20 000 lights is unreadable, and the sums above it cover every light.
 const MAX_ROWS: usize = 200;
 
-/// The pinned pixel's terms with table A, as the plane renders it (`None`: none pinned, or
-/// it is off the plane).
-fn pinned_terms(s: &LabState, lut: &Lut, (width, height): (usize, usize)) -> Option<PixelTerms> {
+/// Table A, and table B where two tables are compared.
+pub type PixelTables<'a> = (&'a Lut, Option<&'a Lut>);
+
+/// The pinned pixel's terms with table A (and B), as the plane renders it (`None`: none
+/// pinned, or it is off the plane).
+fn pinned_terms(
+    s: &LabState,
+    tables: PixelTables<'_>,
+    (width, height): (usize, usize),
+) -> Option<PixelTerms> {
     let [u, v] = s.pinned?;
     let scene = s.shaded_scene();
     let p = scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
     pixel_terms(
         &scene,
-        lut,
+        tables,
         &p,
         s.clipping,
         s.normalization,
@@ -46,10 +54,11 @@ pub struct PinnedKey {
     clipping: Clipping,
     normalization: Normalization,
     lut: Lut,
+    lut_b: Option<Lut>,
 }
 
 impl PinnedKey {
-    fn of(s: &LabState, lut: &Lut, size: (usize, usize)) -> Self {
+    fn of(s: &LabState, (lut, lut_b): PixelTables<'_>, size: (usize, usize)) -> Self {
         Self {
             scene: s.scene.clone(),
             intensity_scale: s.intensity_scale,
@@ -59,12 +68,13 @@ impl PinnedKey {
             clipping: s.clipping,
             normalization: s.normalization,
             lut: lut.clone(),
+            lut_b: lut_b.cloned(),
         }
     }
 
     /// Whether the terms made under this key are still the current ones (compared field by
-    /// field, without copying the scene or the table).
-    fn holds_for(&self, s: &LabState, lut: &Lut, size: (usize, usize)) -> bool {
+    /// field, without copying the scene or the tables).
+    fn holds_for(&self, s: &LabState, (lut, lut_b): PixelTables<'_>, size: (usize, usize)) -> bool {
         self.pinned == s.pinned
             && self.size == size
             && self.clipping == s.clipping
@@ -73,6 +83,7 @@ impl PinnedKey {
             && self.range_override == s.range_override
             && self.scene == s.scene
             && self.lut == *lut
+            && self.lut_b.as_ref() == lut_b
     }
 }
 
@@ -80,18 +91,22 @@ impl PinnedKey {
 pub fn update_pinned(
     cached: &mut Option<(PinnedKey, Option<PixelTerms>)>,
     s: &LabState,
-    lut: &Lut,
+    tables: PixelTables<'_>,
     size: (usize, usize),
 ) {
     if !cached
         .as_ref()
-        .is_some_and(|(k, _)| k.holds_for(s, lut, size))
+        .is_some_and(|(k, _)| k.holds_for(s, tables, size))
     {
-        *cached = Some((PinnedKey::of(s, lut, size), pinned_terms(s, lut, size)));
+        *cached = Some((
+            PinnedKey::of(s, tables, size),
+            pinned_terms(s, tables, size),
+        ));
     }
 }
 
-const COLUMNS: [(LightColumn, &str, &str); 11] = [
+/// The columns both comparisons share: where the light is and the factors of table A's LTC.
+const COLUMNS: [(LightColumn, &str, &str); 8] = [
     (
         LightColumn::Index,
         "#",
@@ -105,7 +120,7 @@ const COLUMNS: [(LightColumn, &str, &str); 11] = [
     (
         LightColumn::ElevationCos,
         "ω' elev, az",
-        "ω' = M^-1 ω (specular lobe): where the clamped cosine sees the light",
+        "ω' = M^-1 ω (specular lobe, table A): where the clamped cosine sees the light",
     ),
     (
         LightColumn::Case,
@@ -115,7 +130,7 @@ const COLUMNS: [(LightColumn, &str, &str); 11] = [
     (
         LightColumn::DSpec,
         "D_s, D_d",
-        "The specular and diffuse D(ω) with the rules in force (1/sr)",
+        "The specular and diffuse D(ω) of table A with the rules in force (1/sr)",
     ),
     (
         LightColumn::Jacobian,
@@ -132,6 +147,12 @@ const COLUMNS: [(LightColumn, &str, &str); 11] = [
         "E",
         "I·w(d)/d² on luminance (w: the range window)",
     ),
+];
+
+/// The columns of the two sides compared, LTC against the exact BRDF. The same three
+/// `LightColumn`s (and their sort) stand for table A, table B and their share where two
+/// tables are compared (`TABLE_COLUMNS`).
+const BRDF_COLUMNS: [(LightColumn, &str, &str); 3] = [
     (
         LightColumn::Ltc,
         "LTC",
@@ -149,6 +170,29 @@ const COLUMNS: [(LightColumn, &str, &str); 11] = [
     ),
 ];
 
+const TABLE_COLUMNS: [(LightColumn, &str, &str); 3] = [
+    (
+        LightColumn::Ltc,
+        "table A",
+        "This light's LTC radiance with table A (luminance)",
+    ),
+    (
+        LightColumn::Exact,
+        "table B",
+        "This light's LTC radiance with table B (luminance), the same LTC form and rules",
+    ),
+    (
+        LightColumn::ErrorShare,
+        "share of |A−B|",
+        "|L_A − L_B| of this light over the sum of every light's |L_A − L_B|: which lights make the tables differ here; the shares sum to 100%",
+    ),
+];
+
+/// Whether the terms compare two tables (else LTC against the exact BRDF).
+fn tables_compared(t: &PixelTerms) -> bool {
+    t.ltc_b.is_some()
+}
+
 fn sort_key(t: &PixelTerms, l: &LightTerm, c: LightColumn) -> f64 {
     match c {
         LightColumn::Index => l.index as f64,
@@ -160,7 +204,8 @@ fn sort_key(t: &PixelTerms, l: &LightTerm, c: LightColumn) -> f64 {
         LightColumn::Fresnel => l.fresnel,
         LightColumn::Irradiance => l.irradiance,
         LightColumn::Ltc => luminance(l.ltc),
-        LightColumn::Exact => luminance(l.exact),
+        LightColumn::Exact => luminance(l.side_b()),
+        LightColumn::ErrorShare if tables_compared(t) => t.difference_share(l),
         LightColumn::ErrorShare => t.error_share(l).abs(),
     }
 }
@@ -180,31 +225,13 @@ pub fn show(ui: &mut egui::Ui, s: &mut LabState, terms: Option<&PixelTerms>, tab
     let Some(t) = terms else {
         return;
     };
-    let [u, v] = s.pinned.unwrap_or_default();
-    ui.horizontal_wrapped(|ui| {
-        ui.label(format!(
-            "pinned ({u:.3}, {v:.3}), θo {:.1}°: LTC {} | exact {} (luminance), error {:+.2}%, {} lights",
-            t.theta_o.to_degrees(),
-            short_number(luminance(t.ltc)),
-            short_number(luminance(t.exact)),
-            100.0 * t.relative_error(),
-            t.terms.len()
-        ))
-        .on_hover_text("LTC with table A and the rules in force against the exact BRDF, in f64 on the CPU; it updates with every change");
-        if let Some(l) = t.terms.first() {
-            ui.small(format!(
-                "magnitudes: specular F0·n_s + (1−F0)·f_s = {}, diffuse n_d = {}",
-                short_number(l.spec_magnitude),
-                short_number(l.diff_magnitude)
-            ))
-            .on_hover_text("The LTC lobes' magnitudes at this pixel's θo (the same for all its lights)");
-        }
-        if ui.small_button("unpin").clicked() {
-            s.pinned = None;
-            s.lobe_light = None;
-        }
-    });
+    readout(ui, s, t);
     let rows = sorted_rows(t, s.light_sort);
+    let value_columns = if tables_compared(t) {
+        TABLE_COLUMNS
+    } else {
+        BRDF_COLUMNS
+    };
     egui::ScrollArea::both()
         .id_salt("pixel lights")
         .max_height(table_height)
@@ -214,23 +241,8 @@ pub fn show(ui: &mut egui::Ui, s: &mut LabState, terms: Option<&PixelTerms>, tab
                 .striped(true)
                 .spacing([10.0, 2.0])
                 .show(ui, |ui| {
-                    for (c, name, hover) in COLUMNS {
-                        let arrow = match s.light_sort {
-                            (sorted, true) if sorted == c => " v",
-                            (sorted, false) if sorted == c => " ^",
-                            _ => "",
-                        };
-                        if ui
-                            .small_button(format!("{name}{arrow}"))
-                            .on_hover_text(hover)
-                            .clicked()
-                        {
-                            s.light_sort = if s.light_sort.0 == c {
-                                (c, !s.light_sort.1)
-                            } else {
-                                (c, true)
-                            };
-                        }
+                    for (c, name, hover) in COLUMNS.into_iter().chain(value_columns) {
+                        header(ui, s, (c, name, hover));
                     }
                     ui.end_row();
                     for l in rows.iter().take(MAX_ROWS) {
@@ -245,6 +257,74 @@ pub fn show(ui: &mut egui::Ui, s: &mut LabState, terms: Option<&PixelTerms>, tab
                 ));
             }
         });
+}
+
+/// The pixel's sides and their difference, its magnitudes, and the unpin button.
+fn readout(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms) {
+    let [u, v] = s.pinned.unwrap_or_default();
+    let (sides, hover) = if tables_compared(t) {
+        (
+            format!(
+                "table A {} | table B {} (luminance), difference {:+.2}%",
+                short_number(luminance(t.ltc)),
+                short_number(luminance(t.side_b())),
+                100.0 * t.relative_difference()
+            ),
+            "LTC with table A against the same LTC form with table B, the rules in force, in f64 on the CPU; it updates with every change",
+        )
+    } else {
+        (
+            format!(
+                "LTC {} | exact {} (luminance), error {:+.2}%",
+                short_number(luminance(t.ltc)),
+                short_number(luminance(t.exact)),
+                100.0 * t.relative_error()
+            ),
+            "LTC with table A and the rules in force against the exact BRDF, in f64 on the CPU; it updates with every change",
+        )
+    };
+    ui.horizontal_wrapped(|ui| {
+        ui.label(format!(
+            "pinned ({u:.3}, {v:.3}), θo {:.1}°: {sides}, {} lights",
+            t.theta_o.to_degrees(),
+            t.terms.len()
+        ))
+        .on_hover_text(hover);
+        if let Some(l) = t.terms.first() {
+            ui.small(format!(
+                "magnitudes: specular F0·n_s + (1−F0)·f_s = {}, diffuse n_d = {}",
+                short_number(l.spec_magnitude),
+                short_number(l.diff_magnitude)
+            ))
+            .on_hover_text(
+                "Table A's LTC lobes' magnitudes at this pixel's θo (the same for all its lights)",
+            );
+        }
+        if ui.small_button("unpin").clicked() {
+            s.pinned = None;
+            s.lobe_light = None;
+        }
+    });
+}
+
+/// A column's header: a button that sorts by it (again: the other way round).
+fn header(ui: &mut egui::Ui, s: &mut LabState, (c, name, hover): (LightColumn, &str, &str)) {
+    let arrow = match s.light_sort {
+        (sorted, true) if sorted == c => " v",
+        (sorted, false) if sorted == c => " ^",
+        _ => "",
+    };
+    if ui
+        .small_button(format!("{name}{arrow}"))
+        .on_hover_text(hover)
+        .clicked()
+    {
+        s.light_sort = if s.light_sort.0 == c {
+            (c, !s.light_sort.1)
+        } else {
+            (c, true)
+        };
+    }
 }
 
 fn row(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms, l: &LightTerm) {
@@ -279,6 +359,10 @@ fn row(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms, l: &LightTerm) {
     ui.monospace(format!("{:.4}", l.fresnel));
     ui.monospace(short_number(l.irradiance));
     ui.monospace(short_number(luminance(l.ltc)));
-    ui.monospace(short_number(luminance(l.exact)));
-    ui.monospace(format!("{:+.1}%", 100.0 * t.error_share(l)));
+    ui.monospace(short_number(luminance(l.side_b())));
+    if tables_compared(t) {
+        ui.monospace(format!("{:.1}%", 100.0 * t.difference_share(l)));
+    } else {
+        ui.monospace(format!("{:+.1}%", 100.0 * t.error_share(l)));
+    }
 }

@@ -1,8 +1,9 @@
 //! The plane panel: the scene shaded on the window's GPU — summed over frames within a time
-//! budget, with its progress — LTC left of a draggable divider and the exact BRDF right of it
-//! (or the difference map, or one alone); light markers to drag (Shift: height), add and
-//! remove; a pixel inspector, shaded on the CPU in f64, with both radiances, their relative
-//! error and the lights in clipping cases 1 and 2.
+//! budget, with its progress — LTC left of a draggable divider and the exact BRDF (or LTC
+//! with table B) right of it, or the difference map, or one alone; light markers to drag
+//! (Shift: height), add where they are seen and remove; the pixel where the sides differ
+//! most, pinned on request; a pixel inspector, shaded on the CPU in f64, with both
+//! radiances, their relative difference and the lights in clipping cases 1 and 2.
 
 use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
@@ -11,17 +12,20 @@ use crate::app::display::{ShownImage, colour_bar, difference_scale};
 use crate::app::other::OtherTable;
 use crate::app::pixel_table;
 use crate::app::shading::Shading;
-use crate::app::state::{Compare, LabState};
+use crate::app::state::{Compare, LabState, PanelId};
 use crate::cpu::{clip_counts, shade_exact, shade_ltc};
 use crate::ltc::lut::Lut;
 use crate::metrics::luminance;
-use crate::render::{LutFilter, RenderSettings, View};
-use crate::scene::Light;
+use crate::render::{Frame, FrameKind, LutFilter, RenderSettings, View};
+use crate::scene::{Light, Scene};
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
 /// 20 000 lights in under a minute on a CPU driver (lavapipe, ~0.2 G light-px/s), and in
 /// milliseconds on a GPU.
 pub const MAX_RENDER_WIDTH: f32 = 960.0;
+
+/// The image's aspect ratio, width over height.
+const ASPECT: f32 = 16.0 / 9.0;
 
 enum Drag {
     Divider,
@@ -37,6 +41,8 @@ pub struct PlanePanel {
     pub inspected: Option<PixelReading>,
     /// The pinned pixel's lights, as last shown, and what they were computed for.
     pinned: Option<(pixel_table::PinnedKey, Option<crate::pixel::PixelTerms>)>,
+    /// *worst pixel* was pressed: the pixel is pinned when the difference view is done.
+    worst_pending: bool,
     /// Hide the live GPU times (they change run to run; snapshot tests hide them).
     pub hide_timings: bool,
 }
@@ -84,54 +90,7 @@ impl PlanePanel {
         (lut, other): (&Lut, &OtherTable),
     ) {
         let (a, b) = side_names(s.compare);
-        ui.horizontal_wrapped(|ui| {
-            ui.selectable_value(&mut s.compare, Compare::Brdf, "LTC | BRDF")
-                .on_hover_text("Side B is the exact BRDF (the BRDF form in the side panel)");
-            ui.selectable_value(&mut s.compare, Compare::TableB, "A | B tables")
-                .on_hover_text(format!("Two tables compared: side B is the same LTC form with table B ({}) instead of the BRDF; the difference map is then |L_A − L_B| / L_B", other.name));
-            ui.separator();
-            for (v, name, hover) in [
-                (
-                    View::Split,
-                    "split".to_string(),
-                    format!("{a} left of the divider, {b} right of it; drag the divider"),
-                ),
-                (
-                    View::Diff,
-                    "difference".to_string(),
-                    format!("|L_{a} − L_{b}| / max(L_{b}, 1% of the mean), log colour scale 0.1%–100%"),
-                ),
-                (View::A, a.to_string(), format!("{a} alone")),
-                (View::B, b.to_string(), format!("{b} alone")),
-            ] {
-                ui.selectable_value(&mut s.view, v, name)
-                    .on_hover_text(hover);
-            }
-            if ui
-                .small_button("+ light")
-                .on_hover_text("Add a light 0.5 above the plane's centre")
-                .clicked()
-            {
-                s.scene.lights.push(Light {
-                    position: [0.0, 0.0, 0.5],
-                    color: [1.0; 3],
-                    intensity: 0.2,
-                    range: None,
-                });
-                s.selected_light = Some(s.scene.lights.len() - 1);
-                s.light_count = s.scene.lights.len();
-            }
-            if let Some(k) = s.selected_light.filter(|&k| k < s.scene.lights.len())
-                && ui
-                    .small_button("− light")
-                    .on_hover_text("Remove the selected light")
-                    .clicked()
-            {
-                s.scene.lights.remove(k);
-                s.selected_light = None;
-                s.light_count = s.scene.lights.len();
-            }
-        });
+        ui.horizontal_wrapped(|ui| self.toolbar(ui, s, other));
         ui.horizontal_wrapped(|ui| {
             exposure_slider(ui, s);
             progress_line(ui, shading, self.hide_timings);
@@ -155,111 +114,40 @@ impl PlanePanel {
                 0.0
             };
         let avail = ui.available_size() - Vec2::new(0.0, strip);
-        let aspect = 16.0 / 9.0;
-        let size = if avail.x / avail.y > aspect {
-            Vec2::new(avail.y * aspect, avail.y)
+        let size = if avail.x / avail.y > ASPECT {
+            Vec2::new(avail.y * ASPECT, avail.y)
         } else {
-            Vec2::new(avail.x, avail.x / aspect)
+            Vec2::new(avail.x, avail.x / ASPECT)
         }
         .max(Vec2::new(32.0, 18.0));
         let (rect, response) = ui.allocate_exact_size(size, egui::Sense::click_and_drag());
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "plane image"));
         let ppp = ui.ctx().pixels_per_point();
         let width = (size.x * ppp).min(MAX_RENDER_WIDTH).round().max(16.0) as usize;
-        let height = ((width as f32) / aspect).round().max(9.0) as usize;
+        let height = ((width as f32) / ASPECT).round().max(9.0) as usize;
         let shown = shading.update(
             ui.ctx(),
             &s.shaded_scene(),
             &Self::settings(s, width, height),
         );
         self.shown = Some(shown);
+        self.pin_worst(s, shading);
         let painter = ui.painter_at(rect);
-        if let Some(t) = shown.texture {
-            painter.image(
-                t,
-                rect,
-                egui::Rect::from_min_max(Pos2::ZERO, egui::pos2(1.0, 1.0)),
-                Color32::WHITE,
-            );
-        }
-        if let Some(e) = &shading.error {
-            painter.text(
-                rect.center(),
-                egui::Align2::CENTER_CENTER,
-                e,
-                egui::FontId::proportional(13.0),
-                Color32::LIGHT_RED,
-            );
-        }
-        let to_screen = |(x, y): (f64, f64)| {
-            rect.min
-                + Vec2::new(
-                    (x / width as f64) as f32 * rect.width(),
-                    (y / height as f64) as f32 * rect.height(),
-                )
-        };
+        paint_image(&painter, rect, shown, shading.error.as_deref());
         let divider_x = rect.min.x + rect.width() * s.divider as f32;
         if s.view == View::Split {
-            painter.vline(
-                divider_x,
-                rect.y_range(),
-                egui::Stroke::new(2.0, Color32::WHITE),
-            );
-            painter.text(
-                egui::pos2(divider_x - 6.0, rect.min.y + 4.0),
-                egui::Align2::RIGHT_TOP,
-                a,
-                egui::FontId::proportional(12.0),
-                Color32::WHITE,
-            );
-            painter.text(
-                egui::pos2(divider_x + 6.0, rect.min.y + 4.0),
-                egui::Align2::LEFT_TOP,
-                b,
-                egui::FontId::proportional(12.0),
-                Color32::WHITE,
-            );
+            paint_divider(&painter, rect, divider_x, (a, b));
         }
-        // Light markers (the first 200: beyond that they only hide the image).
-        let markers: Vec<(usize, Pos2)> = s
-            .scene
-            .lights
-            .iter()
-            .enumerate()
-            .take(200)
-            .filter_map(|(k, l)| {
-                s.scene
-                    .project(DVec3::from(l.position), width, height)
-                    .map(|p| (k, to_screen(p)))
-            })
-            .filter(|(_, p)| rect.contains(*p))
-            .collect();
-        for (k, p) in &markers {
-            let l = &s.scene.lights[*k];
-            let c = Color32::from_rgb(
-                (l.color[0] * 255.0) as u8,
-                (l.color[1] * 255.0) as u8,
-                (l.color[2] * 255.0) as u8,
-            );
-            let selected = s.selected_light == Some(*k);
-            painter.circle(
-                *p,
-                if selected { 6.0 } else { 4.0 },
-                c,
-                egui::Stroke::new(if selected { 2.0 } else { 1.0 }, Color32::BLACK),
-            );
-        }
+        let markers = paint_markers(&painter, s, rect, (width, height));
         self.interact(&response, s, rect, width, height, &markers, divider_x);
         if let Some([u, v]) = s.pinned {
-            let p = rect.min + Vec2::new(u as f32 * rect.width(), v as f32 * rect.height());
-            let stroke = egui::Stroke::new(1.5, Color32::from_rgb(255, 240, 80));
-            painter.circle_stroke(p, 6.0, stroke);
-            painter.hline(p.x - 10.0..=p.x - 4.0, p.y, stroke);
-            painter.hline(p.x + 4.0..=p.x + 10.0, p.y, stroke);
-            painter.vline(p.x, p.y - 10.0..=p.y - 4.0, stroke);
-            painter.vline(p.x, p.y + 4.0..=p.y + 10.0, stroke);
+            paint_pin(
+                &painter,
+                rect.min + Vec2::new(u as f32 * rect.width(), v as f32 * rect.height()),
+            );
         }
-        pixel_table::update_pinned(&mut self.pinned, s, lut, (width, height));
+        let b_table = (s.compare == Compare::TableB).then_some(&other.lut);
+        pixel_table::update_pinned(&mut self.pinned, s, (lut, b_table), (width, height));
         if s.view == View::Diff {
             colour_bar(ui, &difference_scale(a, b), 220.0);
         }
@@ -268,21 +156,97 @@ impl PlanePanel {
         self.inspected = response.hover_pos().and_then(|pos| {
             let x = f64::from((pos.x - rect.min.x) / rect.width()) * width as f64;
             let y = f64::from((pos.y - rect.min.y) / rect.height()) * height as f64;
-            let b_table = (s.compare == Compare::TableB).then_some(&other.lut);
             inspect(s, (lut, b_table), x, y, width, height)
         });
-        match &self.inspected {
-            Some(r) => ui.label(format!(
-                "pixel: {a} {:.4} | {b} {:.4} (luminance), relative difference {:.2}%; lights in case 1: {}, case 2: {}",
-                luminance(r.a),
-                luminance(r.b),
-                100.0 * r.relative_error,
-                r.case1,
-                r.case2
-            )),
-            None => ui.label("hover a pixel to read it, click to pin it and open its lights; drag a light's marker to move it (Shift: its height), drag the divider"),
-        };
+        reading_line(ui, self.inspected.as_ref(), (a, b));
         pixel_table::show(ui, s, self.pinned(), table_h);
+    }
+
+    /// The comparison's switch, the views, adding and removing lights, the worst pixel.
+    fn toolbar(&mut self, ui: &mut egui::Ui, s: &mut LabState, other: &OtherTable) {
+        let (a, b) = side_names(s.compare);
+        ui.selectable_value(&mut s.compare, Compare::Brdf, "LTC | BRDF")
+            .on_hover_text("Side B is the exact BRDF (the BRDF form in the side panel)");
+        ui.selectable_value(&mut s.compare, Compare::TableB, "A | B tables")
+            .on_hover_text(format!("Two tables compared: side B is the same LTC form with table B ({}) instead of the BRDF; the difference map is then |L_A − L_B| / L_B", other.name));
+        ui.separator();
+        for (v, name, hover) in [
+            (
+                View::Split,
+                "split".to_string(),
+                format!("{a} left of the divider, {b} right of it; drag the divider"),
+            ),
+            (
+                View::Diff,
+                "difference".to_string(),
+                format!("|L_{a} − L_{b}| / max(L_{b}, 1% of the mean), log colour scale 0.1%–100%"),
+            ),
+            (View::A, a.to_string(), format!("{a} alone")),
+            (View::B, b.to_string(), format!("{b} alone")),
+        ] {
+            ui.selectable_value(&mut s.view, v, name)
+                .on_hover_text(hover);
+        }
+        if ui
+            .small_button("worst pixel")
+            .on_hover_text(format!("Pin the pixel where {a} and {b} differ most: the largest |L_{a} − L_{b}| / max(L_{b}, 1% of the mean) of the finished difference map (shown for it)"))
+            .clicked()
+        {
+            s.view = View::Diff;
+            self.worst_pending = true;
+        }
+        if ui
+            .small_button("+ light")
+            .on_hover_text("Add a light where it is seen: over the plane, away from the divider and from the other lights")
+            .clicked()
+        {
+            let size = self.shown.map_or((1600, 900), |i| i.size);
+            s.scene.lights.push(Light {
+                position: free_spot(&s.scene, s.divider, size),
+                color: [1.0; 3],
+                intensity: 0.2,
+                range: None,
+            });
+            s.selected_light = Some(s.scene.lights.len() - 1);
+            s.light_count = s.scene.lights.len();
+        }
+        if let Some(k) = s.selected_light.filter(|&k| k < s.scene.lights.len())
+            && ui
+                .small_button("− light")
+                .on_hover_text("Remove the selected light")
+                .clicked()
+        {
+            s.scene.lights.remove(k);
+            s.selected_light = None;
+            s.light_count = s.scene.lights.len();
+        }
+    }
+
+    /// Pins the worst pixel once the difference view asked for by *worst pixel* is finished
+    /// (the request goes if the view is left before).
+    fn pin_worst(&mut self, s: &mut LabState, shading: &Shading) {
+        if !self.worst_pending {
+            return;
+        }
+        if s.view != View::Diff {
+            self.worst_pending = false;
+            return;
+        }
+        if shading.in_flight() {
+            return;
+        }
+        self.worst_pending = false;
+        let Some(frame) = shading.read() else {
+            return;
+        };
+        if let Some((x, y)) = worst_pixel(&frame) {
+            s.pinned = Some([
+                (x as f64 + 0.5) / frame.width as f64,
+                (y as f64 + 0.5) / frame.height as f64,
+            ]);
+            s.lobe_light = None;
+            s.selected_light = None;
+        }
     }
 
     fn interact(
@@ -456,4 +420,193 @@ fn side_names(compare: Compare) -> (&'static str, &'static str) {
         Compare::Brdf => ("LTC", "BRDF"),
         Compare::TableB => ("A", "B"),
     }
+}
+
+/// The panel's title: what its two sides are (`table_a`: table A's name, a shipped table's
+/// or a file's path; the file's name is shown).
+pub fn title(s: &LabState, table_a: &str, other: &OtherTable) -> String {
+    let short = |name: &str| {
+        std::path::Path::new(name)
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or(name)
+            .to_string()
+    };
+    match s.compare {
+        Compare::Brdf => PanelId::Plane.title().to_string(),
+        Compare::TableB => format!(
+            "Plane: table A ({}) | table B ({})",
+            short(table_a),
+            short(&other.name)
+        ),
+    }
+}
+
+/// The plane pixel where a difference frame is largest (the first of equals); `None` for a
+/// radiance frame or one without plane pixels.
+pub fn worst_pixel(frame: &Frame) -> Option<(usize, usize)> {
+    if frame.kind != FrameKind::RelativeDifference {
+        return None;
+    }
+    let k = (0..frame.pixels.len())
+        .filter(|&k| frame.on_plane[k] && !frame.pixels[k].x.is_nan())
+        .reduce(|best, k| {
+            if frame.pixels[k].x > frame.pixels[best].x {
+                k
+            } else {
+                best
+            }
+        })?;
+    Some((k % frame.width, k / frame.width))
+}
+
+/// Where *+ light* puts a light, a quarter of the plane's half size above it: of a 9 × 9 grid
+/// over the plane, the point whose light and its foot are seen well inside a `size` image
+/// and whose light lies farthest (in the image) from the divider column and from every other
+/// light's image; above the centre where no point is seen.
+pub fn free_spot(scene: &Scene, divider: f64, (width, height): (usize, usize)) -> [f64; 3] {
+    const STEPS: usize = 9;
+    let half = scene.plane.half_size;
+    let z = 0.25 * half;
+    let (w, h) = (width as f64, height as f64);
+    // 5% of the width from the image's edges: a marker there is seen whole, not cut.
+    let margin = 0.05 * w;
+    let inside = |p: [f64; 3]| {
+        scene
+            .project(DVec3::from(p), width, height)
+            .filter(|&(x, y)| x >= margin && x <= w - margin && y >= margin && y <= h - margin)
+    };
+    let others: Vec<(f64, f64)> = scene
+        .lights
+        .iter()
+        .filter_map(|l| scene.project(DVec3::from(l.position), width, height))
+        .collect();
+    let divider_x = divider * w;
+    let mut best: Option<(f64, [f64; 3])> = None;
+    for j in 0..STEPS {
+        for i in 0..STEPS {
+            let at = |k: usize| half * (-0.9 + 1.8 * k as f64 / (STEPS - 1) as f64);
+            let (x, y) = (at(i), at(j));
+            let (Some(q), Some(_)) = (inside([x, y, z]), inside([x, y, 0.0])) else {
+                continue;
+            };
+            let clearance = others
+                .iter()
+                .map(|o| (o.0 - q.0).hypot(o.1 - q.1))
+                .fold((q.0 - divider_x).abs(), f64::min);
+            if best.is_none_or(|(c, _)| clearance > c) {
+                best = Some((clearance, [x, y, z]));
+            }
+        }
+    }
+    best.map_or([0.0, 0.0, z], |(_, p)| p)
+}
+
+/// The render's texture over `rect`, and its error over that.
+fn paint_image(painter: &egui::Painter, rect: egui::Rect, shown: ShownImage, error: Option<&str>) {
+    if let Some(t) = shown.texture {
+        painter.image(
+            t,
+            rect,
+            egui::Rect::from_min_max(Pos2::ZERO, egui::pos2(1.0, 1.0)),
+            Color32::WHITE,
+        );
+    }
+    if let Some(e) = error {
+        painter.text(
+            rect.center(),
+            egui::Align2::CENTER_CENTER,
+            e,
+            egui::FontId::proportional(13.0),
+            Color32::LIGHT_RED,
+        );
+    }
+}
+
+/// The split's divider and the names of the sides beside it.
+fn paint_divider(painter: &egui::Painter, rect: egui::Rect, x: f32, (a, b): (&str, &str)) {
+    painter.vline(x, rect.y_range(), egui::Stroke::new(2.0, Color32::WHITE));
+    for (side, dx, align) in [
+        (a, -6.0, egui::Align2::RIGHT_TOP),
+        (b, 6.0, egui::Align2::LEFT_TOP),
+    ] {
+        painter.text(
+            egui::pos2(x + dx, rect.min.y + 4.0),
+            align,
+            side,
+            egui::FontId::proportional(12.0),
+            Color32::WHITE,
+        );
+    }
+}
+
+/// The lights' markers (the first 200: beyond that they only hide the image), and where
+/// they are on the screen.
+fn paint_markers(
+    painter: &egui::Painter,
+    s: &LabState,
+    rect: egui::Rect,
+    (width, height): (usize, usize),
+) -> Vec<(usize, Pos2)> {
+    let to_screen = |(x, y): (f64, f64)| {
+        rect.min
+            + Vec2::new(
+                (x / width as f64) as f32 * rect.width(),
+                (y / height as f64) as f32 * rect.height(),
+            )
+    };
+    let markers: Vec<(usize, Pos2)> = s
+        .scene
+        .lights
+        .iter()
+        .enumerate()
+        .take(200)
+        .filter_map(|(k, l)| {
+            s.scene
+                .project(DVec3::from(l.position), width, height)
+                .map(|p| (k, to_screen(p)))
+        })
+        .filter(|(_, p)| rect.contains(*p))
+        .collect();
+    for (k, p) in &markers {
+        let l = &s.scene.lights[*k];
+        let c = Color32::from_rgb(
+            (l.color[0] * 255.0) as u8,
+            (l.color[1] * 255.0) as u8,
+            (l.color[2] * 255.0) as u8,
+        );
+        let selected = s.selected_light == Some(*k);
+        painter.circle(
+            *p,
+            if selected { 6.0 } else { 4.0 },
+            c,
+            egui::Stroke::new(if selected { 2.0 } else { 1.0 }, Color32::BLACK),
+        );
+    }
+    markers
+}
+
+/// The pinned pixel's marker: a ring with four ticks.
+fn paint_pin(painter: &egui::Painter, p: Pos2) {
+    let stroke = egui::Stroke::new(1.5, Color32::from_rgb(255, 240, 80));
+    painter.circle_stroke(p, 6.0, stroke);
+    painter.hline(p.x - 10.0..=p.x - 4.0, p.y, stroke);
+    painter.hline(p.x + 4.0..=p.x + 10.0, p.y, stroke);
+    painter.vline(p.x, p.y - 10.0..=p.y - 4.0, stroke);
+    painter.vline(p.x, p.y + 4.0..=p.y + 10.0, stroke);
+}
+
+/// The hovered pixel's reading, or what the image answers to.
+fn reading_line(ui: &mut egui::Ui, reading: Option<&PixelReading>, (a, b): (&str, &str)) {
+    match reading {
+        Some(r) => ui.label(format!(
+            "pixel: {a} {:.4} | {b} {:.4} (luminance), relative difference {:.2}%; lights in case 1: {}, case 2: {}",
+            luminance(r.a),
+            luminance(r.b),
+            100.0 * r.relative_error,
+            r.case1,
+            r.case2
+        )),
+        None => ui.label("hover a pixel to read it, click to pin it and open its lights; drag a light's marker to move it (Shift: its height), drag the divider"),
+    };
 }
