@@ -1421,3 +1421,57 @@ fn the_chart_keeps_its_legends_outside_and_gives_the_speed_ratio() {
     assert!(h.query_by_label_contains(said).is_some(), "no '{said}'");
     h.snapshot_options("chart_ranges", &options(900 * 560));
 }
+
+/// An image in flight is a preview of the whole: its partial sum scaled to every light (a
+/// dark fraction of the image looked finished), said so, with the time left once the render
+/// has run a second (`Progress::time_left`, at the rate so far).
+#[test]
+fn a_render_in_flight_is_previewed_at_full_scale_and_says_so() {
+    use ltc_lab::app::shading::Progress;
+    use std::time::Duration;
+    let p = Progress {
+        done: 250,
+        total: 1000,
+        ..Progress::default()
+    };
+    assert_eq!(p.preview_scale(), 4.0);
+    assert_eq!(
+        p.time_left(Duration::from_millis(500)),
+        None,
+        "under a second"
+    );
+    assert_eq!(
+        p.time_left(Duration::from_secs(2)),
+        Some(Duration::from_secs(6))
+    );
+    let done = Progress { done: 1000, ..p };
+    assert_eq!(
+        (done.preview_scale(), done.time_left(Duration::from_secs(9))),
+        (1.0, None)
+    );
+    let mut state = maximised(PanelId::Plane);
+    state.set_light_count(1000);
+    let Some(mut h) = lab((800.0, 500.0), state) else {
+        return;
+    };
+    // A restart: binned into tiles first, then summed in chunks that start at one light
+    // (the pacer), so its first summed frames leave it in flight.
+    h.state_mut().state.set_light_count(1001);
+    for _ in 0..1000 {
+        h.step();
+        if h.state().shading.progress.done > 0 {
+            break;
+        }
+    }
+    // One more frame: the progress line is drawn before the frame's chunk is summed.
+    h.step();
+    assert!(h.state().shading.in_flight(), "the render finished at once");
+    assert!(h.state().shading.progress.preview_scale() > 1.0);
+    assert!(
+        h.query_by_label_contains("preview: the sum so far × ")
+            .is_some(),
+        "the preview is not said"
+    );
+    settle(&mut h);
+    assert!(h.query_by_label_contains("preview").is_none());
+}

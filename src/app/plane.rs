@@ -367,12 +367,31 @@ fn progress_line(ui: &mut egui::Ui, shading: &Shading, hide_timings: bool) {
     } else if p.complete() {
         format!("done: {}{time}", p.describe())
     } else {
-        format!("rendering {}{time}", p.describe())
+        format!("rendering {}{time}{}", p.describe(), preview_note(&p))
     };
     ui.label(egui::RichText::new(text).small()).on_hover_text(format!(
         "The image is summed over frames in chunks of lights, each within {:.0} ms (GPU timestamp queries; the wall clock on a CPU driver), so that the window never waits for it; a change restarts it",
         shading.budget_ms
     ));
+}
+
+/// What an image in flight shows: the partial sum scaled to every light, as a preview, and
+/// the time left once the render has run a second.
+fn preview_note(p: &crate::app::shading::Progress) -> String {
+    let left = p
+        .started
+        .and_then(|t| p.time_left(t.elapsed()))
+        .map_or(String::new(), |d| {
+            format!(", about {:.0} s left", d.as_secs_f64().ceil())
+        });
+    if p.preview_scale() > 1.0 {
+        format!(
+            " — preview: the sum so far × {:.3}{left}",
+            p.preview_scale()
+        )
+    } else {
+        left
+    }
 }
 
 /// Side A's and side B's radiance at an image position, in f64 on the CPU: LTC with table A,

@@ -5,7 +5,7 @@
 
 use std::sync::Arc;
 use std::sync::mpsc;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use crate::app::completion::{Chunk, Completion};
 use crate::app::display::ShownImage;
@@ -60,9 +60,32 @@ pub struct Progress {
     pub gpu_ms: f64,
     /// UI frames it has taken so far.
     pub frames: usize,
+    /// When it started (for the time left).
+    pub started: Option<Instant>,
 }
 
+/// How long a render runs before the lab says how long it has left.
+pub const TIME_LEFT_AFTER: Duration = Duration::from_secs(1);
+
 impl Progress {
+    /// While lights are being summed, the factor that scales the partial sum to every light
+    /// (`total / done`): a preview of the image, not a dark fraction of it. The lights come in
+    /// the scene's order, which the generator scatters over the plane. 1 otherwise.
+    pub fn preview_scale(&self) -> f64 {
+        let summing = self.binning.is_none() && self.done > 0 && self.done < self.total;
+        if summing {
+            self.total as f64 / self.done as f64
+        } else {
+            1.0
+        }
+    }
+
+    /// The time left at the rate so far, once the render has run `TIME_LEFT_AFTER`.
+    pub fn time_left(&self, elapsed: Duration) -> Option<Duration> {
+        let known = self.done > 0 && !self.complete() && elapsed >= TIME_LEFT_AFTER;
+        known.then(|| elapsed.mul_f64((self.total - self.done) as f64 / self.done as f64))
+    }
+
     pub fn complete(&self) -> bool {
         self.done >= self.total
     }
@@ -269,6 +292,7 @@ impl Shading {
                 self.progress = Progress {
                     total: g.renderer.light_count(),
                     binning: g.renderer.binning_progress(),
+                    started: Some(Instant::now()),
                     ..Progress::default()
                 };
                 self.key = Some(key);
@@ -286,7 +310,7 @@ impl Shading {
             if !self.progress.complete() || g.in_flight.is_some() {
                 ui.request_repaint();
             }
-            g.show(kind, scene.exposure);
+            g.show(kind, scene.exposure * self.progress.preview_scale());
             return ShownImage {
                 texture: g.texture,
                 size: (settings.width, settings.height),
@@ -298,6 +322,7 @@ impl Shading {
             cpu.start(ui, key.scene.clone(), settings, tables);
             self.progress = Progress {
                 total: scene.lights.len(),
+                started: Some(Instant::now()),
                 ..Progress::default()
             };
             self.key = Some(key);
@@ -442,9 +467,9 @@ impl GpuShading {
         } else {
             let end = (progress.done + self.shade_pacer.next(budget_ms)).min(progress.total);
             self.renderer.step(&self.ctx, progress.done..end);
-            self.encode_display(kind, exposure);
             let units = end - progress.done;
             progress.done = end;
+            self.encode_display(kind, exposure * progress.preview_scale());
             (Work::Shade, units)
         };
         // An empty submission's index stands for all the work before it.
