@@ -129,17 +129,6 @@ impl LobePanel {
     ) -> Option<ColourScale> {
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 4.0, Color32::from_gray(18));
-        let (cy, sy) = (f64::from(s.orbit_yaw).cos(), f64::from(s.orbit_yaw).sin());
-        let (cp, sp) = (
-            f64::from(s.orbit_pitch).cos(),
-            f64::from(s.orbit_pitch).sin(),
-        );
-        // Orbit: yaw about z, then pitch about the screen's x axis; orthographic, z up.
-        let view_of = |p: DVec3| -> (f64, f64, f64) {
-            let x = cy * p.x - sy * p.y;
-            let y = sy * p.x + cy * p.y;
-            (x, cp * p.z - sp * y, sp * p.z + cp * y)
-        };
         let exact_at = |l: DVec3| s.lobe.eval(v, l, alpha).value;
         // The tessellation's pole is the exact lobe's peak, its rings packed toward it, so that
         // a sharp lobe (α ≈ 0.02, a degree wide) is made of many triangles, not one sliver.
@@ -165,77 +154,14 @@ impl LobePanel {
             .collect();
         // Auto-scale: the lobes' extent, not the unit sphere's, fills the view (the
         // difference is painted on the unit sphere itself).
-        let unit_sphere = [
-            DVec3::X,
-            -DVec3::X,
-            DVec3::Y,
-            -DVec3::Y,
-            DVec3::Z,
-            -DVec3::Z,
-        ];
-        let shown: &[DVec3] = if s.colour_difference {
-            &unit_sphere
+        let orbit = Orbit::new(s);
+        let shown: Vec<DVec3> = if s.colour_difference {
+            UNIT_SPHERE.to_vec()
         } else {
-            &exact_pos
+            exact_pos.iter().chain(&ltc_pos).copied().collect()
         };
-        let extent = shown
-            .iter()
-            .chain(if s.colour_difference {
-                &[][..]
-            } else {
-                &ltc_pos[..]
-            })
-            .map(|p| {
-                let (x, up, _) = view_of(*p);
-                (x, up)
-            })
-            .fold([0.0f64, 0.0, 0.0, 0.0], |b, (x, y)| {
-                [b[0].min(x), b[1].max(x), b[2].min(y), b[3].max(y)]
-            });
-        let (span_x, span_y) = (
-            (extent[1] - extent[0]).max(0.2),
-            (extent[3] - extent[2]).max(0.2),
-        );
-        let scale = (f64::from(rect.width()) / span_x).min(f64::from(rect.height()) / span_y) * 0.8;
-        let mid = egui::vec2(
-            ((extent[0] + extent[1]) * 0.5 * scale) as f32,
-            (-(extent[2] + extent[3]) * 0.5 * scale) as f32,
-        );
-        let centre = rect.center() - mid;
-        let project = |p: DVec3| -> (Pos2, f64) {
-            let (x, up, depth) = view_of(p);
-            (
-                centre + Vec2::new((x * scale) as f32, (-up * scale) as f32),
-                depth,
-            )
-        };
-        let mesh_surface = |positions: &[DVec3], colours: &dyn Fn(usize) -> Color32| {
-            let mut triangles: Vec<(f64, [Pos2; 3], [Color32; 3])> = Vec::new();
-            for (quad, p) in quads(positions) {
-                let normal = (p[1] - p[0])
-                    .cross(p[3] - p[0])
-                    .try_normalize()
-                    .unwrap_or(DVec3::Z);
-                let light = 0.6 + 0.4 * normal.z.abs();
-                for tri in [[0, 1, 2], [0, 2, 3]] {
-                    let proj: Vec<(Pos2, f64)> = tri.iter().map(|&t| project(p[t])).collect();
-                    let depth = proj.iter().map(|x| x.1).sum::<f64>();
-                    let cols = tri.map(|t| shade(colours(quad[t]), light as f32));
-                    triangles.push((depth, [proj[0].0, proj[1].0, proj[2].0], cols));
-                }
-            }
-            // Painter's algorithm: far triangles first.
-            triangles.sort_by(|a, b| b.0.total_cmp(&a.0));
-            let mut mesh = egui::Mesh::default();
-            for (_, p, c) in &triangles {
-                let base = mesh.vertices.len() as u32;
-                for k in 0..3 {
-                    mesh.colored_vertex(p[k], c[k]);
-                }
-                mesh.add_triangle(base, base + 1, base + 2);
-            }
-            painter.add(egui::Shape::mesh(mesh));
-        };
+        let view = Projection::fitted(orbit, rect, &shown);
+        let project = |p: DVec3| view.project(p);
         let difference = s.colour_difference.then(|| {
             let max = vals
                 .iter()
@@ -247,17 +173,16 @@ impl LobePanel {
         });
         match &difference {
             Some(scale_d) => {
-                let unit: Vec<DVec3> = dirs.clone();
                 let colours: Vec<Color32> = vals
                     .iter()
                     .map(|&(e, a)| rgb(scale_d.colour(a - e)))
                     .collect();
-                mesh_surface(&unit, &|n| colours[n]);
+                mesh_surface(&painter, &project, &dirs, &|n| colours[n]);
             }
             None => {
                 // The exact lobe filled, the LTC (and table B) as meshes of lines over it:
                 // two filled surfaces that nearly coincide z-fight.
-                mesh_surface(&exact_pos, &|_| {
+                mesh_surface(&painter, &project, &exact_pos, &|_| {
                     Color32::from_rgba_unmultiplied(240, 150, 60, 170)
                 });
                 wireframe(
@@ -280,67 +205,200 @@ impl LobePanel {
                 }
             }
         }
-        // The horizon circle, the normal, the view vector and the LTC's frame, labelled. With
-        // the difference coloured on the unit sphere, the circle is its equator.
+        // With the difference coloured on the unit sphere, the horizon circle is its equator.
         let reach = if difference.is_some() {
             1.0
         } else {
-            0.5 * span_x.max(span_y).min(1.2)
+            0.5 * view.span.min(1.2)
         };
-        let ring: Vec<Pos2> = (0..=64)
-            .map(|k| {
-                let p = std::f64::consts::TAU * k as f64 / 64.0;
-                project(DVec3::new(p.cos(), p.sin(), 0.0) * reach).0
-            })
-            .collect();
-        painter.add(egui::Shape::line(
-            ring,
-            egui::Stroke::new(1.0, Color32::from_gray(90)),
-        ));
-        let origin = project(DVec3::ZERO).0;
-        let font = egui::FontId::proportional(12.0);
-        // Arrows shortened to stay in the view (a margin for their labels), labels placed
-        // after all arrows, each moved down past the ones it would cover.
-        let inside = rect.shrink2(egui::vec2(48.0, 16.0));
-        let mut labels: Vec<(Pos2, Color32, &str)> = Vec::new();
-        let mut arrow = |d: DVec3, c: Color32, name: &'static str| {
-            let tip = shorten_into(origin, project(d * reach).0, inside);
-            painter.arrow(origin, tip - origin, egui::Stroke::new(2.0, c));
-            labels.push((tip, c, name));
-        };
-        arrow(DVec3::Z, Color32::WHITE, "n");
-        arrow(v, Color32::YELLOW, "v");
-        let frame = ltc.brdf_from_cos;
-        for (k, (c, name)) in [
-            (Color32::RED, "M x"),
-            (Color32::GREEN, "M y"),
-            (Color32::from_rgb(80, 120, 255), "M z"),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            arrow(frame.col(k).normalize_or_zero() * 0.6, c, name);
-        }
-        // A light of the plane's pinned pixel, and its image under the (morphed) M^-1.
-        if let Some(w) = s.lobe_light.map(DVec3::from) {
-            arrow(w, Color32::from_rgb(255, 90, 220), "ω (light)");
-            let image = (ltc.cos_from_brdf * w).normalize_or_zero();
-            arrow(image, Color32::from_rgb(80, 230, 230), "ω' = M^-1 ω");
-        }
-        let mut placed: Vec<egui::Rect> = Vec::new();
-        for (tip, c, name) in labels {
-            let galley = painter.layout_no_wrap(name.to_string(), font.clone(), c);
-            let mut at =
-                egui::Rect::from_min_size(tip - egui::vec2(0.0, galley.size().y), galley.size());
-            while let Some(hit) = placed.iter().find(|r| r.intersects(at)) {
-                at = at.translate(egui::vec2(0.0, hit.max.y - at.min.y + 1.0));
-            }
-            // On a dark plate: a label over the lobe's mesh ("M z") was lost in its lines.
-            painter.rect_filled(at.expand(1.0), 2.0, Color32::from_black_alpha(170));
-            painter.galley(at.min, galley, c);
-            placed.push(at);
-        }
+        paint_frame(&painter, rect, &project, reach, (s, v, ltc));
         difference
+    }
+}
+
+/// The six points where the unit sphere meets the axes: its extent in any orbit.
+const UNIT_SPHERE: [DVec3; 6] = [
+    DVec3::X,
+    DVec3::NEG_X,
+    DVec3::Y,
+    DVec3::NEG_Y,
+    DVec3::Z,
+    DVec3::NEG_Z,
+];
+
+/// The orbit of the lobe view: yaw about z, then pitch about the screen's x axis;
+/// orthographic, z up.
+#[derive(Clone, Copy)]
+struct Orbit {
+    cos_yaw: f64,
+    sin_yaw: f64,
+    cos_pitch: f64,
+    sin_pitch: f64,
+}
+
+impl Orbit {
+    fn new(s: &LabState) -> Self {
+        let (yaw, pitch) = (f64::from(s.orbit_yaw), f64::from(s.orbit_pitch));
+        Self {
+            cos_yaw: yaw.cos(),
+            sin_yaw: yaw.sin(),
+            cos_pitch: pitch.cos(),
+            sin_pitch: pitch.sin(),
+        }
+    }
+
+    /// A point seen from the orbit: across, up, and depth.
+    fn view_of(&self, p: DVec3) -> (f64, f64, f64) {
+        let x = self.cos_yaw * p.x - self.sin_yaw * p.y;
+        let y = self.sin_yaw * p.x + self.cos_yaw * p.y;
+        (
+            x,
+            self.cos_pitch * p.z - self.sin_pitch * y,
+            self.sin_pitch * p.z + self.cos_pitch * y,
+        )
+    }
+}
+
+/// The orbit scaled and centred so that the points it was fitted to fill 80% of the view.
+struct Projection {
+    orbit: Orbit,
+    scale: f64,
+    centre: Pos2,
+    /// The larger side of the fitted points' extent, in scene units.
+    span: f64,
+}
+
+impl Projection {
+    fn fitted(orbit: Orbit, rect: egui::Rect, points: &[DVec3]) -> Self {
+        let extent = points
+            .iter()
+            .map(|p| {
+                let (x, up, _) = orbit.view_of(*p);
+                (x, up)
+            })
+            .fold([0.0f64, 0.0, 0.0, 0.0], |b, (x, y)| {
+                [b[0].min(x), b[1].max(x), b[2].min(y), b[3].max(y)]
+            });
+        let (span_x, span_y) = (
+            (extent[1] - extent[0]).max(0.2),
+            (extent[3] - extent[2]).max(0.2),
+        );
+        let scale = (f64::from(rect.width()) / span_x).min(f64::from(rect.height()) / span_y) * 0.8;
+        let mid = egui::vec2(
+            ((extent[0] + extent[1]) * 0.5 * scale) as f32,
+            (-(extent[2] + extent[3]) * 0.5 * scale) as f32,
+        );
+        Self {
+            orbit,
+            scale,
+            centre: rect.center() - mid,
+            span: span_x.max(span_y),
+        }
+    }
+
+    /// Where `p` lands in the view, and its depth.
+    fn project(&self, p: DVec3) -> (Pos2, f64) {
+        let (x, up, depth) = self.orbit.view_of(p);
+        let offset = Vec2::new((x * self.scale) as f32, (-up * self.scale) as f32);
+        (self.centre + offset, depth)
+    }
+}
+
+/// A filled, lit surface through `positions` (the pole grid), far triangles first.
+fn mesh_surface(
+    painter: &egui::Painter,
+    project: &dyn Fn(DVec3) -> (Pos2, f64),
+    positions: &[DVec3],
+    colours: &dyn Fn(usize) -> Color32,
+) {
+    let mut triangles: Vec<(f64, [Pos2; 3], [Color32; 3])> = Vec::new();
+    for (quad, p) in quads(positions) {
+        let normal = (p[1] - p[0])
+            .cross(p[3] - p[0])
+            .try_normalize()
+            .unwrap_or(DVec3::Z);
+        let light = 0.6 + 0.4 * normal.z.abs();
+        for tri in [[0, 1, 2], [0, 2, 3]] {
+            let proj: Vec<(Pos2, f64)> = tri.iter().map(|&t| project(p[t])).collect();
+            let depth = proj.iter().map(|x| x.1).sum::<f64>();
+            let cols = tri.map(|t| shade(colours(quad[t]), light as f32));
+            triangles.push((depth, [proj[0].0, proj[1].0, proj[2].0], cols));
+        }
+    }
+    // Painter's algorithm: far triangles first.
+    triangles.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut mesh = egui::Mesh::default();
+    for (_, p, c) in &triangles {
+        let base = mesh.vertices.len() as u32;
+        for k in 0..3 {
+            mesh.colored_vertex(p[k], c[k]);
+        }
+        mesh.add_triangle(base, base + 1, base + 2);
+    }
+    painter.add(egui::Shape::mesh(mesh));
+}
+
+/// The horizon circle of radius `reach`, the normal, the view vector, the LTC's frame and a
+/// pinned pixel's light, as labelled arrows.
+fn paint_frame(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    project: &dyn Fn(DVec3) -> (Pos2, f64),
+    reach: f64,
+    (s, v, ltc): (&LabState, DVec3, &Ltc),
+) {
+    let ring: Vec<Pos2> = (0..=64)
+        .map(|k| {
+            let p = std::f64::consts::TAU * k as f64 / 64.0;
+            project(DVec3::new(p.cos(), p.sin(), 0.0) * reach).0
+        })
+        .collect();
+    painter.add(egui::Shape::line(
+        ring,
+        egui::Stroke::new(1.0, Color32::from_gray(90)),
+    ));
+    let origin = project(DVec3::ZERO).0;
+    let font = egui::FontId::proportional(12.0);
+    // Arrows shortened to stay in the view (a margin for their labels), labels placed
+    // after all arrows, each moved down past the ones it would cover.
+    let inside = rect.shrink2(egui::vec2(48.0, 16.0));
+    let mut labels: Vec<(Pos2, Color32, &str)> = Vec::new();
+    let mut arrow = |d: DVec3, c: Color32, name: &'static str| {
+        let tip = shorten_into(origin, project(d * reach).0, inside);
+        painter.arrow(origin, tip - origin, egui::Stroke::new(2.0, c));
+        labels.push((tip, c, name));
+    };
+    arrow(DVec3::Z, Color32::WHITE, "n");
+    arrow(v, Color32::YELLOW, "v");
+    let frame = ltc.brdf_from_cos;
+    for (k, (c, name)) in [
+        (Color32::RED, "M x"),
+        (Color32::GREEN, "M y"),
+        (Color32::from_rgb(80, 120, 255), "M z"),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        arrow(frame.col(k).normalize_or_zero() * 0.6, c, name);
+    }
+    // A light of the plane's pinned pixel, and its image under the (morphed) M^-1.
+    if let Some(w) = s.lobe_light.map(DVec3::from) {
+        arrow(w, Color32::from_rgb(255, 90, 220), "ω (light)");
+        let image = (ltc.cos_from_brdf * w).normalize_or_zero();
+        arrow(image, Color32::from_rgb(80, 230, 230), "ω' = M^-1 ω");
+    }
+    let mut placed: Vec<egui::Rect> = Vec::new();
+    for (tip, c, name) in labels {
+        let galley = painter.layout_no_wrap(name.to_string(), font.clone(), c);
+        let mut at =
+            egui::Rect::from_min_size(tip - egui::vec2(0.0, galley.size().y), galley.size());
+        while let Some(hit) = placed.iter().find(|r| r.intersects(at)) {
+            at = at.translate(egui::vec2(0.0, hit.max.y - at.min.y + 1.0));
+        }
+        // On a dark plate: a label over the lobe's mesh ("M z") was lost in its lines.
+        painter.rect_filled(at.expand(1.0), 2.0, Color32::from_black_alpha(170));
+        painter.galley(at.min, galley, c);
+        placed.push(at);
     }
 }
 
