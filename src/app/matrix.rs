@@ -169,15 +169,40 @@ impl MatrixPanel {
     /// Every channel as an N×N heat map (crosshair on the chosen cell; click to choose a
     /// cell), then the focused channel's colour bar, the value under the pointer and a jump to
     /// the worst cell.
-    fn heat_maps(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, (u, v): (f64, f64)) {
+    fn heat_maps(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, uv: (f64, f64)) {
+        self.maps_header(ui, s, lut);
+        // The visible width, not the scroll area's content width (a wide row above widens it).
+        let visible = ui
+            .available_width()
+            .min(ui.clip_rect().right() - ui.cursor().left());
+        // Less the gaps between the maps and the scroll bar beside them.
+        let gaps = (MAPS_PER_ROW - 1) as f32 * ui.spacing().item_spacing.x;
+        let side = ((visible - gaps - ui.spacing().scroll.bar_width - 4.0) / MAPS_PER_ROW as f32)
+            .clamp(40.0, 160.0);
+        let channels: Vec<usize> = (0..CHANNEL_COUNT).collect();
+        let mut hovered = None;
+        // Rows of fixed length: a wrapping layout cannot know a column's size before it is
+        // drawn, and ran the last map off the panel's edge.
+        for row in channels.chunks(MAPS_PER_ROW) {
+            ui.horizontal(|ui| {
+                for &c in row {
+                    hovered = self.heat_map(ui, s, lut, (c, side), uv).or(hovered);
+                }
+            });
+        }
+        self.hovered = hovered;
+    }
+
+    /// What the maps show, the focused channel's colour bar, the reading under the pointer
+    /// and the worst cell's jump: above the maps, so that no scrolling hides them.
+    fn maps_header(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
         let n = lut.size;
         ui.small(format!(
             "each map: x: r = √α from 0 to 1 (α = {} … 1), y (down) θo from 0° (top) to {:.0}° (rows by sqrt(1 − cos θo))",
             short_number(lut.alpha(0)),
             cell_theta(n - 1, n).to_degrees()
         ));
-        // The focused channel's bar, the reading under the pointer (last frame's) and the
-        // jump, above the maps so that no scrolling hides them.
+        // The reading is last frame's hover.
         let scale = &self.scales[self.focus];
         colour_bar(ui, scale, 260.0);
         ui.horizontal(|ui| {
@@ -208,82 +233,96 @@ impl MatrixPanel {
                 .unwrap_or(0);
             choose_cell(s, lut, (k % n, k / n));
         }
-        // The visible width, not the scroll area's content width (a wide row above widens it).
-        let visible = ui
-            .available_width()
-            .min(ui.clip_rect().right() - ui.cursor().left());
-        // Less the gaps between the maps and the scroll bar beside them.
-        let gaps = (MAPS_PER_ROW - 1) as f32 * ui.spacing().item_spacing.x;
-        let side = ((visible - gaps - ui.spacing().scroll.bar_width - 4.0) / MAPS_PER_ROW as f32)
-            .clamp(40.0, 160.0);
-        let channels: Vec<usize> = (0..CHANNEL_COUNT).collect();
+    }
+
+    /// Channel `c`'s map, `side` points wide, with the chosen (u, v) crossed; the cell and
+    /// value under the pointer, and a click chooses the cell.
+    fn heat_map(
+        &mut self,
+        ui: &mut egui::Ui,
+        s: &mut LabState,
+        lut: &Lut,
+        (c, side): (usize, f32),
+        (u, v): (f64, f64),
+    ) -> Option<(usize, usize, usize, f64)> {
+        let n = lut.size;
         let mut hovered = None;
-        // Rows of fixed length: a wrapping layout cannot know a column's size before it is
-        // drawn, and ran the last map off the panel's edge.
-        for row in channels.chunks(MAPS_PER_ROW) {
-            ui.horizontal(|ui| {
-                for &c in row {
-                    let texture = self.textures[c].get_or_insert_with(|| {
-                        ui.ctx().load_texture(
-                            CHANNEL_NAMES[c],
-                            self.maps[c].clone(),
-                            egui::TextureOptions::NEAREST,
-                        )
-                    });
-                    ui.vertical(|ui| {
-                        let title = if c == self.focus {
-                            egui::RichText::new(CHANNEL_NAMES[c]).small().strong()
-                        } else {
-                            egui::RichText::new(CHANNEL_NAMES[c]).small()
-                        };
-                        ui.label(title);
-                        let (rect, response) =
-                            ui.allocate_exact_size(Vec2::splat(side), egui::Sense::click());
-                        ui.painter().image(
-                            texture.id(),
-                            rect,
-                            egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
-                            Color32::WHITE,
-                        );
-                        // Texel centres sit at (k + ½)/N, the LUT's own uv mapping (docs/design.md §2).
-                        let to_screen =
-                            |t: f64| ((t * (n - 1) as f64 + 0.5) / n as f64) as f32 * side;
-                        let p = rect.min + Vec2::new(to_screen(u), to_screen(v));
-                        let stroke = egui::Stroke::new(1.0, Color32::WHITE);
-                        ui.painter().hline(rect.x_range(), p.y, stroke);
-                        ui.painter().vline(p.x, rect.y_range(), stroke);
-                        let name = format!("{} heat map", CHANNEL_NAMES[c]);
-                        response.widget_info(|| {
-                            egui::WidgetInfo::labeled(egui::Role::Image, true, &name)
-                        });
-                        let cell_at = |pos: Pos2| {
-                            let cell = ((pos - rect.min) / side * n as f32).floor();
-                            (
-                                (cell.x.max(0.0) as usize).min(n - 1),
-                                (cell.y.max(0.0) as usize).min(n - 1),
-                            )
-                        };
-                        if let Some(pos) = response.hover_pos() {
-                            let (i, j) = cell_at(pos);
-                            hovered = Some((c, i, j, f64::from(lut.cell(i, j).0[c])));
-                        }
-                        if response.clicked()
-                            && let Some(pos) = response.interact_pointer_pos()
-                        {
-                            let (i, j) = cell_at(pos);
-                            self.focus = c;
-                            choose_cell(s, lut, (i, j));
-                        }
-                    });
-                }
-            });
-        }
-        self.hovered = hovered;
+        let texture = self.textures[c].get_or_insert_with(|| {
+            ui.ctx().load_texture(
+                CHANNEL_NAMES[c],
+                self.maps[c].clone(),
+                egui::TextureOptions::NEAREST,
+            )
+        });
+        ui.vertical(|ui| {
+            let title = if c == self.focus {
+                egui::RichText::new(CHANNEL_NAMES[c]).small().strong()
+            } else {
+                egui::RichText::new(CHANNEL_NAMES[c]).small()
+            };
+            ui.label(title);
+            let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::click());
+            ui.painter().image(
+                texture.id(),
+                rect,
+                egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
+                Color32::WHITE,
+            );
+            // Texel centres sit at (k + ½)/N, the LUT's own uv mapping (docs/design.md §2).
+            let to_screen = |t: f64| ((t * (n - 1) as f64 + 0.5) / n as f64) as f32 * side;
+            let p = rect.min + Vec2::new(to_screen(u), to_screen(v));
+            let stroke = egui::Stroke::new(1.0, Color32::WHITE);
+            ui.painter().hline(rect.x_range(), p.y, stroke);
+            ui.painter().vline(p.x, rect.y_range(), stroke);
+            let name = format!("{} heat map", CHANNEL_NAMES[c]);
+            response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
+            let cell_at = |pos: Pos2| {
+                let cell = ((pos - rect.min) / side * n as f32).floor();
+                (
+                    (cell.x.max(0.0) as usize).min(n - 1),
+                    (cell.y.max(0.0) as usize).min(n - 1),
+                )
+            };
+            if let Some(pos) = response.hover_pos() {
+                let (i, j) = cell_at(pos);
+                hovered = Some((c, i, j, f64::from(lut.cell(i, j).0[c])));
+            }
+            if response.clicked()
+                && let Some(pos) = response.interact_pointer_pos()
+            {
+                let (i, j) = cell_at(pos);
+                self.focus = c;
+                choose_cell(s, lut, (i, j));
+            }
+        });
+        hovered
     }
 
     /// The refit's button, its progress and cancel, then the result: stored and refitted
     /// matrices and errors side by side, and the objective per iteration.
     fn refit_controls(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
+        self.refit_buttons(ui, s, lut);
+        let Some(r) = s
+            .refit
+            .as_ref()
+            .filter(|r| r.cell == self.current_cell && r.lobe == s.lobe)
+        else {
+            if let Some(r) = &s.refit {
+                ui.small(format!(
+                    "(last refit: cell ({}, {}), {} lobe)",
+                    r.cell.0,
+                    r.cell.1,
+                    r.lobe.name()
+                ));
+            }
+            return;
+        };
+        refit_result(ui, r);
+        objective_plot(ui, r);
+    }
+
+    /// The refit's progress and cancel, or a button per objective.
+    fn refit_buttons(&mut self, ui: &mut egui::Ui, s: &LabState, lut: &Lut) {
         ui.horizontal_wrapped(|ui| {
             match &self.refit {
                 Some(r) => {
@@ -313,97 +352,6 @@ impl MatrixPanel {
                     }
                 }
             }
-        });
-        let Some(r) = s
-            .refit
-            .as_ref()
-            .filter(|r| r.cell == self.current_cell && r.lobe == s.lobe)
-        else {
-            if let Some(r) = &s.refit {
-                ui.small(format!(
-                    "(last refit: cell ({}, {}), {} lobe)",
-                    r.cell.0,
-                    r.cell.1,
-                    r.lobe.name()
-                ));
-            }
-            return;
-        };
-        ui.horizontal(|ui| {
-            matrix(
-                ui,
-                &format!("cell ({}, {}) as stored (÷ middle)", r.cell.0, r.cell.1),
-                crate::ltc::mat3_from_rows(r.stored),
-                "The table's cell as stored",
-            );
-            matrix(
-                ui,
-                &format!("cell ({}, {}) refitted (÷ middle)", r.cell.0, r.cell.1),
-                crate::ltc::mat3_from_rows(r.cos_from_brdf),
-                "The refit's result",
-            );
-        });
-        let how = match (r.cancelled, r.objective, r.converged) {
-            (true, ..) => "cancelled",
-            (false, Objective::Point, _) => "its restarts done",
-            (false, Objective::LtcCode, true) => "converged",
-            (false, Objective::LtcCode, false) => "stopped at the iteration limit",
-        };
-        if r.scale != 1.0 || r.stored_scale != 1.0 {
-            ui.label(format!(
-                "spec scale s: stored {:.3}, refitted {:.3}",
-                r.stored_scale, r.scale
-            ))
-            .on_hover_text("The point fit's factor on the specular magnitude (spec.scale)");
-        }
-        ui.label(format!(
-            "pointwise error: stored {:.2}%, refitted {:.2}% ({}: {} iterations, {how})",
-            100.0 * r.stored_error,
-            100.0 * r.error,
-            r.objective.name(),
-            r.iterations
-        ))
-        .on_hover_text("∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4), both lobes measured alike with 64² strata from both distributions, whichever objective the refit minimized");
-        let points: Vec<[f64; 2]> = r
-            .history
-            .iter()
-            .map(|&[i, f]| [i, f.max(1e-300).log10()])
-            .collect();
-        ui.add_space(4.0);
-        let plot = egui_plot::Plot::new("nelder-mead")
-            .height(110.0)
-            .x_axis_label("iteration")
-            .y_axis_label(match r.objective {
-                // ltc_code's sum is not normalized: it scales with the lobe's peak cubed,
-                // 1e10 and more for the sharpest cells.
-                Objective::LtcCode => "|·|^3 (log)",
-                Objective::Point => "L1 (log)",
-            })
-            .allow_scroll(false)
-            .include_x(0.0)
-            .include_x((points.len() as f64 - 1.0).max(1.0));
-        // 0.2 decades beyond the curve each way: 0.4 decades always hold a 1, 2 or 5 × 10^k
-        // tick (the widest gap, 2 to 5, is 0.398 decades), so a flat curve has a label.
-        let (lo, hi) = points
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                (lo.min(p[1]), hi.max(p[1]))
-            });
-        let plot = if lo.is_finite() {
-            plot.include_y(lo - 0.2).include_y(hi + 0.2)
-        } else {
-            plot
-        };
-        let colour = Color32::from_rgb(70, 140, 255);
-        log_axis(plot, false).show(ui, |p| {
-            // Markers too: a fit that stops at its first iteration is one point, and a line
-            // through one point draws nothing.
-            p.points(
-                egui_plot::Points::new("objective", points.clone())
-                    .radius(2.0)
-                    .color(colour),
-            );
-            p.line(egui_plot::Line::new("objective", points).color(colour));
         });
     }
 
@@ -480,5 +428,89 @@ fn matrix(ui: &mut egui::Ui, title: &str, m: DMat3, hover: &str) {
                     ui.end_row();
                 }
             });
+    });
+}
+
+/// A refit's stored and refitted matrices, scale and pointwise error.
+fn refit_result(ui: &mut egui::Ui, r: &crate::app::refit::RefitResult) {
+    ui.horizontal(|ui| {
+        matrix(
+            ui,
+            &format!("cell ({}, {}) as stored (÷ middle)", r.cell.0, r.cell.1),
+            crate::ltc::mat3_from_rows(r.stored),
+            "The table's cell as stored",
+        );
+        matrix(
+            ui,
+            &format!("cell ({}, {}) refitted (÷ middle)", r.cell.0, r.cell.1),
+            crate::ltc::mat3_from_rows(r.cos_from_brdf),
+            "The refit's result",
+        );
+    });
+    let how = match (r.cancelled, r.objective, r.converged) {
+        (true, ..) => "cancelled",
+        (false, Objective::Point, _) => "its restarts done",
+        (false, Objective::LtcCode, true) => "converged",
+        (false, Objective::LtcCode, false) => "stopped at the iteration limit",
+    };
+    if r.scale != 1.0 || r.stored_scale != 1.0 {
+        ui.label(format!(
+            "spec scale s: stored {:.3}, refitted {:.3}",
+            r.stored_scale, r.scale
+        ))
+        .on_hover_text("The point fit's factor on the specular magnitude (spec.scale)");
+    }
+    ui.label(format!(
+            "pointwise error: stored {:.2}%, refitted {:.2}% ({}: {} iterations, {how})",
+            100.0 * r.stored_error,
+            100.0 * r.error,
+            r.objective.name(),
+            r.iterations
+        ))
+        .on_hover_text("∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4), both lobes measured alike with 64² strata from both distributions, whichever objective the refit minimized");
+}
+
+/// The refit's objective per iteration, on a log axis.
+fn objective_plot(ui: &mut egui::Ui, r: &crate::app::refit::RefitResult) {
+    let points: Vec<[f64; 2]> = r
+        .history
+        .iter()
+        .map(|&[i, f]| [i, f.max(1e-300).log10()])
+        .collect();
+    ui.add_space(4.0);
+    let plot = egui_plot::Plot::new("nelder-mead")
+        .height(110.0)
+        .x_axis_label("iteration")
+        .y_axis_label(match r.objective {
+            // ltc_code's sum is not normalized: it scales with the lobe's peak cubed,
+            // 1e10 and more for the sharpest cells.
+            Objective::LtcCode => "|·|^3 (log)",
+            Objective::Point => "L1 (log)",
+        })
+        .allow_scroll(false)
+        .include_x(0.0)
+        .include_x((points.len() as f64 - 1.0).max(1.0));
+    // 0.2 decades beyond the curve each way: 0.4 decades always hold a 1, 2 or 5 × 10^k
+    // tick (the widest gap, 2 to 5, is 0.398 decades), so a flat curve has a label.
+    let (lo, hi) = points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p[1]), hi.max(p[1]))
+        });
+    let plot = if lo.is_finite() {
+        plot.include_y(lo - 0.2).include_y(hi + 0.2)
+    } else {
+        plot
+    };
+    let colour = Color32::from_rgb(70, 140, 255);
+    log_axis(plot, false).show(ui, |p| {
+        // Markers too: a fit that stops at its first iteration is one point, and a line
+        // through one point draws nothing.
+        p.points(
+            egui_plot::Points::new("objective", points.clone())
+                .radius(2.0)
+                .color(colour),
+        );
+        p.line(egui_plot::Line::new("objective", points).color(colour));
     });
 }
