@@ -25,9 +25,13 @@ fn lab(size: (f32, f32), state: LabState) -> Option<Harness<'static, LabApp>> {
         ltc_lab::app::shading::wgpu_setup(),
         egui_wgpu::RendererOptions::PREDICTABLE,
     );
-    let mut app = LabApp::new(state, Some(&render_state));
+    // The live GPU times change run to run: off, as a user would for a slide.
+    let state = LabState {
+        show_gpu_times: false,
+        ..state
+    };
+    let app = LabApp::new(state, Some(&render_state));
     assert!(app.shading.has_gpu(), "{}", app.shading.describe());
-    app.plane.hide_timings = true;
     let mut harness = Harness::builder()
         .with_size(egui::vec2(size.0, size.1))
         .renderer(WgpuTestRenderer::from_render_state(render_state))
@@ -1127,8 +1131,11 @@ fn the_layout_scales_with_the_window() {
         ltc_lab::app::shading::wgpu_setup(),
         egui_wgpu::RendererOptions::PREDICTABLE,
     );
-    let mut app = LabApp::new(LabState::default(), Some(&render_state));
-    app.plane.hide_timings = true;
+    let state = LabState {
+        show_gpu_times: false,
+        ..LabState::default()
+    };
+    let app = LabApp::new(state, Some(&render_state));
     let mut uhd = Harness::builder()
         .with_size(egui::vec2(1920.0, 1080.0))
         .renderer(WgpuTestRenderer::from_render_state(render_state))

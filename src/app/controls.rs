@@ -174,6 +174,8 @@ fn lights(ui: &mut egui::Ui, s: &mut LabState, max: usize) {
     }
     ui.checkbox(&mut s.cull, "cull by range")
         .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. The image is the same to the bit; with short ranges it is much faster");
+    ui.checkbox(&mut s.show_gpu_times, "show GPU times")
+        .on_hover_text("The plane's GPU milliseconds in its progress line; off for a slide or a screenshot that should not change from run to run");
 }
 
 fn shading_rules(ui: &mut egui::Ui, s: &mut LabState) {

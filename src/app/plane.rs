@@ -37,14 +37,10 @@ pub struct PlanePanel {
     /// The last image shown, and the render's size.
     pub shown: Option<ShownImage>,
     drag: Option<Drag>,
-    /// The inspector's last reading, for tests.
-    pub inspected: Option<PixelReading>,
     /// The pinned pixel's lights, as last shown, and what they were computed for.
     pinned: Option<(pixel_table::PinnedKey, Option<crate::pixel::PixelTerms>)>,
     /// *worst pixel* was pressed: the pixel is pinned when the difference view is done.
     worst_pending: bool,
-    /// Hide the live GPU times (they change run to run; snapshot tests hide them).
-    pub hide_timings: bool,
 }
 
 /// The pixel inspector's numbers.
@@ -93,7 +89,7 @@ impl PlanePanel {
         ui.horizontal_wrapped(|ui| self.toolbar(ui, s, other));
         ui.horizontal_wrapped(|ui| {
             exposure_slider(ui, s);
-            progress_line(ui, shading, self.hide_timings);
+            progress_line(ui, shading, !s.show_gpu_times);
         });
         // A black plane is the right answer here, but would look like a fault.
         let lights = &s.scene.lights;
@@ -153,12 +149,12 @@ impl PlanePanel {
         }
         // No tooltip on the image: it would cover the reading below it while one hovers.
         // Read afresh every frame, so that it follows every change; none off the image.
-        self.inspected = response.hover_pos().and_then(|pos| {
+        let inspected = response.hover_pos().and_then(|pos| {
             let x = f64::from((pos.x - rect.min.x) / rect.width()) * width as f64;
             let y = f64::from((pos.y - rect.min.y) / rect.height()) * height as f64;
             inspect(s, (lut, b_table), x, y, width, height)
         });
-        reading_line(ui, self.inspected.as_ref(), (a, b));
+        reading_line(ui, inspected.as_ref(), (a, b));
         pixel_table::show(ui, s, self.pinned(), table_h);
     }
 

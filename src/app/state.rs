@@ -83,6 +83,9 @@ pub struct LabState {
     pub range_override: f64,
     /// Tiled culling of ranged lights in the plane's render (the same image, faster).
     pub cull: bool,
+    /// The plane's live GPU times in its progress line (off for a slide or a screenshot
+    /// that must not change run to run).
+    pub show_gpu_times: bool,
     pub light_count: usize,
     pub seed: u64,
     pub selected_light: Option<usize>,
@@ -213,6 +216,7 @@ impl Default for LabState {
             intensity_scale: 1.0,
             range_override: 0.0,
             cull: true,
+            show_gpu_times: true,
             seed: 27,
             selected_light: None,
             pinned: None,
