@@ -130,6 +130,7 @@ impl PlanePanel {
         self.pin_worst(s, shading);
         let painter = ui.painter_at(rect);
         paint_image(&painter, rect, shown, shading.error.as_deref());
+        preview_label(ui, rect, &shading.progress);
         let divider_x = rect.min.x + rect.width() * s.divider as f32;
         if s.view == View::Split {
             paint_divider(&painter, rect, divider_x, (a, b));
@@ -363,12 +364,31 @@ fn progress_line(ui: &mut egui::Ui, shading: &Shading, hide_timings: bool) {
     } else if p.complete() {
         format!("done: {}{time}", p.describe())
     } else {
-        format!("rendering {}{time}{}", p.describe(), preview_note(&p))
+        format!("rendering {}{time}", p.describe())
     };
     ui.label(egui::RichText::new(text).small()).on_hover_text(format!(
         "The image is summed over frames in chunks of lights, each within {:.0} ms (GPU timestamp queries; the wall clock on a CPU driver), so that the window never waits for it; a change restarts it",
         shading.budget_ms
     ));
+}
+
+/// An image in flight is marked as a preview in its corner, floating: a line in the layout
+/// that came and went with the render moved the image, and a new image size restarts the
+/// render (a real window then never finished).
+fn preview_label(ui: &egui::Ui, rect: egui::Rect, p: &crate::app::shading::Progress) {
+    let note = preview_note(p);
+    if note.is_empty() {
+        return;
+    }
+    egui::Area::new(ui.scope_id().with("plane image preview"))
+        .fixed_pos(rect.left_top() + Vec2::splat(6.0))
+        .interactable(false)
+        .show(ui.ctx(), |ui| {
+            egui::Frame::new()
+                .fill(egui::Color32::from_black_alpha(170))
+                .inner_margin(4.0)
+                .show(ui, |ui| ui.label(egui::RichText::new(note).small()));
+        });
 }
 
 /// What an image in flight shows: the partial sum scaled to every light, as a preview, and
@@ -381,12 +401,9 @@ fn preview_note(p: &crate::app::shading::Progress) -> String {
             format!(", about {:.0} s left", d.as_secs_f64().ceil())
         });
     if p.preview_scale() > 1.0 {
-        format!(
-            " — preview: the sum so far × {:.3}{left}",
-            p.preview_scale()
-        )
+        format!("preview: the sum so far × {:.3}{left}", p.preview_scale())
     } else {
-        left
+        left.trim_start_matches(", ").to_string()
     }
 }
 
