@@ -394,17 +394,15 @@ fn preview_label(ui: &egui::Ui, rect: egui::Rect, p: &crate::app::shading::Progr
 /// What an image in flight shows: the partial sum scaled to every light, as a preview, and
 /// the time left once the render has run a second.
 fn preview_note(p: &crate::app::shading::Progress) -> String {
-    let left = p
-        .started
-        .and_then(|t| p.time_left(t.elapsed()))
-        .map_or(String::new(), |d| {
-            format!(", about {:.0} s left", d.as_secs_f64().ceil())
-        });
-    if p.preview_scale() > 1.0 {
-        format!("preview: the sum so far × {:.3}{left}", p.preview_scale())
-    } else {
-        left.trim_start_matches(", ").to_string()
-    }
+    let scaled = (p.preview_scale() > 1.0)
+        .then(|| format!("preview: the sum so far × {:.3}", p.preview_scale()));
+    let left = p.started.and_then(|t| p.time_left(t.elapsed()));
+    let left = left.map(|d| format!("about {:.0} s left", d.as_secs_f64().ceil()));
+    [scaled, left]
+        .into_iter()
+        .flatten()
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// Side A's and side B's radiance at an image position, in f64 on the CPU: LTC with table A,

@@ -161,9 +161,3 @@ pub(super) fn numbered(path: &Path, k: usize) -> PathBuf {
 
 /// How many numbered names a default output tries before giving up.
 pub(super) const MAX_NUMBERED: usize = 10_000;
-
-/// Writes `bytes` under a default name that must never replace a file: `path` if it is
-/// free, else the first free `stem-2.ext`, `stem-3.ext`… Returns the name written.
-pub fn write_new(path: &Path, bytes: &[u8]) -> Result<PathBuf> {
-    Claim::first_free(path)?.fill(bytes)
-}

@@ -7,8 +7,9 @@ use super::*;
 fn a_default_name_never_replaces_a_file() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("a.png");
-    assert_eq!(write_new(&p, b"one").unwrap(), p);
-    let second = write_new(&p, b"two").unwrap();
+    let write_new = |bytes: &[u8]| Claim::first_free(&p)?.fill(bytes);
+    assert_eq!(write_new(b"one").unwrap(), p);
+    let second = write_new(b"two").unwrap();
     assert_eq!(second, dir.path().join("a-2.png"));
     assert_eq!(fs::read(&p).unwrap(), b"one");
     assert_eq!(fs::read(&second).unwrap(), b"two");

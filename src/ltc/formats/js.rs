@@ -2,7 +2,7 @@
 //! `var g_ltc_1 = [` then four numbers per cell, `];`, and the same for `g_ltc_2`. three.js
 //! copies the same arrays as `LTC_MAT_1` and `LTC_MAT_2` (`RectAreaLightTexturesLib.js`).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, number};
 use crate::ltc::formats::Header;
 use crate::ltc::formats::packing::Packed;
 use crate::ltc::lut::check_size;
@@ -114,9 +114,4 @@ pub fn write(p: &Packed, header: &Header) -> String {
         out.push_str("];\n");
     }
     out
-}
-
-/// The shortest text that reads back as the same f32 (exponent form far from 1).
-pub fn number(x: f32) -> String {
-    crate::error::number(x)
 }

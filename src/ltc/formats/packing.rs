@@ -107,11 +107,10 @@ pub fn unpack(p: &Packed, alpha_min: f64, diffuse: &Lut) -> Lut {
 
 /// Measures every cell's `spec.err` (in parallel), calling `on_cell` after each.
 pub fn measure_spec_err(lut: &mut Lut, on_cell: &(dyn Fn() + Sync)) {
-    let n = lut.size;
-    let (alpha_min, size) = (lut.alpha_min, lut.size);
+    let (n, alpha_min) = (lut.size, lut.alpha_min);
     lut.cells.par_iter_mut().enumerate().for_each(|(k, cell)| {
-        let alpha = crate::ltc::lut::cell_alpha(k % n, size, alpha_min);
-        let v = DVec3::from(view_from_theta(crate::ltc::lut::cell_theta(k / n, size)));
+        let alpha = crate::ltc::lut::cell_alpha(k % n, n, alpha_min);
+        let v = DVec3::from(view_from_theta(crate::ltc::lut::cell_theta(k / n, n)));
         let spec = LutSample::of_cell(cell).ltc_pair().spec;
         let err = pointwise_error(Lobe::Specular, v, alpha, &spec, ERROR_SAMPLES);
         cell.0[Channel::SpecErr as usize] = err as f32;
