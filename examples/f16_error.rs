@@ -5,7 +5,8 @@
 //!
 //! `cargo run --release --example f16_error` (needs a GPU adapter with SHADER_F16).
 
-use ltc_lab::app::LabState;
+use ltc_lab::app::Lab;
+use ltc_lab::app::tables::NamedTables;
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::lut::Lut;
@@ -18,11 +19,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("{}", ctx.describe());
     let lut = Lut::embedded();
     let mut gpu = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked)?;
-    let mut lab = LabState::default();
+    // The lab's light generator, as its slider makes 20 000 lights.
+    let mut lab = Lab::new(
+        Default::default(),
+        NamedTables::shipped(ltc_lab::ltc::lut::Table::Classic),
+        Err("not needed".into()),
+    );
     lab.set_light_count(20_000);
     let scenes: [(&str, Scene, usize); 2] = [
         ("paper-100", preset("paper-100"), 512),
-        ("lab 20 000 lights", lab.shaded_scene(), 256),
+        ("lab 20 000 lights", lab.shared().shaded_scene(), 256),
     ];
     println!("| scene | size | method | max rel | mean rel |");
     println!("|---|---|---|---:|---:|");

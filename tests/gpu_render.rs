@@ -168,7 +168,7 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
     let Some(g) = gpu() else { return };
     let (classic, point) = (Lut::embedded(), Lut::embedded_point());
     let mut r = PlaneRenderer::new(&g.ctx, classic, ShaderChecks::Checked).unwrap();
-    r.set_lut_b(&g.ctx, Some(point)).unwrap();
+    r.set_tables(&g.ctx, classic, Some(point)).unwrap();
     let tables = Tables {
         a: classic,
         b: point,

@@ -5,14 +5,16 @@ mod gpu_common;
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use egui_kittest::wgpu::WgpuTestRenderer;
 use egui_kittest::{Harness, SnapshotOptions, SnapshotResults};
 use gpu_common::bits;
-use ltc_lab::app::{Compare, LabApp, LabState, PanelId};
+use ltc_lab::app::clip_rows::expose;
+use ltc_lab::app::lab::Shared;
+use ltc_lab::app::plane::PlaneState;
+use ltc_lab::app::state::WindowState;
+use ltc_lab::app::{Aspect, Compare, LabApp, LabState, PanelId};
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::render::{Frame, View};
 
@@ -26,12 +28,10 @@ fn lab(size: (f32, f32), state: LabState) -> Option<Harness<'static, LabApp>> {
         egui_wgpu::RendererOptions::PREDICTABLE,
     );
     // The live GPU times change run to run: off, as a user would for a slide.
-    let state = LabState {
-        show_gpu_times: false,
-        ..state
-    };
+    let mut state = state;
+    state.plane.show_gpu_times = false;
     let app = LabApp::new(state, Some(&render_state));
-    assert!(app.shading.has_gpu(), "{}", app.shading.describe());
+    assert!(app.lab.gpu.is_some(), "{}", app.lab.describe_device());
     let mut harness = Harness::builder()
         .with_size(egui::vec2(size.0, size.1))
         .renderer(WgpuTestRenderer::from_render_state(render_state))
@@ -50,7 +50,7 @@ fn settle(h: &mut Harness<'static, LabApp>) {
         assert!(
             start.elapsed() < Duration::from_secs(300),
             "the lab never settled: {}",
-            h.state().shading.progress.describe()
+            h.state().plane.shading.progress.describe()
         );
         h.step();
         std::thread::sleep(Duration::from_millis(1));
@@ -87,6 +87,7 @@ fn drag_along(h: &mut Harness<'static, LabApp>, start: egui::Pos2, end: egui::Po
 /// The plane's finished image, read back from the lab's device.
 fn plane_image(h: &Harness<'static, LabApp>) -> Frame {
     h.state()
+        .plane
         .shading
         .read()
         .expect("the plane's render is complete")
@@ -123,6 +124,7 @@ fn snapshot_of_every_panel() {
     assert!(
         chart
             .state()
+            .chart
             .state
             .measurement
             .as_ref()
@@ -140,8 +142,14 @@ fn snapshot_of_every_panel() {
     let mut tables = lab(
         (1600.0, 900.0),
         LabState {
-            compare: Compare::TableB,
-            view: View::Diff,
+            lab: Shared {
+                compare: Compare::TableB,
+                ..Shared::default()
+            },
+            plane: PlaneState {
+                view: View::Diff,
+                ..PlaneState::default()
+            },
             ..LabState::default()
         },
     )
@@ -156,8 +164,14 @@ fn moving_alpha_changes_the_matrix_and_the_plane() {
     let Some(mut h) = lab((1600.0, 900.0), LabState::default()) else {
         return;
     };
-    let before_alpha = h.state().state.alpha();
-    let before_matrix = h.state().state.ltc_pair(&h.state().lut).spec.cos_from_brdf;
+    let before_alpha = h.state().lab.shared().alpha();
+    let before_matrix = h
+        .state()
+        .lab
+        .shared()
+        .ltc_pair(&h.state().lab.tables().a.lut)
+        .spec
+        .cos_from_brdf;
     let before_plane = plane_image(&h);
     // The matrix panel's own line ("specular lobe at θo = …, α = …"), not the lobe panel's.
     let shown = |h: &Harness<'static, LabApp>, a: f64| {
@@ -174,18 +188,22 @@ fn moving_alpha_changes_the_matrix_and_the_plane() {
     settle(&mut h);
     let app = h.state();
     assert!(
-        app.state.alpha() > before_alpha,
+        app.lab.shared().alpha() > before_alpha,
         "α did not move: {} → {}",
         before_alpha,
-        app.state.alpha()
+        app.lab.shared().alpha()
     );
     assert_ne!(
-        app.state.ltc_pair(&app.lut).spec.cos_from_brdf,
+        app.lab
+            .shared()
+            .ltc_pair(&app.lab.tables().a.lut)
+            .spec
+            .cos_from_brdf,
         before_matrix,
         "the matrix did not change"
     );
     assert!(
-        shown(&h, app.state.alpha()) && !shown(&h, before_alpha),
+        shown(&h, app.lab.shared().alpha()) && !shown(&h, before_alpha),
         "the matrix panel does not show the new α"
     );
     let after_plane = plane_image(&h);
@@ -212,10 +230,10 @@ fn clicking_a_heat_map_cell_selects_it() {
     click_at(&mut h, at);
     h.run_steps(3);
     let app = h.state();
-    let lut = &app.lut;
-    assert_eq!(app.state.alpha(), lut.alpha(10));
-    assert!((app.state.theta_o_deg - lut.theta_o(50).to_degrees()).abs() < 1e-9);
-    assert_eq!(app.matrix.current_cell, (10, 50));
+    let lut = &app.lab.tables().a.lut;
+    assert_eq!(app.lab.shared().alpha(), lut.alpha(10));
+    assert!((app.lab.shared().theta_o_deg - lut.theta_o(50).to_degrees()).abs() < 1e-9);
+    assert_eq!(app.lab.shared().nearest_cell(lut), (10, 50));
 }
 
 /// Total positive luminance of a clipping picture (row 0: case 1, row 1: case 2).
@@ -260,9 +278,9 @@ fn clipping_rules_off_show_the_glow_and_the_negative_light() {
         "the exact BRDF never lights from below"
     );
     h.get_by_label_contains("case 1 rule").click();
-    h.run_steps(3);
+    settle(&mut h);
     // One set of rules: the panel's checkbox is the lab's.
-    assert!(!h.state().state.clipping.horizon);
+    assert!(!h.state().lab.shared().clipping.horizon);
     assert!(
         picture_energy(&h, 0, 2) > 0.0,
         "no glow without the horizon rule"
@@ -271,13 +289,13 @@ fn clipping_rules_off_show_the_glow_and_the_negative_light() {
     let glow = &h.state().clipping.rows[0].thumbs[2];
     // The glow, ~1/200 of the lit plane, exposed to itself: a visible patch, not a dot.
     assert!(glow.factor > 50.0, "exposure ×{}", glow.factor);
-    let seen = visible_pixels(&glow.image);
+    let seen = visible_pixels(&expose(&glow.frame).image);
     assert!(seen > 500, "only {seen} visible pixels in the exposed glow");
     h.snapshot_options("clipping_case1_glow", &options(1000 * 700));
     results.extend_harness(&mut h);
     h.get_by_label_contains("case 1 rule").click();
     h.get_by_label_contains("case 2 rule").click();
-    h.run_steps(3);
+    settle(&mut h);
     assert_eq!(picture_energy(&h, 0, 2), 0.0, "the glow did not vanish");
     let negative = &h.state().clipping.rows[1].thumbs[2];
     let min = negative
@@ -290,10 +308,11 @@ fn clipping_rules_off_show_the_glow_and_the_negative_light() {
         min < 0.0 && negative.negative_factor.is_some(),
         "no negative light: {min}"
     );
-    let blue = blue_pixels(&negative.image);
+    let blue = blue_pixels(&expose(&negative.frame).image);
     assert!(blue > 2000, "only {blue} pixels show the negative light");
     // The same rule on: nothing negative, nothing blue.
-    assert_eq!(blue_pixels(&h.state().clipping.rows[0].thumbs[2].image), 0);
+    let case1 = &h.state().clipping.rows[0].thumbs[2].frame;
+    assert_eq!(blue_pixels(&expose(case1).image), 0);
     h.snapshot_options("clipping_case2_negative", &options(1000 * 700));
     results.extend_harness(&mut h);
     results.unwrap();
@@ -301,26 +320,24 @@ fn clipping_rules_off_show_the_glow_and_the_negative_light() {
 
 #[test]
 fn the_clipping_case_map_is_the_cpu_classification() {
-    let Some(mut h) = lab(
-        (1000.0, 700.0),
-        LabState {
-            clip_scene: ltc_lab::app::ClipScene::Case2,
-            ..maximised(PanelId::Clipping)
-        },
-    ) else {
+    let Some(mut h) = lab((1000.0, 700.0), {
+        let mut state = maximised(PanelId::Clipping);
+        state.clipping.clip_scene = ltc_lab::app::clip_setup::ClipScene::Case2;
+        state
+    }) else {
         return;
     };
     let app = h.state();
-    let (w, hgt) = ltc_lab::app::clipping::PICTURE;
+    let (w, hgt) = ltc_lab::app::clip_rows::PICTURE;
     for (r, which) in [
-        ltc_lab::app::ClipScene::Case1,
-        ltc_lab::app::ClipScene::Case2,
+        ltc_lab::app::clip_setup::ClipScene::Case1,
+        ltc_lab::app::clip_setup::ClipScene::Case2,
     ]
     .into_iter()
     .enumerate()
     {
-        let scene = app.state.clip_setup.scene(which, which);
-        let reference = ltc_lab::cpu::clip_counts_map(&scene, &app.lut, w, hgt);
+        let scene = app.clipping.state.setup.scene(which, which);
+        let reference = ltc_lab::cpu::clip_counts_map(&scene, &app.lab.tables().a.lut, w, hgt);
         let row = &app.clipping.rows[r];
         assert_eq!(row.case_map, reference, "{which:?}");
         let classified = reference
@@ -339,11 +356,8 @@ fn the_clipping_case_map_is_the_cpu_classification() {
 
 #[test]
 fn dragging_the_divider_moves_it() {
-    let state = LabState {
-        maximised: Some(PanelId::Plane),
-        view: View::Split,
-        ..LabState::default()
-    };
+    let mut state = maximised(PanelId::Plane);
+    state.plane.view = View::Split;
     let Some(mut h) = lab((1000.0, 700.0), state) else {
         return;
     };
@@ -355,7 +369,7 @@ fn dragging_the_divider_moves_it() {
     let end = egui::pos2(rect.min.x + rect.width() * 0.25, start.y);
     drag_along(&mut h, start, end);
     settle(&mut h);
-    let divider = h.state().state.divider;
+    let divider = h.state().plane.state.divider;
     assert!((divider - 0.25).abs() < 0.02, "divider at {divider}");
     let frame = plane_image(&h);
     let expected = (frame.width as f64 * divider).round() as usize;
@@ -375,11 +389,14 @@ fn refit_runs_the_fitter_live_and_the_lobe_panel_follows() {
     h.get_by_label("ltc_code").click();
     h.run_steps(2);
     let app = h.state_mut();
-    app.matrix.wait_for_refit(&mut app.state);
+    app.matrix.wait_for_refit(&mut app.lab);
     h.run_steps(2);
     let app = h.state();
-    let refit = app.state.refit.as_ref().expect("a refit ran");
-    assert_eq!(refit.cell, app.matrix.current_cell);
+    let refit = app.lab.shared().refit.as_ref().expect("a refit ran");
+    assert_eq!(
+        refit.cell,
+        app.lab.shared().nearest_cell(&app.lab.tables().a.lut)
+    );
     // Nelder–Mead keeps its best point: the best objective never rises.
     let best: Vec<f64> = refit.history.iter().map(|p| p[1]).collect();
     assert!(best.len() > 5, "only {} iterations reported", best.len());
@@ -402,10 +419,10 @@ fn refit_runs_the_fitter_live_and_the_lobe_panel_follows() {
         }
     }
     let (lobe, ltc) = app
-        .matrix
-        .refit_ltc(&app.state)
+        .lab
+        .refit_ltc()
         .expect("the lobe panel gets the refitted lobe");
-    assert_eq!(lobe, app.state.lobe);
+    assert_eq!(lobe, app.lab.shared().lobe);
     assert!(ltc.det_cos_from_brdf.is_finite() && ltc.det_cos_from_brdf > 0.0);
 }
 
@@ -419,11 +436,14 @@ fn the_worst_cell_refitted_by_the_point_objective_shows_both_matrices_and_errors
     h.get_by_label("point L1").click();
     h.run_steps(2);
     let app = h.state_mut();
-    app.matrix.wait_for_refit(&mut app.state);
+    app.matrix.wait_for_refit(&mut app.lab);
     settle(&mut h);
     let app = h.state();
-    let r = app.state.refit.as_ref().expect("a refit ran");
-    assert_eq!(r.cell, app.matrix.current_cell);
+    let r = app.lab.shared().refit.as_ref().expect("a refit ran");
+    assert_eq!(
+        r.cell,
+        app.lab.shared().nearest_cell(&app.lab.tables().a.lut)
+    );
     // Started from the stored cell and kept the best point by its own objective (a
     // quadrature of the same L1 integral the error estimates by strata): it may not end above
     // the stored error by more than tests/refit.rs allows a refit (5% of the albedo).
@@ -450,13 +470,16 @@ fn a_broken_lut_file_is_reported_and_the_lab_keeps_its_table() {
     let dir = tempfile::tempdir().unwrap();
     let broken = dir.path().join("broken.exr");
     std::fs::write(&broken, b"not an exr").unwrap();
-    h.state_mut().state.lut_path = broken.display().to_string();
+    h.state_mut().controls.state.lut_path = broken.display().to_string();
     h.run_steps(1);
     h.get_by_label("use LUT").click();
     h.run_steps(2);
-    let m = h.state().message.clone().expect("a message");
+    let m = h.state().lab.message.clone().expect("a message");
     assert!(m.is_error && m.text.contains("broken.exr"), "{}", m.text);
-    assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded());
+    assert_eq!(
+        &h.state().lab.tables().a.lut,
+        ltc_lab::ltc::lut::Lut::embedded()
+    );
     assert!(
         h.query_by_label_contains("still using the previous table")
             .is_some(),
@@ -474,12 +497,12 @@ fn a_broken_lut_file_is_reported_and_the_lab_keeps_its_table() {
     .lut
     .write(&good)
     .unwrap();
-    h.state_mut().state.lut_path = good.display().to_string();
+    h.state_mut().controls.state.lut_path = good.display().to_string();
     h.run_steps(1);
     h.get_by_label("use LUT").click();
     h.run_steps(3);
-    assert_eq!(h.state().lut.size, 4);
-    assert!(!h.state().message.as_ref().unwrap().is_error);
+    assert_eq!(h.state().lab.tables().a.lut.size, 4);
+    assert!(!h.state().lab.message.as_ref().unwrap().is_error);
 }
 
 #[test]
@@ -496,6 +519,7 @@ fn the_chart_reads_a_study_csv_and_reports_a_bad_row() {
     h.run_steps(2);
     let m = h
         .state()
+        .chart
         .state
         .measurement
         .clone()
@@ -539,13 +563,25 @@ fn the_table_switch_shades_with_the_point_fit_and_both_fits_are_shown() {
         h.query_by_label_contains("A (classic): M^-1").is_some()
             && h.query_by_label_contains("B (point): M^-1").is_some()
     );
-    assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded());
+    assert_eq!(
+        &h.state().lab.tables().a.lut,
+        ltc_lab::ltc::lut::Lut::embedded()
+    );
     h.get_by_label("point").click();
     h.run_steps(3);
-    assert_eq!(h.state().state.table, ltc_lab::ltc::lut::Table::Point);
-    assert_eq!(&h.state().lut, ltc_lab::ltc::lut::Lut::embedded_point());
+    assert_eq!(
+        h.state().lab.shared().table,
+        ltc_lab::ltc::lut::Table::Point
+    );
+    assert_eq!(
+        &h.state().lab.tables().a.lut,
+        ltc_lab::ltc::lut::Lut::embedded_point()
+    );
     // Table B follows: the other shipped table.
-    assert_eq!(&h.state().other.lut, ltc_lab::ltc::lut::Lut::embedded());
+    assert_eq!(
+        &h.state().lab.tables().b.lut,
+        ltc_lab::ltc::lut::Lut::embedded()
+    );
     assert!(
         h.query_by_label_contains("A (point): M^-1").is_some()
             && h.query_by_label_contains("B (classic): M^-1").is_some()
@@ -555,7 +591,10 @@ fn the_table_switch_shades_with_the_point_fit_and_both_fits_are_shown() {
 /// The default state with panel `id` shown alone.
 fn maximised(id: PanelId) -> LabState {
     LabState {
-        maximised: Some(id),
+        window: WindowState {
+            maximised: Some(id),
+            ..WindowState::default()
+        },
         ..LabState::default()
     }
 }
@@ -564,21 +603,20 @@ fn maximised(id: PanelId) -> LabState {
 /// hundred lights so that the pacer, which starts at one light per chunk and at most doubles,
 /// needs many frames.
 fn plane_state(lights: usize) -> LabState {
-    let mut state = LabState {
-        view: View::Split,
-        ..maximised(PanelId::Plane)
-    };
-    state.set_light_count(lights);
+    let mut state = maximised(PanelId::Plane);
+    state.plane.view = View::Split;
+    state.lab.set_light_count(lights);
     state
 }
 
 /// The same scene and settings rendered whole, in one submission, on the lab's own device.
 fn one_shot(h: &Harness<'static, LabApp>) -> Frame {
     let app = h.state();
-    let ctx = app.shading.context().expect("the lab has a GPU");
-    let key = app.shading.key().expect("a render started");
-    let mut r = PlaneRenderer::new(ctx, &app.lut, ShaderChecks::Checked).unwrap();
-    r.render(ctx, &key.scene, &key.settings).unwrap().0
+    let ctx = app.plane.shading.context().expect("the lab has a GPU");
+    let settings = app.plane.shading.settings().expect("a render started");
+    let mut r = PlaneRenderer::new(ctx, &app.lab.tables().a.lut, ShaderChecks::Checked).unwrap();
+    let scene = app.lab.shared().shaded_scene();
+    r.render(ctx, &scene, settings).unwrap().0
 }
 
 /// Summed over many frames in paced chunks, the plane is the one-shot render to the bit: the
@@ -589,7 +627,7 @@ fn the_plane_summed_over_frames_is_the_one_shot_render() {
     let Some(h) = lab((900.0, 600.0), plane_state(300)) else {
         return;
     };
-    let p = h.state().shading.progress;
+    let p = h.state().plane.shading.progress;
     assert!(p.complete() && p.total == 300, "{p:?}");
     // 1, 2, 4 … 256: at least nine chunks, whatever the chunks' times.
     assert!(p.frames >= 9, "summed in only {} frames", p.frames);
@@ -609,37 +647,32 @@ fn the_plane_summed_over_frames_is_the_one_shot_render() {
     );
 }
 
-/// A render held back (no chunk may go) leaves every frame free: the window keeps running,
-/// answers a slider, shows the render in progress; released, it finishes.
+/// A render in flight leaves every frame free: the window keeps running, shows the render in
+/// progress, answers a change (which restarts the render) and finishes it. 2 000 lights: the
+/// pacer's chunks start at one light and at most double, so the sums take at least eleven
+/// frames after the tile lists.
 #[test]
-fn a_held_render_never_stops_the_window() {
-    let Some(mut h) = lab((900.0, 600.0), plane_state(100)) else {
+fn a_render_in_flight_never_stops_the_window() {
+    let Some(mut h) = lab((900.0, 600.0), plane_state(2000)) else {
         return;
     };
-    let open = Arc::new(AtomicBool::new(false));
-    let gate = open.clone();
-    h.state_mut().shading.gate = Some(Arc::new(move || gate.load(Ordering::Relaxed)));
-    h.state_mut().shading.invalidate();
-    h.run_steps(5);
-    let p = h.state().shading.progress;
-    assert!(h.state().busy() && p.done == 0, "{p:?}");
-    // Culled (the default): the tile lists come first.
-    assert!(
-        h.query_by_label_contains("binning lights into tiles: 0%")
-            .is_some(),
-        "the window does not show the render in progress"
-    );
-    // The window still answers: the divider's slider moves, and the render restarts held.
-    let before = h.state().state.divider;
-    h.state_mut().state.divider = 0.3;
-    h.run_steps(3);
-    assert!(h.state().busy() && h.state().shading.progress.done == 0);
-    assert_ne!(before, 0.3);
-    let key = h.state().shading.key().unwrap();
-    assert_eq!(key.settings.divider, 0.3, "the held render did not restart");
-    open.store(true, Ordering::Relaxed);
+    h.state_mut().plane.shading.invalidate();
+    // The restart's frame, then one that draws its progress line.
+    h.run_steps(2);
+    assert!(h.state().busy(), "{:?}", h.state().plane.shading.progress);
+    // Culled (the default): the tile lists come first, then the sums.
+    let said = ["binning lights into tiles", "rendering "]
+        .iter()
+        .any(|text| h.query_by_label_contains(text).is_some());
+    assert!(said, "the window does not show the render in progress");
+    // The window still answers: the divider moves, and the render restarts with it.
+    h.state_mut().plane.state.divider = 0.3;
+    h.run_steps(1);
+    assert!(h.state().busy());
+    let settings = h.state().plane.shading.settings().unwrap();
+    assert_eq!(settings.divider, 0.3, "the render did not restart");
     settle(&mut h);
-    assert!(h.state().shading.progress.complete());
+    assert!(h.state().plane.shading.progress.complete());
     assert!(bits(&plane_image(&h)) == bits(&one_shot(&h)));
 }
 
@@ -657,7 +690,8 @@ fn a_cancelled_refit_stops_and_is_kept_with_the_state() {
     settle(&mut h);
     let app = h.state();
     let r = app
-        .state
+        .lab
+        .shared()
         .refit
         .as_ref()
         .expect("the cancelled refit is kept");
@@ -667,9 +701,9 @@ fn a_cancelled_refit_stops_and_is_kept_with_the_state() {
         "the refit ran to its limit"
     );
     assert!(h.query_by_label_contains("cancelled").is_some());
-    let saved = ron::to_string(&app.state).unwrap();
+    let saved = ron::to_string(&app.state()).unwrap();
     let restored: LabState = ron::from_str(&saved).expect("eframe reads the state back");
-    assert_eq!(restored, app.state);
+    assert_eq!(restored, app.state());
 }
 
 /// "A | B tables": side B shades the same LTC form with table B, as the CPU reference does
@@ -684,14 +718,15 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     let ltc_against_brdf = plane_image(&h);
     h.get_by_label("A | B tables").click();
     settle(&mut h);
-    let key = h.state().shading.key().unwrap().clone();
-    assert!(key.settings.table_b && key.settings.method_b == key.settings.method_a);
+    let settings = *h.state().plane.shading.settings().unwrap();
+    assert!(settings.table_b && settings.method_b == settings.method_a);
     let gpu = plane_image(&h);
     let tables = ltc_lab::render::Tables {
         a: ltc_lab::ltc::lut::Lut::embedded(),
         b: ltc_lab::ltc::lut::Lut::embedded_point(),
     };
-    let cpu = ltc_lab::cpu::render(&key.scene, tables, &key.settings);
+    let scene = h.state().lab.shared().shaded_scene();
+    let cpu = ltc_lab::cpu::render(&scene, tables, &settings);
     gpu_common::assert_close("A | B split", &gpu, &cpu);
     assert!(
         bits(&gpu) != bits(&ltc_against_brdf),
@@ -703,14 +738,14 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     ltc_lab::ltc::lut::Lut::embedded_point()
         .write(&file)
         .unwrap();
-    h.state_mut().state.lut_path = file.display().to_string();
-    h.state_mut().state.maximised = Some(PanelId::Matrix);
+    h.state_mut().controls.state.lut_path = file.display().to_string();
+    h.state_mut().window.maximised = Some(PanelId::Matrix);
     h.run_steps(1);
     h.get_by_label("as B").click();
     settle(&mut h);
     let app = h.state();
-    assert!(app.other.chosen && app.other.name.ends_with("mine.exr"));
-    assert!(!app.message.as_ref().unwrap().is_error);
+    assert!(app.lab.tables().b_chosen && app.lab.tables().b.name.ends_with("mine.exr"));
+    assert!(!app.lab.message.as_ref().unwrap().is_error);
     assert!(
         h.query_by_label_contains("mine.exr): M^-1").is_some(),
         "the matrix panel does not name table B"
@@ -718,21 +753,17 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     h.get_by_label("point").click();
     settle(&mut h);
     assert!(
-        h.state().other.name.ends_with("mine.exr"),
+        h.state().lab.tables().b.name.ends_with("mine.exr"),
         "table B did not stay"
     );
     h.get_by_label("reset").click();
     settle(&mut h);
-    assert_eq!(h.state().other.name, "classic");
+    assert_eq!(h.state().lab.tables().b.name, "classic");
 }
 
 #[test]
 fn a_pinned_pixel_opens_into_its_lights_and_one_shows_on_the_lobe() {
-    let state = LabState {
-        maximised: Some(PanelId::Plane),
-        ..LabState::default()
-    };
-    let Some(mut h) = lab((1000.0, 700.0), state) else {
+    let Some(mut h) = lab((1000.0, 700.0), maximised(PanelId::Plane)) else {
         return;
     };
     let rect = h.get_by_label("plane image").rect();
@@ -744,15 +775,15 @@ fn a_pinned_pixel_opens_into_its_lights_and_one_shows_on_the_lobe() {
     click_at(&mut h, at);
     settle(&mut h);
     let app = h.state();
-    let [u, v] = app.state.pinned.expect("the click pinned a pixel");
+    let [u, v] = app.plane.state.pinned.expect("the click pinned a pixel");
     assert!(
         (u - 0.2).abs() < 0.01 && (v - 0.8).abs() < 0.01,
         "pinned at ({u}, {v})"
     );
     let t = app.plane.pinned().expect("the pinned pixel's lights");
-    assert_eq!(t.terms.len(), app.state.scene.lights.len());
+    assert_eq!(t.terms.len(), app.lab.shared().scene.lights.len());
     // The table's pixel is the plane's: the CPU reference at the same point.
-    let scene = app.state.shaded_scene();
+    let scene = app.lab.shared().shaded_scene();
     let (w, hgt) = app.plane.shown.unwrap().size;
     let p = scene
         .surface_point_at(u * w as f64, v * hgt as f64, w, hgt)
@@ -762,21 +793,21 @@ fn a_pinned_pixel_opens_into_its_lights_and_one_shows_on_the_lobe() {
     // The readout sits in its own strip.
     assert!(h.query_by_label_contains("pinned (0.2").is_some());
     // Sorted by the share of the error, largest first: click the top row's index.
-    let top = ltc_lab::app::pixel_table::sorted_rows(t, h.state().state.light_sort)[0];
+    let top = ltc_lab::app::pixel_table::sorted_rows(t, h.state().plane.state.light_sort)[0];
     let (index, omega) = (top.index, top.omega);
     h.get_by_label(&index.to_string()).click();
     h.run_steps(2);
-    assert_eq!(h.state().state.lobe_light, Some(omega.to_array()));
-    assert_eq!(h.state().state.selected_light, Some(index));
+    assert_eq!(h.state().lab.shared().lobe_light, Some(omega.to_array()));
+    assert_eq!(h.state().lab.shared().selected_light, Some(index));
     h.snapshot_options("plane_pixel_pinned_lights", &options(1000 * 700));
 }
 
 #[test]
 fn the_lobe_difference_at_80_degrees_shows_the_gap() {
     let mut state = maximised(PanelId::Lobe);
-    state.theta_o_deg = 80.0;
-    state.scene.material.alpha = 0.6;
-    state.colour_difference = true;
+    state.lab.theta_o_deg = 80.0;
+    state.lab.scene.material.alpha = 0.6;
+    state.lobe.colour_difference = true;
     let Some(mut h) = lab((800.0, 600.0), state) else {
         return;
     };
@@ -828,17 +859,16 @@ fn the_exposure_slider_brightens_the_plane_without_restarting_it() {
         sum / n
     };
     let before = mean(&mut h);
-    let key = h.state().shading.key().cloned();
-    h.state_mut().state.scene.exposure *= 4.0;
+    let settings = h.state().plane.shading.settings().copied();
+    h.state_mut()
+        .lab
+        .edit(Aspect::Exposure, |s| s.scene.exposure *= 4.0);
     h.run_steps(3);
     assert!(
-        !h.state().shading.in_flight(),
+        !h.state().plane.shading.in_flight(),
         "an exposure change restarted the render"
     );
-    assert_eq!(
-        h.state().shading.key().map(|k| &k.settings),
-        key.as_ref().map(|k| &k.settings)
-    );
+    assert_eq!(h.state().plane.shading.settings().copied(), settings);
     let after = mean(&mut h);
     // Four times the exposure through x/(1+x) and sRGB raises every lit grey level: a mid
     // grey of 118/255 (this plane's middle at exposure 1.5) is 0.221 before the tone map,
@@ -862,7 +892,10 @@ fn dragging_on_a_clipping_picture_draws_the_profiles_line() {
     drag_along(&mut h, start, end);
     h.run_steps(2);
     let app = h.state();
-    assert_eq!(app.state.clip_scene, ltc_lab::app::state::ClipScene::Case2);
+    assert_eq!(
+        app.clipping.state.clip_scene,
+        ltc_lab::app::clip_setup::ClipScene::Case2
+    );
     let line = app.clipping.line.expect("a dragged line");
     // In the pictures' unit square, within the drag's first step (1/10 of it) of the ends.
     for (got, want) in line.iter().zip([(0.2, 0.3), (0.8, 0.7)]) {
@@ -898,12 +931,12 @@ fn zero_or_infinite_timings_are_refused_where_they_are_read() {
     saved
         .scaling
         .push((ltc_lab::render::Method::Ltc, vec![[100.0, f64::INFINITY]]));
-    state.measurement = Some(saved.clone());
+    state.chart.measurement = Some(saved.clone());
     let Some(h) = lab((1000.0, 600.0), state) else {
         return;
     };
     // Dropped; the chart may show its bundled reference study instead, which plots.
-    let shown = h.state().state.measurement.clone();
+    let shown = h.state().chart.state.measurement.clone();
     assert_ne!(shown.as_ref(), Some(&saved));
     assert!(shown.is_none_or(|m| m.validate().is_ok()));
     assert!(
@@ -925,14 +958,13 @@ fn more_lights_than_the_adapter_shades_are_cut_and_said() {
         return;
     }
     let mut state = maximised(PanelId::Chart);
-    state.set_light_count(max + 1);
+    state.lab.set_light_count(max + 1);
     let render_state = egui_kittest::wgpu::create_render_state(
         ltc_lab::app::shading::wgpu_setup(),
         egui_wgpu::RendererOptions::PREDICTABLE,
     );
     let app = LabApp::new(state, Some(&render_state));
-    assert_eq!(app.state.scene.lights.len(), max);
-    assert_eq!(app.state.light_count, max);
+    assert_eq!(app.lab.shared().scene.lights.len(), max);
     let mut h = Harness::builder()
         .with_size(egui::vec2(800.0, 500.0))
         .renderer(WgpuTestRenderer::from_render_state(render_state))
@@ -962,10 +994,10 @@ fn no_lights_leave_no_old_image_on_the_plane() {
         lit(&plane_image(&h)) > 0,
         "the default scene lights the plane"
     );
-    h.state_mut().state.set_light_count(0);
+    h.state_mut().lab.set_light_count(0);
     settle(&mut h);
     let frame = plane_image(&h);
-    assert_eq!(h.state().shading.progress.total, 0);
+    assert_eq!(h.state().plane.shading.progress.total, 0);
     assert_eq!(lit(&frame), 0, "the last image is still there");
 }
 
@@ -990,7 +1022,7 @@ fn a_table_from_a_file_is_the_one_shown_and_survives_a_restart() {
         h.get_by_label(label).accesskit_node().toggled() == Some(egui::accesskit::Toggled::True)
     };
     assert!(selected(&h, "classic"));
-    h.state_mut().state.lut_path = js.display().to_string();
+    h.state_mut().controls.state.lut_path = js.display().to_string();
     h.run_steps(1);
     h.get_by_label("use LUT").click();
     h.run_steps(2);
@@ -1005,16 +1037,16 @@ fn a_table_from_a_file_is_the_one_shown_and_survives_a_restart() {
             >= 2
     );
     // The next start shades with the same file.
-    let saved = h.state().state.clone();
+    let saved = h.state().state();
     let again = LabApp::new(saved.clone(), None);
-    assert_eq!(again.lut, h.state().lut);
-    assert_eq!(again.lut_name, js.display().to_string());
+    assert_eq!(again.lab.tables().a.lut, h.state().lab.tables().a.lut);
+    assert_eq!(again.lab.tables().a.name, js.display().to_string());
     // Gone since: the shipped table shades, and the window says why.
     std::fs::remove_file(&js).unwrap();
     let lost = LabApp::new(saved, None);
-    assert_eq!(&lost.lut, Lut::embedded());
-    assert_eq!(lost.state.table_file, None);
-    let m = lost.message.expect("a message");
+    assert_eq!(&lost.lab.tables().a.lut, Lut::embedded());
+    assert_eq!(lost.lab.shared().table_file, None);
+    let m = lost.lab.message.expect("a message");
     assert!(
         m.is_error && m.text.contains("cannot be read again"),
         "{}",
@@ -1024,7 +1056,7 @@ fn a_table_from_a_file_is_the_one_shown_and_survives_a_restart() {
     h.get_by_label("point").click();
     h.run_steps(2);
     assert!(selected(&h, "point"));
-    assert_eq!(h.state().state.table_file, None);
+    assert_eq!(h.state().lab.shared().table_file, None);
 }
 
 /// The lobe panel says on its face what it shows (θo, α, the table), so that a picture of it
@@ -1032,12 +1064,12 @@ fn a_table_from_a_file_is_the_one_shown_and_survives_a_restart() {
 #[test]
 fn the_lobe_panel_prints_its_parameters_on_its_face() {
     let mut state = maximised(PanelId::Lobe);
-    state.theta_o_deg = 47.0;
-    state.controls_hidden = true;
+    state.lab.theta_o_deg = 47.0;
+    state.window.controls_hidden = true;
     let Some(h) = lab((900.0, 600.0), state) else {
         return;
     };
-    let alpha = h.state().state.alpha();
+    let alpha = h.state().lab.shared().alpha();
     let face = format!("θo = 47.0°   α = {alpha:.4}   table A: classic");
     assert!(
         h.query_by_label_contains(&face).is_some(),
@@ -1056,7 +1088,7 @@ fn a_notice_moves_no_control() {
         h.get_by_label("use LUT").rect(),
         h.get_by_label("screenshot").rect(),
     );
-    h.state_mut().state.lut_path = "/nonexistent/ltc.js".into();
+    h.state_mut().controls.state.lut_path = "/nonexistent/ltc.js".into();
     h.run_steps(1);
     h.get_by_label("use LUT").click();
     h.run_steps(2);
@@ -1087,7 +1119,9 @@ fn a_light_is_placed_by_typing_and_saved_rounded() {
     let Some(mut h) = lab((1600.0, 900.0), maximised(PanelId::Lobe)) else {
         return;
     };
-    h.state_mut().state.selected_light = Some(3);
+    h.state_mut()
+        .lab
+        .edit(Aspect::Selection, |s| s.selected_light = Some(3));
     h.run_steps(2);
     let field = h.get_by_role_and_label(Role::SpinButton, "y");
     field.focus();
@@ -1097,11 +1131,13 @@ fn a_light_is_placed_by_typing_and_saved_rounded() {
     h.key_press(egui::Key::Enter);
     h.run_steps(2);
     // Typed over the old value's selected text: the field holds what was typed.
-    assert_eq!(h.state().state.scene.lights[3].position[1], 0.5);
-    h.state_mut().state.scene.lights[3].position[0] = 0.123_456_789_012_345;
+    assert_eq!(h.state().lab.shared().scene.lights[3].position[1], 0.5);
+    h.state_mut().lab.edit(Aspect::Scene, |s| {
+        s.scene.lights[3].position[0] = 0.123_456_789_012_345;
+    });
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("scene.toml");
-    h.state_mut().state.scene_path = path.display().to_string();
+    h.state_mut().controls.state.scene_path = path.display().to_string();
     h.run_steps(1);
     h.get_by_label("save").click();
     h.run_steps(2);
@@ -1111,7 +1147,7 @@ fn a_light_is_placed_by_typing_and_saved_rounded() {
     let saved = ltc_lab::scene::Scene::load(&path).unwrap();
     assert_eq!(
         saved,
-        h.state().state.scene,
+        h.state().lab.shared().scene,
         "the view is not what the file holds"
     );
 }
@@ -1131,10 +1167,8 @@ fn the_layout_scales_with_the_window() {
         ltc_lab::app::shading::wgpu_setup(),
         egui_wgpu::RendererOptions::PREDICTABLE,
     );
-    let state = LabState {
-        show_gpu_times: false,
-        ..LabState::default()
-    };
+    let mut state = LabState::default();
+    state.plane.show_gpu_times = false;
     let app = LabApp::new(state, Some(&render_state));
     let mut uhd = Harness::builder()
         .with_size(egui::vec2(1920.0, 1080.0))
@@ -1174,15 +1208,15 @@ fn the_layout_scales_with_the_window() {
 /// on the lab's own device, with the lab's tables A and B.
 fn plane_side_alone(h: &Harness<'static, LabApp>, view: View) -> Frame {
     let app = h.state();
-    let ctx = app.shading.context().expect("the lab has a GPU");
-    let key = app.shading.key().expect("a render started");
-    let mut r = PlaneRenderer::new(ctx, &app.lut, ShaderChecks::Checked).unwrap();
-    r.set_lut_b(ctx, Some(&app.other.lut)).unwrap();
-    let settings = ltc_lab::render::RenderSettings {
-        view,
-        ..key.settings
-    };
-    r.render(ctx, &key.scene, &settings).unwrap().0
+    let ctx = app.plane.shading.context().expect("the lab has a GPU");
+    let current = app.plane.shading.settings().expect("a render started");
+    let tables = app.lab.tables();
+    let mut r = PlaneRenderer::new(ctx, &tables.a.lut, ShaderChecks::Checked).unwrap();
+    r.set_tables(ctx, &tables.a.lut, Some(&tables.b.lut))
+        .unwrap();
+    let settings = ltc_lab::render::RenderSettings { view, ..*current };
+    let scene = app.lab.shared().shaded_scene();
+    r.render(ctx, &scene, &settings).unwrap().0
 }
 
 /// Issue 19: in "A | B tables" the title says which tables are compared, and the pinned
@@ -1223,17 +1257,17 @@ fn with_two_tables_the_pinned_pixel_compares_table_a_with_table_b_per_light() {
     );
     let app = h.state();
     let t = app.plane.pinned().expect("the pinned pixel's lights");
-    let scene = app.state.shaded_scene();
+    let scene = app.lab.shared().shaded_scene();
     let (w, hgt) = app.plane.shown.unwrap().size;
-    let [u, v] = app.state.pinned.unwrap();
+    let [u, v] = app.plane.state.pinned.unwrap();
     let p = scene
         .surface_point_at(u * w as f64, v * hgt as f64, w, hgt)
         .unwrap();
-    let (s, filter) = (&app.state, ltc_lab::render::LutFilter::Bilinear);
+    let (s, filter) = (app.lab.shared(), ltc_lab::render::LutFilter::Bilinear);
     let shade = |lut, lights: &[ltc_lab::scene::Light]| {
         ltc_lab::cpu::shade_ltc(&scene, lut, &p, lights, s.clipping, s.normalization, filter)
     };
-    let (a, b) = (&app.lut, &app.other.lut);
+    let (a, b) = (&app.lab.tables().a.lut, &app.lab.tables().b.lut);
     // Summed in the same order as the reference sums: the same f64 operations.
     assert_eq!(t.ltc_b, Some(shade(b, &scene.lights)));
     assert_eq!(t.ltc, shade(a, &scene.lights));
@@ -1248,7 +1282,7 @@ fn with_two_tables_the_pinned_pixel_compares_table_a_with_table_b_per_light() {
     let top = |h: &Harness<'static, LabApp>| {
         let app = h.state();
         let t = app.plane.pinned().unwrap();
-        ltc_lab::app::pixel_table::sorted_rows(t, app.state.light_sort)[0].index
+        ltc_lab::app::pixel_table::sorted_rows(t, app.plane.state.light_sort)[0].index
     };
     assert_eq!(top(&h), largest(&|i| (alone(a, i) - alone(b, i)).abs()));
     // Sorted by table B's column: the brightest light under table B.
@@ -1270,11 +1304,16 @@ fn the_worst_pixel_button_pins_the_largest_difference_in_either_mode() {
     for mode in ["LTC | BRDF", "A | B tables"] {
         h.get_by_label(mode).click();
         settle(&mut h);
-        h.state_mut().state.pinned = None;
+        h.state_mut().plane.state.pinned = None;
         h.get_by_label("worst pixel").click();
         settle(&mut h);
-        assert_eq!(h.state().state.view, View::Diff, "{mode}");
-        let [u, v] = h.state().state.pinned.expect("worst pixel pinned none");
+        assert_eq!(h.state().plane.state.view, View::Diff, "{mode}");
+        let [u, v] = h
+            .state()
+            .plane
+            .state
+            .pinned
+            .expect("worst pixel pinned none");
         let (sa, sb) = (plane_side_alone(&h, View::A), plane_side_alone(&h, View::B));
         let floor = ltc_lab::metrics::relative_floor(&sb, &sa);
         let y = ltc_lab::metrics::luminance;
@@ -1304,13 +1343,13 @@ fn a_new_light_is_seen_away_from_the_divider_and_the_other_lights() {
     let Some(mut h) = lab((1000.0, 700.0), maximised(PanelId::Plane)) else {
         return;
     };
-    let held = h.state().state.scene.lights.len();
+    let held = h.state().lab.shared().scene.lights.len();
     for _ in 0..2 {
         h.get_by_label("+ light").click();
         h.run_steps(2);
     }
     let app = h.state();
-    let scene = &app.state.scene;
+    let scene = &app.lab.shared().scene;
     assert_eq!(scene.lights.len(), held + 2);
     let (w, hgt) = app.plane.shown.unwrap().size;
     let seen = |k: usize| {
@@ -1318,7 +1357,7 @@ fn a_new_light_is_seen_away_from_the_divider_and_the_other_lights() {
             .project(glam::DVec3::from(scene.lights[k].position), w, hgt)
             .unwrap()
     };
-    let divider = app.state.divider * w as f64;
+    let divider = app.plane.state.divider * w as f64;
     for k in held..held + 2 {
         let (x, y) = seen(k);
         let p = scene.lights[k].position;
@@ -1383,7 +1422,7 @@ fn the_chart_keeps_its_legends_outside_and_gives_the_speed_ratio() {
         );
     }
     // The ratio, from the measurement shown (the bundled study): ltc-fast's fps over brdf's.
-    let m = h.state().state.measurement.clone().unwrap();
+    let m = h.state().chart.state.measurement.clone().unwrap();
     let fps = |method: Method| m.scaling.iter().find(|(x, _)| *x == method).unwrap().1[0];
     let (ltc, brdf) = (fps(Method::LtcFast), fps(Method::Brdf));
     assert_eq!(ltc[0], brdf[0]);
@@ -1422,7 +1461,7 @@ fn the_chart_keeps_its_legends_outside_and_gives_the_speed_ratio() {
         device: "a test's numbers".into(),
     };
     let mut state = maximised(PanelId::Chart);
-    state.measurement = Some(ranged);
+    state.chart.measurement = Some(ranged);
     let mut h = lab((900.0, 560.0), state).unwrap();
     let said = "LTC/BRDF speed (ltc-fast over brdf): ×2.27 at 100 lights, ×2.27 at 1000 lights";
     assert!(h.query_by_label_contains(said).is_some(), "no '{said}'");
@@ -1457,23 +1496,26 @@ fn a_render_in_flight_is_previewed_at_full_scale_and_says_so() {
         (1.0, None)
     );
     let mut state = maximised(PanelId::Plane);
-    state.set_light_count(1000);
+    state.lab.set_light_count(1000);
     let Some(mut h) = lab((800.0, 500.0), state) else {
         return;
     };
     // A restart: binned into tiles first, then summed in chunks that start at one light
     // (the pacer), so its first summed frames leave it in flight.
-    h.state_mut().state.set_light_count(1001);
+    h.state_mut().lab.set_light_count(1001);
     for _ in 0..1000 {
         h.step();
-        if h.state().shading.progress.done > 0 {
+        if h.state().plane.shading.progress.done > 0 {
             break;
         }
     }
     // One more frame: the progress line is drawn before the frame's chunk is summed.
     h.step();
-    assert!(h.state().shading.in_flight(), "the render finished at once");
-    assert!(h.state().shading.progress.preview_scale() > 1.0);
+    assert!(
+        h.state().plane.shading.in_flight(),
+        "the render finished at once"
+    );
+    assert!(h.state().plane.shading.progress.preview_scale() > 1.0);
     assert!(
         h.query_by_label_contains("preview: the sum so far × ")
             .is_some(),

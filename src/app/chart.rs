@@ -5,19 +5,26 @@
 //! last result is kept with the lab's state.
 
 use egui::Color32;
+use serde::{Deserialize, Serialize};
 
 use crate::app::axes::log_axis;
-
+use crate::app::lab::{Lab, Panel, Shared};
 use crate::app::measure::{MEASURE_SIZE, MeasureJob, Measurement, Point, REPEATS};
-use crate::app::shading::Shading;
-use crate::app::state::LabState;
+use crate::app::shading::FRAME_BUDGET_MS;
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
 use crate::colormap::{round_sig, short_number};
-use crate::ltc::lut::Lut;
 use crate::render::Method;
+
+/// The chart's last measurement (or study), kept between runs.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ChartState {
+    pub measurement: Option<Measurement>,
+}
 
 #[derive(Default)]
 pub struct ChartPanel {
+    pub state: ChartState,
     pub error: Option<String>,
     /// A measurement under way.
     pub job: Option<MeasureJob>,
@@ -25,64 +32,26 @@ pub struct ChartPanel {
     pub study_path: String,
 }
 
-impl ChartPanel {
-    pub fn show(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, shading: &Shading) {
+impl Panel for ChartPanel {
+    fn show(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         if let Some(job) = &mut self.job {
-            if let Some(m) = job.step(shading.budget_ms) {
-                s.measurement = Some(m);
+            if let Some(m) = job.step(FRAME_BUDGET_MS) {
+                self.state.measurement = Some(m);
                 self.job = None;
             } else {
                 ui.ctx().request_repaint();
             }
         }
-        if s.measurement.is_none() {
-            s.measurement = reference_study();
+        if self.state.measurement.is_none() {
+            self.state.measurement = reference_study();
         }
-        ui.horizontal_wrapped(|ui| {
-            match &self.job {
-                Some(job) => {
-                    ui.add(egui::ProgressBar::new(job.progress()).desired_width(90.0))
-                        .on_hover_text("The measurement, task by task");
-                    ui.small(format!("measuring {}", job.describe()));
-                    if ui.small_button("cancel").on_hover_text("Stop measuring; the chart keeps what it showed").clicked() {
-                        self.job = None;
-                    }
-                }
-                None => {
-                    if ui
-                        .button("measure")
-                        .on_hover_text(format!("Times every method on the current scene at {}×{} (median of {REPEATS} renders, timestamp queries) and its error against the exact BRDF; then fps at 100–5000 lights. Each render is summed over frames within the frame budget, so the window stays live", MEASURE_SIZE.0, MEASURE_SIZE.1))
-                        .clicked()
-                    {
-                        self.start(s, lut, shading);
-                    }
-                }
-            }
-            ui.add(egui::TextEdit::singleline(&mut self.study_path).desired_width(110.0).hint_text("path to a study.csv"))
-                .on_hover_text("A study.csv written by `ltc-lab study`, to plot instead of a live measurement");
-            if ui.small_button("load study").on_hover_text("Plot the study.csv named on the left").clicked() {
-                let path = self.study_path.trim();
-                if path.is_empty() {
-                    self.error = Some("load study: name a study.csv in the field first".into());
-                } else {
-                    match crate::study::read_csv(std::path::Path::new(path)) {
-                        Ok(rows) => {
-                            s.measurement = Some(Measurement::from_study(&rows, path));
-                            self.error = None;
-                        }
-                        // The error names the file already.
-                        Err(e) => self.error = Some(format!("load study: {e}")),
-                    }
-                }
-            }
-            if let Some(m) = &s.measurement {
-                ui.small(&m.device);
-            }
-        });
+        ui.horizontal_wrapped(|ui| self.toolbar(ui, lab));
         if let Some(e) = &self.error {
             ui.colored_label(Color32::LIGHT_RED, e);
         }
-        let Some(m) = &s.measurement else { return };
+        let Some(m) = &self.state.measurement else {
+            return;
+        };
         let half = (ui.available_width() / 2.0 - 6.0).max(80.0);
         let height = ui.available_height().max(80.0);
         ui.horizontal(|ui| {
@@ -90,18 +59,78 @@ impl ChartPanel {
                 ui.vertical(|ui| time_error_plot(ui, m, height));
             });
             ui.allocate_ui(egui::vec2(half, height), |ui| {
-                ui.vertical(|ui| fps_plot(ui, m, s, height));
+                ui.vertical(|ui| fps_plot(ui, m, lab.shared(), height));
             });
         });
     }
+}
 
-    /// Starts measuring the current scene on the window's device.
-    pub fn start(&mut self, s: &LabState, lut: &Lut, shading: &Shading) {
-        let Some(ctx) = shading.context() else {
-            self.error = Some(format!("measure: {}", shading.describe()));
+impl ChartPanel {
+    /// *measure* (or its progress and cancel), and a study to read instead.
+    fn toolbar(&mut self, ui: &mut egui::Ui, lab: &Lab) {
+        match &self.job {
+            Some(job) => {
+                ui.add(egui::ProgressBar::new(job.progress()).desired_width(90.0))
+                    .on_hover_text("The measurement, task by task");
+                ui.small(format!("measuring {}", job.describe()));
+                if ui.small_button("cancel").on_hover_text("Stop measuring; the chart keeps what it showed").clicked() {
+                    self.job = None;
+                }
+            }
+            None => {
+                if ui
+                    .button("measure")
+                    .on_hover_text(format!("Times every method on the current scene at {}×{} (median of {REPEATS} renders, timestamp queries) and its error against the exact BRDF; then fps at 100–5000 lights. Each render is summed over frames within the frame budget, so the window stays live", MEASURE_SIZE.0, MEASURE_SIZE.1))
+                    .clicked()
+                {
+                    self.start(lab);
+                }
+            }
+        }
+        ui.add(
+            egui::TextEdit::singleline(&mut self.study_path)
+                .desired_width(110.0)
+                .hint_text("path to a study.csv"),
+        )
+        .on_hover_text(
+            "A study.csv written by `ltc-lab study`, to plot instead of a live measurement",
+        );
+        if ui
+            .small_button("load study")
+            .on_hover_text("Plot the study.csv named on the left")
+            .clicked()
+        {
+            self.load_study();
+        }
+        if let Some(m) = &self.state.measurement {
+            ui.small(&m.device);
+        }
+    }
+
+    /// Plots the study named in the field.
+    fn load_study(&mut self) {
+        let path = self.study_path.trim();
+        if path.is_empty() {
+            self.error = Some("load study: name a study.csv in the field first".into());
+            return;
+        }
+        match crate::study::read_csv(std::path::Path::new(path)) {
+            Ok(rows) => {
+                self.state.measurement = Some(Measurement::from_study(&rows, path));
+                self.error = None;
+            }
+            // The error names the file already.
+            Err(e) => self.error = Some(format!("load study: {e}")),
+        }
+    }
+
+    /// Starts measuring the current scene on the lab's device.
+    pub fn start(&mut self, lab: &Lab) {
+        let Some(ctx) = &lab.gpu else {
+            self.error = Some(format!("measure: {}", lab.describe_device()));
             return;
         };
-        match MeasureJob::new(ctx, &s.shaded_scene(), lut) {
+        match MeasureJob::new(ctx, &lab.shared().shaded_scene(), &lab.tables().a.lut) {
             Ok(job) => {
                 self.job = Some(job);
                 self.error = None;
@@ -168,7 +197,7 @@ fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
 
 /// fps against the light count (the paper's Table 1 as dashed references), with the timed
 /// renders' spread as bars; its legend and the LTC/BRDF ratio under it.
-fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &LabState, height: f32) {
+fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &Shared, height: f32) {
     let mut entries: Vec<Entry> = vec![
         ("paper BRDF (GTX 1060)".into(), PAPER_BRDF_COLOUR, None),
         ("paper LTC (GTX 1060)".into(), PAPER_LTC_COLOUR, None),
@@ -245,7 +274,7 @@ fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &LabState, height: f32) {
 
 /// LTC's fps over the BRDF's at each light count both were measured at, for the lab's LTC
 /// and BRDF forms (or the first of each measured): the paper's Table 1 comparison.
-pub fn speed_ratio(m: &Measurement, s: &LabState) -> Option<String> {
+pub fn speed_ratio(m: &Measurement, s: &Shared) -> Option<String> {
     let pick = |chosen: Method, family: &str| {
         m.scaling
             .iter()

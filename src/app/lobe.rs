@@ -5,17 +5,44 @@
 
 use egui::{Color32, Pos2, Vec2};
 use glam::{DMat3, DVec3};
+use serde::{Deserialize, Serialize};
 
 use crate::app::display::{colour_bar, rgb};
-use crate::app::other::OtherTable;
-use crate::app::state::LabState;
+use crate::app::lab::{Aspect, Lab, Panel};
 use crate::colormap::ColourScale;
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, Ltc, Normalization};
 
+/// The lobe panel's own settings, kept between runs (θo and the lobe are the lab's).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct LobeState {
+    /// 0: the clamped cosine (M = I); 1: the fitted LTC.
+    pub morph: f64,
+    pub orbit_yaw: f32,
+    pub orbit_pitch: f32,
+    /// The pointwise difference coloured on the unit sphere instead of the lobes.
+    pub colour_difference: bool,
+    /// Table B's LTC overlaid.
+    pub overlay_other_fit: bool,
+}
+
+impl Default for LobeState {
+    fn default() -> Self {
+        Self {
+            morph: 1.0,
+            orbit_yaw: 0.6,
+            orbit_pitch: 0.35,
+            colour_difference: false,
+            overlay_other_fit: true,
+        }
+    }
+}
+
 #[derive(Default)]
-pub struct LobePanel;
+pub struct LobePanel {
+    pub state: LobeState,
+}
 
 /// Sphere tessellation: rings in θ and segments in φ (enough for a smooth α = 0.05 lobe at
 /// panel size; 64 × 128 directions).
@@ -35,65 +62,21 @@ fn values(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, l: DVec3) -> (f64, f64) {
     (exact, approx)
 }
 
-impl LobePanel {
-    pub fn show(
-        &mut self,
-        ui: &mut egui::Ui,
-        s: &mut LabState,
-        (lut, lut_name): (&Lut, &str),
-        refit: Option<(Lobe, Ltc)>,
-        other: &OtherTable,
-    ) {
-        // On the panel's face, so that a picture of it (a slide made with the controls
-        // folded) carries what it shows.
-        let b = if s.overlay_other_fit {
-            format!(", B: {}", other.name)
-        } else {
-            String::new()
-        };
-        let refitted = if refit.is_some_and(|(lobe, _)| lobe == s.lobe) {
-            " (refitted)"
-        } else {
-            ""
-        };
-        ui.strong(format!(
-            "θo = {:.1}°   α = {:.4}   table A: {lut_name}{refitted}{b}",
-            s.theta_o_deg,
-            s.alpha()
-        ));
-        ui.horizontal(|ui| {
-            ui.selectable_value(&mut s.lobe, Lobe::Specular, "specular")
-                .on_hover_text("GGX f_s·cos with F = 1 against n_s·D_s");
-            ui.selectable_value(&mut s.lobe, Lobe::Diffuse, "diffuse")
-                .on_hover_text("Burley fd·cos with c = 1 against n_d·D_d");
-            ui.checkbox(&mut s.overlay_other_fit, format!("table B ({})", other.name))
-                .on_hover_text("Overlay table B's LTC (green): by default the other shipped table (the point-light fit over the classic one, or the reverse); \"as B\" in the side panel loads another");
-            ui.checkbox(&mut s.colour_difference, "difference")
-                .on_hover_text("Colour the unit sphere by n·D − f·cos in 1/sr, the slice plot's units (orange: LTC too bright, blue: too dark)");
-        });
-        ui.add(egui::Slider::new(&mut s.morph, 0.0..=1.0).text("M: I -> fitted"))
-            .on_hover_text("D is the clamped cosine pushed through M_t = (1−t)·I + t·M: at 0 the cosine, at 1 the fitted LTC (the transformed lobe)");
-        let theta = s.theta_o_deg.to_radians().min(crate::ltc::lut::THETA_MAX);
-        let v = DVec3::new(theta.sin(), 0.0, theta.cos());
-        let alpha = s.alpha();
-        let pair = s.ltc_pair(lut);
-        let fitted = match (refit, s.lobe) {
-            (Some((lobe, ltc)), l) if lobe == l => ltc,
-            (_, Lobe::Specular) => pair.spec,
-            (_, Lobe::Diffuse) => pair.diff,
-        };
-        let ltc = morphed_ltc(&fitted, s.morph);
-        let other_pair = s.ltc_pair(&other.lut);
-        let other_ltc = s.overlay_other_fit.then(|| {
-            morphed_ltc(
-                if s.lobe == Lobe::Specular {
-                    &other_pair.spec
-                } else {
-                    &other_pair.diff
-                },
-                s.morph,
-            )
-        });
+/// What the sphere and the slice show: the lobe seen from `v` at `alpha`, its (morphed) LTC,
+/// table B's, and a pinned pixel's light.
+struct Drawn {
+    lobe: Lobe,
+    v: DVec3,
+    alpha: f64,
+    ltc: Ltc,
+    other: Option<Ltc>,
+    light: Option<DVec3>,
+}
+
+impl Panel for LobePanel {
+    fn show(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
+        self.header(ui, lab);
+        let drawn = self.drawn(lab);
         let plot_h = (ui.available_height() * 0.3).clamp(60.0, 160.0);
         let size = Vec2::new(
             ui.available_width(),
@@ -104,104 +87,125 @@ impl LobePanel {
         let response = response.on_hover_text("Drag to orbit. Orange: the exact lobe f·cos; blue: the LTC n·D. White: the normal, yellow: the view, red/green/blue: the LTC's frame (columns of M)");
         if response.dragged() {
             let d = response.drag_delta();
-            s.orbit_yaw += d.x * 0.01;
-            s.orbit_pitch = (s.orbit_pitch + d.y * 0.01).clamp(-1.5, 1.5);
+            self.state.orbit_yaw += d.x * 0.01;
+            self.state.orbit_pitch = (self.state.orbit_pitch + d.y * 0.01).clamp(-1.5, 1.5);
         }
-        let difference = self.paint_sphere(ui, rect, s, v, alpha, &ltc, other_ltc.as_ref());
-        match difference {
+        match self.paint_sphere(ui, rect, &drawn) {
             Some(scale) => colour_bar(ui, &scale, 200.0),
             None => {
                 ui.label("orange: exact f·cos (filled); blue lines: LTC n·D; green lines: table B; n normal, v view, M x/y/z the columns of M");
             }
         }
-        slice_plot(ui, s.lobe, v, alpha, &ltc, other_ltc.as_ref(), plot_h);
+        slice_plot(ui, &drawn, plot_h);
+    }
+}
+
+impl LobePanel {
+    /// The parameters on the panel's face, so that a picture of it (a slide made with the
+    /// controls folded) carries what it shows; then the lobe, overlay and morph controls.
+    fn header(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
+        let st = &mut self.state;
+        let b_name = lab.tables().b.name.clone();
+        let b = if st.overlay_other_fit {
+            format!(", B: {b_name}")
+        } else {
+            String::new()
+        };
+        let refitted = if lab.refit_ltc().is_some_and(|(l, _)| l == lab.shared().lobe) {
+            " (refitted)"
+        } else {
+            ""
+        };
+        ui.strong(format!(
+            "θo = {:.1}°   α = {:.4}   table A: {}{refitted}{b}",
+            lab.shared().theta_o_deg,
+            lab.shared().alpha(),
+            lab.tables().a.name
+        ));
+        ui.horizontal(|ui| {
+            lab.edit(Aspect::LobeView, |s| {
+                let spec = ui.selectable_value(&mut s.lobe, Lobe::Specular, "specular")
+                    .on_hover_text("GGX f_s·cos with F = 1 against n_s·D_s");
+                let diff = ui.selectable_value(&mut s.lobe, Lobe::Diffuse, "diffuse")
+                    .on_hover_text("Burley fd·cos with c = 1 against n_d·D_d");
+                spec.changed() || diff.changed()
+            });
+            ui.checkbox(&mut st.overlay_other_fit, format!("table B ({b_name})"))
+                .on_hover_text("Overlay table B's LTC (green): by default the other shipped table (the point-light fit over the classic one, or the reverse); \"as B\" in the side panel loads another");
+            ui.checkbox(&mut st.colour_difference, "difference")
+                .on_hover_text("Colour the unit sphere by n·D − f·cos in 1/sr, the slice plot's units (orange: LTC too bright, blue: too dark)");
+        });
+        ui.add(egui::Slider::new(&mut st.morph, 0.0..=1.0).text("M: I -> fitted"))
+            .on_hover_text("D is the clamped cosine pushed through M_t = (1−t)·I + t·M: at 0 the cosine, at 1 the fitted LTC (the transformed lobe)");
     }
 
-    fn paint_sphere(
-        &self,
-        ui: &egui::Ui,
-        rect: egui::Rect,
-        s: &LabState,
-        v: DVec3,
-        alpha: f64,
-        ltc: &Ltc,
-        other: Option<&Ltc>,
-    ) -> Option<ColourScale> {
+    /// The lobe at the lab's (θo, α): table A's LTC (or the refit of its cell), morphed, and
+    /// table B's where overlaid.
+    fn drawn(&self, lab: &Lab) -> Drawn {
+        let s = lab.shared();
+        let theta = s.theta_o();
+        let pick = |pair: crate::ltc::LtcPair| match s.lobe {
+            Lobe::Specular => pair.spec,
+            Lobe::Diffuse => pair.diff,
+        };
+        let fitted = match lab.refit_ltc() {
+            Some((lobe, ltc)) if lobe == s.lobe => ltc,
+            _ => pick(s.ltc_pair(&lab.tables().a.lut)),
+        };
+        let morph = self.state.morph;
+        Drawn {
+            lobe: s.lobe,
+            v: DVec3::new(theta.sin(), 0.0, theta.cos()),
+            alpha: s.alpha(),
+            ltc: morphed_ltc(&fitted, morph),
+            other: self
+                .state
+                .overlay_other_fit
+                .then(|| morphed_ltc(&pick(s.ltc_pair(&lab.tables().b.lut)), morph)),
+            light: s.lobe_light.map(DVec3::from),
+        }
+    }
+
+    /// The exact lobe filled and the LTCs as lines over it (or the difference coloured on the
+    /// unit sphere, whose scale it returns), with the frame's arrows.
+    fn paint_sphere(&self, ui: &egui::Ui, rect: egui::Rect, d: &Drawn) -> Option<ColourScale> {
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 4.0, Color32::from_gray(18));
-        let exact_at = |l: DVec3| s.lobe.eval(v, l, alpha).value;
-        // The tessellation's pole is the exact lobe's peak, its rings packed toward it, so that
-        // a sharp lobe (α ≈ 0.02, a degree wide) is made of many triangles, not one sliver.
-        let pole = peak_direction(s.lobe, v, exact_at);
-        let dirs = pole_grid(pole);
-        let vals: Vec<(f64, f64)> = dirs
-            .iter()
-            .map(|&l| values(s.lobe, v, alpha, ltc, l))
-            .collect();
-        // Scaled to the exact lobe's peak: the LTC can spike where M^-1 ω is short, and a
-        // spike must not flatten everything else (the difference read uniform grey).
-        let peak = vals.iter().fold(1e-12f64, |m, &(e, _)| m.max(e));
-        let clamp_r = |x: f64| (x / peak).clamp(-1.5, 1.5);
-        let exact_pos: Vec<DVec3> = dirs
-            .iter()
-            .zip(&vals)
-            .map(|(d, v)| *d * clamp_r(v.0))
-            .collect();
-        let ltc_pos: Vec<DVec3> = dirs
-            .iter()
-            .zip(&vals)
-            .map(|(d, v)| *d * clamp_r(v.1).max(0.0))
-            .collect();
+        let surface = Surface::new(d);
         // Auto-scale: the lobes' extent, not the unit sphere's, fills the view (the
         // difference is painted on the unit sphere itself).
-        let orbit = Orbit::new(s);
-        let shown: Vec<DVec3> = if s.colour_difference {
+        let orbit = Orbit::new(&self.state);
+        let shown: Vec<DVec3> = if self.state.colour_difference {
             UNIT_SPHERE.to_vec()
         } else {
-            exact_pos.iter().chain(&ltc_pos).copied().collect()
+            surface.exact.iter().chain(&surface.ltc).copied().collect()
         };
         let view = Projection::fitted(orbit, rect, &shown);
         let project = |p: DVec3| view.project(p);
-        let difference = s.colour_difference.then(|| {
-            let max = vals
-                .iter()
-                .map(|&(e, a)| (a - e).abs())
-                .fold(0.0f64, f64::max)
-                .min(peak)
-                .max(1e-12);
-            ColourScale::signed(max, "n·D − f·cos (1/sr)")
-        });
+        let difference = self
+            .state
+            .colour_difference
+            .then(|| surface.difference_scale());
         match &difference {
-            Some(scale_d) => {
-                let colours: Vec<Color32> = vals
+            Some(scale) => {
+                let colours: Vec<Color32> = surface
+                    .vals
                     .iter()
-                    .map(|&(e, a)| rgb(scale_d.colour(a - e)))
+                    .map(|&(e, a)| rgb(scale.colour(a - e)))
                     .collect();
-                mesh_surface(&painter, &project, &dirs, &|n| colours[n]);
+                mesh_surface(&painter, &project, &surface.dirs, &|n| colours[n]);
             }
             None => {
                 // The exact lobe filled, the LTC (and table B) as meshes of lines over it:
                 // two filled surfaces that nearly coincide z-fight.
-                mesh_surface(&painter, &project, &exact_pos, &|_| {
+                mesh_surface(&painter, &project, &surface.exact, &|_| {
                     Color32::from_rgba_unmultiplied(240, 150, 60, 170)
                 });
-                wireframe(
-                    &painter,
-                    &ltc_pos,
-                    &project,
-                    Color32::from_rgb(90, 160, 255),
-                );
-                if let Some(o) = other {
-                    let positions: Vec<DVec3> = dirs
-                        .iter()
-                        .map(|&l| l * clamp_r(values(s.lobe, v, alpha, o, l).1).max(0.0))
-                        .collect();
-                    wireframe(
-                        &painter,
-                        &positions,
-                        &project,
-                        Color32::from_rgb(80, 220, 120),
-                    );
+                let blue = Color32::from_rgb(90, 160, 255);
+                wireframe(&painter, &surface.ltc, &project, blue);
+                if let Some(o) = &d.other {
+                    let green = Color32::from_rgb(80, 220, 120);
+                    wireframe(&painter, &surface.of(d, o), &project, green);
                 }
             }
         }
@@ -211,8 +215,80 @@ impl LobePanel {
         } else {
             0.5 * view.span.min(1.2)
         };
-        paint_frame(&painter, rect, &project, reach, (s, v, ltc));
+        paint_frame(&painter, rect, &project, reach, d);
         difference
+    }
+}
+
+/// The lobe and its LTC as radial surfaces over directions about the lobe's peak.
+struct Surface {
+    dirs: Vec<DVec3>,
+    /// (exact f·cos, LTC n·D) per direction.
+    vals: Vec<(f64, f64)>,
+    /// The exact lobe's peak, which the radii are scaled to.
+    peak: f64,
+    exact: Vec<DVec3>,
+    ltc: Vec<DVec3>,
+}
+
+impl Surface {
+    fn new(d: &Drawn) -> Self {
+        let exact_at = |l: DVec3| d.lobe.eval(d.v, l, d.alpha).value;
+        // The tessellation's pole is the exact lobe's peak, its rings packed toward it, so that
+        // a sharp lobe (α ≈ 0.02, a degree wide) is made of many triangles, not one sliver.
+        let dirs = pole_grid(peak_direction(d.lobe, d.v, exact_at));
+        let vals: Vec<(f64, f64)> = dirs
+            .iter()
+            .map(|&l| values(d.lobe, d.v, d.alpha, &d.ltc, l))
+            .collect();
+        // Scaled to the exact lobe's peak: the LTC can spike where M^-1 ω is short, and a
+        // spike must not flatten everything else (the difference read uniform grey).
+        let peak = vals.iter().fold(1e-12f64, |m, &(e, _)| m.max(e));
+        let mut s = Self {
+            exact: Vec::new(),
+            ltc: Vec::new(),
+            dirs,
+            vals,
+            peak,
+        };
+        s.exact = s
+            .dirs
+            .iter()
+            .zip(&s.vals)
+            .map(|(l, v)| *l * s.radius(v.0))
+            .collect();
+        s.ltc = s
+            .dirs
+            .iter()
+            .zip(&s.vals)
+            .map(|(l, v)| *l * s.radius(v.1).max(0.0))
+            .collect();
+        s
+    }
+
+    /// A value as a radius: relative to the peak, within ±1.5.
+    fn radius(&self, x: f64) -> f64 {
+        (x / self.peak).clamp(-1.5, 1.5)
+    }
+
+    /// Another LTC's surface over the same directions.
+    fn of(&self, d: &Drawn, ltc: &Ltc) -> Vec<DVec3> {
+        self.dirs
+            .iter()
+            .map(|&l| l * self.radius(values(d.lobe, d.v, d.alpha, ltc, l).1).max(0.0))
+            .collect()
+    }
+
+    /// The difference's colour scale: its largest magnitude, at most the peak.
+    fn difference_scale(&self) -> ColourScale {
+        let max = self
+            .vals
+            .iter()
+            .map(|&(e, a)| (a - e).abs())
+            .fold(0.0f64, f64::max)
+            .min(self.peak)
+            .max(1e-12);
+        ColourScale::signed(max, "n·D − f·cos (1/sr)")
     }
 }
 
@@ -237,7 +313,7 @@ struct Orbit {
 }
 
 impl Orbit {
-    fn new(s: &LabState) -> Self {
+    fn new(s: &LobeState) -> Self {
         let (yaw, pitch) = (f64::from(s.orbit_yaw), f64::from(s.orbit_pitch));
         Self {
             cos_yaw: yaw.cos(),
@@ -345,8 +421,9 @@ fn paint_frame(
     rect: egui::Rect,
     project: &dyn Fn(DVec3) -> (Pos2, f64),
     reach: f64,
-    (s, v, ltc): (&LabState, DVec3, &Ltc),
+    d: &Drawn,
 ) {
+    let (v, ltc) = (d.v, &d.ltc);
     let ring: Vec<Pos2> = (0..=64)
         .map(|k| {
             let p = std::f64::consts::TAU * k as f64 / 64.0;
@@ -382,7 +459,7 @@ fn paint_frame(
         arrow(frame.col(k).normalize_or_zero() * 0.6, c, name);
     }
     // A light of the plane's pinned pixel, and its image under the (morphed) M^-1.
-    if let Some(w) = s.lobe_light.map(DVec3::from) {
+    if let Some(w) = d.light {
         arrow(w, Color32::from_rgb(255, 90, 220), "ω (light)");
         let image = (ltc.cos_from_brdf * w).normalize_or_zero();
         arrow(image, Color32::from_rgb(80, 230, 230), "ω' = M^-1 ω");
@@ -509,15 +586,8 @@ fn shade(c: Color32, k: f32) -> Color32 {
 }
 
 /// Both lobes along the plane of incidence, θ from −90° (away from the view) to 90°.
-fn slice_plot(
-    ui: &mut egui::Ui,
-    lobe: Lobe,
-    v: DVec3,
-    alpha: f64,
-    ltc: &Ltc,
-    other: Option<&Ltc>,
-    height: f32,
-) {
+fn slice_plot(ui: &mut egui::Ui, d: &Drawn, height: f32) {
+    let (lobe, v, alpha, ltc, other) = (d.lobe, d.v, d.alpha, &d.ltc, d.other.as_ref());
     let samples = 361;
     let points = |which: &Ltc, exact: bool| -> Vec<[f64; 2]> {
         (0..samples)

@@ -8,38 +8,56 @@ use glam::DMat3;
 
 use crate::app::axes::log_axis;
 use crate::app::display::{colour_bar, rgb};
-use crate::app::other::OtherTable;
+use crate::app::lab::{Aspect, Lab, Panel, Stamp};
 use crate::app::refit::{Objective, Refit};
-use crate::app::state::LabState;
 use crate::colormap::{ColourScale, short_number};
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut, cell_theta};
-use crate::ltc::{Ltc, mat3_rows};
+use crate::ltc::mat3_rows;
 
 /// Heat maps per row (14 channels: three rows).
 const MAPS_PER_ROW: usize = 5;
 
 pub struct MatrixPanel {
-    /// Each channel's heat map, made once from the LUT.
-    maps: Vec<egui::ColorImage>,
-    /// Each channel's colour scale: viridis, diverging for signed channels, log for errors.
-    pub scales: Vec<ColourScale>,
+    /// Table A's channels as heat maps, made again when the tables change.
+    maps: Option<HeatMaps>,
     /// The channel whose colour bar is shown (the last one clicked).
     pub focus: usize,
-    /// The channel, cell and value under the pointer at the last frame.
-    hovered: Option<(usize, usize, usize, f64)>,
-    textures: Vec<Option<egui::TextureHandle>>,
-    /// A refit under way (its result goes to the lab's state).
+    /// The reading under the pointer at the last frame.
+    hovered: Option<Reading>,
+    /// A refit under way (its result goes to the lab).
     pub refit: Option<Refit>,
-    /// The cell nearest the chosen (θo, α) at the last frame.
-    pub current_cell: (usize, usize),
 }
 
-impl MatrixPanel {
-    pub fn new(lut: &Lut) -> Self {
+impl Default for MatrixPanel {
+    fn default() -> Self {
+        Self {
+            maps: None,
+            focus: Channel::err(Lobe::Specular) as usize,
+            hovered: None,
+            refit: None,
+        }
+    }
+}
+
+/// A channel's value at a cell: (channel, column, row, value).
+type Reading = (usize, usize, usize, f64);
+
+/// Every channel of a table as an image, with its colour scale: viridis, diverging for
+/// signed channels, log for errors.
+struct HeatMaps {
+    /// The tables' stamp they were made for.
+    stamp: Stamp,
+    images: Vec<egui::ColorImage>,
+    scales: Vec<ColourScale>,
+    textures: Vec<Option<egui::TextureHandle>>,
+}
+
+impl HeatMaps {
+    fn new(lut: &Lut, stamp: Stamp) -> Self {
         let n = lut.size;
         let scales: Vec<ColourScale> = (0..CHANNEL_COUNT).map(|c| channel_scale(lut, c)).collect();
-        let maps = scales
+        let images = scales
             .iter()
             .enumerate()
             .map(|(c, scale)| {
@@ -53,20 +71,132 @@ impl MatrixPanel {
             })
             .collect();
         Self {
-            maps,
+            stamp,
+            images,
             scales,
-            focus: Channel::err(Lobe::Specular) as usize,
-            hovered: None,
             textures: vec![None; CHANNEL_COUNT],
-            refit: None,
-            current_cell: (0, 0),
         }
     }
+}
 
-    /// The refitted lobe, while the chosen cell is the one refitted.
-    pub fn refit_ltc(&self, s: &LabState) -> Option<(Lobe, Ltc)> {
-        let r = s.refit.as_ref()?;
-        (r.cell == self.current_cell).then(|| (r.lobe, r.ltc()))
+impl Panel for MatrixPanel {
+    /// Table A at the lab's (θo, α), with table B's cell beside it.
+    fn show(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
+        self.poll_refit(ui.ctx(), lab);
+        let stamp = lab.stamp(&[Aspect::Tables]);
+        if self.maps.as_ref().is_none_or(|m| m.stamp != stamp) {
+            self.maps = Some(HeatMaps::new(&lab.tables().a.lut, stamp));
+        }
+        egui::ScrollArea::vertical()
+            .auto_shrink([false; 2])
+            .show(ui, |ui| {
+                // Long lines wrap at the panel's edge rather than run past it.
+                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Wrap);
+                cell_readout(ui, lab);
+                self.refit_controls(ui, lab);
+                ui.separator();
+                self.heat_maps(ui, lab);
+            });
+    }
+}
+
+/// The cell at the lab's (θo, α): M^-1, M and the paper's form, the magnitudes and the
+/// error of table A, and both tables' entries side by side.
+fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
+    let s = lab.shared();
+    let (lut, a_name) = (&lab.tables().a.lut, lab.tables().a.name.as_str());
+    let theta = s.theta_o();
+    let cell = s.nearest_cell(lut);
+    let sample = lut.sample(s.alpha(), theta.cos());
+    let pair = sample.ltc_pair();
+    let ltc = match s.lobe {
+        Lobe::Specular => pair.spec,
+        Lobe::Diffuse => pair.diff,
+    };
+    let err = sample.get(Channel::err(s.lobe));
+    let b = &lab.tables().b;
+    ui.label(format!(
+        "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
+        if s.lobe == Lobe::Specular { "specular" } else { "diffuse" },
+        s.theta_o_deg,
+        s.alpha(),
+        s.alpha().sqrt(),
+        cell.0,
+        cell.1
+    ));
+    let inv = ltc.cos_from_brdf;
+    let m22 = mat3_rows(inv)[2][2];
+    let matrices = [
+        (
+            "M^-1 at (θo, α), bilinear (÷ middle)",
+            inv,
+            "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it divided by its middle element, and this is the four cells about (θo, α) interpolated as the shader does",
+        ),
+        (
+            "M",
+            ltc.brdf_from_cos,
+            "brdf_from_cos: maps the clamped cosine onto the lobe",
+        ),
+        (
+            "paper's form (÷ m22)",
+            inv * (1.0 / m22),
+            "[[a,0,b],[0,c,0],[d,0,1]]: the same M^-1 divided by its bottom-right element",
+        ),
+    ];
+    // As many matrices per row as fit (each ~260 points wide in monospace, with the
+    // gap after it).
+    let per_row = ((ui.available_width() / 260.0) as usize).clamp(1, 3);
+    for row in matrices.chunks(per_row) {
+        ui.horizontal(|ui| {
+            for (title, m, hover) in row {
+                matrix(ui, title, *m, hover);
+                ui.add_space(12.0);
+            }
+        });
+    }
+    ui.label(format!(
+        "|M^-1| = {:.4e}   norm = {:.4}   fresnel = {:.4}   scale = {:.3}   pointwise error = {:.1}%",
+        ltc.det_cos_from_brdf,
+        ltc.norm,
+        if s.lobe == Lobe::Specular { ltc.fresnel } else { 0.0 },
+        ltc.scale,
+        100.0 * err
+    ))
+    .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4)");
+    // Tables A and B at this (θo, α), side by side.
+    ui.vertical(|ui| {
+        for (which, name, table) in [("A", a_name, lut), ("B", b.name.as_str(), &b.lut)] {
+            let t = table.sample(s.alpha(), theta.cos());
+            let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
+            let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
+            let e4 = |c| entry(t.get(c)).trim().to_string();
+            ui.label(format!(
+                "{which} ({name}): M^-1 = [[{}, 0, {}], [0, 1, 0], [{}, 0, {}]], scale {:.3}, error {:.1}%",
+                e4(m[0]),
+                e4(m[1]),
+                e4(m[2]),
+                e4(m[3]),
+                scale,
+                100.0 * t.get(e)
+            ))
+            .on_hover_text("Table A (the one shaded with) and table B (the other fit: the other shipped table, or one loaded with \"as B\") at this (θo, α), bilinear; error is each table's pointwise error (docs/design.md §4) of this lobe");
+        }
+    });
+}
+
+impl MatrixPanel {
+    /// Takes a finished refit into the lab.
+    fn poll_refit(&mut self, ctx: &egui::Context, lab: &mut Lab) {
+        let Some(r) = &mut self.refit else {
+            return;
+        };
+        match r.poll() {
+            Some(result) => {
+                lab.edit(Aspect::Refit, |s| s.refit = Some(result));
+                self.refit = None;
+            }
+            None => ctx.request_repaint(),
+        }
     }
 
     /// Whether a refit is under way.
@@ -74,103 +204,15 @@ impl MatrixPanel {
         self.refit.is_some()
     }
 
-    /// The panel for table A (`lut`, named `a_name`), with table B's cell beside it.
-    pub fn show(
-        &mut self,
-        ui: &mut egui::Ui,
-        s: &mut LabState,
-        (lut, a_name, other): (&Lut, &str, &OtherTable),
-    ) {
-        if let Some(r) = &mut self.refit {
-            if let Some(result) = r.poll() {
-                s.refit = Some(result);
-                self.refit = None;
-            } else {
-                ui.ctx().request_repaint();
-            }
-        }
-        let n = lut.size;
-        let theta = s.theta_o_deg.to_radians().min(crate::ltc::lut::THETA_MAX);
-        let (u, v) = (s.alpha().sqrt(), (1.0 - theta.cos()).max(0.0).sqrt());
-        let col = (u * (n - 1) as f64).round() as usize;
-        let row = (v * (n - 1) as f64).round() as usize;
-        self.current_cell = (col.min(n - 1), row.min(n - 1));
-        let sample = lut.sample(s.alpha(), theta.cos());
-        let pair = sample.ltc_pair();
-        let ltc = match s.lobe {
-            Lobe::Specular => pair.spec,
-            Lobe::Diffuse => pair.diff,
-        };
-        let err = sample.get(Channel::err(s.lobe));
-        egui::ScrollArea::vertical().auto_shrink([false; 2]).show(ui, |ui| {
-            // Long lines wrap at the panel's edge rather than run past it.
-            ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Wrap);
-            ui.label(format!(
-                "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
-                if s.lobe == Lobe::Specular { "specular" } else { "diffuse" },
-                s.theta_o_deg,
-                s.alpha(),
-                s.alpha().sqrt(),
-                self.current_cell.0,
-                self.current_cell.1
-            ));
-            let inv = ltc.cos_from_brdf;
-            let m22 = mat3_rows(inv)[2][2];
-            let matrices = [
-                ("M^-1 at (θo, α), bilinear (÷ middle)", inv, "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it divided by its middle element, and this is the four cells about (θo, α) interpolated as the shader does"),
-                ("M", ltc.brdf_from_cos, "brdf_from_cos: maps the clamped cosine onto the lobe"),
-                ("paper's form (÷ m22)", inv * (1.0 / m22), "[[a,0,b],[0,c,0],[d,0,1]]: the same M^-1 divided by its bottom-right element"),
-            ];
-            // As many matrices per row as fit (each ~260 points wide in monospace, with the
-            // gap after it).
-            let per_row = ((ui.available_width() / 260.0) as usize).clamp(1, 3);
-            for row in matrices.chunks(per_row) {
-                ui.horizontal(|ui| {
-                    for (title, m, hover) in row {
-                        matrix(ui, title, *m, hover);
-                        ui.add_space(12.0);
-                    }
-                });
-            }
-            ui.label(format!(
-                "|M^-1| = {:.4e}   norm = {:.4}   fresnel = {:.4}   scale = {:.3}   pointwise error = {:.1}%",
-                ltc.det_cos_from_brdf,
-                ltc.norm,
-                if s.lobe == Lobe::Specular { ltc.fresnel } else { 0.0 },
-                ltc.scale,
-                100.0 * err
-            ))
-            .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4)");
-            // Tables A and B at this (θo, α), side by side.
-            ui.vertical(|ui| {
-                for (which, name, table) in [("A", a_name, lut), ("B", other.name.as_str(), &other.lut)] {
-                    let t = table.sample(s.alpha(), theta.cos());
-                    let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
-                    let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
-                    let e4 = |c| entry(t.get(c)).trim().to_string();
-                    ui.label(format!(
-                        "{which} ({name}): M^-1 = [[{}, 0, {}], [0, 1, 0], [{}, 0, {}]], scale {:.3}, error {:.1}%",
-                        e4(m[0]),
-                        e4(m[1]),
-                        e4(m[2]),
-                        e4(m[3]),
-                        scale,
-                        100.0 * t.get(e)
-                    ))
-                    .on_hover_text("Table A (the one shaded with) and table B (the other fit: the other shipped table, or one loaded with \"as B\") at this (θo, α), bilinear; error is each table's pointwise error (docs/design.md §4) of this lobe");
-                }
-            });
-            self.refit_controls(ui, s, lut);
-            ui.separator();
-            self.heat_maps(ui, s, lut, (u, v));
-        });
-    }
-
     /// Every channel as an N×N heat map (crosshair on the chosen cell; click to choose a
     /// cell), then the focused channel's colour bar, the value under the pointer and a jump to
     /// the worst cell.
-    fn heat_maps(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut, uv: (f64, f64)) {
-        self.maps_header(ui, s, lut);
+    fn heat_maps(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
+        let chosen = self.maps_header(ui, &lab.tables().a.lut);
+        let s = lab.shared();
+        let theta = s.theta_o();
+        let uv = (s.alpha().sqrt(), (1.0 - theta.cos()).max(0.0).sqrt());
+        let lut = &lab.tables().a.lut;
         // The visible width, not the scroll area's content width (a wide row above widens it).
         let visible = ui
             .available_width()
@@ -181,21 +223,28 @@ impl MatrixPanel {
             .clamp(40.0, 160.0);
         let channels: Vec<usize> = (0..CHANNEL_COUNT).collect();
         let mut hovered = None;
+        let mut clicked = chosen;
         // Rows of fixed length: a wrapping layout cannot know a column's size before it is
         // drawn, and ran the last map off the panel's edge.
         for row in channels.chunks(MAPS_PER_ROW) {
             ui.horizontal(|ui| {
                 for &c in row {
-                    hovered = self.heat_map(ui, s, lut, (c, side), uv).or(hovered);
+                    let (hover, click) = self.heat_map(ui, lut, (c, side), uv);
+                    hovered = hover.or(hovered);
+                    clicked = click.or(clicked);
                 }
             });
         }
         self.hovered = hovered;
+        if let Some(cell) = clicked {
+            choose_cell(lab, cell);
+        }
     }
 
     /// What the maps show, the focused channel's colour bar, the reading under the pointer
-    /// and the worst cell's jump: above the maps, so that no scrolling hides them.
-    fn maps_header(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
+    /// and the worst cell's jump: above the maps, so that no scrolling hides them. The cell
+    /// the jump chose, if it was pressed.
+    fn maps_header(&self, ui: &mut egui::Ui, lut: &Lut) -> Option<(usize, usize)> {
         let n = lut.size;
         ui.small(format!(
             "each map: x: r = √α from 0 to 1 (α = {} … 1), y (down) θo from 0° (top) to {:.0}° (rows by sqrt(1 − cos θo))",
@@ -203,7 +252,8 @@ impl MatrixPanel {
             cell_theta(n - 1, n).to_degrees()
         ));
         // The reading is last frame's hover.
-        let scale = &self.scales[self.focus];
+        let scales = &self.maps.as_ref()?.scales;
+        let scale = &scales[self.focus];
         colour_bar(ui, scale, 260.0);
         ui.horizontal(|ui| {
             let text = match self.hovered {
@@ -212,7 +262,7 @@ impl MatrixPanel {
                     CHANNEL_NAMES[c],
                     short_number(lut.alpha(i)),
                     cell_theta(j, n).to_degrees(),
-                    self.scales[c].format(x)
+                    scales[c].format(x)
                 ),
                 None => "hover a map to read a cell; click one to choose it (and its channel's colour bar)".into(),
             };
@@ -221,36 +271,38 @@ impl MatrixPanel {
             ui.add(egui::Label::new(egui::RichText::new(text).small()).truncate());
         });
         let err = worst_channel(self.focus);
-        if ui
+        let jump = ui
             .small_button(format!("worst cell of {}", CHANNEL_NAMES[err]))
             .on_hover_text(
                 "Jump to the cell with the largest pointwise error of the shown channel's lobe",
             )
-            .clicked()
-        {
+            .clicked();
+        jump.then(|| {
             let k = (0..lut.cells.len())
                 .max_by(|&a, &b| lut.cells[a].0[err].total_cmp(&lut.cells[b].0[err]))
                 .unwrap_or(0);
-            choose_cell(s, lut, (k % n, k / n));
-        }
+            (k % n, k / n)
+        })
     }
 
     /// Channel `c`'s map, `side` points wide, with the chosen (u, v) crossed; the cell and
-    /// value under the pointer, and a click chooses the cell.
+    /// value under the pointer, and the cell clicked (which the channel's colour bar follows).
     fn heat_map(
         &mut self,
         ui: &mut egui::Ui,
-        s: &mut LabState,
         lut: &Lut,
         (c, side): (usize, f32),
         (u, v): (f64, f64),
-    ) -> Option<(usize, usize, usize, f64)> {
+    ) -> (Option<Reading>, Option<(usize, usize)>) {
         let n = lut.size;
-        let mut hovered = None;
-        let texture = self.textures[c].get_or_insert_with(|| {
+        let (mut hovered, mut clicked) = (None, None);
+        let Some(maps) = &mut self.maps else {
+            return (None, None);
+        };
+        let texture = maps.textures[c].get_or_insert_with(|| {
             ui.ctx().load_texture(
                 CHANNEL_NAMES[c],
-                self.maps[c].clone(),
+                maps.images[c].clone(),
                 egui::TextureOptions::NEAREST,
             )
         });
@@ -290,22 +342,23 @@ impl MatrixPanel {
             if response.clicked()
                 && let Some(pos) = response.interact_pointer_pos()
             {
-                let (i, j) = cell_at(pos);
                 self.focus = c;
-                choose_cell(s, lut, (i, j));
+                clicked = Some(cell_at(pos));
             }
         });
-        hovered
+        (hovered, clicked)
     }
 
     /// The refit's button, its progress and cancel, then the result: stored and refitted
     /// matrices and errors side by side, and the objective per iteration.
-    fn refit_controls(&mut self, ui: &mut egui::Ui, s: &mut LabState, lut: &Lut) {
-        self.refit_buttons(ui, s, lut);
+    fn refit_controls(&mut self, ui: &mut egui::Ui, lab: &Lab) {
+        self.refit_buttons(ui, lab);
+        let s = lab.shared();
+        let cell = s.nearest_cell(&lab.tables().a.lut);
         let Some(r) = s
             .refit
             .as_ref()
-            .filter(|r| r.cell == self.current_cell && r.lobe == s.lobe)
+            .filter(|r| r.cell == cell && r.lobe == s.lobe)
         else {
             if let Some(r) = &s.refit {
                 ui.small(format!(
@@ -322,7 +375,8 @@ impl MatrixPanel {
     }
 
     /// The refit's progress and cancel, or a button per objective.
-    fn refit_buttons(&mut self, ui: &mut egui::Ui, s: &LabState, lut: &Lut) {
+    fn refit_buttons(&mut self, ui: &mut egui::Ui, lab: &Lab) {
+        let (s, lut) = (lab.shared(), &lab.tables().a.lut);
         ui.horizontal_wrapped(|ui| {
             match &self.refit {
                 Some(r) => {
@@ -347,7 +401,7 @@ impl MatrixPanel {
                             .on_hover_text(format!("Runs {what} on the nearest cell from the stored cell's parameters, live; then compares stored and refitted lobes by the same pointwise error.{made}"))
                             .clicked()
                         {
-                            self.refit = Some(Refit::start(s.lobe, self.current_cell, lut, objective));
+                            self.refit = Some(Refit::start(s.lobe, s.nearest_cell(lut), lut, objective));
                         }
                     }
                 }
@@ -356,10 +410,10 @@ impl MatrixPanel {
     }
 
     /// Blocks until a running refit is done (tests).
-    pub fn wait_for_refit(&mut self, s: &mut LabState) {
+    pub fn wait_for_refit(&mut self, lab: &mut Lab) {
         while let Some(r) = &mut self.refit {
             if let Some(result) = r.poll() {
-                s.refit = Some(result);
+                lab.edit(Aspect::Refit, |s| s.refit = Some(result));
                 self.refit = None;
             } else {
                 std::thread::sleep(std::time::Duration::from_millis(5));
@@ -368,10 +422,12 @@ impl MatrixPanel {
     }
 }
 
-/// Chooses cell (i, j): the lab's α and θo move to its centre.
-fn choose_cell(s: &mut LabState, lut: &Lut, (i, j): (usize, usize)) {
-    s.scene.material.alpha = lut.alpha(i);
-    s.theta_o_deg = cell_theta(j, lut.size).to_degrees();
+/// Chooses cell (i, j) of table A: the lab's α and θo move to its centre.
+fn choose_cell(lab: &mut Lab, (i, j): (usize, usize)) {
+    let lut = &lab.tables().a.lut;
+    let (alpha, theta) = (lut.alpha(i), cell_theta(j, lut.size).to_degrees());
+    lab.edit(Aspect::Scene, |s| s.scene.material.alpha = alpha);
+    lab.edit(Aspect::LobeView, |s| s.theta_o_deg = theta);
 }
 
 /// The `err` channel of the lobe channel `c` belongs to (`spec.scale` to the specular one).

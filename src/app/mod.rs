@@ -4,44 +4,43 @@
 
 pub mod axes;
 pub mod chart;
+pub mod clip_rows;
+pub mod clip_setup;
 pub mod clipping;
 pub mod completion;
 pub mod controls;
 pub mod display;
+pub mod lab;
 pub mod lobe;
 pub mod matrix;
 pub mod measure;
-pub mod other;
 pub mod pacer;
 pub mod pixel_table;
 pub mod plane;
+pub mod plane_paint;
 pub mod refit;
 pub mod screenshot;
 pub mod shading;
 pub mod state;
+pub mod tables;
 
-pub use controls::Message;
+pub use lab::{Aspect, Compare, Lab, Message, Panel};
 pub use screenshot::{PendingScreenshot, ScreenshotApp, Settling};
-pub use state::{ClipScene, Compare, LabState, PanelId};
+pub use state::{LabState, PanelId};
 
-use crate::ltc::lut::Lut;
+use crate::app::lab::Request;
+use crate::app::tables::NamedTables;
 
-/// What a snapshot of the lab's side effects needs that is not persisted.
+/// The window: the lab the panels share, the side panel, the five panels and the layout.
 pub struct LabApp {
-    pub state: LabState,
-    pub lut: Lut,
-    /// What table A is, for labels: a shipped table's name or the file's path.
-    pub lut_name: String,
-    /// Table B, the other fit.
-    pub other: other::OtherTable,
-    pub shading: shading::Shading,
+    pub lab: Lab,
+    pub controls: controls::ControlsPanel,
     pub lobe: lobe::LobePanel,
     pub matrix: matrix::MatrixPanel,
     pub plane: plane::PlanePanel,
     pub clipping: clipping::ClippingPanel,
     pub chart: chart::ChartPanel,
-    /// The last error or notice for the side panel.
-    pub message: Option<Message>,
+    pub window: state::WindowState,
     /// A screenshot on its way to a file.
     pub screenshot: Option<PendingScreenshot>,
     /// The window's size in points when the zoom was last looked at, and its size at zoom 1
@@ -62,33 +61,42 @@ impl LabApp {
     /// harness's); without one, the plane is drawn by the CPU reference.
     pub fn new(mut state: LabState, render_state: Option<&egui_wgpu::RenderState>) -> Self {
         // A saved chart that cannot be plotted is dropped, and the window says why.
-        let refused = state.measurement.as_ref().and_then(|m| m.validate().err());
+        let refused = state
+            .chart
+            .measurement
+            .as_ref()
+            .and_then(|m| m.validate().err());
         if refused.is_some() {
-            state.measurement = None;
+            state.chart.measurement = None;
         }
         let refused =
             refused.map(|why| format!("the saved chart was dropped ({why}): measure again"));
         // Table A: the file it was loaded from, read again; one that vanished or broke since
         // cannot stop the lab from starting: the shipped table shades, and the window says so.
-        let (lut, lut_name, lost) = table_a(&mut state);
-        let other = other::OtherTable::shipped_other(state.table);
-        let mut shading = shading::Shading::new(&lut, render_state);
-        shading.set_lut_b(Some(&other.lut));
+        let (tables, lost) = tables(&mut state.lab);
+        let (shading, why) = shading::Shading::new(&tables.a.lut, render_state);
+        let gpu = shading.context().cloned().ok_or(why.unwrap_or_default());
+        let mut lab = Lab::new(state.lab, tables, gpu);
         // No more lights than this adapter shades: the slider and the scene agree.
-        let cut = state.keep_lights(shading.max_lights());
+        let cut = lab.keep_lights();
         let notice: Vec<String> = [refused, lost, cut].into_iter().flatten().collect();
+        if !notice.is_empty() {
+            lab.say(Message::error(notice.join("; ")));
+        }
         Self {
-            lut_name,
-            other,
-            state,
-            lobe: lobe::LobePanel,
-            matrix: matrix::MatrixPanel::new(&lut),
-            plane: plane::PlanePanel::default(),
-            clipping: clipping::ClippingPanel::default(),
-            chart: chart::ChartPanel::default(),
-            lut,
-            shading,
-            message: (!notice.is_empty()).then(|| Message::error(notice.join("; "))),
+            lab,
+            controls: controls::ControlsPanel {
+                state: state.controls,
+            },
+            lobe: lobe::LobePanel { state: state.lobe },
+            matrix: matrix::MatrixPanel::default(),
+            plane: plane::PlanePanel::new(shading, state.plane),
+            clipping: clipping::ClippingPanel::new(state.clipping),
+            chart: chart::ChartPanel {
+                state: state.chart,
+                ..Default::default()
+            },
+            window: state.window,
             screenshot: None,
             zoomed_for: None,
         }
@@ -99,79 +107,95 @@ impl LabApp {
         let state = cc
             .storage
             .and_then(|s| eframe::get_value::<LabState>(s, STORAGE_KEY))
-            .filter(|s| s.scene.validate().is_ok())
+            .filter(|s| s.lab.scene.validate().is_ok())
             .unwrap_or_default();
         Self::new(state, cc.wgpu_render_state.as_ref())
     }
 
-    /// Whether anything is still being computed for the window: the plane's render, a
-    /// measurement, a refit (a screenshot waits for none of them to be in flight).
+    /// What the user set, as eframe persists it.
+    pub fn state(&self) -> LabState {
+        LabState {
+            lab: self.lab.shared().clone(),
+            lobe: self.lobe.state.clone(),
+            plane: self.plane.state.clone(),
+            clipping: self.clipping.state.clone(),
+            chart: self.chart.state.clone(),
+            controls: self.controls.state.clone(),
+            window: self.window.clone(),
+        }
+    }
+
+    /// Whether anything is still being computed for the window: the plane's render, the
+    /// clipping pictures, a measurement, a refit (a screenshot waits for none of them).
     pub fn busy(&self) -> bool {
-        self.shading.in_flight() || self.chart.busy() || self.matrix.busy()
+        self.plane.busy() || self.clipping.busy() || self.chart.busy() || self.matrix.busy()
     }
 
     /// The whole window: the side panel (unless folded), then the panels — one maximised,
     /// all in a grid, or, below `GRID_MIN`, one at a time under tabs.
     pub fn show(&mut self, ui: &mut egui::Ui) {
         self.fit_zoom(ui.ctx());
-        if let Some(m) = &self.message {
+        if let Some(m) = &self.lab.message {
             let dismissed = egui::Panel::bottom("notices")
                 .show(ui, |ui| controls::message_bar(ui, m))
                 .inner;
             if dismissed {
-                self.message = None;
+                self.lab.message = None;
             }
         }
-        if !self.state.controls_hidden {
+        if !self.window.controls_hidden {
             egui::Panel::left("controls")
                 .resizable(true)
                 .default_size(250.0)
                 .show(ui, |ui| {
-                    egui::ScrollArea::vertical().show(ui, |ui| {
-                        let action = controls::show(
-                            ui,
-                            &mut self.state,
-                            &self.shading,
-                            &self.other,
-                            &mut self.message,
-                        );
-                        if let Some(action) = action {
-                            self.act(action);
-                        }
-                    });
+                    egui::ScrollArea::vertical()
+                        .show(ui, |ui| self.controls.show(ui, &mut self.lab));
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {
             let size = ui.available_size();
             let tabs = size.x < GRID_MIN.x || size.y < GRID_MIN.y;
-            ui.horizontal(|ui| {
-                let label = if self.state.controls_hidden {
-                    ">> controls"
-                } else {
-                    "<< controls"
-                };
-                if ui
-                    .small_button(label)
-                    .on_hover_text("Fold the side panel away, or back")
-                    .clicked()
-                {
-                    self.state.controls_hidden = !self.state.controls_hidden;
-                }
-                if tabs && self.state.maximised.is_none() {
-                    for id in PanelId::ALL {
-                        ui.selectable_value(&mut self.state.tab, id, id.title());
-                    }
-                }
-            });
-            match (self.state.maximised, tabs) {
+            ui.horizontal(|ui| self.top_bar(ui, tabs));
+            match (self.window.maximised, tabs) {
                 (Some(id), _) => self.panel_frame(ui, id),
                 (None, true) => {
-                    let id = self.state.tab;
+                    let id = self.window.tab;
                     self.panel_frame(ui, id);
                 }
                 (None, false) => self.grid(ui),
             }
         });
+        self.carry_out();
+    }
+
+    /// The side panel's fold, and the tabs where the panels do not fit side by side.
+    fn top_bar(&mut self, ui: &mut egui::Ui, tabs: bool) {
+        let label = if self.window.controls_hidden {
+            ">> controls"
+        } else {
+            "<< controls"
+        };
+        if ui
+            .small_button(label)
+            .on_hover_text("Fold the side panel away, or back")
+            .clicked()
+        {
+            self.window.controls_hidden = !self.window.controls_hidden;
+        }
+        if tabs && self.window.maximised.is_none() {
+            for id in PanelId::ALL {
+                let title = self.title(id);
+                ui.selectable_value(&mut self.window.tab, id, title);
+            }
+        }
+    }
+
+    /// A panel's title: the plane's says what its two sides are.
+    fn title(&self, id: PanelId) -> String {
+        match id {
+            PanelId::Plane => plane::title(self.lab.shared().compare, self.lab.tables()),
+            _ => id.title().to_string(),
+        }
     }
 
     /// Three panels on top (lobe, matrix, plane) and two below (clipping, chart).
@@ -215,87 +239,46 @@ impl LabApp {
         egui::Frame::group(ui.style()).show(ui, |ui| {
             ui.set_min_size(ui.available_size());
             ui.horizontal(|ui| {
-                ui.strong(match id {
-                    PanelId::Plane => plane::title(&self.state, &self.lut_name, &self.other),
-                    _ => id.title().to_string(),
-                });
+                ui.strong(self.title(id));
                 ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                    let maximised = self.state.maximised == Some(id);
+                    let maximised = self.window.maximised == Some(id);
                     let label = if maximised { "restore" } else { "maximise" };
                     if ui
                         .small_button(label)
                         .on_hover_text("Show this panel alone, or all five again")
                         .clicked()
                     {
-                        self.state.maximised = if maximised { None } else { Some(id) };
+                        self.window.maximised = if maximised { None } else { Some(id) };
                     }
                 });
             });
             ui.separator();
-            match id {
-                PanelId::Lobe => {
-                    let refit = self.matrix.refit_ltc(&self.state);
-                    let table = (&self.lut, self.lut_name.as_str());
-                    self.lobe
-                        .show(ui, &mut self.state, table, refit, &self.other);
-                }
-                PanelId::Matrix => {
-                    let tables = (&self.lut, self.lut_name.as_str(), &self.other);
-                    self.matrix.show(ui, &mut self.state, tables);
-                }
-                PanelId::Plane => {
-                    let tables = (&self.lut, &self.other);
-                    self.plane
-                        .show(ui, &mut self.state, &mut self.shading, tables);
-                }
-                PanelId::Clipping => {
-                    self.clipping
-                        .show(ui, &mut self.state, &self.lut, &self.other);
-                }
-                PanelId::Chart => self
-                    .chart
-                    .show(ui, &mut self.state, &self.lut, &self.shading),
-            }
+            let panel: &mut dyn Panel = match id {
+                PanelId::Lobe => &mut self.lobe,
+                PanelId::Matrix => &mut self.matrix,
+                PanelId::Plane => &mut self.plane,
+                PanelId::Clipping => &mut self.clipping,
+                PanelId::Chart => &mut self.chart,
+            };
+            panel.show(ui, &mut self.lab);
         });
     }
 
-    /// Carries out what the side panel asked for.
-    fn act(&mut self, action: controls::Action) {
-        match action {
-            controls::Action::UseLut(lut, name) => self.use_lut(lut, name),
-            controls::Action::UseOther(other) => self.use_other(other),
-            controls::Action::SaveExr(path) => {
-                let exposure = self.state.scene.exposure;
-                self.message = Some(
-                    match plane::PlanePanel::save_exr(&self.shading, &path, exposure) {
-                        Ok(()) => Message::note(format!("saved {}", path.display())),
-                        Err(e) => Message::error(e),
-                    },
-                );
+    /// Writes a file a panel asked for.
+    fn carry_out(&mut self) {
+        match self.lab.request.take() {
+            Some(Request::SaveExr(path)) => {
+                let exposure = self.lab.shared().scene.exposure;
+                self.lab.say(match self.plane.save_exr(&path, exposure) {
+                    Ok(()) => Message::note(format!("saved {}", path.display())),
+                    Err(e) => Message::error(e),
+                });
             }
-            controls::Action::Screenshot(path) => {
+            Some(Request::Screenshot(path)) => {
                 self.screenshot = Some(PendingScreenshot::new(path));
             }
+            None => {}
         }
-    }
-
-    /// Shades with `lut` from now on: every panel that holds the table starts again. Table B
-    /// follows to the other shipped table unless the user chose it.
-    fn use_lut(&mut self, lut: Lut, name: String) {
-        self.shading.set_lut(&lut);
-        self.matrix = matrix::MatrixPanel::new(&lut);
-        self.clipping = clipping::ClippingPanel::default();
-        self.lut = lut;
-        self.lut_name = name;
-        if !self.other.chosen {
-            self.use_other(other::OtherTable::shipped_other(self.state.table));
-        }
-    }
-
-    /// Compares with `other` as table B from now on.
-    fn use_other(&mut self, other: other::OtherTable) {
-        self.shading.set_lut_b(Some(&other.lut));
-        self.other = other;
     }
 
     /// Fits egui's zoom to the window when the window's size changes (`auto_zoom`). A change
@@ -321,7 +304,7 @@ impl LabApp {
         let Some(outcome) = self.screenshot.as_mut().and_then(|p| p.poll(ctx)) else {
             return;
         };
-        self.message = Some(match outcome {
+        self.lab.say(match outcome {
             Ok(path) => Message::note(format!("saved {}", path.display())),
             Err(e) => Message::error(e.to_string()),
         });
@@ -337,26 +320,22 @@ pub fn auto_zoom(size: egui::Vec2) -> f32 {
     (size.x / 1920.0).min(size.y / 1080.0).clamp(1.0, 3.0)
 }
 
-/// Table A as `state` says (its file read again, or the shipped table), its name, and why a
+/// The tables as `shared` says (table A's file read again, or the shipped table), and why a
 /// file could not be read again (the file is then forgotten).
-fn table_a(state: &mut LabState) -> (Lut, String, Option<String>) {
-    let shipped = |state: &LabState| {
-        let t = state.table;
-        (Lut::shipped(t).clone(), t.name().to_string())
-    };
-    let Some(file) = state.table_file.clone() else {
-        let (lut, name) = shipped(state);
-        return (lut, name, None);
+fn tables(shared: &mut lab::Shared) -> (NamedTables, Option<String>) {
+    let Some(file) = shared.table_file.clone() else {
+        return (NamedTables::shipped(shared.table), None);
     };
     match controls::load(&file) {
-        Ok((lut, name, _)) => (lut, name, None),
+        Ok((table, _)) => (NamedTables::with_a(table, shared.table), None),
         Err(e) => {
-            state.table_file = None;
-            let (lut, name) = shipped(state);
+            shared.table_file = None;
+            let tables = NamedTables::shipped(shared.table);
             let why = format!(
-                "table A was {file}, which cannot be read again ({e}): shading with the {name} table"
+                "table A was {file}, which cannot be read again ({e}): shading with the {} table",
+                tables.a.name
             );
-            (lut, name, Some(why))
+            (tables, Some(why))
         }
     }
 }
@@ -367,7 +346,8 @@ impl Settling for LabApp {
     }
 
     fn progress(&self) -> (usize, usize) {
-        (self.shading.progress.done, self.shading.progress.total)
+        let p = &self.plane.shading.progress;
+        (p.done, p.total)
     }
 }
 
@@ -379,6 +359,6 @@ impl eframe::App for LabApp {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, STORAGE_KEY, &self.state);
+        eframe::set_value(storage, STORAGE_KEY, &self.state());
     }
 }

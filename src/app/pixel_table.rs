@@ -5,103 +5,76 @@
 //! exact BRDF, or (two tables compared) LTC with table A and with table B. A row's click
 //! shows that light on the lobe panel.
 
-use crate::app::state::{LabState, LightColumn};
+use serde::{Deserialize, Serialize};
+
+use crate::app::lab::{Aspect, Compare, Lab, Stamp};
 use crate::colormap::short_number;
-use crate::ltc::lut::Lut;
-use crate::ltc::{ClipCase, Clipping, Normalization};
+use crate::ltc::ClipCase;
 use crate::metrics::luminance;
 use crate::pixel::{LightTerm, PixelTerms, elevation_azimuth, pixel_terms};
 use crate::render::LutFilter;
-use crate::scene::Scene;
 
 /// At most this many rows (the largest contributions first when sorted so): a table of
 /// 20 000 lights is unreadable, and the sums above it cover every light.
 const MAX_ROWS: usize = 200;
 
-/// Table A, and table B where two tables are compared.
-pub type PixelTables<'a> = (&'a Lut, Option<&'a Lut>);
-
-/// The pinned pixel's terms with table A (and B), as the plane renders it (`None`: none
-/// pinned, or it is off the plane).
-fn pinned_terms(
-    s: &LabState,
-    tables: PixelTables<'_>,
-    (width, height): (usize, usize),
-) -> Option<PixelTerms> {
-    let [u, v] = s.pinned?;
-    let scene = s.shaded_scene();
-    let p = scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
-    pixel_terms(
-        &scene,
-        tables,
-        &p,
-        s.clipping,
-        s.normalization,
-        LutFilter::Bilinear,
-    )
+/// The columns of the pinned pixel's lights table (sortable).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum LightColumn {
+    Index,
+    Elevation,
+    ElevationCos,
+    Case,
+    DSpec,
+    Jacobian,
+    Fresnel,
+    Irradiance,
+    Ltc,
+    Exact,
+    ErrorShare,
 }
 
-/// What the pinned pixel's terms depend on. They are computed again only when it changes:
-/// every light in f64 takes 17 ms at 100 000 lights (release build, 2-core CPU), a whole
-/// frame, and the lab repaints every frame while the plane is summed.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PinnedKey {
-    scene: Scene,
-    intensity_scale: f64,
-    range_override: f64,
-    pinned: Option<[f64; 2]>,
-    size: (usize, usize),
-    clipping: Clipping,
-    normalization: Normalization,
-    lut: Lut,
-    lut_b: Option<Lut>,
+/// What the lights were made for: the lab's stamp, the pinned pixel and the image's size.
+type MadeFor = (Stamp, Option<[f64; 2]>, (usize, usize));
+
+/// The pinned pixel's lights, made again only when what they are made from changes: every
+/// light in f64 takes 17 ms at 100 000 lights (release build, 2-core CPU), a whole frame, and
+/// the lab repaints every frame while the plane is summed.
+#[derive(Default)]
+pub struct PinnedLights {
+    made_for: Option<MadeFor>,
+    pub terms: Option<PixelTerms>,
 }
 
-impl PinnedKey {
-    fn of(s: &LabState, (lut, lut_b): PixelTables<'_>, size: (usize, usize)) -> Self {
-        Self {
-            scene: s.scene.clone(),
-            intensity_scale: s.intensity_scale,
-            range_override: s.range_override,
-            pinned: s.pinned,
+impl PinnedLights {
+    /// The terms of the pixel `pinned` (image coordinates 0–1) of a `size` image, with table
+    /// A (and B, where two tables are compared), as the plane renders it; `None`: none
+    /// pinned, or it is off the plane.
+    pub fn update(&mut self, lab: &Lab, pinned: Option<[f64; 2]>, size: (usize, usize)) {
+        let made_for = (
+            lab.stamp(&[Aspect::Scene, Aspect::Shading, Aspect::Tables]),
+            pinned,
             size,
-            clipping: s.clipping,
-            normalization: s.normalization,
-            lut: lut.clone(),
-            lut_b: lut_b.cloned(),
+        );
+        if self.made_for == Some(made_for) {
+            return;
         }
-    }
-
-    /// Whether the terms made under this key are still the current ones (compared field by
-    /// field, without copying the scene or the tables).
-    fn holds_for(&self, s: &LabState, (lut, lut_b): PixelTables<'_>, size: (usize, usize)) -> bool {
-        self.pinned == s.pinned
-            && self.size == size
-            && self.clipping == s.clipping
-            && self.normalization == s.normalization
-            && self.intensity_scale == s.intensity_scale
-            && self.range_override == s.range_override
-            && self.scene == s.scene
-            && self.lut == *lut
-            && self.lut_b.as_ref() == lut_b
-    }
-}
-
-/// The pinned pixel's lights, as `cached` holds them or computed again where they changed.
-pub fn update_pinned(
-    cached: &mut Option<(PinnedKey, Option<PixelTerms>)>,
-    s: &LabState,
-    tables: PixelTables<'_>,
-    size: (usize, usize),
-) {
-    if !cached
-        .as_ref()
-        .is_some_and(|(k, _)| k.holds_for(s, tables, size))
-    {
-        *cached = Some((
-            PinnedKey::of(s, tables, size),
-            pinned_terms(s, tables, size),
-        ));
+        self.made_for = Some(made_for);
+        self.terms = pinned.and_then(|[u, v]| {
+            let (s, tables) = (lab.shared(), lab.tables());
+            let scene = s.shaded_scene();
+            let (width, height) = size;
+            let p = scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
+            let b = (s.compare == Compare::TableB).then_some(&tables.b.lut);
+            pixel_terms(
+                &scene,
+                (&tables.a.lut, b),
+                &p,
+                s.clipping,
+                s.normalization,
+                LutFilter::Bilinear,
+            )
+        });
     }
 }
 
@@ -221,12 +194,18 @@ pub fn sorted_rows(t: &PixelTerms, (column, descending): (LightColumn, bool)) ->
 }
 
 /// The readout's sums, then the lights table in `table_height` points.
-pub fn show(ui: &mut egui::Ui, s: &mut LabState, terms: Option<&PixelTerms>, table_height: f32) {
+pub fn show(
+    ui: &mut egui::Ui,
+    (pinned, sort): (&mut Option<[f64; 2]>, &mut (LightColumn, bool)),
+    lab: &mut Lab,
+    terms: Option<&PixelTerms>,
+    table_height: f32,
+) {
     let Some(t) = terms else {
         return;
     };
-    readout(ui, s, t);
-    let rows = sorted_rows(t, s.light_sort);
+    readout(ui, (pinned, lab), t);
+    let rows = sorted_rows(t, *sort);
     let value_columns = if tables_compared(t) {
         TABLE_COLUMNS
     } else {
@@ -242,11 +221,11 @@ pub fn show(ui: &mut egui::Ui, s: &mut LabState, terms: Option<&PixelTerms>, tab
                 .spacing([10.0, 2.0])
                 .show(ui, |ui| {
                     for (c, name, hover) in COLUMNS.into_iter().chain(value_columns) {
-                        header(ui, s, (c, name, hover));
+                        header(ui, sort, (c, name, hover));
                     }
                     ui.end_row();
                     for l in rows.iter().take(MAX_ROWS) {
-                        row(ui, s, t, l);
+                        row(ui, lab, t, l);
                         ui.end_row();
                     }
                 });
@@ -260,8 +239,8 @@ pub fn show(ui: &mut egui::Ui, s: &mut LabState, terms: Option<&PixelTerms>, tab
 }
 
 /// The pixel's sides and their difference, its magnitudes, and the unpin button.
-fn readout(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms) {
-    let [u, v] = s.pinned.unwrap_or_default();
+fn readout(ui: &mut egui::Ui, (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab), t: &PixelTerms) {
+    let [u, v] = pinned.unwrap_or_default();
     let (sides, hover) = if tables_compared(t) {
         (
             format!(
@@ -301,15 +280,19 @@ fn readout(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms) {
             );
         }
         if ui.small_button("unpin").clicked() {
-            s.pinned = None;
-            s.lobe_light = None;
+            *pinned = None;
+            lab.edit(Aspect::Selection, |s| s.lobe_light = None);
         }
     });
 }
 
 /// A column's header: a button that sorts by it (again: the other way round).
-fn header(ui: &mut egui::Ui, s: &mut LabState, (c, name, hover): (LightColumn, &str, &str)) {
-    let arrow = match s.light_sort {
+fn header(
+    ui: &mut egui::Ui,
+    sort: &mut (LightColumn, bool),
+    (c, name, hover): (LightColumn, &str, &str),
+) {
+    let arrow = match *sort {
         (sorted, true) if sorted == c => " v",
         (sorted, false) if sorted == c => " ^",
         _ => "",
@@ -319,24 +302,22 @@ fn header(ui: &mut egui::Ui, s: &mut LabState, (c, name, hover): (LightColumn, &
         .on_hover_text(hover)
         .clicked()
     {
-        s.light_sort = if s.light_sort.0 == c {
-            (c, !s.light_sort.1)
-        } else {
-            (c, true)
-        };
+        *sort = if sort.0 == c { (c, !sort.1) } else { (c, true) };
     }
 }
 
-fn row(ui: &mut egui::Ui, s: &mut LabState, t: &PixelTerms, l: &LightTerm) {
-    let shown = s.lobe_light == Some(l.omega.to_array());
+fn row(ui: &mut egui::Ui, lab: &mut Lab, t: &PixelTerms, l: &LightTerm) {
+    let shown = lab.shared().lobe_light == Some(l.omega.to_array());
     if ui
         .selectable_label(shown, format!("{}", l.index))
         .on_hover_text("Show this light's ω and M^-1 ω on the lobe panel, at this pixel's θo")
         .clicked()
     {
-        s.lobe_light = (!shown).then_some(l.omega.to_array());
-        s.theta_o_deg = t.theta_o.to_degrees();
-        s.selected_light = Some(l.index);
+        lab.edit(Aspect::Selection, |s| {
+            s.lobe_light = (!shown).then_some(l.omega.to_array());
+            s.selected_light = Some(l.index);
+        });
+        lab.edit(Aspect::LobeView, |s| s.theta_o_deg = t.theta_o.to_degrees());
     }
     let angles = |w| {
         let (e, a) = elevation_azimuth(w);

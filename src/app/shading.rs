@@ -9,7 +9,9 @@ use std::time::{Duration, Instant};
 
 use crate::app::completion::{Chunk, Completion};
 use crate::app::display::ShownImage;
+use crate::app::lab::{Aspect, Lab, Stamp};
 use crate::app::pacer::Pacer;
+use crate::app::tables::NamedTables;
 use crate::gpu::GpuContext;
 use crate::gpu::display::DisplayPass;
 use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
@@ -17,9 +19,13 @@ use crate::ltc::lut::Lut;
 use crate::render::{Frame, FrameKind, RenderSettings, Tables, View};
 use crate::scene::Scene;
 
-/// GPU milliseconds a frame may spend on the plane: half a 60 Hz frame, leaving the other
-/// half to egui's own drawing (and, on a CPU driver, to the UI thread's share of the cores).
-pub const DEFAULT_BUDGET_MS: f64 = 8.0;
+/// GPU milliseconds a frame may spend on the plane (and on the chart's measurement): half a
+/// 60 Hz frame, leaving the other half to egui's own drawing (and, on a CPU driver, to the UI
+/// thread's share of the cores).
+pub const FRAME_BUDGET_MS: f64 = 8.0;
+
+/// What a render reads from the lab: a change of any of them restarts it.
+const RENDERED: [Aspect; 3] = [Aspect::Scene, Aspect::Shading, Aspect::Tables];
 
 /// The largest side the CPU fallback renders: the f64 reference shades ~1e8 light-pixels/s
 /// on two cores, so 320 px keeps 100 lights interactive.
@@ -32,13 +38,6 @@ pub fn wgpu_setup() -> egui_wgpu::WgpuSetup {
     let mut setup = egui_wgpu::WgpuSetupCreateNew::without_display_handle();
     setup.device_descriptor = Arc::new(crate::gpu::device_descriptor);
     setup.into()
-}
-
-/// What a render depends on: a change of any of these restarts it.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RenderKey {
-    pub scene: Scene,
-    pub settings: RenderSettings,
 }
 
 /// What a chunk does.
@@ -121,24 +120,22 @@ pub fn thousands(n: usize) -> String {
     out
 }
 
-/// Whether the next chunk may go (tests hold a render back with it; see `Shading::gate`).
-pub type Gate = Arc<dyn Fn() -> bool + Send + Sync>;
-
+/// The plane's renderer: on the window's GPU, or the CPU reference where there is none.
 pub struct Shading {
-    gpu: Option<GpuShading>,
-    cpu: Option<CpuShading>,
-    /// The tables both paths shade with (A, and B where two are compared).
-    lut: Lut,
-    lut_b: Option<Lut>,
-    /// Why the GPU is not used, for the window.
-    pub gpu_error: Option<String>,
-    pub budget_ms: f64,
-    /// Held closed, no chunk is dispatched: the render stays in flight (tests).
-    pub gate: Option<Gate>,
-    key: Option<RenderKey>,
+    path: Path,
+    /// What the current render was started for: the lab's stamp of what it reads, and the
+    /// panel's settings.
+    started: Option<(Stamp, RenderSettings)>,
+    /// The tables' stamp the GPU's table buffer (or the CPU's copy) holds.
+    tables: Option<Stamp>,
     pub progress: Progress,
     /// An error of the last render, shown over the image.
     pub error: Option<String>,
+}
+
+enum Path {
+    Gpu(Box<GpuShading>),
+    Cpu(CpuShading),
 }
 
 /// The plane on the window's device.
@@ -175,172 +172,147 @@ struct InFlight {
 }
 
 /// The CPU reference on a worker thread, where there is no GPU.
+#[derive(Default)]
 struct CpuShading {
     rx: Option<mpsc::Receiver<Frame>>,
     texture: Option<egui::TextureHandle>,
-    /// The last finished frame and the exposure its texture was encoded with, so that an
-    /// exposure change re-encodes it instead of rendering again.
-    frame: Option<(Frame, f64)>,
+    /// The last finished frame.
+    frame: Option<Frame>,
+    /// The exposure the texture was encoded with (`None`: not encoded yet), so that an
+    /// exposure change re-encodes the frame instead of rendering it again.
+    encoded: Option<f64>,
 }
 
 impl Shading {
-    /// The lab's renderer on the window's device (`render_state`), or the CPU without one.
-    pub fn new(lut: &Lut, render_state: Option<&egui_wgpu::RenderState>) -> Self {
-        let (gpu, gpu_error) = match render_state.map(|rs| GpuShading::new(rs, lut)) {
-            Some(Ok(g)) => (Some(g), None),
-            Some(Err(e)) => (None, Some(e)),
-            None => (None, Some("the window draws without wgpu".to_string())),
+    /// The renderer on the window's device (`render_state`), shading table A first; or the
+    /// CPU, and why not the GPU.
+    pub fn new(lut: &Lut, render_state: Option<&egui_wgpu::RenderState>) -> (Self, Option<String>) {
+        let (path, why) = match render_state.map(|rs| GpuShading::new(rs, lut)) {
+            Some(Ok(g)) => (Path::Gpu(Box::new(g)), None),
+            Some(Err(e)) => (Path::Cpu(CpuShading::default()), Some(e)),
+            None => (
+                Path::Cpu(CpuShading::default()),
+                Some("the window draws without wgpu".to_string()),
+            ),
         };
-        Self {
-            cpu: gpu.is_none().then_some(CpuShading {
-                rx: None,
-                texture: None,
-                frame: None,
-            }),
-            gpu,
-            lut: lut.clone(),
-            lut_b: None,
-            gpu_error,
-            budget_ms: DEFAULT_BUDGET_MS,
-            gate: None,
-            key: None,
+        let shading = Self {
+            path,
+            started: None,
+            tables: None,
             progress: Progress::default(),
             error: None,
-        }
+        };
+        (shading, why)
     }
 
-    /// The device in words, or why there is none.
-    pub fn describe(&self) -> String {
-        match (&self.gpu, &self.gpu_error) {
-            (Some(g), _) => g.ctx.describe(),
-            (None, Some(e)) => format!("no GPU: {e}"),
-            (None, None) => "no GPU".into(),
-        }
-    }
-
-    pub fn has_gpu(&self) -> bool {
-        self.gpu.is_some()
-    }
-
-    /// The device, for other panels that measure on it (the chart).
+    /// The device, for the lab (the chart measures on it).
     pub fn context(&self) -> Option<&GpuContext> {
-        self.gpu.as_ref().map(|g| &g.ctx)
-    }
-
-    /// Shades with another table A from now on: its buffer rewritten, pipelines kept.
-    pub fn set_lut(&mut self, lut: &Lut) {
-        if let Some(g) = &mut self.gpu
-            && let Err(e) = g
-                .renderer
-                .set_lut(&g.ctx, lut)
-                .and_then(|()| g.renderer.set_lut_b(&g.ctx, self.lut_b.as_ref()))
-        {
-            self.error = Some(e.to_string());
+        match &self.path {
+            Path::Gpu(g) => Some(&g.ctx),
+            Path::Cpu(_) => None,
         }
-        self.lut = lut.clone();
-        self.key = None;
     }
 
-    /// Table B, which method B shades with when two tables are compared.
-    pub fn set_lut_b(&mut self, lut_b: Option<&Lut>) {
-        if let Some(g) = &mut self.gpu
-            && let Err(e) = g.renderer.set_lut_b(&g.ctx, lut_b)
-        {
-            self.error = Some(e.to_string());
-        }
-        self.lut_b = lut_b.cloned();
-        self.key = None;
-    }
-
-    /// The GPU's light limit, or the scene limit on the CPU.
-    pub fn max_lights(&self) -> usize {
-        self.gpu.as_ref().map_or(crate::scene::MAX_LIGHTS, |g| {
-            PlaneRenderer::max_lights(&g.ctx)
-        })
-    }
-
-    /// Forgets the current render, so that the next frame starts it again.
-    pub fn invalidate(&mut self) {
-        self.key = None;
-    }
-
-    /// One frame's share of the render of `scene` as `settings` says: restarted when either
-    /// changed, then one chunk within the budget if the last one is done. Never waits.
+    /// One frame's share of the render of the lab's scene as `settings` says: restarted when
+    /// either changed, then one chunk within the budget if the last one is done. Never waits.
     pub fn update(
         &mut self,
         ui: &egui::Context,
-        scene: &Scene,
+        lab: &Lab,
         settings: &RenderSettings,
     ) -> ShownImage {
-        let key = RenderKey {
-            // Exposure is applied when the image is shown: it does not restart the sums.
-            scene: Scene {
-                exposure: 1.0,
-                ..scene.clone()
-            },
-            settings: *settings,
-        };
-        let restart = self.key.as_ref() != Some(&key);
+        let started = (lab.stamp(&RENDERED), *settings);
+        let restart = self.started != Some(started);
         let kind = if settings.view == View::Diff {
             FrameKind::RelativeDifference
         } else {
             FrameKind::Radiance
         };
-        if let Some(g) = &mut self.gpu {
-            if restart {
-                self.error = g.begin(&key).err();
+        // Exposure is applied when the image is shown: it does not restart the sums.
+        let exposure = lab.shared().scene.exposure;
+        if restart {
+            self.started = Some(started);
+            self.restart(ui, lab, settings, kind);
+        }
+        let texture = match &mut self.path {
+            Path::Gpu(g) => {
+                let ready = g.ready(&mut self.progress);
+                if self.error.is_none() && !self.progress.complete() && ready {
+                    g.chunk(ui, &mut self.progress, kind, exposure);
+                }
+                if !self.progress.complete() || g.in_flight.is_some() {
+                    ui.request_repaint();
+                }
+                g.show(kind, exposure * self.progress.preview_scale());
+                g.texture
+            }
+            Path::Cpu(cpu) => {
+                if cpu.collect(ui, exposure) {
+                    self.progress.done = self.progress.total;
+                } else {
+                    ui.request_repaint();
+                }
+                cpu.texture.as_ref().map(egui::TextureHandle::id)
+            }
+        };
+        ShownImage {
+            texture,
+            size: (settings.width, settings.height),
+        }
+    }
+
+    /// Starts the render of the lab's scene afresh (the tables brought up to date first).
+    fn restart(
+        &mut self,
+        ui: &egui::Context,
+        lab: &Lab,
+        settings: &RenderSettings,
+        kind: FrameKind,
+    ) {
+        let scene = lab.shared().shaded_scene();
+        let tables_stamp = lab.stamp(&[Aspect::Tables]);
+        let new_tables = self.tables != Some(tables_stamp);
+        self.tables = Some(tables_stamp);
+        self.error = None;
+        match &mut self.path {
+            Path::Gpu(g) => {
+                if new_tables {
+                    self.error = g.set_tables(lab.tables()).err();
+                }
+                if self.error.is_none() {
+                    self.error = g.begin(&scene, settings).err();
+                }
                 self.progress = Progress {
                     total: g.renderer.light_count(),
                     binning: g.renderer.binning_progress(),
                     started: Some(Instant::now()),
                     ..Progress::default()
                 };
-                self.key = Some(key);
                 // No lights: nothing to sum, but the last image must go. One empty chunk
                 // resolves the cleared sums: the plane black, as it is.
                 if self.error.is_none() && self.progress.total == 0 {
-                    g.chunk(ui, &mut self.progress, self.budget_ms, kind, scene.exposure);
+                    g.chunk(ui, &mut self.progress, kind, scene.exposure);
                 }
             }
-            let gate_open = self.gate.as_ref().is_none_or(|open| open());
-            let ready = g.ready(&mut self.progress);
-            if self.error.is_none() && !self.progress.complete() && gate_open && ready {
-                g.chunk(ui, &mut self.progress, self.budget_ms, kind, scene.exposure);
+            Path::Cpu(cpu) => {
+                self.progress = Progress {
+                    total: scene.lights.len(),
+                    started: Some(Instant::now()),
+                    ..Progress::default()
+                };
+                cpu.start(ui, scene, settings, lab.tables());
             }
-            if !self.progress.complete() || g.in_flight.is_some() {
-                ui.request_repaint();
-            }
-            g.show(kind, scene.exposure * self.progress.preview_scale());
-            return ShownImage {
-                texture: g.texture,
-                size: (settings.width, settings.height),
-            };
-        }
-        let cpu = self.cpu.as_mut().expect("one path or the other");
-        if restart {
-            let tables = (self.lut.clone(), self.lut_b.clone());
-            cpu.start(ui, key.scene.clone(), settings, tables);
-            self.progress = Progress {
-                total: scene.lights.len(),
-                started: Some(Instant::now()),
-                ..Progress::default()
-            };
-            self.key = Some(key);
-        }
-        if cpu.collect(ui, scene.exposure) {
-            self.progress.done = self.progress.total;
-        } else {
-            ui.request_repaint();
-        }
-        ShownImage {
-            texture: cpu.texture.as_ref().map(egui::TextureHandle::id),
-            size: (settings.width, settings.height),
         }
     }
 
-    /// What the current render shades (its scene and settings), once one has started.
-    pub fn key(&self) -> Option<&RenderKey> {
-        self.key.as_ref()
+    /// What the current render shades, once one has started.
+    pub fn settings(&self) -> Option<&RenderSettings> {
+        self.started.as_ref().map(|(_, s)| s)
+    }
+
+    /// Forgets the current render, so that the next frame starts it again.
+    pub fn invalidate(&mut self) {
+        self.started = None;
     }
 
     /// Whether the current render is still being summed.
@@ -353,10 +325,9 @@ impl Shading {
         if self.in_flight() {
             return None;
         }
-        match (&self.gpu, &self.cpu) {
-            (Some(g), _) => Some(g.renderer.read(&g.ctx)),
-            (None, Some(cpu)) => cpu.frame.as_ref().map(|(f, _)| f.clone()),
-            (None, None) => None,
+        match &self.path {
+            Path::Gpu(g) => Some(g.renderer.read(&g.ctx)),
+            Path::Cpu(cpu) => cpu.frame.clone(),
         }
     }
 }
@@ -382,7 +353,14 @@ impl GpuShading {
         })
     }
 
-    fn begin(&mut self, key: &RenderKey) -> Result<(), String> {
+    /// Tables A and B into the table buffer.
+    fn set_tables(&mut self, tables: &NamedTables) -> Result<(), String> {
+        self.renderer
+            .set_tables(&self.ctx, &tables.a.lut, Some(&tables.b.lut))
+            .map_err(|e| e.to_string())
+    }
+
+    fn begin(&mut self, scene: &Scene, settings: &RenderSettings) -> Result<(), String> {
         // A new render's cost per light may be anything: its chunks start small again.
         self.shade_pacer = Pacer::default();
         self.bin_pacer = Pacer::default();
@@ -390,7 +368,7 @@ impl GpuShading {
             chunk.stale = true;
         }
         self.renderer
-            .begin(&self.ctx, &key.scene, &key.settings)
+            .begin(&self.ctx, scene, settings)
             .map_err(|e| e.to_string())
     }
 
@@ -455,10 +433,10 @@ impl GpuShading {
         &mut self,
         window: &egui::Context,
         progress: &mut Progress,
-        budget_ms: f64,
         kind: FrameKind,
         exposure: f64,
     ) {
+        let budget_ms = FRAME_BUDGET_MS;
         let submitted = Instant::now();
         let (work, units) = if self.renderer.binning_progress().is_some() {
             let rows = self.bin_pacer.next(budget_ms);
@@ -539,7 +517,7 @@ impl CpuShading {
         ui: &egui::Context,
         scene: Scene,
         settings: &RenderSettings,
-        (lut, lut_b): (Lut, Option<Lut>),
+        tables: &NamedTables,
     ) {
         let scale =
             (CPU_FALLBACK_SIDE as f64 / settings.width.max(settings.height) as f64).min(1.0);
@@ -550,12 +528,9 @@ impl CpuShading {
         };
         let (tx, rx) = mpsc::channel();
         let repaint = ui.clone();
+        let (a, b) = (tables.a.lut.clone(), tables.b.lut.clone());
         std::thread::spawn(move || {
-            let tables = Tables {
-                a: &lut,
-                b: lut_b.as_ref().unwrap_or(&lut),
-            };
-            let _ = tx.send(crate::cpu::render(&scene, tables, &s));
+            let _ = tx.send(crate::cpu::render(&scene, Tables { a: &a, b: &b }, &s));
             repaint.request_repaint();
         });
         self.rx = Some(rx);
@@ -563,13 +538,13 @@ impl CpuShading {
 
     /// Encodes the last frame into the texture where it was encoded with another exposure.
     fn encode(&mut self, ui: &egui::Context, exposure: f64) {
-        let Some((frame, shown)) = &mut self.frame else {
+        let Some(frame) = &self.frame else {
             return;
         };
-        if *shown == exposure {
+        if self.encoded == Some(exposure) {
             return;
         }
-        *shown = exposure;
+        self.encoded = Some(exposure);
         let image = crate::app::display::frame_image(frame, exposure);
         match &mut self.texture {
             Some(t) => t.set(image, egui::TextureOptions::LINEAR),
@@ -587,8 +562,8 @@ impl CpuShading {
         };
         match rx.try_recv() {
             Ok(frame) => {
-                // NaN equals no exposure, so `encode` encodes the new frame.
-                self.frame = Some((frame, f64::NAN));
+                self.frame = Some(frame);
+                self.encoded = None;
                 self.rx = None;
                 self.encode(ui, exposure);
                 true

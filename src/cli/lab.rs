@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use ltc_lab::app::screenshot::frame_log_csv;
-use ltc_lab::app::{LabApp, LabState, PanelId, ScreenshotApp};
+use ltc_lab::app::{LabApp, LabState, Message, PanelId, ScreenshotApp};
 use ltc_lab::error::{Error, Result};
 use ltc_lab::scene::Scene;
 
@@ -110,22 +110,25 @@ pub fn run(a: Args) -> Result<()> {
         ..Default::default()
     };
     let (panel, measure, lights) = (a.panel.0, a.measure, a.lights);
-    let configure = move |mut state: LabState| {
-        if let Some(sc) = &scene {
-            state.light_count = sc.lights.len();
-            state.scene = sc.clone();
+    // What the command line asked for, over the persisted state (or the defaults).
+    let configure = move |mut app: LabApp| {
+        let lab = &mut app.lab;
+        if let Some(sc) = &scene
+            && let Some(cut) = lab.use_scene(sc.clone())
+        {
+            lab.say(Message::error(cut));
         }
         if let Some(n) = lights {
-            state.set_light_count(n);
+            lab.set_light_count(n);
+            if let Some(cut) = lab.keep_lights() {
+                lab.say(Message::error(cut));
+            }
         }
         if panel.is_some() {
-            state.maximised = panel;
+            app.window.maximised = panel;
         }
-        state
-    };
-    let prepare = move |mut app: LabApp| {
         if measure {
-            app.chart.start(&app.state, &app.lut, &app.shading);
+            app.chart.start(&app.lab);
         }
         app
     };
@@ -139,11 +142,8 @@ pub fn run(a: Args) -> Result<()> {
                 "LTC Lab (screenshot)",
                 options,
                 Box::new(move |cc| {
-                    let app = LabApp::new(
-                        configure(LabState::default()),
-                        cc.wgpu_render_state.as_ref(),
-                    );
-                    let mut shot = ScreenshotApp::new(prepare(app), path);
+                    let app = LabApp::new(LabState::default(), cc.wgpu_render_state.as_ref());
+                    let mut shot = ScreenshotApp::new(configure(app), path);
                     shot.result = slot;
                     shot.frames = log;
                     Ok(Box::new(shot))
@@ -168,11 +168,7 @@ pub fn run(a: Args) -> Result<()> {
         None => eframe::run_native(
             "LTC Lab",
             options,
-            Box::new(move |cc| {
-                let mut app = LabApp::from_creation_context(cc);
-                app.state = configure(app.state);
-                Ok(Box::new(prepare(app)))
-            }),
+            Box::new(move |cc| Ok(Box::new(configure(LabApp::from_creation_context(cc))))),
         )
         .map_err(window),
     }

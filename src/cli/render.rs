@@ -209,7 +209,7 @@ fn render_gpu(scene: &Scene, tables: Tables<'_>, s: &RenderSettings) -> Result<(
     ltc_lab::gpu::target::check_size(&ctx, s.width, s.height).map_err(super::flag_of)?;
     let mut renderer = PlaneRenderer::new(&ctx, tables.a, ShaderChecks::Checked)?;
     if s.table_b {
-        renderer.set_lut_b(&ctx, Some(tables.b))?;
+        renderer.set_tables(&ctx, tables.a, Some(tables.b))?;
     }
     let (frame, ms) = renderer.render(&ctx, scene, s)?;
     Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))

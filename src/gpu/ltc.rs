@@ -43,28 +43,19 @@ pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
         .collect()
 }
 
-/// The tables in the LUT buffer: A first, B (if any) after it.
-pub struct Tables {
+/// The storage buffer the shaders read their tables from: A first, B (if any) after it.
+pub struct LutBuffer {
     pub buffer: wgpu::Buffer,
     pub size_a: usize,
     /// Cells per side and first vec4 of table B.
     pub b: Option<(usize, u32)>,
-    pub packed_a: Vec<[f32; 4]>,
 }
 
-impl Tables {
-    pub fn new(ctx: &GpuContext, lut: &Lut, b: Option<&Lut>) -> Result<Self> {
-        Self::from_packed(ctx, pack_lut(lut), lut.size, b)
-    }
-
+impl LutBuffer {
     /// Table A packed, B packed after it; refused where they exceed one storage binding.
-    pub fn from_packed(
-        ctx: &GpuContext,
-        packed_a: Vec<[f32; 4]>,
-        size_a: usize,
-        b: Option<&Lut>,
-    ) -> Result<Self> {
-        let mut all = packed_a.clone();
+    pub fn new(ctx: &GpuContext, a: &Lut, b: Option<&Lut>) -> Result<Self> {
+        let size_a = a.size;
+        let mut all = pack_lut(a);
         let b = b.map(|lut| {
             let base = all.len() as u32;
             all.extend(pack_lut(lut));
@@ -80,11 +71,6 @@ impl Tables {
                 usage: wgpu::BufferUsages::STORAGE,
             },
         );
-        Ok(Self {
-            buffer,
-            size_a,
-            b,
-            packed_a,
-        })
+        Ok(Self { buffer, size_a, b })
     }
 }

@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::bin::{self, BinPass, Binning};
 use crate::gpu::limits;
-use crate::gpu::ltc::Tables;
+use crate::gpu::ltc::LutBuffer;
 use crate::gpu::scene::{GpuLight, Params, params};
 use crate::gpu::target::{self, OUTPUT_FORMAT, Target};
 use crate::gpu::timing::{PassTimer, Slot, SlotTimes};
@@ -117,7 +117,7 @@ pub struct PlaneRenderer {
     pipeline_layout: wgpu::PipelineLayout,
     pipelines: HashMap<PipelineKey, Pipelines>,
     binning: Binning,
-    tables: Tables,
+    tables: LutBuffer,
     lights: wgpu::Buffer,
     light_count: usize,
     /// Whether any light has a finite range (else culling would keep every light).
@@ -161,7 +161,7 @@ impl PlaneRenderer {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let tables = Tables::new(ctx, lut, None)?;
+        let tables = LutBuffer::new(ctx, lut, None)?;
         Ok(Self {
             module,
             layout,
@@ -188,17 +188,11 @@ impl PlaneRenderer {
         })
     }
 
-    /// Shades with `lut` as table A from now on (its buffer rewritten, pipelines kept).
-    pub fn set_lut(&mut self, ctx: &GpuContext, lut: &Lut) -> Result<()> {
-        self.tables = Tables::new(ctx, lut, None)?;
-        self.bind_groups = None;
-        Ok(())
-    }
-
-    /// Table B, which method B shades with where `RenderSettings::table_b` (else none).
-    pub fn set_lut_b(&mut self, ctx: &GpuContext, lut_b: Option<&Lut>) -> Result<()> {
-        let a = std::mem::take(&mut self.tables.packed_a);
-        self.tables = Tables::from_packed(ctx, a, self.tables.size_a, lut_b)?;
+    /// Shades with `a` as table A, and `b` as table B where `RenderSettings::table_b`, from
+    /// now on (their buffer rewritten, pipelines kept). Both at once: a new table A must not
+    /// lose table B.
+    pub fn set_tables(&mut self, ctx: &GpuContext, a: &Lut, b: Option<&Lut>) -> Result<()> {
+        self.tables = LutBuffer::new(ctx, a, b)?;
         self.bind_groups = None;
         Ok(())
     }

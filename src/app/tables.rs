@@ -1,0 +1,63 @@
+//! The lab's two tables, each with the name its labels show. Table A is the one the lab
+//! shades with; table B, "the other fit", is the other shipped table unless the user loaded
+//! one: the lobe overlay and the matrix panel show it beside A, and the plane's side B shades
+//! with it when two tables are compared. A render borrows both as `render::Tables`.
+
+use crate::ltc::lut::{Lut, Table};
+
+/// A table and what it is called: `classic`, `point`, or the file's path.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NamedTable {
+    pub lut: Lut,
+    pub name: String,
+}
+
+impl NamedTable {
+    pub fn shipped(t: Table) -> Self {
+        Self {
+            lut: Lut::shipped(t).clone(),
+            name: t.name().to_string(),
+        }
+    }
+
+    /// The name without its directories, for a title.
+    pub fn short_name(&self) -> &str {
+        std::path::Path::new(&self.name)
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or(&self.name)
+    }
+}
+
+/// Tables A and B.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NamedTables {
+    pub a: NamedTable,
+    pub b: NamedTable,
+    /// B was loaded by the user: it stays when A changes (else it follows A to A's other).
+    pub b_chosen: bool,
+}
+
+impl NamedTables {
+    /// `a` as table A, and the other shipped table as B.
+    pub fn shipped(a: Table) -> Self {
+        Self::with_a(NamedTable::shipped(a), a)
+    }
+
+    /// `a` (standing in for the shipped `shipped_a`) as table A, and `shipped_a`'s other as B.
+    pub fn with_a(a: NamedTable, shipped_a: Table) -> Self {
+        Self {
+            a,
+            b: NamedTable::shipped(shipped_a.other()),
+            b_chosen: false,
+        }
+    }
+
+    /// Both, borrowed for a render.
+    pub fn pair(&self) -> crate::render::Tables<'_> {
+        crate::render::Tables {
+            a: &self.a.lut,
+            b: &self.b.lut,
+        }
+    }
+}
