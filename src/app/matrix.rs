@@ -104,7 +104,7 @@ impl Panel for MatrixPanel {
 /// error of table A, and both tables' entries side by side.
 fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
     let s = lab.shared();
-    let (lut, a_name) = (&lab.tables().a.lut, lab.tables().a.name.as_str());
+    let lut = &lab.tables().a.lut;
     let theta = s.theta_o();
     let cell = s.nearest_cell(lut);
     let sample = lut.sample(s.alpha(), theta.cos());
@@ -114,7 +114,6 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
         Lobe::Diffuse => pair.diff,
     };
     let err = sample.get(Channel::err(s.lobe));
-    let b = &lab.tables().b;
     ui.label(format!(
         "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
         if s.lobe == Lobe::Specular { "specular" } else { "diffuse" },
@@ -163,10 +162,17 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
         100.0 * err
     ))
     .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4)");
-    // Tables A and B at this (θo, α), side by side.
+    both_tables(ui, lab);
+}
+
+/// Tables A and B at the lab's (θo, α), side by side: M^-1's entries, scale and error.
+fn both_tables(ui: &mut egui::Ui, lab: &Lab) {
+    let s = lab.shared();
+    let (a, b) = (&lab.tables().a, &lab.tables().b);
+    let cos_theta = s.theta_o().cos();
     ui.vertical(|ui| {
-        for (which, name, table) in [("A", a_name, lut), ("B", b.name.as_str(), &b.lut)] {
-            let t = table.sample(s.alpha(), theta.cos());
+        for (which, name, table) in [("A", &a.name, &a.lut), ("B", &b.name, &b.lut)] {
+            let t = table.sample(s.alpha(), cos_theta);
             let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
             let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
             let e4 = |c| entry(t.get(c)).trim().to_string();

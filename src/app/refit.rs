@@ -122,9 +122,14 @@ impl Refit {
         let stored = PointFit::stored(lut.cell(i, j), lobe);
         let cancel = Arc::new(AtomicBool::new(false));
         let stop = cancel.clone();
+        let job = Job {
+            lobe,
+            cell: (i, j),
+            settings,
+            stored,
+            objective,
+        };
         std::thread::spawn(move || {
-            let strata = FitStrata::new(&settings);
-            let problem = CellProblem::new(lobe, i, j, &settings, &strata);
             let mut observe = |k: usize, f: f64| {
                 let _ = tx.send(Event::Iteration(k, f));
                 if stop.load(Ordering::Relaxed) {
@@ -133,60 +138,8 @@ impl Refit {
                     CONTINUE
                 }
             };
-            let (fit, iterations, converged) = match objective {
-                Objective::LtcCode => {
-                    let start = problem.params_of(cos_from_brdf_from_entries(stored.entries));
-                    let fit = problem.fit(start, &settings, &strata, &mut observe);
-                    let entries = normalized_cos_from_brdf(&fit.ltc);
-                    let point = PointFit {
-                        entries,
-                        scale: 1.0,
-                    };
-                    (point, fit.iterations, fit.converged)
-                }
-                Objective::Point => {
-                    let nodes = crate::ltc::lobe::strata(QUADRATURE_STRATA);
-                    let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
-                    let mut count = 0;
-                    let mut counted = |k, f| {
-                        count = k;
-                        observe(k, f)
-                    };
-                    let free_scale = fits_scale(lobe);
-                    let point = fit_cell_observed(
-                        &q,
-                        problem.norm,
-                        &[stored],
-                        free_scale,
-                        &settings,
-                        &mut counted,
-                    );
-                    // Its restarts end where Nelder–Mead stops moving: there is no
-                    // iteration limit to hit for the whole fit, only per run.
-                    (point, count, true)
-                }
-            };
-            let ltc = |p: &PointFit| p.ltc(problem.norm, problem.fresnel);
-            let error = |p: &PointFit| {
-                pointwise_error(lobe, problem.view, problem.alpha, &ltc(p), ERROR_SAMPLES)
-            };
-            let result = RefitResult {
-                lobe,
-                cell: (i, j),
-                objective,
-                scale: fit.scale,
-                stored_scale: stored.scale,
-                history: Vec::new(),
-                cos_from_brdf: mat3_rows(cos_from_brdf_from_entries(fit.entries)),
-                norm: problem.norm,
-                fresnel: problem.fresnel,
-                stored: mat3_rows(cos_from_brdf_from_entries(stored.entries)),
-                error: error(&fit),
-                stored_error: error(&stored),
-                iterations,
-                converged,
-                cancelled: stop.load(Ordering::Relaxed),
-            };
+            let mut result = job.run(&mut observe);
+            result.cancelled = stop.load(Ordering::Relaxed);
             let _ = tx.send(Event::Done(Box::new(result)));
         });
         Self {
@@ -225,5 +178,77 @@ impl Refit {
     /// The fraction of the iteration limit used so far.
     pub fn progress(&self) -> f32 {
         self.history.len() as f32 / self.max_iterations.max(1) as f32
+    }
+}
+
+/// A refit's inputs, moved to its thread.
+struct Job {
+    lobe: Lobe,
+    cell: (usize, usize),
+    settings: FitSettings,
+    stored: PointFit,
+    objective: Objective,
+}
+
+impl Job {
+    /// Fits the cell by the objective from the stored cell, then measures both alike.
+    fn run(&self, observe: &mut dyn FnMut(usize, f64) -> std::ops::ControlFlow<()>) -> RefitResult {
+        let (lobe, (i, j), settings) = (self.lobe, self.cell, &self.settings);
+        let strata = FitStrata::new(settings);
+        let problem = CellProblem::new(lobe, i, j, settings, &strata);
+        let (fit, iterations, converged) = match self.objective {
+            Objective::LtcCode => {
+                let start = problem.params_of(cos_from_brdf_from_entries(self.stored.entries));
+                let fit = problem.fit(start, settings, &strata, observe);
+                let entries = normalized_cos_from_brdf(&fit.ltc);
+                let point = PointFit {
+                    entries,
+                    scale: 1.0,
+                };
+                (point, fit.iterations, fit.converged)
+            }
+            Objective::Point => {
+                let nodes = crate::ltc::lobe::strata(QUADRATURE_STRATA);
+                let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
+                let mut count = 0;
+                let mut counted = |k, f| {
+                    count = k;
+                    observe(k, f)
+                };
+                let stored = [self.stored];
+                let point = fit_cell_observed(
+                    &q,
+                    problem.norm,
+                    &stored,
+                    fits_scale(lobe),
+                    settings,
+                    &mut counted,
+                );
+                // Its restarts end where Nelder–Mead stops moving: there is no iteration
+                // limit to hit for the whole fit, only per run.
+                (point, count, true)
+            }
+        };
+        let ltc = |p: &PointFit| p.ltc(problem.norm, problem.fresnel);
+        let error = |p: &PointFit| {
+            pointwise_error(lobe, problem.view, problem.alpha, &ltc(p), ERROR_SAMPLES)
+        };
+        RefitResult {
+            lobe,
+            cell: (i, j),
+            objective: self.objective,
+            scale: fit.scale,
+            stored_scale: self.stored.scale,
+            history: Vec::new(),
+            cos_from_brdf: mat3_rows(cos_from_brdf_from_entries(fit.entries)),
+            norm: problem.norm,
+            fresnel: problem.fresnel,
+            stored: mat3_rows(cos_from_brdf_from_entries(self.stored.entries)),
+            error: error(&fit),
+            stored_error: error(&self.stored),
+            iterations,
+            converged,
+            cancelled: false,
+        }
     }
 }
