@@ -98,12 +98,23 @@ fn the_frame_log_shows_the_plane_filling_in_over_frames() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
-        Some("frame,ms,render_in_flight,lights_done,lights_total")
+        Some(
+            "frame,ms,render_in_flight,lights_done,lights_total,ui_ms,controls_ms,lobe_ms,matrix_ms,plane_ms,clipping_ms,chart_ms"
+        )
     );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
-    assert!(rows.iter().all(|r| r.len() == 5 && r[1] >= 0.0));
+    assert!(rows.iter().all(|r| r.len() == 12 && r[1] >= 0.0));
+    // The parts are timed within the app's own time, and only the one panel shown has any
+    // (--panel plane): its side panel and the plane.
+    for r in &rows {
+        let parts: f64 = r[6..].iter().sum();
+        // Each printed to 0.001 ms: six roundings of at most 0.0005 each.
+        assert!(parts <= r[5] + 0.003, "{r:?}");
+        assert!([7, 8, 10, 11].iter().all(|&k| r[k] == 0.0), "{r:?}");
+    }
+    assert!(rows.iter().any(|r| r[9] > 0.0), "the plane was never timed");
     assert!(rows.iter().enumerate().all(|(k, r)| r[0] == k as f64));
     let last = rows.last().unwrap();
     assert_eq!((last[2], last[3], last[4]), (0.0, 2000.0, 2000.0));

@@ -43,6 +43,9 @@ pub struct LabApp {
     pub window: state::WindowState,
     /// A screenshot on its way to a file.
     pub screenshot: Option<PendingScreenshot>,
+    /// Milliseconds the last frame spent in the side panel and in each panel, for the frame
+    /// log (`screenshot::PART_NAMES`).
+    part_ms: [f64; screenshot::PART_COUNT],
     /// The window's size in points when the zoom was last looked at, and its size at zoom 1
     /// when it was last fitted.
     zoomed_for: Option<([u32; 2], [u32; 2])>,
@@ -98,6 +101,7 @@ impl LabApp {
             },
             window: state.window,
             screenshot: None,
+            part_ms: [0.0; screenshot::PART_COUNT],
             zoomed_for: None,
         }
     }
@@ -143,7 +147,9 @@ impl LabApp {
                 self.lab.message = None;
             }
         }
+        self.part_ms = [0.0; screenshot::PART_COUNT];
         if !self.window.controls_hidden {
+            let started = std::time::Instant::now();
             egui::Panel::left("controls")
                 .resizable(true)
                 .default_size(250.0)
@@ -151,6 +157,7 @@ impl LabApp {
                     egui::ScrollArea::vertical()
                         .show(ui, |ui| self.controls.show(ui, &mut self.lab));
                 });
+            self.part_ms[0] = started.elapsed().as_secs_f64() * 1e3;
         }
         egui::CentralPanel::default().show(ui, |ui| {
             let size = ui.available_size();
@@ -260,7 +267,9 @@ impl LabApp {
                 PanelId::Clipping => &mut self.clipping,
                 PanelId::Chart => &mut self.chart,
             };
+            let started = std::time::Instant::now();
             panel.show(ui, &mut self.lab);
+            self.part_ms[1 + id as usize] = started.elapsed().as_secs_f64() * 1e3;
         });
     }
 
@@ -348,6 +357,10 @@ impl Settling for LabApp {
     fn progress(&self) -> (usize, usize) {
         let p = &self.plane.shading.progress;
         (p.done, p.total)
+    }
+
+    fn part_ms(&self) -> [f64; screenshot::PART_COUNT] {
+        self.part_ms
     }
 }
 

@@ -73,7 +73,15 @@ pub trait Settling {
     fn busy(&self) -> bool;
     /// The plane's render: entries summed and their total (for the frame log).
     fn progress(&self) -> (usize, usize);
+    /// Milliseconds the last frame spent in each of its parts, in `PART_NAMES`' order
+    /// (0 for a part not shown).
+    fn part_ms(&self) -> [f64; PART_COUNT];
 }
+
+/// The parts of a frame the frame log times: the side panel and the five panels.
+pub const PART_NAMES: [&str; PART_COUNT] =
+    ["controls", "lobe", "matrix", "plane", "clipping", "chart"];
+pub const PART_COUNT: usize = 6;
 
 /// One row of the frame log.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -84,19 +92,32 @@ pub struct FrameRecord {
     pub render_in_flight: bool,
     pub lights_done: usize,
     pub lights_total: usize,
+    /// Milliseconds in the app's own `ui` (our panels and egui's layout of their widgets;
+    /// not egui's tessellation, the GPU's painting or the window's present, which follow it).
+    pub ui_ms: f64,
+    /// Of those, each part's (`PART_NAMES`).
+    pub part_ms: [f64; PART_COUNT],
 }
 
-/// The frame log as CSV: `frame,ms,render_in_flight,lights_done,lights_total`.
+/// The frame log as CSV: `frame,ms,render_in_flight,lights_done,lights_total,ui_ms`, then a
+/// column per part of the frame (`controls_ms`, `lobe_ms`, …).
 pub fn frame_log_csv(records: &[FrameRecord]) -> String {
-    let mut out = String::from("frame,ms,render_in_flight,lights_done,lights_total\n");
+    let parts: Vec<String> = PART_NAMES.iter().map(|p| format!(",{p}_ms")).collect();
+    let mut out = format!(
+        "frame,ms,render_in_flight,lights_done,lights_total,ui_ms{}\n",
+        parts.concat()
+    );
     for r in records {
+        let parts: Vec<String> = r.part_ms.iter().map(|ms| format!(",{ms:.3}")).collect();
         out.push_str(&format!(
-            "{},{:.3},{},{},{}\n",
+            "{},{:.3},{},{},{},{:.3}{}\n",
             r.frame,
             r.ms,
             u8::from(r.render_in_flight),
             r.lights_done,
-            r.lights_total
+            r.lights_total,
+            r.ui_ms,
+            parts.concat()
         ));
     }
     out
@@ -136,6 +157,7 @@ impl<A: eframe::App + Settling> eframe::App for ScreenshotApp<A> {
             * 1e3;
         self.last_frame = Some(now);
         self.app.ui(ui, frame);
+        let ui_ms = now.elapsed().as_secs_f64() * 1e3;
         let ctx = ui.ctx().clone();
         let (lights_done, lights_total) = self.app.progress();
         let busy = self.app.busy();
@@ -147,6 +169,8 @@ impl<A: eframe::App + Settling> eframe::App for ScreenshotApp<A> {
                 render_in_flight: busy,
                 lights_done,
                 lights_total,
+                ui_ms,
+                part_ms: self.app.part_ms(),
             };
             frames.push(record);
             frames.len()
