@@ -133,3 +133,38 @@ fn the_frame_log_shows_the_plane_filling_in_over_frames() {
     );
     assert!(shot.exists());
 }
+
+/// Where `XDG_RUNTIME_DIR` is not set (`env -i`, a container, SSH), Mesa's Vulkan layer and
+/// libwayland print "error: XDG_RUNTIME_DIR is invalid or not set" while the window's adapter
+/// opens: nothing of it may reach the user ahead of the lab, whose window still opens.
+#[test]
+fn no_driver_chatter_reaches_the_user_when_the_window_opens() {
+    if !window_available() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("bare.png");
+    let mut command = Command::new(env!("CARGO_BIN_EXE_ltc-lab"));
+    command.env_clear();
+    for kept in ["PATH", "HOME", "DISPLAY", "WAYLAND_DISPLAY", "WGPU_BACKEND"] {
+        if let Some(v) = std::env::var_os(kept) {
+            command.env(kept, v);
+        }
+    }
+    let o = command
+        .args([
+            "lab",
+            "--panel",
+            "lobe",
+            "--size",
+            "480x300",
+            "--screenshot",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let said = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{said}");
+    assert!(said.trim().is_empty(), "the user saw: {said}");
+    assert!(out.exists());
+}

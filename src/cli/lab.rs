@@ -2,10 +2,12 @@
 //! a PNG, then exit.
 
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
 
 use ltc_lab::app::screenshot::frame_log_csv;
 use ltc_lab::app::{LabApp, LabState, Message, PanelId, ScreenshotApp};
 use ltc_lab::error::{Error, Result};
+use ltc_lab::gpu::driver_output::HeldBack;
 use ltc_lab::scene::Scene;
 
 use super::parse_size;
@@ -132,16 +134,32 @@ pub fn run(a: Args) -> Result<()> {
         }
         app
     };
-    let window = |e: eframe::Error| Error::machine("lab", format!("cannot open the window: {e}"));
+    // Drivers print while eframe opens the window's adapter (gpu::driver_output says what):
+    // held back until the app is made, then dropped; handed to the error if the window
+    // cannot open.
+    let held = Arc::new(Mutex::new(HeldBack::start()));
+    let release = move || {
+        let held = held.lock().expect("not poisoned").take();
+        held.map(HeldBack::release).unwrap_or_default()
+    };
+    let (opened, released) = (release.clone(), release);
+    let window = move |e: eframe::Error| {
+        let said = match released() {
+            s if s.is_empty() => String::new(),
+            s => format!(" (the driver said: {})", s.replace('\n', "; ")),
+        };
+        Error::machine("lab", format!("cannot open the window: {e}{said}"))
+    };
     match a.screenshot {
         Some(path) => {
-            let result = std::sync::Arc::new(std::sync::Mutex::new(None));
-            let frames = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+            let result = Arc::new(Mutex::new(None));
+            let frames = Arc::new(Mutex::new(Vec::new()));
             let (slot, log) = (result.clone(), frames.clone());
             let run = eframe::run_native(
                 "LTC Lab (screenshot)",
                 options,
                 Box::new(move |cc| {
+                    opened();
                     let app = LabApp::new(LabState::default(), cc.wgpu_render_state.as_ref());
                     let mut shot = ScreenshotApp::new(configure(app), path);
                     shot.result = slot;
@@ -168,7 +186,10 @@ pub fn run(a: Args) -> Result<()> {
         None => eframe::run_native(
             "LTC Lab",
             options,
-            Box::new(move |cc| Ok(Box::new(configure(LabApp::from_creation_context(cc))))),
+            Box::new(move |cc| {
+                opened();
+                Ok(Box::new(configure(LabApp::from_creation_context(cc))))
+            }),
         )
         .map_err(window),
     }

@@ -7,25 +7,55 @@
 //! process's standard error is held back while the adapter opens: dropped when it opens,
 //! handed to the error when it does not.
 
-/// Runs `open` with standard error written to an unlinked temporary file; its result, and
-/// what was written meanwhile (empty where standard error could not be redirected).
-#[cfg(unix)]
+/// Runs `open` with standard error held back; its result, and what was written meanwhile
+/// (empty where standard error could not be redirected).
 pub fn held_back<T>(open: impl FnOnce() -> T) -> (T, String) {
-    use std::io::{Read, Seek};
-    let Some((saved, mut file)) = redirect() else {
-        return (open(), String::new());
-    };
+    let held = HeldBack::start();
     let out = open();
-    // Restored before anything else is said; a failure to restore leaves it where it is.
-    let _ = nix::unistd::dup2_stderr(&saved);
-    let mut bytes = Vec::new();
-    let _ = file.rewind().and_then(|()| file.read_to_end(&mut bytes));
-    (out, String::from_utf8_lossy(&bytes).trim().to_string())
+    (out, held.map(HeldBack::release).unwrap_or_default())
+}
+
+/// Standard error written to an unlinked temporary file until `release`: for an adapter that
+/// opens where a closure cannot wrap it (eframe's window opens its own, then calls back).
+#[cfg(unix)]
+pub struct HeldBack {
+    saved: std::os::fd::OwnedFd,
+    file: std::fs::File,
+}
+
+#[cfg(unix)]
+impl HeldBack {
+    /// Holds standard error back from now on; `None` where it cannot be redirected.
+    pub fn start() -> Option<Self> {
+        redirect().map(|(saved, file)| Self { saved, file })
+    }
+
+    /// Gives standard error back, and what was written to it meanwhile.
+    pub fn release(mut self) -> String {
+        use std::io::{Read, Seek};
+        // Restored before anything else is said; a failure to restore leaves it where it is.
+        let _ = nix::unistd::dup2_stderr(&self.saved);
+        let mut bytes = Vec::new();
+        let _ = self
+            .file
+            .rewind()
+            .and_then(|()| self.file.read_to_end(&mut bytes));
+        String::from_utf8_lossy(&bytes).trim().to_string()
+    }
 }
 
 #[cfg(not(unix))]
-pub fn held_back<T>(open: impl FnOnce() -> T) -> (T, String) {
-    (open(), String::new())
+pub struct HeldBack;
+
+#[cfg(not(unix))]
+impl HeldBack {
+    pub fn start() -> Option<Self> {
+        None
+    }
+
+    pub fn release(self) -> String {
+        String::new()
+    }
 }
 
 /// Standard error sent to a new temporary file: the saved descriptor and the file.
