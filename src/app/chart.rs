@@ -66,6 +66,13 @@ impl Panel for ChartPanel {
 }
 
 impl ChartPanel {
+    pub fn new(state: ChartState) -> Self {
+        Self {
+            state,
+            ..Self::default()
+        }
+    }
+
     /// *measure* (or its progress and cancel), and a study to read instead.
     fn toolbar(&mut self, ui: &mut egui::Ui, lab: &Lab) {
         match &self.job {

@@ -43,6 +43,12 @@ pub struct ControlsPanel {
     pub state: ControlsState,
 }
 
+impl ControlsPanel {
+    pub fn new(state: ControlsState) -> Self {
+        Self { state }
+    }
+}
+
 impl Panel for ControlsPanel {
     fn show(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         ui.heading("LTC Lab");

@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 
 use crate::app::display::{colour_bar, rgb};
-use crate::app::lab::{Aspect, Lab, Panel};
+use crate::app::lab::{Aspect, Lab, Panel, Stamp};
 use crate::colormap::ColourScale;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::{Clipping, Ltc, Normalization};
@@ -42,6 +42,8 @@ impl Default for LobeState {
 #[derive(Default)]
 pub struct LobePanel {
     pub state: LobeState,
+    /// The sphere as last made.
+    sphere: Option<Sphere>,
 }
 
 /// Sphere tessellation: rings in θ and segments in φ (enough for a smooth α = 0.05 lobe at
@@ -61,6 +63,16 @@ fn values(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, l: DVec3) -> (f64, f64) {
     let approx = ltc.magnitude() * ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
     (exact, approx)
 }
+
+/// What the sphere is drawn from: the material (α), θo and the lobe, the tables and a refit,
+/// and the pinned pixel's light.
+const DRAWN_FROM: [Aspect; 5] = [
+    Aspect::Scene,
+    Aspect::LobeView,
+    Aspect::Tables,
+    Aspect::Refit,
+    Aspect::Selection,
+];
 
 /// What the sphere and the slice show: the lobe seen from `v` at `alpha`, its (morphed) LTC,
 /// table B's, and a pinned pixel's light.
@@ -90,7 +102,8 @@ impl Panel for LobePanel {
             self.state.orbit_yaw += d.x * 0.01;
             self.state.orbit_pitch = (self.state.orbit_pitch + d.y * 0.01).clamp(-1.5, 1.5);
         }
-        match self.paint_sphere(ui, rect, &drawn) {
+        let stamp = lab.stamp(&DRAWN_FROM);
+        match self.paint_sphere(ui, rect, (&drawn, stamp)) {
             Some(scale) => colour_bar(ui, &scale, 200.0),
             None => {
                 ui.label("orange: exact f·cos (filled); blue lines: LTC n·D; green lines: table B; n normal, v view, M x/y/z the columns of M");
@@ -101,6 +114,13 @@ impl Panel for LobePanel {
 }
 
 impl LobePanel {
+    pub fn new(state: LobeState) -> Self {
+        Self {
+            state,
+            sphere: None,
+        }
+    }
+
     /// The parameters on the panel's face, so that a picture of it (a slide made with the
     /// controls folded) carries what it shows; then the lobe, overlay and morph controls.
     fn header(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
@@ -167,56 +187,88 @@ impl LobePanel {
     }
 
     /// The exact lobe filled and the LTCs as lines over it (or the difference coloured on the
-    /// unit sphere, whose scale it returns), with the frame's arrows.
-    fn paint_sphere(&self, ui: &egui::Ui, rect: egui::Rect, d: &Drawn) -> Option<ColourScale> {
+    /// unit sphere, whose scale it returns), with the frame's arrows. The surfaces (thousands
+    /// of triangles, sorted) are made again only when what they show changes.
+    fn paint_sphere(
+        &mut self,
+        ui: &egui::Ui,
+        rect: egui::Rect,
+        (d, stamp): (&Drawn, Stamp),
+    ) -> Option<ColourScale> {
+        let made_for = (stamp, self.state.clone(), rect);
+        if self.sphere.as_ref().is_none_or(|s| s.made_for != made_for) {
+            self.sphere = Some(Sphere::new(d, made_for));
+        }
+        let sphere = self.sphere.as_ref()?;
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 4.0, Color32::from_gray(18));
+        painter.extend(sphere.shapes.iter().cloned());
+        let view = &sphere.view;
+        // With the difference coloured on the unit sphere, the horizon circle is its equator.
+        let reach = if sphere.difference.is_some() {
+            1.0
+        } else {
+            0.5 * view.span.min(1.2)
+        };
+        paint_frame(&painter, rect, &|p| view.project(p), reach, d);
+        sphere.difference.clone()
+    }
+}
+
+/// What the lab's aspects, the panel's settings and the view's place a sphere was made for.
+type SphereFor = (Stamp, LobeState, egui::Rect);
+
+/// The sphere's surfaces as shapes, their projection, and the difference's colour scale.
+struct Sphere {
+    made_for: SphereFor,
+    shapes: Vec<egui::Shape>,
+    view: Projection,
+    difference: Option<ColourScale>,
+}
+
+impl Sphere {
+    fn new(d: &Drawn, made_for: SphereFor) -> Self {
+        let (state, rect) = (&made_for.1, made_for.2);
         let surface = Surface::new(d);
         // Auto-scale: the lobes' extent, not the unit sphere's, fills the view (the
         // difference is painted on the unit sphere itself).
-        let orbit = Orbit::new(&self.state);
-        let shown: Vec<DVec3> = if self.state.colour_difference {
+        let shown: Vec<DVec3> = if state.colour_difference {
             UNIT_SPHERE.to_vec()
         } else {
             surface.exact.iter().chain(&surface.ltc).copied().collect()
         };
-        let view = Projection::fitted(orbit, rect, &shown);
+        let view = Projection::fitted(Orbit::new(state), rect, &shown);
         let project = |p: DVec3| view.project(p);
-        let difference = self
-            .state
-            .colour_difference
-            .then(|| surface.difference_scale());
-        match &difference {
+        let difference = state.colour_difference.then(|| surface.difference_scale());
+        let shapes = match &difference {
             Some(scale) => {
                 let colours: Vec<Color32> = surface
                     .vals
                     .iter()
                     .map(|&(e, a)| rgb(scale.colour(a - e)))
                     .collect();
-                mesh_surface(&painter, &project, &surface.dirs, &|n| colours[n]);
+                vec![mesh_surface(&project, &surface.dirs, &|n| colours[n])]
             }
             None => {
                 // The exact lobe filled, the LTC (and table B) as meshes of lines over it:
                 // two filled surfaces that nearly coincide z-fight.
-                mesh_surface(&painter, &project, &surface.exact, &|_| {
-                    Color32::from_rgba_unmultiplied(240, 150, 60, 170)
-                });
+                let fill = Color32::from_rgba_unmultiplied(240, 150, 60, 170);
+                let mut shapes = vec![mesh_surface(&project, &surface.exact, &|_| fill)];
                 let blue = Color32::from_rgb(90, 160, 255);
-                wireframe(&painter, &surface.ltc, &project, blue);
+                shapes.extend(wireframe(&surface.ltc, &project, blue));
                 if let Some(o) = &d.other {
                     let green = Color32::from_rgb(80, 220, 120);
-                    wireframe(&painter, &surface.of(d, o), &project, green);
+                    shapes.extend(wireframe(&surface.of(d, o), &project, green));
                 }
+                shapes
             }
-        }
-        // With the difference coloured on the unit sphere, the horizon circle is its equator.
-        let reach = if difference.is_some() {
-            1.0
-        } else {
-            0.5 * view.span.min(1.2)
         };
-        paint_frame(&painter, rect, &project, reach, d);
-        difference
+        Self {
+            made_for,
+            shapes,
+            view,
+            difference,
+        }
     }
 }
 
@@ -382,11 +434,10 @@ impl Projection {
 
 /// A filled, lit surface through `positions` (the pole grid), far triangles first.
 fn mesh_surface(
-    painter: &egui::Painter,
     project: &dyn Fn(DVec3) -> (Pos2, f64),
     positions: &[DVec3],
     colours: &dyn Fn(usize) -> Color32,
-) {
+) -> egui::Shape {
     let mut triangles: Vec<(f64, [Pos2; 3], [Color32; 3])> = Vec::new();
     for (quad, p) in quads(positions) {
         let normal = (p[1] - p[0])
@@ -411,7 +462,7 @@ fn mesh_surface(
         }
         mesh.add_triangle(base, base + 1, base + 2);
     }
-    painter.add(egui::Shape::mesh(mesh));
+    egui::Shape::mesh(mesh)
 }
 
 /// The horizon circle of radius `reach`, the normal, the view vector, the LTC's frame and a
@@ -559,21 +610,22 @@ fn quads(positions: &[DVec3]) -> Vec<([usize; 4], [DVec3; 4])> {
 
 /// A surface as lines along every 4th ring and every 8th segment.
 fn wireframe(
-    painter: &egui::Painter,
     positions: &[DVec3],
     project: &dyn Fn(DVec3) -> (Pos2, f64),
     colour: Color32,
-) {
+) -> Vec<egui::Shape> {
     let stroke = egui::Stroke::new(1.0, colour.gamma_multiply(0.85));
     let at = |i: usize, k: usize| project(positions[i * SEGMENTS + k % SEGMENTS]).0;
-    for i in (0..=RINGS).step_by(4) {
-        let ring: Vec<Pos2> = (0..=SEGMENTS).map(|k| at(i, k)).collect();
-        painter.add(egui::Shape::line(ring, stroke));
-    }
-    for k in (0..SEGMENTS).step_by(8) {
-        let meridian: Vec<Pos2> = (0..=RINGS).map(|i| at(i, k)).collect();
-        painter.add(egui::Shape::line(meridian, stroke));
-    }
+    let rings = (0..=RINGS)
+        .step_by(4)
+        .map(|i| (0..=SEGMENTS).map(|k| at(i, k)).collect::<Vec<Pos2>>());
+    let meridians = (0..SEGMENTS)
+        .step_by(8)
+        .map(|k| (0..=RINGS).map(|i| at(i, k)).collect::<Vec<Pos2>>());
+    rings
+        .chain(meridians)
+        .map(|line| egui::Shape::line(line, stroke))
+        .collect()
 }
 
 fn shade(c: Color32, k: f32) -> Color32 {

@@ -88,17 +88,12 @@ impl LabApp {
         }
         Self {
             lab,
-            controls: controls::ControlsPanel {
-                state: state.controls,
-            },
-            lobe: lobe::LobePanel { state: state.lobe },
+            controls: controls::ControlsPanel::new(state.controls),
+            lobe: lobe::LobePanel::new(state.lobe),
             matrix: matrix::MatrixPanel::default(),
             plane: plane::PlanePanel::new(shading, state.plane),
             clipping: clipping::ClippingPanel::new(state.clipping),
-            chart: chart::ChartPanel {
-                state: state.chart,
-                ..Default::default()
-            },
+            chart: chart::ChartPanel::new(state.chart),
             window: state.window,
             screenshot: None,
             part_ms: [0.0; screenshot::PART_COUNT],

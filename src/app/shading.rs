@@ -375,11 +375,13 @@ impl GpuShading {
     /// Whether the last chunk's work is done and its time taken (into the progress and its
     /// pacer); polls the device, never waits.
     fn ready(&mut self, progress: &mut Progress) -> bool {
-        // Runs the timestamp read-back's callback, if one is pending.
-        let _ = self.ctx.device.poll(wgpu::PollType::Poll);
         let Some(chunk) = &mut self.in_flight else {
             return true;
         };
+        // Runs the timestamp read-back's callback, if one is pending. Only while a chunk is
+        // in flight: on a CPU driver (lavapipe) a poll can wait behind the window's own
+        // drawing, up to tens of milliseconds of an idle frame.
+        let _ = self.ctx.device.poll(wgpu::PollType::Poll);
         if chunk.wall_ms.is_none() {
             match self
                 .completion
