@@ -114,6 +114,17 @@ fn snapshot_of_every_panel() {
         small.query_by_label("Matrix and LUT").is_some(),
         "no tabs at 1024×640"
     );
+    // Two tables compared: the plane's tab says so, as its frame does.
+    small.get_by_label("A | B tables").click();
+    small.run_steps(2);
+    let title = "Plane: table A (classic) | table B (point)";
+    assert_eq!(
+        small.query_all_by_label(title).count(),
+        2,
+        "the tab and the frame name both tables"
+    );
+    small.get_by_label("LTC | BRDF").click();
+    settle(&mut small);
     small.snapshot_options("layout_1024x640", &options(1024 * 640));
     results.extend_harness(&mut small);
     let mut matrix = lab((900.0, 760.0), maximised(PanelId::Matrix)).unwrap();
