@@ -6,13 +6,13 @@
 //! `cargo run --release --example f16_error` (needs a GPU adapter with SHADER_F16).
 
 use ltc_lab::app::Lab;
-use ltc_lab::app::tables::NamedTables;
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::relative_difference;
 use ltc_lab::render::{Method, RenderSettings};
 use ltc_lab::scene::{Scene, preset};
+use ltc_lab::tables::NamedTables;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let ctx = GpuContext::new()?;

@@ -22,3 +22,4 @@ pub mod plot;
 pub mod render;
 pub mod scene;
 pub mod study;
+pub mod tables;

@@ -7,12 +7,12 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::{Aspect, Lab, Message, Panel, Request};
-use crate::app::tables::NamedTable;
 use crate::ltc::Normalization;
 use crate::ltc::formats;
 use crate::ltc::lut::Table;
 use crate::render::Method;
 use crate::scene::{PRESETS, Scene, preset};
+use crate::tables::NamedTable;
 
 /// The light counts the slider offers, at most (and at most what the adapter shades).
 pub const MAX_LIGHT_SLIDER: usize = 100_000;

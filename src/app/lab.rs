@@ -8,13 +8,13 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 
 use crate::app::refit::RefitResult;
-use crate::app::tables::{NamedTable, NamedTables};
 use crate::gpu::GpuContext;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{Lut, THETA_MAX, Table};
 use crate::ltc::{Clipping, Ltc, LtcPair, Normalization};
 use crate::render::Method;
 use crate::scene::{Scene, preset};
+use crate::tables::{NamedTable, NamedTables};
 
 /// paper-100's light count (assets/scenes/paper-100.toml), whose intensities the light-count
 /// slider's lights share.

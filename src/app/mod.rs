@@ -22,14 +22,13 @@ pub mod refit;
 pub mod screenshot;
 pub mod shading;
 pub mod state;
-pub mod tables;
 
 pub use lab::{Aspect, Compare, Lab, Message, Panel};
 pub use screenshot::{PendingScreenshot, ScreenshotApp, Settling};
 pub use state::{LabState, PanelId};
 
 use crate::app::lab::Request;
-use crate::app::tables::NamedTables;
+use crate::tables::NamedTables;
 
 /// The window: the lab the panels share, the side panel, the five panels and the layout.
 pub struct LabApp {

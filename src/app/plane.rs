@@ -17,11 +17,11 @@ use crate::app::plane_paint::{
     preview_label, progress_line, reading_line,
 };
 use crate::app::shading::Shading;
-use crate::app::tables::NamedTables;
 use crate::cpu::{clip_counts, shade_exact, shade_ltc};
 use crate::metrics::luminance;
 use crate::render::{Frame, FrameKind, LutFilter, RenderSettings, View};
 use crate::scene::{Light, Scene};
+use crate::tables::NamedTables;
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
 /// 20 000 lights in under a minute on a CPU driver (lavapipe, ~0.2 G light-px/s), and in

@@ -11,13 +11,13 @@ use crate::app::completion::{Chunk, Completion};
 use crate::app::display::ShownImage;
 use crate::app::lab::{Aspect, Lab, Stamp};
 use crate::app::pacer::Pacer;
-use crate::app::tables::NamedTables;
 use crate::gpu::GpuContext;
 use crate::gpu::display::DisplayPass;
 use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
 use crate::ltc::lut::Lut;
 use crate::render::{Frame, FrameKind, RenderSettings, Tables, View};
 use crate::scene::Scene;
+use crate::tables::NamedTables;
 
 /// GPU milliseconds a frame may spend on the plane (and on the chart's measurement): half a
 /// 60 Hz frame, leaving the other half to egui's own drawing (and, on a CPU driver, to the UI

@@ -10,11 +10,12 @@ use ltc_lab::files::{Claim, check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::formats;
-use ltc_lab::ltc::lut::{Lut, Table};
+use ltc_lab::ltc::lut::Table;
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::output::{ImageFormat, frame_bytes};
-use ltc_lab::render::{Frame, Method, RenderSettings, Tables, View};
+use ltc_lab::render::{Frame, Method, RenderSettings, View};
 use ltc_lab::scene::Scene;
+use ltc_lab::tables::{NamedTable, NamedTables};
 
 use super::{LutArgs, one_of, parse_cull, parse_size};
 
@@ -126,30 +127,35 @@ pub fn run(a: &Args) -> Result<()> {
         .then(|| Claim::first_free(&out))
         .transpose()?;
     let scene = Scene::load(&a.scene)?;
-    let lut = a.lut.load()?;
-    let lut_b = table_b(a)?;
-    if let Some(b) = &lut_b {
-        if !matches!(a.method, Shown::Compared(_)) {
-            return Err(Error::input(
-                "--method",
-                "--table-b and --lut-b compare two tables: use split or diff",
-            ));
+    let named_a = NamedTable {
+        lut: a.lut.load()?.into_owned(),
+        name: a.lut.describe(),
+    };
+    let tables = match table_b(a)? {
+        Some(b) => {
+            if !matches!(a.method, Shown::Compared(_)) {
+                return Err(Error::input(
+                    "--method",
+                    "--table-b and --lut-b compare two tables: use split or diff",
+                ));
+            }
+            settings.method_b = settings.method_a;
+            settings.table_b = true;
+            NamedTables {
+                a: named_a,
+                b,
+                b_chosen: true,
+            }
         }
-        settings.method_b = settings.method_a;
-        settings.table_b = true;
-        let _ = b;
-    }
-    let tables = Tables {
-        a: &lut,
-        b: lut_b.as_deref().unwrap_or(&lut),
+        None => NamedTables::with_a(named_a, a.lut.table),
     };
     let start = Instant::now();
     let (frame, device) = if a.cpu {
-        let frame = cpu::render(&scene, tables, &settings);
+        let frame = cpu::render(&scene, tables.pair(), &settings);
         let threads = rayon::current_num_threads();
         (frame, format!("the CPU ({threads} threads)"))
     } else {
-        render_gpu(&scene, tables, &settings)?
+        render_gpu(&scene, &tables, &settings)?
     };
     let seconds = start.elapsed().as_secs_f64();
     if let Some((k, p)) = frame.first_invalid(settings.clipping) {
@@ -189,27 +195,35 @@ fn default_name(scene: &Path, shown: Shown) -> PathBuf {
 }
 
 /// The second table of a comparison, if one is asked for.
-fn table_b(a: &Args) -> Result<Option<std::borrow::Cow<'static, Lut>>> {
+fn table_b(a: &Args) -> Result<Option<NamedTable>> {
     if a.lut_b.is_none() && a.table_b.is_none() {
         return Ok(None);
     }
-    let loaded = formats::load(a.lut_b.as_deref(), a.table_b.unwrap_or(Table::Classic))?;
+    let table = a.table_b.unwrap_or(Table::Classic);
+    let loaded = formats::load(a.lut_b.as_deref(), table)?;
     if let Some(note) = &loaded.note {
         eprintln!("ltc-lab: note: {note}");
     }
-    Ok(Some(loaded.lut))
+    let name = a
+        .lut_b
+        .as_ref()
+        .map_or(table.name().to_string(), |p| p.display().to_string());
+    Ok(Some(NamedTable {
+        lut: loaded.lut.into_owned(),
+        name,
+    }))
 }
 
 /// The GPU render, checked against the adapter's limits before any work.
-fn render_gpu(scene: &Scene, tables: Tables<'_>, s: &RenderSettings) -> Result<(Frame, String)> {
+fn render_gpu(scene: &Scene, tables: &NamedTables, s: &RenderSettings) -> Result<(Frame, String)> {
     let ctx = GpuContext::new().map_err(|e| Error {
         message: format!("{} (--cpu)", e.message),
         ..e
     })?;
     ltc_lab::gpu::target::check_size(&ctx, s.width, s.height).map_err(super::flag_of)?;
-    let mut renderer = PlaneRenderer::new(&ctx, tables.a, ShaderChecks::Checked)?;
+    let mut renderer = PlaneRenderer::new(&ctx, &tables.a.lut, ShaderChecks::Checked)?;
     if s.table_b {
-        renderer.set_tables(&ctx, tables.a, Some(tables.b))?;
+        renderer.set_tables(&ctx, &tables.a.lut, Some(&tables.b.lut))?;
     }
     let (frame, ms) = renderer.render(&ctx, scene, s)?;
     Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))

@@ -1,7 +1,7 @@
-//! The lab's two tables, each with the name its labels show. Table A is the one the lab
-//! shades with; table B, "the other fit", is the other shipped table unless the user loaded
-//! one: the lobe overlay and the matrix panel show it beside A, and the plane's side B shades
-//! with it when two tables are compared. A render borrows both as `render::Tables`.
+//! Tables A and B, each with its name: where it came from (a shipped table's name, or the
+//! file's path). Table A is the one shaded with; table B is the one compared with: by default
+//! the other shipped table, or one the user named (the lab's *as B*, `render --lut-b`). A
+//! render borrows both as `render::Tables`.
 
 use crate::ltc::lut::{Lut, Table};
 
@@ -34,7 +34,7 @@ impl NamedTable {
 pub struct NamedTables {
     pub a: NamedTable,
     pub b: NamedTable,
-    /// B was loaded by the user: it stays when A changes (else it follows A to A's other).
+    /// B was named by the user: it stays when A changes (else it follows A to A's other).
     pub b_chosen: bool,
 }
 
