@@ -63,14 +63,20 @@ impl ClippingPanel {
 
     /// The lab's two rules, the table, and a reset.
     fn toolbar(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
-        lab.edit(Aspect::Shading, |s| {
-            ui.checkbox(&mut s.clipping.horizon, "case 1 rule (n·l ≤ 0 -> 0)")
-                .on_hover_text("The lab's rule (the side panel's \"clip case 1\"). Off: the light below the plane is lifted above the horizon by M^-1 and the LTC glows (c), while the BRDF (d) stays black")
-        });
-        lab.edit(Aspect::Shading, |s| {
-            ui.checkbox(&mut s.clipping.transformed, "case 2 rule ((M^-1 l).z ≤ 0 -> 0)")
-                .on_hover_text("The lab's rule (the side panel's \"clip case 2\"). Off: a light above the horizon that M^-1 pushes below contributes negative light (blue)")
-        });
+        crate::app::controls::clipping_rules(
+            ui,
+            lab,
+            [
+                (
+                    "case 1 rule (n·l ≤ 0 -> 0)",
+                    "The lab's rule (the side panel's \"clip case 1\"). Off: the light below the plane is lifted above the horizon by M^-1 and the LTC glows (c), while the BRDF (d) stays black",
+                ),
+                (
+                    "case 2 rule ((M^-1 l).z ≤ 0 -> 0)",
+                    "The lab's rule (the side panel's \"clip case 2\"). Off: a light above the horizon that M^-1 pushes below contributes negative light (blue)",
+                ),
+            ],
+        );
         ui.separator();
         let setup = &mut self.state.setup;
         ui.label("table");

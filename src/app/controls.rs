@@ -210,7 +210,20 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
         );
         ltc.inner == Some(true) || brdf.inner == Some(true)
     });
-    clipping_rules(ui, lab);
+    clipping_rules(
+        ui,
+        lab,
+        [
+            (
+                "clip case 1 (n·l ≤ 0)",
+                "Eq. 30's first rule: a light below the surface contributes nothing. Off: M^-1 can lift it above the horizon (the glow of Figure 2c)",
+            ),
+            (
+                "clip case 2 ((M^-1l).z ≤ 0)",
+                "max(ω'.z, 0) in D: a light pushed below the horizon by M^-1 contributes nothing. Off: it contributes negative light",
+            ),
+        ],
+    );
     lab.edit(Aspect::Shading, |s| {
         let mut paper = s.normalization == Normalization::PaperLiteral;
         let r = ui.checkbox(&mut paper, "paper-literal normalization")
@@ -224,15 +237,16 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
     });
 }
 
-/// Eq. 30's two rules (the clipping panel has the same two, for its pictures).
-fn clipping_rules(ui: &mut egui::Ui, lab: &mut Lab) {
+/// Eq. 30's two rules as checkboxes, each with its label and tooltip (the side panel and the
+/// clipping panel word them for their place).
+pub fn clipping_rules(ui: &mut egui::Ui, lab: &mut Lab, [case1, case2]: [(&str, &str); 2]) {
     lab.edit(Aspect::Shading, |s| {
-        ui.checkbox(&mut s.clipping.horizon, "clip case 1 (n·l ≤ 0)")
-            .on_hover_text("Eq. 30's first rule: a light below the surface contributes nothing. Off: M^-1 can lift it above the horizon (the glow of Figure 2c)")
+        ui.checkbox(&mut s.clipping.horizon, case1.0)
+            .on_hover_text(case1.1)
     });
     lab.edit(Aspect::Shading, |s| {
-        ui.checkbox(&mut s.clipping.transformed, "clip case 2 ((M^-1l).z ≤ 0)")
-            .on_hover_text("max(ω'.z, 0) in D: a light pushed below the horizon by M^-1 contributes nothing. Off: it contributes negative light")
+        ui.checkbox(&mut s.clipping.transformed, case2.0)
+            .on_hover_text(case2.1)
     });
 }
 
