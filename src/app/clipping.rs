@@ -191,7 +191,12 @@ impl ClippingPanel {
             return;
         };
         if let Some(t) = row.thumbs.get(2) {
+            let positive = t.factor.is_finite() && t.factor > 0.0;
             let text = match t.negative_factor {
+                Some(n) if !positive => format!(
+                    "(c): all negative light, in blue ×{} (exposed to its own peak)",
+                    short_number(round_sig(n))
+                ),
                 Some(n) => format!(
                     "(c): orange positive ×{}, blue negative light ×{} (each part exposed to its own peak)",
                     short_number(round_sig(t.factor)),

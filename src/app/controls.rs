@@ -369,13 +369,16 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             lab.say(message);
         }
         if ui.small_button("as B").on_hover_text("Make the table named on the left table B, the other fit: the lobe overlay, the matrix panel and the plane's A | B comparison show it beside table A").clicked() {
-            let message = match load(&files.lut_path) {
-                Ok((table, note)) => {
-                    let text = format!("table B is {}{note}", table.name);
-                    lab.use_table_b(Some(table));
-                    Message::note(text)
-                }
-                Err(e) => Message::error(format!("{e} — table B stays")),
+            let message = match files.lut_path.trim() {
+                "" => Message::error("as B: name a table file in the field first — table B stays"),
+                file => match load(file) {
+                    Ok((table, note)) => {
+                        let text = format!("table B is {}{note}", table.name);
+                        lab.use_file_b(table, file.to_string());
+                        Message::note(text)
+                    }
+                    Err(e) => Message::error(format!("{e} — table B stays")),
+                },
             };
             lab.say(message);
         }
@@ -384,7 +387,7 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
         ui.small(format!("table B: {}", lab.tables().b.name))
             .on_hover_text("The other fit: the lobe overlay and the matrix panel show it beside table A, and the plane's A | B comparison shades with it");
         if lab.tables().b_chosen && ui.small_button("reset").on_hover_text("Table B back to the other shipped table").clicked() {
-            lab.use_table_b(None);
+            lab.reset_table_b();
         }
     });
 }

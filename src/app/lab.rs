@@ -149,6 +149,8 @@ pub struct Shared {
     pub table: Table,
     /// The file table A was loaded from; read again at the next start.
     pub table_file: Option<String>,
+    /// The file table B was loaded from (*as B*); read again at the next start.
+    pub table_b_file: Option<String>,
     /// The matrix panel's last refit, which the lobe panel draws while its cell is chosen.
     pub refit: Option<RefitResult>,
 }
@@ -172,6 +174,7 @@ impl Default for Shared {
             lobe_light: None,
             table: Table::Classic,
             table_file: None,
+            table_b_file: None,
             refit: None,
         }
     }
@@ -366,10 +369,20 @@ impl Lab {
         self.touch(Aspect::Tables);
     }
 
-    /// Compares with `b` as table B from now on; `None`: the other shipped table again.
-    pub fn use_table_b(&mut self, b: Option<NamedTable>) {
-        self.tables.b_chosen = b.is_some();
-        self.tables.b = b.unwrap_or_else(|| NamedTable::shipped(self.shared.table.other()));
+    /// Compares with the table read from `file` as table B from now on; read again at the
+    /// next start.
+    pub fn use_file_b(&mut self, table: NamedTable, file: String) {
+        self.edit(Aspect::Tables, |s| s.table_b_file = Some(file));
+        self.tables.b = table;
+        self.tables.b_chosen = true;
+        self.touch(Aspect::Tables);
+    }
+
+    /// Table B back to the other shipped table.
+    pub fn reset_table_b(&mut self) {
+        self.edit(Aspect::Tables, |s| s.table_b_file = None);
+        self.tables.b = NamedTable::shipped(self.shared.table.other());
+        self.tables.b_chosen = false;
         self.touch(Aspect::Tables);
     }
 

@@ -125,7 +125,8 @@ impl LobePanel {
     /// controls folded) carries what it shows; then the lobe, overlay and morph controls.
     fn header(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         let st = &mut self.state;
-        let b_name = lab.tables().b.name.clone();
+        // File names without their directories: a path pushed the row past the panel.
+        let b_name = lab.tables().b.short_name().to_string();
         let b = if st.overlay_other_fit {
             format!(", B: {b_name}")
         } else {
@@ -140,7 +141,7 @@ impl LobePanel {
             "θo = {:.1}°   α = {:.4}   table A: {}{refitted}{b}",
             lab.shared().theta_o_deg,
             lab.shared().alpha(),
-            lab.tables().a.name
+            lab.tables().a.short_name()
         ));
         ui.horizontal(|ui| {
             lab.edit(Aspect::LobeView, |s| {
@@ -232,10 +233,27 @@ impl Sphere {
         let surface = Surface::new(d);
         // Auto-scale: the lobes' extent, not the unit sphere's, fills the view (the
         // difference is painted on the unit sphere itself).
+        // The frame's arrows and the horizon ring too (at least 0.6 long): a sharp lobe at a
+        // grazing view framed alone pushed the view vector and the ring off the view.
+        let frame = [
+            DVec3::Z,
+            d.v,
+            DVec3::X,
+            DVec3::NEG_X,
+            DVec3::Y,
+            DVec3::NEG_Y,
+        ]
+        .map(|p| p * 0.6);
         let shown: Vec<DVec3> = if state.colour_difference {
             UNIT_SPHERE.to_vec()
         } else {
-            surface.exact.iter().chain(&surface.ltc).copied().collect()
+            surface
+                .exact
+                .iter()
+                .chain(&surface.ltc)
+                .chain(&frame)
+                .copied()
+                .collect()
         };
         let view = Projection::fitted(Orbit::new(state), rect, &shown);
         let project = |p: DVec3| view.project(p);

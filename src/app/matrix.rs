@@ -142,9 +142,9 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
             "[[a,0,b],[0,c,0],[d,0,1]]: the same M^-1 divided by its bottom-right element",
         ),
     ];
-    // As many matrices per row as fit (each ~260 points wide in monospace, with the
-    // gap after it).
-    let per_row = ((ui.available_width() / 260.0) as usize).clamp(1, 3);
+    // As many matrices per row as fit: each about 300 points wide in monospace with the gap
+    // after it (260 cut the third column of a matrix with five-digit entries).
+    let per_row = ((ui.available_width() / 300.0) as usize).clamp(1, 3);
     for row in matrices.chunks(per_row) {
         ui.horizontal(|ui| {
             for (title, m, hover) in row {

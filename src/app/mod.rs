@@ -323,24 +323,42 @@ pub fn auto_zoom(size: egui::Vec2) -> f32 {
     (size.x / 1920.0).min(size.y / 1080.0).clamp(1.0, 3.0)
 }
 
-/// The tables as `shared` says (table A's file read again, or the shipped table), and why a
+/// The tables as `shared` says (their files read again, or the shipped tables), and why a
 /// file could not be read again (the file is then forgotten).
 fn tables(shared: &mut lab::Shared) -> (NamedTables, Option<String>) {
-    let Some(file) = shared.table_file.clone() else {
-        return (NamedTables::shipped(shared.table), None);
-    };
-    match controls::load(&file) {
-        Ok((table, _)) => (NamedTables::with_a(table, shared.table), None),
-        Err(e) => {
-            shared.table_file = None;
-            let tables = NamedTables::shipped(shared.table);
-            let why = format!(
-                "table A was {file}, which cannot be read again ({e}): shading with the {} table",
-                tables.a.name
-            );
-            (tables, Some(why))
+    let mut lost = Vec::new();
+    let mut read_again = |file: &mut Option<String>, which: &str| {
+        let path = file.clone()?;
+        match controls::load(&path) {
+            Ok((table, _)) => Some(table),
+            Err(e) => {
+                *file = None;
+                lost.push(format!(
+                    "table {which} was {path}, which cannot be read again ({e})"
+                ));
+                None
+            }
         }
+    };
+    let a = read_again(&mut shared.table_file, "A");
+    let b = read_again(&mut shared.table_b_file, "B");
+    let mut tables = match a {
+        Some(a) => NamedTables::with_a(a, shared.table),
+        None => NamedTables::shipped(shared.table),
+    };
+    if let Some(b) = b {
+        tables.b = b;
+        tables.b_chosen = true;
     }
+    let why = (!lost.is_empty()).then(|| {
+        format!(
+            "{}: shading with the {} table, comparing with {}",
+            lost.join("; "),
+            tables.a.name,
+            tables.b.name
+        )
+    });
+    (tables, why)
 }
 
 impl Settling for LabApp {
@@ -367,5 +385,13 @@ impl eframe::App for LabApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         eframe::set_value(storage, STORAGE_KEY, &self.state());
+    }
+
+    /// egui's memory holds the zoom, which the lab fits to the window at every start
+    /// (`auto_zoom`): restored, eframe sized the next window by it (`--size 1920x1080` after
+    /// a 4K session opened a 3840×2160 window at zoom 2). The lab's store has its own
+    /// application id (`cli::lab`), away from the one that holds an earlier version's memory.
+    fn persist_egui_memory(&self) -> bool {
+        false
     }
 }

@@ -83,7 +83,7 @@ const COLUMNS: [(LightColumn, &str, &str); 8] = [
     (
         LightColumn::Index,
         "#",
-        "The light's index in the scene; click a row to show it on the lobe panel",
+        "The light's index in the scene; click it to show the light on the lobe panel",
     ),
     (
         LightColumn::Elevation,

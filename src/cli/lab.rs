@@ -100,6 +100,9 @@ pub fn run(a: Args) -> Result<()> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("LTC Lab")
+            // Names eframe's store too: a new one, as the lab no longer keeps egui's memory
+            // (`LabApp::persist_egui_memory`) and the old one holds a zoom that sized windows.
+            .with_app_id("ltc-lab")
             .with_inner_size([w as f32, h as f32]),
         renderer: eframe::Renderer::Wgpu,
         wgpu_options: egui_wgpu::WgpuConfiguration {
