@@ -12,6 +12,7 @@ pub mod controls;
 pub mod display;
 pub mod lab;
 pub mod lobe;
+pub mod lobe_sphere;
 pub mod matrix;
 pub mod measure;
 pub mod pacer;
