@@ -14,6 +14,7 @@ pub mod error;
 pub mod eval;
 pub mod files;
 pub mod gpu;
+pub mod horizon;
 pub mod ltc;
 pub mod metrics;
 pub mod output;
