@@ -68,12 +68,6 @@ pub fn orbit(lut: &Lut, theta_o_deg: f64, alpha: f64) -> Vec<OrbitSample> {
     samples
 }
 
-/// Cases per elevation band: a million put each band's error within about 1% of itself (the
-/// spread of four seeds at 0–5°, where sharp grazing lobes make the error vary most from case
-/// to case; 10⁵ spread 3%), in about a second on two cores.
-pub const HORIZON_CASES: usize = 1_000_000;
-const HORIZON_SEED: u64 = 22;
-
 /// The summary's lines for the error by light elevation.
 fn horizon_lines(bands: &[horizon::BandError]) -> Vec<String> {
     bands
@@ -223,7 +217,7 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
         }
     }
     out.stage("orbits.csv", orbits.as_bytes())?;
-    let bands = horizon::band_errors(lut, Clipping::BOTH, HORIZON_CASES, HORIZON_SEED);
+    let bands = horizon::band_errors(lut, Clipping::BOTH, horizon::CASES, horizon::SEED);
     lines.extend(horizon_lines(&bands));
     let table = format!(
         "rules,band,cases,specular,diffuse,specular_energy\n{}",

@@ -125,6 +125,13 @@ impl LutArgs {
         Ok(loaded)
     }
 
+    /// The table's name, for a column: the shipped table's name or the file's path.
+    pub fn name(&self) -> String {
+        self.lut
+            .as_ref()
+            .map_or(self.table.name().to_string(), |p| p.display().to_string())
+    }
+
     /// What the table is, for messages.
     pub fn describe(&self) -> String {
         match &self.lut {

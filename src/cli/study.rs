@@ -1,5 +1,6 @@
-//! `ltc-lab study`: every shading variant timed and measured against the exact image;
-//! `study.csv` and the Pareto chart `study.png` land together or not at all.
+//! `ltc-lab study`: every shading variant timed and measured against the exact image, and
+//! the error by light elevation of its tables; `study.csv`, the Pareto chart `study.png` and
+//! `horizon.csv` land together or not at all.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -7,19 +8,21 @@ use std::time::Instant;
 use ltc_lab::error::{Error, Result, number};
 use ltc_lab::files::Outputs;
 use ltc_lab::gpu::GpuContext;
-use ltc_lab::ltc::lut::ALPHA_MIN;
+use ltc_lab::horizon;
+use ltc_lab::ltc::Clipping;
+use ltc_lab::ltc::lut::{ALPHA_MIN, Lut};
 use ltc_lab::study;
 
 use super::{CullArgs, LutArgs, Range, check_frames_and_lights, parse_size, print};
 
 /// The directory `study` writes into unless told otherwise.
 const DEFAULT_DIR: &str = "study";
-const FILES: [&str; 2] = ["study.csv", "study.png"];
+const FILES: [&str; 3] = ["study.csv", "study.png", "horizon.csv"];
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Directory for study.csv and study.png (made if missing; files in it are replaced).
-    /// Default: ./study, or the first of study-2, study-3… that holds neither file, taken
+    /// Directory for study.csv, study.png and horizon.csv (made if missing; files in it are
+    /// replaced). Default: ./study, or the first of study-2, study-3… that holds none, taken
     /// when the study starts so that two studies at once never share one.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -88,11 +91,26 @@ pub fn run(a: &Args) -> Result<()> {
     let csv = study::csv(&rows);
     out.stage("study.csv", csv.as_bytes())?;
     out.stage("study.png", &study::pareto_png(&rows, &ctx.info.name)?)?;
+    out.stage("horizon.csv", horizon_csv(&lut, &a.lut.name()).as_bytes())?;
     out.commit()?;
     eprintln!(
-        "study done in {:.0} s; wrote {}/study.csv and study.png",
+        "study done in {:.0} s; wrote {}/study.csv, study.png and horizon.csv",
         start.elapsed().as_secs_f64(),
         dir.display()
     );
     print(&csv)
+}
+
+/// The error by light elevation (docs/design.md §4.7) of the study's two tables: `lut`, which
+/// `ltc`, `ltc-fast`, `ltc-paper`, `ltc-nearest` and `ltc-f16` shade with (named `name`), and
+/// the point fit of `ltc-point` and `ltc-fast-point`; with eq. 30's rules.
+fn horizon_csv(lut: &Lut, name: &str) -> String {
+    let mut text = String::from("table,rules,band,cases,specular,diffuse,specular_energy\n");
+    // A path may hold a comma: the CSV's own separator.
+    let name = name.replace(',', ";");
+    for (table, lut) in [(name.as_str(), lut), ("point", Lut::embedded_point())] {
+        let bands = horizon::band_errors(lut, Clipping::BOTH, horizon::CASES, horizon::SEED);
+        text.push_str(&horizon::csv_rows(&format!("{table},eq30,"), &bands));
+    }
+    text
 }

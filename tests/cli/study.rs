@@ -57,6 +57,22 @@ fn study_writes_every_variant_and_the_pareto_chart() {
         png.width() >= 800 && png.pixels().filter(|p| p.0 != [255, 255, 255]).count() > 10_000,
         "blank chart"
     );
+    // The error by light elevation of both tables, four bands each, the lowest the worst.
+    let horizon = std::fs::read_to_string(dir.join("horizon.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = horizon
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 8, "{horizon}");
+    assert!(
+        rows[0][0] == "classic" && rows[4][0] == "point",
+        "{horizon}"
+    );
+    let specular = |r: &Vec<&str>| r[4].parse::<f64>().unwrap();
+    for table in rows.chunks(4) {
+        assert!(specular(&table[0]) > 2.0 * specular(&table[3]), "{horizon}");
+    }
 }
 
 #[test]
@@ -236,7 +252,7 @@ fn two_default_studies_at_once_get_two_directories() {
         image::open(dir.join("study.png")).unwrap();
         assert_eq!(
             std::fs::read_dir(&dir).unwrap().count(),
-            2,
+            3,
             "{d}: extra files"
         );
     }
