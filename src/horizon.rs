@@ -6,7 +6,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::brdf::{brdf_cos, view_from_theta};
+use crate::brdf::{Lobes, brdf_cos, view_from_theta};
 use crate::ltc::lut::{Lut, THETA_MAX};
 use crate::ltc::{Clipping, Normalization};
 use crate::scene::SplitMix64;
@@ -47,6 +47,27 @@ pub struct BandError {
 /// uniformly from `THETA_O_DEG` and `ALPHA`, and a light direction uniform in solid angle
 /// within the band, at any azimuth.
 pub fn band_errors(lut: &Lut, clip: Clipping, cases: usize, seed: u64) -> Vec<BandError> {
+    errors_by_band(lut, clip, cases, seed, None)
+}
+
+/// The same at one view and roughness (θo in degrees, α): the lights alone are drawn.
+pub fn band_errors_at(
+    lut: &Lut,
+    clip: Clipping,
+    (theta_o_deg, alpha): (f64, f64),
+    cases: usize,
+    seed: u64,
+) -> Vec<BandError> {
+    errors_by_band(lut, clip, cases, seed, Some((theta_o_deg, alpha)))
+}
+
+fn errors_by_band(
+    lut: &Lut,
+    clip: Clipping,
+    cases: usize,
+    seed: u64,
+    at: Option<(f64, f64)>,
+) -> Vec<BandError> {
     BANDS
         .par_iter()
         .enumerate()
@@ -54,22 +75,10 @@ pub fn band_errors(lut: &Lut, clip: Clipping, cases: usize, seed: u64) -> Vec<Ba
             let mut rng = SplitMix64(seed.wrapping_add(k as u64));
             let mut sums = [0.0f64; 5];
             for _ in 0..cases {
-                let (theta_o, alpha, l) = draw(&mut rng, band);
-                let v = view_from_theta(theta_o.to_radians().min(THETA_MAX));
-                let exact = brdf_cos(v, l.to_array(), alpha, F0);
-                let ltc = lut.ltc_pair(alpha, DVec3::from(v)).ltc_lobes(
-                    l,
-                    F0,
-                    clip,
-                    Normalization::Corrected,
-                );
-                for (sum, x) in sums.iter_mut().zip([
-                    (ltc.specular - exact.specular).abs(),
-                    exact.specular,
-                    ltc.specular,
-                    (ltc.diffuse - exact.diffuse).abs(),
-                    exact.diffuse,
-                ]) {
+                let (drawn_theta, drawn_alpha, l) = draw(&mut rng, band);
+                let (theta_o, alpha) = at.unwrap_or((drawn_theta, drawn_alpha));
+                let pair = one_light(lut, clip, (theta_o, alpha), l);
+                for (sum, x) in sums.iter_mut().zip(pair) {
                     *sum += x;
                 }
             }
@@ -83,6 +92,34 @@ pub fn band_errors(lut: &Lut, clip: Clipping, cases: usize, seed: u64) -> Vec<Ba
             }
         })
         .collect()
+}
+
+/// One light toward `l` at (θo in degrees, α): |LTC − BRDF| and BRDF of the specular lobe,
+/// the LTC's specular, and |LTC − BRDF| and BRDF of the diffuse lobe.
+fn one_light(lut: &Lut, clip: Clipping, (theta_o, alpha): (f64, f64), l: DVec3) -> [f64; 5] {
+    let (exact, ltc) = lobes(lut, clip, (theta_o, alpha), l);
+    [
+        (ltc.specular - exact.specular).abs(),
+        exact.specular,
+        ltc.specular,
+        (ltc.diffuse - exact.diffuse).abs(),
+        exact.diffuse,
+    ]
+}
+
+/// Both lobes of one light toward `l` at (θo in degrees, α), exact and through `lut`, F0 0.04.
+pub fn lobes(
+    lut: &Lut,
+    clip: Clipping,
+    (theta_o, alpha): (f64, f64),
+    l: DVec3,
+) -> (Lobes<f64>, Lobes<f64>) {
+    let v = view_from_theta(theta_o.to_radians().min(THETA_MAX));
+    let exact = brdf_cos(v, l.to_array(), alpha, F0);
+    let ltc = lut
+        .ltc_pair(alpha, DVec3::from(v))
+        .ltc_lobes(l, F0, clip, Normalization::Corrected);
+    (exact, ltc)
 }
 
 /// A case of `band`: θo (degrees), α, and the unit light direction in the shading frame.

@@ -1540,3 +1540,44 @@ fn a_render_in_flight_is_previewed_at_full_scale_and_says_so() {
     settle(&mut h);
     assert!(h.query_by_label_contains("preview").is_none());
 }
+
+/// Issue 22: the clipping panel shows one light's error by elevation band at the lab's
+/// (θo, α), with the lab's rules and the panel's table, as the library measures it; a change
+/// of α measures again.
+#[test]
+fn the_clipping_panel_gives_the_error_by_elevation_at_the_labs_view() {
+    use ltc_lab::horizon::band_errors_at;
+    use ltc_lab::ltc::Clipping;
+    let Some(mut h) = lab((1200.0, 1100.0), maximised(PanelId::Clipping)) else {
+        return;
+    };
+    let said = |h: &Harness<'static, LabApp>, alpha: f64| {
+        let app = h.state();
+        let at = (app.lab.shared().theta_o_deg, alpha);
+        let lut = &app.lab.tables().a.lut;
+        let b = band_errors_at(
+            lut,
+            Clipping::BOTH,
+            at,
+            ltc_lab::app::elevation::CASES,
+            ltc_lab::horizon::SEED,
+        )[0];
+        let text = format!(
+            "0–5°: {:.0}% (energy ×{:.2})",
+            100.0 * b.specular,
+            b.specular_energy
+        );
+        h.query_by_label(&text).is_some()
+    };
+    let alpha = h.state().lab.shared().alpha();
+    assert!(said(&h, alpha), "the 0–5° band's error is not shown");
+    h.state_mut()
+        .lab
+        .edit(Aspect::Scene, |s| s.scene.material.alpha = 0.6);
+    settle(&mut h);
+    assert!(said(&h, 0.6), "not measured again at the new α");
+    assert!(
+        h.query_by_label_contains("at θo = 45.0°, α = 0.6000")
+            .is_some()
+    );
+}

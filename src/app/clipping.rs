@@ -11,6 +11,7 @@ use egui::{Color32, Pos2, Vec2};
 use crate::app::axes::symlog_y;
 use crate::app::clip_rows::{CLASS_COLOURS, CaseRow, PICTURE, ROWS, RowsInput, RowsWorker, sample};
 use crate::app::clip_setup::{ClipScene, ClipSetup, ClippingState};
+use crate::app::elevation::ElevationView;
 use crate::app::lab::{Aspect, Lab, Panel, Stamp};
 use crate::colormap::{round_sig, short_number};
 use crate::cpu::ClipCounts;
@@ -25,6 +26,8 @@ pub struct ClippingPanel {
     /// What the rows (made or being made) were started for: the lab's stamp and the setup.
     made_for: Option<(Stamp, ClipSetup)>,
     worker: RowsWorker,
+    /// One light over its elevation at the lab's (θo, α).
+    elevation: ElevationView,
     /// The user's profile line (picture coordinates, 0–1), while one is drawn.
     pub line: Option<[Pos2; 2]>,
     drag_from: Option<Pos2>,
@@ -44,6 +47,15 @@ impl Panel for ClippingPanel {
                 }
                 self.legend(ui);
                 self.profile(ui);
+                ui.separator();
+                let table_b = self.state.setup.table_b;
+                let tables = lab.tables();
+                let lut = if table_b {
+                    &tables.b.lut
+                } else {
+                    &tables.a.lut
+                };
+                self.elevation.show(ui, lab, (lut, table_b));
             });
     }
 }
@@ -255,6 +267,8 @@ impl ClippingPanel {
             .x_grid_spacer(egui_plot::uniform_grid_spacer(|_| [10.0, 50.0, 100.0]))
             .y_axis_label("luminance (symlog)")
             .min_size(Vec2::new(80.0, 140.0))
+            // Half of what is left: the elevation plot below shares the panel's height.
+            .height((ui.available_height() * 0.5).max(140.0))
             .allow_scroll(false);
         symlog_y(plot, c).show(ui, |p| {
             for (k, (points, (name, colour))) in curves.into_iter().zip(names).enumerate() {

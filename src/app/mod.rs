@@ -10,6 +10,7 @@ pub mod clipping;
 pub mod completion;
 pub mod controls;
 pub mod display;
+pub mod elevation;
 pub mod lab;
 pub mod lobe;
 pub mod lobe_sphere;
