@@ -128,3 +128,21 @@ pub fn exr_pixels(path: &Path) -> Vec<[f32; 3]> {
     .unwrap();
     image.layer_data.channel_data.pixels.1
 }
+
+/// The rows of a `horizon.csv` in `dir` (header dropped), each as its fields, with the index
+/// of its `specular` column.
+pub fn horizon_rows(dir: &Path) -> (Vec<Vec<String>>, usize) {
+    let text = std::fs::read_to_string(dir.join("horizon.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let specular = header.iter().position(|&c| c == "specular").unwrap();
+    let rows = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    (rows, specular)
+}
+
+/// The `specular` error of a `horizon.csv` row.
+pub fn specular(row: &[String], column: usize) -> f64 {
+    row[column].parse().unwrap()
+}
