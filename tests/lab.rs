@@ -23,21 +23,26 @@ use ltc_lab::render::{Frame, View};
 /// its render finished; or `None` (loudly) without an adapter.
 fn lab(size: (f32, f32), state: LabState) -> Option<Harness<'static, LabApp>> {
     gpu_common::gpu()?;
+    let mut harness = unsettled(size, state);
+    settle(&mut harness);
+    Some(harness)
+}
+
+/// The same, its first frames run and its work not waited for (the caller has checked that
+/// there is an adapter).
+fn unsettled(size: (f32, f32), mut state: LabState) -> Harness<'static, LabApp> {
     let render_state = egui_kittest::wgpu::create_render_state(
         ltc_lab::app::shading::wgpu_setup(),
         egui_wgpu::RendererOptions::PREDICTABLE,
     );
     // The live GPU times change run to run: off, as a user would for a slide.
-    let mut state = state;
     state.plane.show_gpu_times = false;
     let app = LabApp::new(state, Some(&render_state));
     assert!(app.lab.gpu.is_some(), "{}", app.lab.describe_device());
-    let mut harness = Harness::builder()
+    Harness::builder()
         .with_size(egui::vec2(size.0, size.1))
         .renderer(WgpuTestRenderer::from_render_state(render_state))
-        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
-    settle(&mut harness);
-    Some(harness)
+        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app)
 }
 
 /// Runs frames until nothing is in flight (the plane summed, a refit or measurement done).
@@ -975,16 +980,8 @@ fn more_lights_than_the_adapter_shades_are_cut_and_said() {
     }
     let mut state = maximised(PanelId::Chart);
     state.lab.set_light_count(max + 1);
-    let render_state = egui_kittest::wgpu::create_render_state(
-        ltc_lab::app::shading::wgpu_setup(),
-        egui_wgpu::RendererOptions::PREDICTABLE,
-    );
-    let app = LabApp::new(state, Some(&render_state));
-    assert_eq!(app.lab.shared().scene.lights.len(), max);
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(800.0, 500.0))
-        .renderer(WgpuTestRenderer::from_render_state(render_state))
-        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
+    let mut h = unsettled((800.0, 500.0), state);
+    assert_eq!(h.state().lab.shared().scene.lights.len(), max);
     h.run_steps(2);
     assert!(
         h.query_by_label_contains(&format!("the first {max} are kept"))
@@ -1179,17 +1176,7 @@ fn the_layout_scales_with_the_window() {
     assert_eq!(hd.ctx.zoom_factor(), 1.0);
     // A 3840×2160 window, as eframe shows it: once zoomed, its size in points halves
     // (kittest keeps a harness's size in points, so the test does what the window does).
-    let render_state = egui_kittest::wgpu::create_render_state(
-        ltc_lab::app::shading::wgpu_setup(),
-        egui_wgpu::RendererOptions::PREDICTABLE,
-    );
-    let mut state = LabState::default();
-    state.plane.show_gpu_times = false;
-    let app = LabApp::new(state, Some(&render_state));
-    let mut uhd = Harness::builder()
-        .with_size(egui::vec2(1920.0, 1080.0))
-        .renderer(WgpuTestRenderer::from_render_state(render_state))
-        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
+    let mut uhd = unsettled((1920.0, 1080.0), LabState::default());
     // The window resized to 3840×2160: one frame at that size fits the zoom; from then on
     // the window is that many pixels, i.e. half as many points.
     uhd.set_size(egui::vec2(3840.0, 2160.0));

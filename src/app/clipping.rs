@@ -308,7 +308,7 @@ impl ClippingPanel {
     /// changed; takes them in once made.
     fn ensure(&mut self, ctx: &egui::Context, lab: &Lab) {
         let setup = &self.state.setup;
-        let made_for = (lab.stamp(&[Aspect::Shading, Aspect::Tables]), setup.clone());
+        let made_for = (lab.stamp(&[Aspect::Rules, Aspect::Tables]), setup.clone());
         if self.made_for.as_ref() != Some(&made_for) {
             let tables = lab.tables();
             let lut = if setup.table_b { &tables.b } else { &tables.a };

@@ -224,7 +224,7 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
             ),
         ],
     );
-    lab.edit(Aspect::Shading, |s| {
+    lab.edit(Aspect::Rules, |s| {
         let mut paper = s.normalization == Normalization::PaperLiteral;
         let r = ui.checkbox(&mut paper, "paper-literal normalization")
             .on_hover_text("The paper's eq. 25 as printed: no 1/π in D and no magnitudes n_s, f_s, n_d (docs/design.md §1 corrects both)");
@@ -240,11 +240,11 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
 /// Eq. 30's two rules as checkboxes, each with its label and tooltip (the side panel and the
 /// clipping panel word them for their place).
 pub fn clipping_rules(ui: &mut egui::Ui, lab: &mut Lab, [case1, case2]: [(&str, &str); 2]) {
-    lab.edit(Aspect::Shading, |s| {
+    lab.edit(Aspect::Rules, |s| {
         ui.checkbox(&mut s.clipping.horizon, case1.0)
             .on_hover_text(case1.1)
     });
-    lab.edit(Aspect::Shading, |s| {
+    lab.edit(Aspect::Rules, |s| {
         ui.checkbox(&mut s.clipping.transformed, case2.0)
             .on_hover_text(case2.1)
     });

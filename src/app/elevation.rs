@@ -19,7 +19,7 @@ pub const CASES: usize = 20_000;
 const READS: [Aspect; 4] = [
     Aspect::Scene,
     Aspect::LobeView,
-    Aspect::Shading,
+    Aspect::Rules,
     Aspect::Tables,
 ];
 

@@ -40,9 +40,12 @@ pub enum Aspect {
     Scene,
     /// The scene's exposure: how the plane is shown, not what it sums.
     Exposure,
-    /// How lights are shaded: the methods, the clipping rules, the normalization, the global
-    /// intensity and range, culling, and what side B is.
+    /// How the plane shades its lights: the methods, the global intensity and range, culling,
+    /// and what side B is.
     Shading,
+    /// Eq. 30's clipping rules and the normalization: what the clipping panel and the
+    /// elevation view read too (the plane's intensity did not need to redraw them).
+    Rules,
     /// The lobe and matrix panels' view: θo and which lobe.
     LobeView,
     /// The selected light and the light shown on the lobe panel.
@@ -54,7 +57,7 @@ pub enum Aspect {
 }
 
 impl Aspect {
-    const COUNT: usize = 7;
+    const COUNT: usize = 8;
 }
 
 /// The sum of some aspects' edit counts: counts only grow, so any edit of one of them moves
@@ -360,11 +363,12 @@ impl Lab {
     }
 
     fn use_table_a(&mut self, a: NamedTable) {
-        let b = self.tables.b_chosen.then(|| (self.tables.b.clone(), true));
+        // A chosen table B stays; else it follows A to A's other.
+        let chosen = self.tables.b_chosen.then(|| self.tables.b.clone());
         self.tables = NamedTables::with_a(a, self.shared.table);
-        if let Some((b, chosen)) = b {
+        if let Some(b) = chosen {
             self.tables.b = b;
-            self.tables.b_chosen = chosen;
+            self.tables.b_chosen = true;
         }
         self.touch(Aspect::Tables);
     }

@@ -52,7 +52,12 @@ impl PinnedLights {
     /// pinned, or it is off the plane.
     pub fn update(&mut self, lab: &Lab, pinned: Option<[f64; 2]>, size: (usize, usize)) {
         let made_for = (
-            lab.stamp(&[Aspect::Scene, Aspect::Shading, Aspect::Tables]),
+            lab.stamp(&[
+                Aspect::Scene,
+                Aspect::Shading,
+                Aspect::Rules,
+                Aspect::Tables,
+            ]),
             pinned,
             size,
         );

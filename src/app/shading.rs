@@ -25,7 +25,12 @@ use crate::tables::NamedTables;
 pub const FRAME_BUDGET_MS: f64 = 8.0;
 
 /// What a render reads from the lab: a change of any of them restarts it.
-const RENDERED: [Aspect; 3] = [Aspect::Scene, Aspect::Shading, Aspect::Tables];
+const RENDERED: [Aspect; 4] = [
+    Aspect::Scene,
+    Aspect::Shading,
+    Aspect::Rules,
+    Aspect::Tables,
+];
 
 /// The largest side the CPU fallback renders: the f64 reference shades ~1e8 light-pixels/s
 /// on two cores, so 320 px keeps 100 lights interactive.
