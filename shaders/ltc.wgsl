@@ -1,5 +1,6 @@
-// LTC evaluation and the LUT sampler, mirroring src/ltc/mod.rs and src/ltc/lut.rs (same
-// names). Composed after brdf.wgsl (uses PI).
+// LTC evaluation, the LUT sampler and the horizon rules, mirroring src/ltc/mod.rs,
+// src/ltc/lut.rs, src/ltc/nl_fit.rs and src/ltc/remedy.rs (same names). Composed after
+// brdf.wgsl (uses PI).
 
 // Clipping rule bits (src/ltc/mod.rs Clipping).
 const CLIP_HORIZON: u32 = 1u;
@@ -8,13 +9,22 @@ const CLIP_TRANSFORMED: u32 = 2u;
 const NORMALIZATION_CORRECTED: u32 = 0u;
 const NORMALIZATION_PAPER_LITERAL: u32 = 1u;
 
-// The LUT as pack_lut packs it (src/gpu/ltc.rs): per cell three vec4s —
+// The LUT as pack_lut packs it (src/gpu/ltc.rs): per cell four vec4s —
 // [spec m00 m02 m20 m22], [diff m00 m02 m20 m22],
 // [scale·spec.norm scale·spec.fresnel diff.norm spec.scale] (the products filtered, as an
-// exported table stores them).
+// exported table stores them), and the nl-fit correction [spec c0 c1, diff c0 c1].
 @group(0) @binding(2) var<storage, read> lut: array<vec4<f32>>;
 
-const LUT_VEC4S_PER_CELL: u32 = 3u;
+const LUT_VEC4S_PER_CELL: u32 = 4u;
+
+// src/ltc/remedy.rs HorizonRule.
+const HORIZON_EQ30: u32 = 0u;
+const HORIZON_NL_FIT: u32 = 1u;
+const HORIZON_EXACT_BAND: u32 = 2u;
+// EXACT_BAND_Z: sin 15°.
+const EXACT_BAND_Z: f32 = 0.25881904;
+// NL_BAND_Z: sin 30°.
+const NL_BAND_Z: f32 = 0.5;
 
 // Read the nearest cell instead of filtering (the `ltc-nearest` variant; src/render.rs LutFilter).
 override LUT_NEAREST: bool = false;
@@ -64,7 +74,7 @@ fn cos_from_brdf_from_entries(m: vec4<f32>) -> mat3x3<f32> {
     );
 }
 
-// One texel of the table: its three vec4s.
+// One texel of the table: its first three vec4s (the fourth is read by nl_sample_*).
 struct LutTexel {
     spec_m: vec4<f32>,
     diff_m: vec4<f32>,
@@ -98,6 +108,50 @@ fn lut_sample_uv(uv: vec2<f32>, size: u32, base: u32) -> LutTexel {
         mix(mix(a.diff_m, b.diff_m, f.x), mix(c.diff_m, d.diff_m, f.x), f.y),
         mix(mix(a.norms, b.norms, f.x), mix(c.norms, d.norms, f.x), f.y),
     );
+}
+
+// nl_fit::nl_sample_uv: the nl-fit correction filtered as lut_sample_uv filters the cells.
+fn nl_sample_uv(uv: vec2<f32>, size: u32, base: u32) -> vec4<f32> {
+    let x = uv * f32(size) - 0.5;
+    let x0 = floor(x);
+    let f = x - x0;
+    let last = f32(size - 1u);
+    let i0 = u32(clamp(x0.x, 0.0, last));
+    let i1 = u32(clamp(x0.x + 1.0, 0.0, last));
+    let j0 = u32(clamp(x0.y, 0.0, last));
+    let j1 = u32(clamp(x0.y + 1.0, 0.0, last));
+    let at = base + 3u;
+    let a = lut[at + (j0 * size + i0) * LUT_VEC4S_PER_CELL];
+    let b = lut[at + (j0 * size + i1) * LUT_VEC4S_PER_CELL];
+    let c = lut[at + (j1 * size + i0) * LUT_VEC4S_PER_CELL];
+    let d = lut[at + (j1 * size + i1) * LUT_VEC4S_PER_CELL];
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+// nl_fit::nl_sample_nearest: the correction of the cell whose texel contains uv.
+fn nl_sample_nearest(uv: vec2<f32>, size: u32, base: u32) -> vec4<f32> {
+    let k = vec2<u32>(clamp(floor(uv * f32(size)), vec2<f32>(0.0), vec2<f32>(f32(size - 1u))));
+    return lut[base + (k.y * size + k.x) * LUT_VEC4S_PER_CELL + 3u];
+}
+
+// The nl-fit correction at (α, cos θo), read as the table is (nearest or bilinear).
+fn lut_nl_terms(alpha: f32, cos_theta_o: f32, size: u32, base: u32) -> vec4<f32> {
+    let uv = lut_uv(alpha, cos_theta_o, size);
+    if LUT_NEAREST {
+        return nl_sample_nearest(uv, size, base);
+    }
+    return nl_sample_uv(uv, size, base);
+}
+
+// nl_fit::nl_weight: w(z) = max(0, 1 + t (c0 + c1 t)), t = max(0, 1 − z / NL_BAND_Z).
+fn nl_weight(c: vec2<f32>, z: f32) -> f32 {
+    let t = max(1.0 - z / NL_BAND_Z, 0.0);
+    return max(1.0 + t * (c.x + c.y * t), 0.0);
+}
+
+// remedy::in_exact_band: 0 < n·l < EXACT_BAND_Z.
+fn in_exact_band(z: f32) -> bool {
+    return z > 0.0 && z < EXACT_BAND_Z;
 }
 
 // Lut::sample_nearest: the cell whose texel contains uv.

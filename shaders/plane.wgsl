@@ -25,6 +25,8 @@ override METHOD_B: u32 = METHOD_BRDF;
 override VIEW: u32 = VIEW_SINGLE;
 // B shades with table B (two tables compared) instead of table A.
 override TABLE_B: bool = false;
+// What the LTC methods do for lights near the horizon (HORIZON_* of ltc.wgsl).
+override HORIZON: u32 = HORIZON_EQ30;
 
 @group(0) @binding(3) var output: texture_storage_2d<rgba32float, write>;
 // Per pixel, the sums so far, kept between chunks: A's specular rgb and diffuse r; A's diffuse
@@ -54,6 +56,8 @@ struct LtcShading {
     diff_from_world: mat3x3<f32>,
     spec_factor: f32,
     diff_factor: f32,
+    // nl-fit's correction [spec c0 c1, diff c0 c1] (zero unless HORIZON is nl-fit).
+    nl: vec4<f32>,
 }
 
 // A visible point of the plane and everything per pixel that the methods need.
@@ -110,6 +114,10 @@ fn ltc_shading(p: Pixel, size: u32, base: u32) -> LtcShading {
     } else {
         s.spec_factor = s.pair.spec.det_cos_from_brdf / PI * spec_magnitude(s.pair, params.f0);
         s.diff_factor = s.pair.diff.det_cos_from_brdf / PI * magnitude(s.pair.diff);
+    }
+    s.nl = vec4<f32>(0.0);
+    if HORIZON == HORIZON_NL_FIT {
+        s.nl = lut_nl_terms(params.alpha, p.v.z, size, base);
     }
     return s;
 }
@@ -181,8 +189,16 @@ fn add_ltc(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {
         spec_weight = 1.0;
         diff_weight = 1.0;
     }
-    let ds = ltc_eval(ltc.pair.spec, l, params.clip, params.normalization);
-    let dd = ltc_eval(ltc.pair.diff, l, params.clip, params.normalization);
+    if HORIZON == HORIZON_EXACT_BAND && in_exact_band(l.z) {
+        add_brdf(s, p, light);
+        return;
+    }
+    var ds = ltc_eval(ltc.pair.spec, l, params.clip, params.normalization);
+    var dd = ltc_eval(ltc.pair.diff, l, params.clip, params.normalization);
+    if HORIZON == HORIZON_NL_FIT {
+        ds *= nl_weight(ltc.nl.xy, l.z);
+        dd *= nl_weight(ltc.nl.zw, l.z);
+    }
     (*s).spec += light.intensity.rgb * (e * spec_weight * ds);
     (*s).diff += light.intensity.rgb * (e * diff_weight * dd);
 }
@@ -195,16 +211,36 @@ fn add_ltc_fast(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLig
     if d2 < MIN_LIGHT_DISTANCE * MIN_LIGHT_DISTANCE || ((params.clip & CLIP_HORIZON) != 0u && u.z <= 0.0) {
         return;
     }
-    let scale = window_falloff_d2(d2, light.position_range.w) * sqrt(d2);
+    let d = sqrt(d2);
+    if HORIZON == HORIZON_EXACT_BAND && in_exact_band(u.z / d) {
+        add_brdf_factored(s, p, ltc, light);
+        return;
+    }
+    let scale = window_falloff_d2(d2, light.position_range.w) * d;
     let ws = ltc.spec_from_world * u;
     let wd = ltc.diff_from_world * u;
     let transformed = (params.clip & CLIP_TRANSFORMED) != 0u;
     let qs = dot(ws, ws);
     let qd = dot(wd, wd);
-    let zs = select(ws.z, max(ws.z, 0.0), transformed);
-    let zd = select(wd.z, max(wd.z, 0.0), transformed);
+    var zs = select(ws.z, max(ws.z, 0.0), transformed);
+    var zd = select(wd.z, max(wd.z, 0.0), transformed);
+    if HORIZON == HORIZON_NL_FIT {
+        let z = u.z / d;
+        zs *= nl_weight(ltc.nl.xy, z);
+        zd *= nl_weight(ltc.nl.zw, z);
+    }
     (*s).spec += light.intensity.rgb * (scale * zs / (qs * qs));
     (*s).diff += light.intensity.rgb * (scale * zd / (qd * qd));
+}
+
+// The exact BRDF into ltc-fast's sums, which `finish` multiplies by the pixel's factors: divided
+// by them here (they are positive for every table a fit makes: |det M⁻¹| and the magnitudes).
+// brdf-fast's form: the same math as add_brdf, with fewer operations.
+fn add_brdf_factored(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {
+    var exact = Sums(vec3<f32>(0.0), vec3<f32>(0.0));
+    add_brdf_fast(&exact, p, light);
+    (*s).spec += exact.spec / ltc.spec_factor;
+    (*s).diff += exact.diff / ltc.diff_factor;
 }
 
 fn add_light(method: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {

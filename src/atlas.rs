@@ -11,6 +11,7 @@ use crate::error::Result;
 use crate::files::Outputs;
 use crate::horizon;
 use crate::ltc::lut::{Channel, Lut};
+use crate::ltc::remedy::Horizon;
 use crate::ltc::{Clipping, Normalization};
 
 /// The (θo in degrees, α) pairs whose orbit maps the atlas draws: a smooth surface seen from
@@ -69,19 +70,25 @@ pub fn orbit(lut: &Lut, theta_o_deg: f64, alpha: f64) -> Vec<OrbitSample> {
 }
 
 /// The summary's lines for the error by light elevation.
-fn horizon_lines(bands: &[horizon::BandError]) -> Vec<String> {
-    bands
-        .iter()
-        .map(|b| {
-            let band = format!("{:.0}–{:.0}°", b.band[0], b.band[1]);
-            format!(
-                " light {band:>6} above the surface: specular {:5.1}%, diffuse {:5.1}%, LTC/BRDF specular energy {:.2}",
-                100.0 * b.specular,
-                100.0 * b.diffuse,
-                b.specular_energy
-            )
-        })
-        .collect()
+fn horizon_lines(remedy: Horizon, bands: &[horizon::BandError]) -> Vec<String> {
+    let each = |f: &dyn Fn(&horizon::BandError) -> String| {
+        bands.iter().map(f).collect::<Vec<_>>().join(" ")
+    };
+    let mut lines = Vec::new();
+    if remedy == Horizon::Eq30 {
+        let names = each(&|b| format!("{:.0}–{:.0}°", b.band[0], b.band[1]));
+        lines.push(format!(
+            " a light by its elevation above the surface ({names}), per horizon remedy:"
+        ));
+    }
+    lines.push(format!(
+        "   {:<15} specular {}  diffuse {}  LTC/BRDF specular energy {}",
+        remedy.name(),
+        each(&|b| format!("{:5.1}%", 100.0 * b.specular)),
+        each(&|b| format!("{:4.1}%", 100.0 * b.diffuse)),
+        each(&|b| format!("{:.2}", b.specular_energy)),
+    ));
+    lines
 }
 
 /// What the atlas found, for the command line's summary.
@@ -217,12 +224,12 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
         }
     }
     out.stage("orbits.csv", orbits.as_bytes())?;
-    let bands = horizon::band_errors(lut, Clipping::BOTH, horizon::CASES, horizon::SEED);
-    lines.extend(horizon_lines(&bands));
-    let table = format!(
-        "rules,band,cases,specular,diffuse,specular_energy\n{}",
-        horizon::csv_rows("eq30,", &bands)
-    );
+    let mut table = String::from("rules,band,cases,specular,diffuse,specular_energy\n");
+    for remedy in Horizon::ALL {
+        let (_, bands) = horizon::remedy_errors(lut, remedy, horizon::CASES, horizon::SEED);
+        lines.extend(horizon_lines(remedy, &bands));
+        table.push_str(&horizon::csv_rows(&format!("{},", remedy.name()), &bands));
+    }
     out.stage("horizon.csv", table.as_bytes())?;
     out.commit()?;
     Ok(AtlasSummary { lines })

@@ -8,6 +8,7 @@ use crate::error::Result;
 use crate::gpu::GpuContext;
 use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
 use crate::ltc::lut::Lut;
+use crate::ltc::remedy::Horizon;
 use crate::render::{Method, RenderSettings};
 use crate::scene::{RandomLights, Scene, generate_lights, preset};
 
@@ -24,6 +25,8 @@ pub const DEFAULT_RANGE: f64 = 2.0;
 #[derive(Clone, Debug, PartialEq)]
 pub struct BenchRow {
     pub method: Method,
+    /// The horizon remedy the LTC methods shaded with (eq30 for the BRDF forms).
+    pub horizon: Horizon,
     pub lights: usize,
     pub width: usize,
     pub height: usize,
@@ -52,12 +55,13 @@ impl BenchRow {
         (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
     }
 
-    pub const CSV_HEADER: &'static str = "method,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s";
+    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s";
 
     pub fn csv(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3}",
+            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3}",
             self.method.name(),
+            self.horizon.name(),
             self.lights,
             self.width,
             self.height,
@@ -85,6 +89,14 @@ pub fn range_text(range: Option<f64>) -> String {
 /// above a plane large enough that every pixel shades it, so that light-pixels = lights ×
 /// width × height; every light of range `range`.
 pub fn bench_scene(lights: usize, range: Option<f64>) -> Scene {
+    bench_scene_at(lights, range, PAPER_HEIGHTS)
+}
+
+/// paper-100's light heights above the plane.
+pub const PAPER_HEIGHTS: [f64; 2] = [0.05, 0.6];
+
+/// `bench_scene` with the lights' heights drawn from `height` instead of paper-100's.
+pub fn bench_scene_at(lights: usize, range: Option<f64>, height: [f64; 2]) -> Scene {
     let mut scene = preset("paper-100");
     let spread = scene.plane.half_size;
     scene.plane.half_size = 1e3;
@@ -94,7 +106,7 @@ pub fn bench_scene(lights: usize, range: Option<f64>) -> Scene {
         &RandomLights {
             count: lights,
             seed: 27,
-            height: [0.05, 0.6],
+            height,
             intensity: [0.02, 0.08],
             range,
         },
@@ -171,6 +183,8 @@ pub struct BenchSettings {
     /// Culling off, on, or both.
     pub culls: Vec<bool>,
     pub range: Option<f64>,
+    /// The horizon remedies each LTC method is measured with (the f16 forms: eq30 only).
+    pub horizons: Vec<Horizon>,
 }
 
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
@@ -179,8 +193,26 @@ pub fn methods(ctx: &GpuContext) -> Vec<Method> {
     Method::F32.iter().chain(f16).copied().collect()
 }
 
-/// Measures every method at every light count and culling: `frames` timed frames after
-/// warm-up each.
+/// The methods and remedies of one light count and culling: each BRDF form once with eq30,
+/// each f32 LTC form with eq30 (the reference every remedy is divided by) and then each
+/// other remedy, the f16 forms with eq30 alone.
+pub fn runs(ctx: &GpuContext, horizons: &[Horizon]) -> Vec<(Method, Horizon)> {
+    let mut runs = Vec::new();
+    for m in methods(ctx) {
+        runs.push((m, Horizon::Eq30));
+        if m.is_ltc() && !m.needs_f16() {
+            for &h in horizons {
+                if !runs.contains(&(m, h)) {
+                    runs.push((m, h));
+                }
+            }
+        }
+    }
+    runs
+}
+
+/// Measures every method (and remedy) at every light count and culling: `frames` timed
+/// frames after warm-up each.
 pub fn run(
     ctx: &GpuContext,
     lut: &Lut,
@@ -195,9 +227,12 @@ pub fn run(
         let scene = bench_scene(lights, s.range);
         let fraction = in_range_fraction(&scene, width, height);
         for &cull in &s.culls {
-            for method in methods(ctx) {
+            for (method, horizon) in runs(ctx, &s.horizons) {
+                let table = horizon.table().map_or(lut, |t| Lut::shipped(t));
+                renderer.set_tables(ctx, table, None)?;
                 let settings = RenderSettings {
                     cull,
+                    horizon: horizon.rule(),
                     ..RenderSettings::single(width, height, method)
                 };
                 renderer.begin(ctx, &scene, &settings)?;
@@ -209,6 +244,7 @@ pub fn run(
                 let mut bins: Vec<f64> = times.iter().filter_map(|t| t.bin_ms).collect();
                 let row = BenchRow {
                     method,
+                    horizon,
                     lights,
                     width,
                     height,
@@ -236,9 +272,12 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
         "GPU: {device}\n\n| method | lights | size | cull | range | in range | ms (median) | ms (min–max) | bin ms | fps | G light-px/s |\n|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n"
     );
     for r in rows {
+        let method = match r.horizon {
+            Horizon::Eq30 => r.method.name().to_string(),
+            h => format!("{} ({})", r.method.name(), h.name()),
+        };
         out.push_str(&format!(
-            "| {} | {} | {}×{} | {} | {} | {:.1}% | {:.3} | {:.3}–{:.3} | {} | {:.1} | {:.2} |\n",
-            r.method.name(),
+            "| {method} | {} | {}×{} | {} | {} | {:.1}% | {:.3} | {:.3}–{:.3} | {} | {:.1} | {:.2} |\n",
             r.lights,
             r.width,
             r.height,
@@ -253,11 +292,12 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
             r.glightpx_per_s()
         ));
     }
-    let ms = |n: usize, cull: bool, m: Method| {
+    let ms_with = |n: usize, cull: bool, m: Method, h: Horizon| {
         rows.iter()
-            .find(|r| r.lights == n && r.cull == cull && r.method == m)
+            .find(|r| r.lights == n && r.cull == cull && r.method == m && r.horizon == h)
             .map(|r| r.ms_median)
     };
+    let ms = |n: usize, cull: bool, m: Method| ms_with(n, cull, m, Horizon::Eq30);
     let ratio = |slow: Option<f64>, fast: Option<f64>| match (slow, fast) {
         (Some(s), Some(f)) => format!("{:.2}×", s / f),
         _ => "–".into(),
@@ -290,6 +330,34 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
                 r(Method::LtcFast),
                 r(Method::LtcF16Pairs)
             ));
+        }
+    }
+    let mut remedies: Vec<Horizon> = Vec::new();
+    for r in rows.iter().filter(|r| r.horizon != Horizon::Eq30) {
+        if !remedies.contains(&r.horizon) {
+            remedies.push(r.horizon);
+        }
+    }
+    if !remedies.is_empty() {
+        let names: Vec<&str> = remedies.iter().map(|h| h.name()).collect();
+        out.push_str(&format!(
+            "\nHorizon remedies (ms with the remedy / ms with eq30, same run):\n\n| lights | cull | method | {} |\n|---:|---|---|{}\n",
+            names.join(" | "),
+            "---:|".repeat(names.len())
+        ));
+        for &(n, cull) in &keys {
+            for m in [Method::Ltc, Method::LtcFast] {
+                let cells: Vec<String> = remedies
+                    .iter()
+                    .map(|&h| ratio(ms_with(n, cull, m, h), ms(n, cull, m)))
+                    .collect();
+                out.push_str(&format!(
+                    "| {n} | {} | {} | {} |\n",
+                    if cull { "on" } else { "off" },
+                    m.name(),
+                    cells.join(" | ")
+                ));
+            }
         }
     }
     out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");

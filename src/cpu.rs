@@ -5,33 +5,53 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::brdf::{Lobes, irradiance_scale, point_light_exact};
+use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact};
 use crate::ltc::lut::Lut;
-use crate::ltc::{ClipCase, Clipping, LtcPair, Normalization};
+use crate::ltc::nl_fit::{self, NlTerms};
+use crate::ltc::remedy::HorizonRule;
+use crate::ltc::{ClipCase, LtcPair};
 use crate::metrics::relative_difference;
 use crate::render::{
-    Frame, FrameKind, LutFilter, Method, RenderSettings, ShadingFrame, SurfacePoint, Tables, View,
+    Frame, FrameKind, LtcRules, LutFilter, Method, RenderSettings, ShadingFrame, SurfacePoint,
+    Tables, View,
 };
 use crate::scene::{Light, Scene};
 
-/// The per-pixel state of LTC shading: the frame and the two looked-up lobes.
+/// The per-pixel state of LTC shading: the frame, the two looked-up lobes and the horizon
+/// rule with its correction read at the same place of the table.
 #[derive(Clone, Copy, Debug)]
 pub struct LtcPixel {
     pub frame: ShadingFrame,
     pub pair: LtcPair,
+    pub horizon: HorizonRule,
+    /// `nl-fit`'s coefficients (zero under the other rules).
+    pub nl: NlTerms,
 }
 
 impl LtcPixel {
-    pub fn new(lut: &Lut, alpha: f64, view: DVec3, filter: LutFilter) -> Self {
+    pub fn new(lut: &Lut, alpha: f64, view: DVec3, rules: &LtcRules) -> Self {
         let frame = ShadingFrame::new(view);
         let cos_theta_o = frame.tangent_from_world(view).z;
-        let sample = match filter {
-            LutFilter::Bilinear => lut.sample(alpha, cos_theta_o),
-            LutFilter::Nearest => lut.sample_nearest(alpha, cos_theta_o),
+        type NlSampler = fn(&Lut, f64, f64) -> NlTerms;
+        let (sample, nl): (_, NlSampler) = match rules.filter {
+            LutFilter::Bilinear => (lut.sample(alpha, cos_theta_o), nl_fit::nl_sample_uv),
+            LutFilter::Nearest => (
+                lut.sample_nearest(alpha, cos_theta_o),
+                nl_fit::nl_sample_nearest,
+            ),
+        };
+        let nl = match rules.horizon {
+            HorizonRule::NlFit => {
+                let (u, v) = lut.uv(alpha, cos_theta_o);
+                nl(lut, u, v)
+            }
+            _ => [0.0; 4],
         };
         Self {
             frame,
             pair: sample.ltc_pair(),
+            horizon: rules.horizon,
+            nl,
         }
     }
 }
@@ -68,27 +88,25 @@ pub fn shade_ltc(
     lut: &Lut,
     p: &SurfacePoint,
     lights: &[Light],
-    clipping: Clipping,
-    normalization: Normalization,
-    filter: LutFilter,
+    rules: &LtcRules,
 ) -> DVec3 {
     if p.view.z <= 0.0 {
         return DVec3::ZERO;
     }
-    let px = LtcPixel::new(lut, scene.material.alpha, p.view, filter);
+    let px = LtcPixel::new(lut, scene.material.alpha, p.view, rules);
     lights.iter().fold(DVec3::ZERO, |sum, light| {
-        sum + ltc_term(scene, &px, p, light, clipping, normalization)
+        sum + ltc_term(scene, &px, p, light, rules)
     })
 }
 
-/// One light's LTC radiance toward the camera (eq. 30's summand).
+/// One light's LTC radiance toward the camera (eq. 30's summand), under the pixel's horizon
+/// rule.
 pub fn ltc_term(
     scene: &Scene,
     px: &LtcPixel,
     p: &SurfacePoint,
     light: &Light,
-    clipping: Clipping,
-    normalization: Normalization,
+    rules: &LtcRules,
 ) -> DVec3 {
     let m = &scene.material;
     let u = px
@@ -99,7 +117,15 @@ pub fn ltc_term(
     if e <= 0.0 {
         return DVec3::ZERO;
     }
-    let lobes = px.pair.ltc_lobes(u / d, m.f0, clipping, normalization);
+    let l = u / d;
+    let ltc = px
+        .pair
+        .ltc_lobes(l, m.f0, rules.clipping, rules.normalization);
+    let exact = || {
+        let v = px.frame.tangent_from_world(p.view);
+        brdf_cos(v.to_array(), l.to_array(), m.alpha, m.f0)
+    };
+    let lobes = px.horizon.apply(l.z, ltc, &px.nl, exact);
     light.radiant_intensity() * (e * combine(lobes, m.base_color))
 }
 
@@ -139,15 +165,7 @@ pub fn shade(
     method: Method,
 ) -> DVec3 {
     if method.is_ltc() {
-        shade_ltc(
-            scene,
-            lut,
-            p,
-            &scene.lights,
-            s.clipping,
-            s.normalization,
-            s.lut_filter,
-        )
+        shade_ltc(scene, lut, p, &scene.lights, &s.ltc_rules())
     } else {
         shade_exact(scene, p, &scene.lights)
     }
@@ -246,7 +264,7 @@ impl std::ops::Add for ClipCounts {
 
 /// Counts the lights that reach `p` (non-zero irradiance) in each clipping case.
 pub fn clip_counts(scene: &Scene, lut: &Lut, p: &SurfacePoint, lights: &[Light]) -> ClipCounts {
-    let px = LtcPixel::new(lut, scene.material.alpha, p.view, LutFilter::Bilinear);
+    let px = LtcPixel::new(lut, scene.material.alpha, p.view, &LtcRules::default());
     let mut counts = ClipCounts::default();
     for light in lights {
         let u = px

@@ -4,9 +4,11 @@
 use glam::DVec3;
 
 use crate::brdf::{brdf_cos, view_from_theta};
+use crate::cpu::LtcPixel;
 use crate::error::{Error, Result, number};
 use crate::ltc::lut::{ALPHA_MIN, Lut, THETA_MAX};
-use crate::ltc::{Clipping, Normalization};
+use crate::ltc::remedy::HorizonRule;
+use crate::render::LtcRules;
 
 /// The input's header: θo in degrees, α, the unit light direction in the shading frame, F0.
 pub const HEADER: &str = "theta_o,alpha,lx,ly,lz,f0";
@@ -117,14 +119,20 @@ fn parse_case(line: &str, at: &str) -> Result<Case> {
 
 /// The case's row of output: its columns as read, then `f·cos` of both lobes for a unit-irradiance
 /// light and base colour 1, exact and through the LUT's bilinear sampler with both clipping
-/// rules (eq. 30). The grazing row is ltc_code's `THETA_MAX`.
-pub fn evaluate(c: &Case, lut: &Lut) -> String {
+/// rules (eq. 30) and the horizon rule `horizon`. The grazing row is ltc_code's `THETA_MAX`.
+pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
     let theta = c.theta_o_degrees.to_radians().min(THETA_MAX);
     let v = DVec3::from(view_from_theta(theta));
     let exact = brdf_cos(v.to_array(), c.l.to_array(), c.alpha, c.f0);
-    let approx =
-        lut.ltc_pair(c.alpha, v)
-            .ltc_lobes(c.l, c.f0, Clipping::BOTH, Normalization::Corrected);
+    let rules = LtcRules {
+        horizon,
+        ..LtcRules::default()
+    };
+    let px = LtcPixel::new(lut, c.alpha, v, &rules);
+    let approx = px
+        .pair
+        .ltc_lobes(c.l, c.f0, rules.clipping, rules.normalization);
+    let approx = px.horizon.apply(c.l.z, approx, &px.nl, || exact);
     format!(
         "{},{:e},{:e},{:e},{:e}",
         c.text, exact.specular, exact.diffuse, approx.specular, approx.diffuse

@@ -7,8 +7,10 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{Lobes, brdf_cos, view_from_theta};
+use crate::cpu::LtcPixel;
 use crate::ltc::lut::{Lut, THETA_MAX};
-use crate::ltc::{Clipping, Normalization};
+use crate::ltc::remedy::Horizon;
+use crate::render::LtcRules;
 use crate::scene::SplitMix64;
 
 /// The elevation bands, degrees above the surface: the two where the LTC is wrong by half
@@ -40,30 +42,64 @@ pub struct BandError {
     pub diffuse: f64,
     /// Σ LTC / Σ BRDF of the specular lobe: below 1, the LTC loses energy.
     pub specular_energy: f64,
+    /// Σ BRDF / cases of the specular lobe: what weighs the band in `aggregate_specular`.
+    pub specular_mean: f64,
 }
 
-/// Each band's error of `lut` with the clipping rules `clip`, over `cases` random cases per
+/// The specular error Σ|LTC − BRDF| / Σ BRDF over lights uniform in solid angle across the
+/// consecutive `bands` (0–5° and 5–15° give the 0–15° target): each band's sums
+/// weighted by its solid angle, `sin hi − sin lo`.
+pub fn aggregate_specular(bands: &[BandError]) -> f64 {
+    let weight = |b: &BandError| b.band[1].to_radians().sin() - b.band[0].to_radians().sin();
+    let error: f64 = bands
+        .iter()
+        .map(|b| weight(b) * b.specular * b.specular_mean)
+        .sum();
+    let exact: f64 = bands.iter().map(|b| weight(b) * b.specular_mean).sum();
+    error / exact.max(1e-300)
+}
+
+/// Each band's error of `lut` shaded by `rules`, over `cases` random cases per
 /// band (seeded: the same figures on every machine). A case is a view and a roughness drawn
 /// uniformly from `THETA_O_DEG` and `ALPHA`, and a light direction uniform in solid angle
 /// within the band, at any azimuth.
-pub fn band_errors(lut: &Lut, clip: Clipping, cases: usize, seed: u64) -> Vec<BandError> {
-    errors_by_band(lut, clip, cases, seed, None)
+pub fn band_errors(lut: &Lut, rules: &LtcRules, cases: usize, seed: u64) -> Vec<BandError> {
+    errors_by_band(lut, rules, cases, seed, None)
+}
+
+/// Each band's error of a horizon remedy: its own table where it is one (`Horizon::table`),
+/// else `lut` shaded by its rule, with eq. 30's clipping. The table it used comes back too.
+pub fn remedy_errors<'a>(
+    lut: &'a Lut,
+    remedy: Horizon,
+    cases: usize,
+    seed: u64,
+) -> (&'a Lut, Vec<BandError>) {
+    let lut: &'a Lut = match remedy.table() {
+        Some(t) => Lut::shipped(t),
+        None => lut,
+    };
+    let rules = LtcRules {
+        horizon: remedy.rule(),
+        ..LtcRules::default()
+    };
+    (lut, band_errors(lut, &rules, cases, seed))
 }
 
 /// The same at one view and roughness (θo in degrees, α): the lights alone are drawn.
 pub fn band_errors_at(
     lut: &Lut,
-    clip: Clipping,
+    rules: &LtcRules,
     (theta_o_deg, alpha): (f64, f64),
     cases: usize,
     seed: u64,
 ) -> Vec<BandError> {
-    errors_by_band(lut, clip, cases, seed, Some((theta_o_deg, alpha)))
+    errors_by_band(lut, rules, cases, seed, Some((theta_o_deg, alpha)))
 }
 
 fn errors_by_band(
     lut: &Lut,
-    clip: Clipping,
+    rules: &LtcRules,
     cases: usize,
     seed: u64,
     at: Option<(f64, f64)>,
@@ -77,7 +113,7 @@ fn errors_by_band(
             for _ in 0..cases {
                 let (drawn_theta, drawn_alpha, l) = draw(&mut rng, band);
                 let (theta_o, alpha) = at.unwrap_or((drawn_theta, drawn_alpha));
-                let pair = one_light(lut, clip, (theta_o, alpha), l);
+                let pair = one_light(lut, rules, (theta_o, alpha), l);
                 for (sum, x) in sums.iter_mut().zip(pair) {
                     *sum += x;
                 }
@@ -89,6 +125,7 @@ fn errors_by_band(
                 specular: ratio(sums[0], sums[1]),
                 diffuse: ratio(sums[3], sums[4]),
                 specular_energy: ratio(sums[2], sums[1]),
+                specular_mean: sums[1] / cases.max(1) as f64,
             }
         })
         .collect()
@@ -96,8 +133,8 @@ fn errors_by_band(
 
 /// One light toward `l` at (θo in degrees, α): |LTC − BRDF| and BRDF of the specular lobe,
 /// the LTC's specular, and |LTC − BRDF| and BRDF of the diffuse lobe.
-fn one_light(lut: &Lut, clip: Clipping, (theta_o, alpha): (f64, f64), l: DVec3) -> [f64; 5] {
-    let (exact, ltc) = lobes(lut, clip, (theta_o, alpha), l);
+fn one_light(lut: &Lut, rules: &LtcRules, (theta_o, alpha): (f64, f64), l: DVec3) -> [f64; 5] {
+    let (exact, ltc) = lobes(lut, rules, (theta_o, alpha), l);
     [
         (ltc.specular - exact.specular).abs(),
         exact.specular,
@@ -107,19 +144,21 @@ fn one_light(lut: &Lut, clip: Clipping, (theta_o, alpha): (f64, f64), l: DVec3) 
     ]
 }
 
-/// Both lobes of one light toward `l` at (θo in degrees, α), exact and through `lut`, F0 0.04.
+/// Both lobes of one light toward `l` at (θo in degrees, α), exact and through `lut` shaded
+/// by `rules` (its horizon rule included), F0 0.04.
 pub fn lobes(
     lut: &Lut,
-    clip: Clipping,
+    rules: &LtcRules,
     (theta_o, alpha): (f64, f64),
     l: DVec3,
 ) -> (Lobes<f64>, Lobes<f64>) {
     let v = view_from_theta(theta_o.to_radians().min(THETA_MAX));
     let exact = brdf_cos(v, l.to_array(), alpha, F0);
-    let ltc = lut
-        .ltc_pair(alpha, DVec3::from(v))
-        .ltc_lobes(l, F0, clip, Normalization::Corrected);
-    (exact, ltc)
+    let px = LtcPixel::new(lut, alpha, DVec3::from(v), rules);
+    let ltc = px
+        .pair
+        .ltc_lobes(l, F0, rules.clipping, rules.normalization);
+    (exact, px.horizon.apply(l.z, ltc, &px.nl, || exact))
 }
 
 /// A case of `band`: θo (degrees), α, and the unit light direction in the shading frame.
@@ -173,8 +212,9 @@ mod tests {
     #[test]
     fn the_lowest_band_is_the_worst_for_both_tables() {
         for lut in [Lut::embedded(), Lut::embedded_point()] {
-            let bands = band_errors(lut, Clipping::BOTH, 4000, 1);
-            assert_eq!(bands, band_errors(lut, Clipping::BOTH, 4000, 1));
+            let rules = LtcRules::default();
+            let bands = band_errors(lut, &rules, 4000, 1);
+            assert_eq!(bands, band_errors(lut, &rules, 4000, 1));
             let (low, high) = (bands[0], bands[3]);
             assert!(low.specular > 2.0 * high.specular, "{bands:?}");
             assert!(low.diffuse > 2.0 * high.diffuse, "{bands:?}");

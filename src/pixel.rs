@@ -8,10 +8,10 @@ use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
 use crate::cpu::{LtcPixel, exact_term, ltc_term};
+use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
-use crate::ltc::{ClipCase, Clipping, Normalization};
 use crate::metrics::luminance;
-use crate::render::{LutFilter, SurfacePoint};
+use crate::render::{LtcRules, SurfacePoint};
 use crate::scene::{Light, Scene};
 
 /// One light's share of a pixel.
@@ -134,24 +134,21 @@ pub fn pixel_terms(
     scene: &Scene,
     (lut, lut_b): (&Lut, Option<&Lut>),
     p: &SurfacePoint,
-    clipping: Clipping,
-    normalization: Normalization,
-    filter: LutFilter,
+    rules: &LtcRules,
 ) -> Option<PixelTerms> {
     if p.view.z <= 0.0 {
         return None;
     }
     let alpha = scene.material.alpha;
-    let px = LtcPixel::new(lut, alpha, p.view, filter);
-    let px_b = lut_b.map(|b| LtcPixel::new(b, alpha, p.view, filter));
-    let rules = (clipping, normalization);
+    let px = LtcPixel::new(lut, alpha, p.view, rules);
+    let px_b = lut_b.map(|b| LtcPixel::new(b, alpha, p.view, rules));
     let terms: Vec<LightTerm> = scene
         .lights
         .iter()
         .enumerate()
         .map(|(index, light)| {
             let mut term = light_term(scene, &px, p, (index, light), rules);
-            term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, clipping, normalization));
+            term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, rules));
             term
         })
         .collect();
@@ -174,8 +171,9 @@ fn light_term(
     px: &LtcPixel,
     p: &SurfacePoint,
     (index, light): (usize, &Light),
-    (clipping, normalization): (Clipping, Normalization),
+    rules: &LtcRules,
 ) -> LightTerm {
+    let (clipping, normalization) = (rules.clipping, rules.normalization);
     let m = &scene.material;
     let v = px.frame.tangent_from_world(p.view);
     let u = px
@@ -200,7 +198,7 @@ fn light_term(
         irradiance: luminance(light.radiant_intensity())
             * irradiance_scale(1.0, distance, light.range_or_infinity()),
         distance,
-        ltc: ltc_term(scene, px, p, light, clipping, normalization),
+        ltc: ltc_term(scene, px, p, light, rules),
         exact: exact_term(scene, &px.frame, p, light),
         ltc_b: None,
     }

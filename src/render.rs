@@ -5,6 +5,7 @@
 use glam::DVec3;
 
 use crate::ltc::lut::Lut;
+use crate::ltc::remedy::HorizonRule;
 use crate::ltc::{Clipping, Normalization};
 
 /// How one pixel's lights are summed. The CPU reference has one form of each: the fast
@@ -118,6 +119,18 @@ pub struct RenderSettings {
     /// B is an LTC method shading with the second table: two tables compared, not LTC
     /// against the BRDF.
     pub table_b: bool,
+    /// What the LTC methods do for lights near the horizon (docs/design.md §4.7).
+    pub horizon: HorizonRule,
+}
+
+/// How an LTC method shades beyond its table: eq. 30's clipping, the normalization, how the
+/// table is read, and the horizon rule.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LtcRules {
+    pub clipping: Clipping,
+    pub normalization: Normalization,
+    pub filter: LutFilter,
+    pub horizon: HorizonRule,
 }
 
 impl RenderSettings {
@@ -135,6 +148,17 @@ impl RenderSettings {
             lut_filter: LutFilter::Bilinear,
             cull: true,
             table_b: false,
+            horizon: HorizonRule::Eq30,
+        }
+    }
+
+    /// What the LTC methods of this render shade by.
+    pub fn ltc_rules(&self) -> LtcRules {
+        LtcRules {
+            clipping: self.clipping,
+            normalization: self.normalization,
+            filter: self.lut_filter,
+            horizon: self.horizon,
         }
     }
 

@@ -7,7 +7,8 @@ use crate::gpu::GpuContext;
 use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
 use crate::ltc::Normalization;
 use crate::ltc::fit::{FitSettings, fit_table};
-use crate::ltc::lut::Lut;
+use crate::ltc::lut::{Lut, Table};
+use crate::ltc::remedy::Horizon;
 use crate::metrics::image_error;
 use crate::render::{LutFilter, Method, RenderSettings};
 use crate::scene::Scene;
@@ -21,6 +22,9 @@ pub enum LutChoice {
     Fitted(usize),
     /// The shipped point-light fit (`luts/ltc_point.exr`).
     Point,
+    /// The horizon remedies' fits (`luts/ltc_arrival.exr`, `luts/ltc_constrained.exr`).
+    Arrival,
+    Constrained,
 }
 
 /// One shading variant of the study.
@@ -31,9 +35,12 @@ pub struct Variant {
     pub normalization: Normalization,
     pub filter: LutFilter,
     pub lut: LutChoice,
+    /// The horizon remedy (eq30 but in the remedies' variants).
+    pub horizon: Horizon,
 }
 
-/// The variants of issue 5, named exactly so; `brdf` is the reference (error 0).
+/// The variants of issue 5, named exactly so, and `ltc-fast` with each horizon remedy
+/// (docs/design.md §4.7); `brdf` is the reference (error 0).
 pub fn variants() -> Vec<Variant> {
     let v = |name, method, normalization, filter, lut| Variant {
         name,
@@ -41,6 +48,17 @@ pub fn variants() -> Vec<Variant> {
         normalization,
         filter,
         lut,
+        horizon: Horizon::Eq30,
+    };
+    let remedy = |name, lut, horizon| Variant {
+        horizon,
+        ..v(
+            name,
+            Method::LtcFast,
+            Normalization::Corrected,
+            LutFilter::Bilinear,
+            lut,
+        )
     };
     use LutChoice::*;
     use LutFilter::*;
@@ -60,6 +78,14 @@ pub fn variants() -> Vec<Variant> {
         // Where the adapter has SHADER_F16 (`run` drops them elsewhere).
         v("ltc-f16", LtcF16, Corrected, Bilinear, Shipped),
         v("ltc-f16-pairs", LtcF16Pairs, Corrected, Bilinear, Shipped),
+        remedy("ltc-fast-arrival-fit", Arrival, Horizon::ArrivalFit),
+        remedy(
+            "ltc-fast-constrained-fit",
+            Constrained,
+            Horizon::ConstrainedFit,
+        ),
+        remedy("ltc-fast-nl-fit", Shipped, Horizon::NlFit),
+        remedy("ltc-fast-exact-band", Shipped, Horizon::ExactBand),
     ]
 }
 
@@ -165,10 +191,10 @@ impl StudyRow {
 }
 
 /// The study scene: paper-100's plane, material and light distribution with `lights`
-/// generated lights (100 gives paper-100's own) and GGX α = `alpha`, seen from above so
-/// that every pixel shades the plane.
-pub fn study_scene(lights: usize, alpha: f64, range: Option<f64>) -> Scene {
-    let mut scene = crate::bench::bench_scene(lights, range);
+/// generated lights (100 gives paper-100's own) at `heights` and GGX α = `alpha`, seen from
+/// above so that every pixel shades the plane.
+pub fn study_scene(lights: usize, alpha: f64, range: Option<f64>, heights: [f64; 2]) -> Scene {
+    let mut scene = crate::bench::bench_scene_at(lights, range, heights);
     scene.material.alpha = alpha;
     scene
 }
@@ -210,7 +236,15 @@ pub struct StudySettings {
     /// Culling off, on, or both (the same images: only the times differ).
     pub culls: Vec<bool>,
     pub range: Option<f64>,
+    /// The remedies whose variants run (eq30's always do).
+    pub horizons: Vec<Horizon>,
+    /// The lights' heights above the plane (paper-100's, or a scene whose lights sit low).
+    pub heights: [f64; 2],
 }
+
+/// The heights of the study's scene whose lights sit low: most pixels see most of their
+/// lights within 15° of the horizon (a light 0.15 up is 15° above a pixel 0.56 away).
+pub const LOW_HEIGHTS: [f64; 2] = [0.02, 0.15];
 
 /// Runs the study: for each α, light count and culling, the exact image, then every variant,
 /// each timed (median of `frames` after one warm-up) and measured against the exact image.
@@ -225,6 +259,7 @@ pub fn run(
     let variants: Vec<Variant> = variants()
         .into_iter()
         .filter(|v| !v.method.needs_f16() || ctx.has_f16())
+        .filter(|v| v.horizon == Horizon::Eq30 || s.horizons.contains(&v.horizon))
         .collect();
     let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
     for v in &variants {
@@ -234,6 +269,8 @@ pub fn run(
         let lut = match v.lut {
             LutChoice::Shipped => shipped.clone(),
             LutChoice::Point => Lut::embedded_point().clone(),
+            LutChoice::Arrival => Lut::shipped(Table::Arrival).clone(),
+            LutChoice::Constrained => Lut::shipped(Table::Constrained).clone(),
             LutChoice::Fitted(size) => {
                 fit_table(
                     &FitSettings {
@@ -250,7 +287,7 @@ pub fn run(
     let mut rows = Vec::new();
     for &alpha in &s.alphas {
         for &lights in &s.lights {
-            let scene = study_scene(lights, alpha, s.range);
+            let scene = study_scene(lights, alpha, s.range, s.heights);
             for &cull in &s.culls {
                 let mut exact = None;
                 for v in &variants {
@@ -262,6 +299,7 @@ pub fn run(
                     let settings = RenderSettings {
                         normalization: v.normalization,
                         lut_filter: v.filter,
+                        horizon: v.horizon.rule(),
                         cull,
                         ..RenderSettings::single(width, height, v.method)
                     };

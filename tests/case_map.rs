@@ -8,7 +8,7 @@ use glam::DVec3;
 use ltc_lab::cpu::{LtcPixel, clip_counts_map};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Ltc, Normalization};
-use ltc_lab::render::LutFilter;
+use ltc_lab::render::LtcRules;
 use ltc_lab::scene::{Scene, preset};
 
 /// A lobe's case from what `ltc_eval` returns with one rule at a time.
@@ -36,7 +36,7 @@ fn reference_class(
     h: usize,
 ) -> Option<ClipCase> {
     let p = scene.surface_point(x, y, w, h)?;
-    let px = LtcPixel::new(lut, scene.material.alpha, p.view, LutFilter::Bilinear);
+    let px = LtcPixel::new(lut, scene.material.alpha, p.view, &LtcRules::default());
     let cases: Vec<ClipCase> = scene
         .lights
         .iter()

@@ -1266,9 +1266,9 @@ fn with_two_tables_the_pinned_pixel_compares_table_a_with_table_b_per_light() {
     let p = scene
         .surface_point_at(u * w as f64, v * hgt as f64, w, hgt)
         .unwrap();
-    let (s, filter) = (app.lab.shared(), ltc_lab::render::LutFilter::Bilinear);
+    let rules = app.lab.shared().ltc_rules();
     let shade = |lut, lights: &[ltc_lab::scene::Light]| {
-        ltc_lab::cpu::shade_ltc(&scene, lut, &p, lights, s.clipping, s.normalization, filter)
+        ltc_lab::cpu::shade_ltc(&scene, lut, &p, lights, &rules)
     };
     let (a, b) = (&app.lab.tables().a.lut, &app.lab.tables().b.lut);
     // Summed in the same order as the reference sums: the same f64 operations.
@@ -1534,7 +1534,6 @@ fn a_render_in_flight_is_previewed_at_full_scale_and_says_so() {
 #[test]
 fn the_clipping_panel_gives_the_error_by_elevation_at_the_labs_view() {
     use ltc_lab::horizon::band_errors_at;
-    use ltc_lab::ltc::Clipping;
     let Some(mut h) = lab((1200.0, 1100.0), maximised(PanelId::Clipping)) else {
         return;
     };
@@ -1544,7 +1543,7 @@ fn the_clipping_panel_gives_the_error_by_elevation_at_the_labs_view() {
         let lut = &app.lab.tables().a.lut;
         let b = band_errors_at(
             lut,
-            Clipping::BOTH,
+            &ltc_lab::render::LtcRules::default(),
             at,
             ltc_lab::app::elevation::CASES,
             ltc_lab::horizon::SEED,
@@ -1567,4 +1566,37 @@ fn the_clipping_panel_gives_the_error_by_elevation_at_the_labs_view() {
         h.query_by_label_contains("at θo = 45.0°, α = 0.6000")
             .is_some()
     );
+}
+
+/// Issue 22: the side panel's horizon choice shades with a remedy, as a user picks it: with
+/// exact-band the clipping panel's 0–5° band is exact; constrained-fit makes table A the
+/// constrained table (the remedy is that table), and eq30 gives the classic table back.
+#[test]
+fn the_horizon_choice_shades_with_a_remedy() {
+    use ltc_lab::ltc::remedy::{Horizon, HorizonRule};
+    let Some(mut h) = lab((1400.0, 1100.0), maximised(PanelId::Clipping)) else {
+        return;
+    };
+    let choose = |h: &mut Harness<'static, LabApp>, name: &str| {
+        h.get_by_label("horizon").click();
+        h.run_steps(2);
+        h.get_by_label(name).click();
+        settle(h);
+    };
+    choose(&mut h, "exact-band");
+    assert_eq!(h.state().lab.shared().horizon, HorizonRule::ExactBand);
+    assert!(
+        h.query_by_label("0–5°: 0% (energy ×1.00)").is_some(),
+        "the 0–5° band is not exact under exact-band"
+    );
+    choose(&mut h, "constrained-fit");
+    let s = h.state().lab.shared();
+    assert_eq!(
+        (s.horizon, s.horizon_remedy()),
+        (HorizonRule::Eq30, Horizon::ConstrainedFit)
+    );
+    assert!(h.state().lab.tables().a.name.contains("constrained"));
+    choose(&mut h, "eq30");
+    assert!(h.state().lab.tables().a.name.contains("classic"));
+    assert_eq!(h.state().lab.shared().horizon_remedy(), Horizon::Eq30);
 }

@@ -61,6 +61,7 @@ fn sampler_returns_cell_values_at_cell_centres() {
 #[test]
 fn sampler_interpolates_between_cells_and_clamps_outside() {
     let mut lut = Lut {
+        nl_terms: Default::default(),
         size: 2,
         alpha_min: 1e-4,
         cells: vec![LutCell([0.0; CHANNEL_COUNT]); 4],
@@ -204,6 +205,7 @@ fn alpha_min_may_be_written_as_f32() {
 #[test]
 fn the_specular_magnitude_is_filtered_as_the_product_of_scale_and_albedo() {
     let mut lut = Lut {
+        nl_terms: Default::default(),
         size: 2,
         alpha_min: 1e-4,
         cells: vec![LutCell([0.0; CHANNEL_COUNT]); 4],

@@ -9,7 +9,7 @@ use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Normalization};
 use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
-use ltc_lab::render::{LutFilter, Method, RenderSettings, Tables, View};
+use ltc_lab::render::{LtcRules, Method, RenderSettings, Tables, View};
 use ltc_lab::scene::preset;
 
 #[test]
@@ -28,8 +28,8 @@ fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
                 continue;
             };
             let n = Normalization::Corrected;
-            let t = pixel_terms(&scene, (lut, None), &p, clip, n, LutFilter::Bilinear).unwrap();
-            let ltc = shade_ltc(&scene, lut, &p, &scene.lights, clip, n, LutFilter::Bilinear);
+            let t = pixel_terms(&scene, (lut, None), &p, &rules(clip, n)).unwrap();
+            let ltc = shade_ltc(&scene, lut, &p, &scene.lights, &rules(clip, n));
             let exact = shade_exact(&scene, &p, &scene.lights);
             let sum_ltc = t.terms.iter().fold(glam::DVec3::ZERO, |a, l| a + l.ltc);
             let sum_exact = t.terms.iter().fold(glam::DVec3::ZERO, |a, l| a + l.exact);
@@ -103,7 +103,7 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
             let Some(p) = scene.surface_point(x, y, w, h) else {
                 continue;
             };
-            let t = pixel_terms(&scene, (a, Some(b)), &p, clip, n, LutFilter::Bilinear).unwrap();
+            let t = pixel_terms(&scene, (a, Some(b)), &p, &rules(clip, n)).unwrap();
             let k = y * w + x;
             let sum_b = t
                 .terms
@@ -124,15 +124,7 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
             // Each light alone through the CPU reference with either table.
             let alone = |lut, i: usize| {
                 let one = &scene.lights[i..=i];
-                luminance(shade_ltc(
-                    &scene,
-                    lut,
-                    &p,
-                    one,
-                    clip,
-                    n,
-                    LutFilter::Bilinear,
-                ))
+                luminance(shade_ltc(&scene, lut, &p, one, &rules(clip, n)))
             };
             let diffs: Vec<f64> = (0..scene.lights.len())
                 .map(|i| (alone(a, i) - alone(b, i)).abs())
@@ -181,17 +173,23 @@ fn without_table_b_side_b_is_the_exact_brdf() {
     let scene = preset("paper-100");
     let p = scene.surface_point(30, 20, 64, 36).unwrap();
     let n = Normalization::Corrected;
-    let filter = LutFilter::Bilinear;
     let t = pixel_terms(
         &scene,
         (Lut::embedded(), None),
         &p,
-        Clipping::BOTH,
-        n,
-        filter,
+        &rules(Clipping::BOTH, n),
     )
     .unwrap();
     assert!(t.ltc_b.is_none() && t.terms.iter().all(|l| l.ltc_b.is_none()));
     assert_eq!(t.side_b(), t.exact);
     assert_eq!(t.relative_difference(), t.relative_error());
+}
+
+/// The rules of a render with the table read bilinearly and eq. 30's horizon handling.
+fn rules(clipping: Clipping, normalization: Normalization) -> LtcRules {
+    LtcRules {
+        clipping,
+        normalization,
+        ..LtcRules::default()
+    }
 }

@@ -13,6 +13,7 @@ use crate::app::display::rgb;
 use crate::colormap::{diverging, round_sig, short_number};
 use crate::cpu::{ClipCounts, clip_counts_map, render};
 use crate::ltc::lut::Lut;
+use crate::ltc::remedy::HorizonRule;
 use crate::ltc::{Clipping, Normalization};
 use crate::metrics::{LuminanceRange, luminance, luminance_range};
 use crate::output::srgb_encode;
@@ -41,6 +42,7 @@ const BACKGROUND: Color32 = Color32::from_rgb(24, 24, 28);
 pub struct RowsInput {
     pub clip: Clipping,
     pub normalization: Normalization,
+    pub horizon: HorizonRule,
     pub setup: ClipSetup,
     pub lut: Lut,
 }
@@ -141,6 +143,7 @@ fn render_row(input: &RowsInput, row: ClipScene) -> RowRenders {
         let mut r = RenderSettings::single(w, h, method);
         r.clipping = clip;
         r.normalization = input.normalization;
+        r.horizon = input.horizon;
         render(&input.setup.scene(which, row), &input.lut, &r)
     };
     let clip = input.clip;

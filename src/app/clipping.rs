@@ -315,6 +315,7 @@ impl ClippingPanel {
             let input = RowsInput {
                 clip: lab.shared().clipping,
                 normalization: lab.shared().normalization,
+                horizon: lab.shared().horizon,
                 setup: setup.clone(),
                 lut: lut.lut.clone(),
             };

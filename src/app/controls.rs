@@ -10,6 +10,7 @@ use crate::app::lab::{Aspect, Lab, Message, Panel, Request};
 use crate::ltc::Normalization;
 use crate::ltc::formats;
 use crate::ltc::lut::Table;
+use crate::ltc::remedy::Horizon;
 use crate::render::Method;
 use crate::scene::{PRESETS, Scene, preset};
 use crate::tables::NamedTable;
@@ -224,6 +225,7 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
             ),
         ],
     );
+    horizon_remedy(ui, lab);
     lab.edit(Aspect::Rules, |s| {
         let mut paper = s.normalization == Normalization::PaperLiteral;
         let r = ui.checkbox(&mut paper, "paper-literal normalization")
@@ -235,6 +237,31 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
         };
         r
     });
+}
+
+/// The horizon remedy (docs/design.md §4.7): eq. 30 alone, a table fitted for the horizon, or
+/// a rule per light.
+fn horizon_remedy(ui: &mut egui::Ui, lab: &mut Lab) {
+    let current = lab.shared().horizon_remedy();
+    let mut chosen = None;
+    egui::ComboBox::from_label("horizon")
+        .selected_text(current.name())
+        .show_ui(ui, |ui| {
+            for h in Horizon::ALL {
+                if ui
+                    .selectable_label(h == current, h.name())
+                    .on_hover_text(h.describe())
+                    .clicked()
+                {
+                    chosen = Some(h);
+                }
+            }
+        })
+        .response
+        .on_hover_text("What LTC does for lights near the horizon, where eq. 30 is wrong by half: the clipping panel plots one light over its elevation and each band's error");
+    if let Some(h) = chosen.filter(|&h| h != current) {
+        lab.use_horizon(h);
+    }
 }
 
 /// Eq. 30's two rules as checkboxes, each with its label and tooltip (the side panel and the
@@ -333,11 +360,14 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
 
 /// The shipped table switch, and a LUT file to shade with or to compare with (table B).
 fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
-    ui.horizontal(|ui| {
+    // Wrapped: four tables in one row would widen the side panel.
+    ui.horizontal_wrapped(|ui| {
         ui.label("LTC table:");
         for (t, hover) in [
             (Table::Classic, "ltc_code's fit (luts/ltc.exr): made for area lights' integrals"),
             (Table::Point, "The point-light fit (luts/ltc_point.exr): minimizes ∫|n·D − f·cos| / ∫ f·cos, what one point light sees"),
+            (Table::Arrival, "The arrival fit (luts/ltc_arrival.exr): the point-light objective weighted by where lights above a plane arrive from, the horizon included (the arrival-fit remedy)"),
+            (Table::Constrained, "The constrained fit (luts/ltc_constrained.exr): the point-light objective with m20 = 0, so M^-1 never carries a light across the horizon (the constrained-fit remedy)"),
         ] {
             // A shipped table is lit only while no file shades instead of it.
             let chosen = lab.shared().table_file.is_none() && lab.shared().table == t;

@@ -38,7 +38,8 @@ impl ElevationView {
         let made_for = (lab.stamp(&READS), table_b);
         if self.made_for != Some(made_for) {
             let at = (theta_o, alpha);
-            self.bands = horizon::band_errors_at(lut, s.clipping, at, CASES, horizon::SEED);
+            let rules = s.ltc_rules();
+            self.bands = horizon::band_errors_at(lut, &rules, at, CASES, horizon::SEED);
             self.made_for = Some(made_for);
         }
         ui.small(format!(
@@ -57,19 +58,19 @@ impl ElevationView {
                 .on_hover_text("Σ|LTC − BRDF| / Σ BRDF over lights uniform in this band at every azimuth, and Σ LTC / Σ BRDF");
             }
         });
-        plot(ui, lut, s.clipping, (theta_o, alpha));
+        plot(ui, lut, &s.ltc_rules(), (theta_o, alpha));
     }
 }
 
 /// The exact lobe and the LTC (the lab's rules) of one light on the mirror side of the plane of
 /// incidence, over its elevation from −10° to 90°, on a symmetric log axis.
-fn plot(ui: &mut egui::Ui, lut: &Lut, clip: crate::ltc::Clipping, at: (f64, f64)) {
+fn plot(ui: &mut egui::Ui, lut: &Lut, rules: &crate::render::LtcRules, at: (f64, f64)) {
     let samples: Vec<(f64, f64, f64)> = (0..=200)
         .map(|k| {
             let e = -10.0 + 100.0 * f64::from(k) / 200.0;
             let r = e.to_radians();
             let l = glam::DVec3::new(-r.cos(), 0.0, r.sin());
-            let (exact, ltc) = horizon::lobes(lut, clip, at, l);
+            let (exact, ltc) = horizon::lobes(lut, rules, at, l);
             (e, exact.specular, ltc.specular)
         })
         .collect();

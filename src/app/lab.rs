@@ -11,8 +11,9 @@ use crate::app::refit::RefitResult;
 use crate::gpu::GpuContext;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{Lut, THETA_MAX, Table};
+use crate::ltc::remedy::{Horizon, HorizonRule};
 use crate::ltc::{Clipping, Ltc, LtcPair, Normalization};
-use crate::render::Method;
+use crate::render::{LtcRules, LutFilter, Method};
 use crate::scene::{Scene, preset};
 use crate::tables::{NamedTable, NamedTables};
 
@@ -135,6 +136,9 @@ pub struct Shared {
     pub method_brdf: Method,
     pub clipping: Clipping,
     pub normalization: Normalization,
+    /// What the LTC methods do for lights near the horizon (the `nl-fit` and `exact-band`
+    /// remedies; the fitted ones are tables).
+    pub horizon: HorizonRule,
     /// Multiplies every light's intensity when shading.
     pub intensity_scale: f64,
     /// Replaces every light's range when > 0.
@@ -168,6 +172,7 @@ impl Default for Shared {
             method_brdf: Method::Brdf,
             clipping: Clipping::BOTH,
             normalization: Normalization::Corrected,
+            horizon: HorizonRule::Eq30,
             intensity_scale: 1.0,
             range_override: 0.0,
             cull: true,
@@ -198,6 +203,28 @@ impl Shared {
             }
         }
         s
+    }
+
+    /// The horizon remedy in use: the rule's, or the remedy whose table shades.
+    pub fn horizon_remedy(&self) -> Horizon {
+        let by_table = Horizon::ALL
+            .into_iter()
+            .find(|h| self.table_file.is_none() && h.table() == Some(self.table));
+        match self.horizon {
+            HorizonRule::Eq30 => by_table.unwrap_or(Horizon::Eq30),
+            HorizonRule::NlFit => Horizon::NlFit,
+            HorizonRule::ExactBand => Horizon::ExactBand,
+        }
+    }
+
+    /// What the plane's LTC shades by, as the lab sets it (the table read bilinearly).
+    pub fn ltc_rules(&self) -> LtcRules {
+        LtcRules {
+            clipping: self.clipping,
+            normalization: self.normalization,
+            filter: LutFilter::Bilinear,
+            horizon: self.horizon,
+        }
     }
 
     /// θo in radians, within the tables' rows.
@@ -354,6 +381,25 @@ impl Lab {
             s.table_file = None;
         });
         self.use_table_a(NamedTable::shipped(t));
+    }
+
+    /// Shades with a horizon remedy from now on: its table where it is one (a remedy's
+    /// table leaves for the classic one under another remedy), else its rule on table A.
+    pub fn use_horizon(&mut self, remedy: Horizon) {
+        let own = |t: Table| Horizon::ALL.iter().any(|h| h.table() == Some(t));
+        let table = match remedy.table() {
+            Some(t) => Some(t),
+            None if self.shared.table_file.is_none() && own(self.shared.table) => {
+                Some(Table::Classic)
+            }
+            None => None,
+        };
+        if let Some(t) =
+            table.filter(|&t| t != self.shared.table || self.shared.table_file.is_some())
+        {
+            self.use_shipped(t);
+        }
+        self.edit(Aspect::Rules, |s| s.horizon = remedy.rule());
     }
 
     /// Shades with the table read from `file` from now on; read again at the next start.

@@ -12,7 +12,6 @@ use crate::colormap::short_number;
 use crate::ltc::ClipCase;
 use crate::metrics::luminance;
 use crate::pixel::{LightTerm, PixelTerms, elevation_azimuth, pixel_terms};
-use crate::render::LutFilter;
 
 /// At most this many rows (the largest contributions first when sorted so): a table of
 /// 20 000 lights is unreadable, and the sums above it cover every light.
@@ -71,14 +70,7 @@ impl PinnedLights {
             let (width, height) = size;
             let p = scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
             let b = (s.compare == Compare::TableB).then_some(&tables.b.lut);
-            pixel_terms(
-                &scene,
-                (&tables.a.lut, b),
-                &p,
-                s.clipping,
-                s.normalization,
-                LutFilter::Bilinear,
-            )
+            pixel_terms(&scene, (&tables.a.lut, b), &p, &s.ltc_rules())
         });
     }
 }

@@ -19,7 +19,7 @@ use crate::app::plane_paint::{
 use crate::app::shading::Shading;
 use crate::cpu::{clip_counts, shade_exact, shade_ltc};
 use crate::metrics::luminance;
-use crate::render::{Frame, FrameKind, LutFilter, RenderSettings, View};
+use crate::render::{Frame, FrameKind, RenderSettings, View};
 use crate::scene::{Light, Scene};
 use crate::tables::NamedTables;
 
@@ -147,6 +147,7 @@ impl PlanePanel {
             view: self.state.view,
             clipping: s.clipping,
             normalization: s.normalization,
+            horizon: s.horizon,
             divider: self.state.divider,
             cull: s.cull,
             ..RenderSettings::single(width, height, s.method_ltc)
@@ -455,17 +456,7 @@ fn inspect(lab: &Lab, placed: Placed, pos: Pos2) -> Option<PixelReading> {
     let scene = s.shaded_scene();
     let (x, y) = placed.pixel(pos);
     let p = scene.surface_point_at(x, y, placed.size.0, placed.size.1)?;
-    let ltc = |table| {
-        shade_ltc(
-            &scene,
-            table,
-            &p,
-            &scene.lights,
-            s.clipping,
-            s.normalization,
-            LutFilter::Bilinear,
-        )
-    };
+    let ltc = |table| shade_ltc(&scene, table, &p, &scene.lights, &s.ltc_rules());
     let a = ltc(&tables.a.lut);
     let b = match s.compare {
         Compare::TableB => ltc(&tables.b.lut),

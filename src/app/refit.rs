@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
 use crate::ltc::fit_point::{
-    CellQuadrature, PointFit, QUADRATURE_STRATA, fit_cell_observed, fits_scale,
+    CellQuadrature, Free, PointFit, PointObjective, QUADRATURE_STRATA, fit_cell_observed,
 };
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{Channel, Lut, normalized_cos_from_brdf};
@@ -220,7 +220,7 @@ impl Job {
                     &q,
                     problem.norm,
                     &stored,
-                    fits_scale(lobe),
+                    Free::of(lobe, PointObjective::Lobe),
                     settings,
                     &mut counted,
                 );

@@ -8,7 +8,9 @@ use ltc_lab::files::{check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
 
-use super::{CullArgs, LutArgs, Range, check_frames_and_lights, parse_size, print};
+use ltc_lab::ltc::remedy::Horizon;
+
+use super::{CullArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size, print};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -30,6 +32,11 @@ pub struct Args {
     culling: CullArgs,
     #[command(flatten)]
     lut: LutArgs,
+    /// Horizon remedies, comma-separated: each LTC form is timed with eq30 and with each of
+    /// these, in the same run (arrival-fit and constrained-fit with their own tables). See
+    /// docs/design.md §4.7.
+    #[arg(long, value_delimiter = ',', value_parser = horizon_parser(), default_value = "eq30")]
+    horizon: Vec<Horizon>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -60,11 +67,13 @@ pub fn run(a: &Args) -> Result<()> {
         checks,
         culls: a.culling.cull.clone(),
         range: Range::or_default(a.culling.range),
+        horizons: a.horizon.clone(),
     };
     let rows = ltc_lab::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(
-            "  {:>13} {:>6} lights, cull {:>3}: {:.3} ms",
+            "  {:>13} {:>15} {:>6} lights, cull {:>3}: {:.3} ms",
             r.method.name(),
+            r.horizon.name(),
             r.lights,
             if r.cull { "on" } else { "off" },
             r.ms_median

@@ -6,7 +6,9 @@ use ltc_lab::error::Result;
 use ltc_lab::eval::{HEADER, OUTPUT_COLUMNS, evaluate, parse_cases};
 use ltc_lab::files::read_text;
 
-use super::{LutArgs, print};
+use ltc_lab::ltc::remedy::Horizon;
+
+use super::{HORIZON_HELP, LutArgs, horizon_parser, print};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -14,20 +16,24 @@ pub struct Args {
     /// GGX α in (0, 1], l the unit light direction in the shading frame (n = +z, v in the
     /// xz-plane), f0 in [0, 1]. Output on stdout: those columns plus brdf_spec,brdf_diffuse,
     /// ltc_spec,ltc_diffuse — each f·cos for a unit-irradiance light and base colour 1, the
-    /// LTC through the LUT's bilinear sampler with both clipping rules (eq. 30).
+    /// LTC through the LUT's bilinear sampler with both clipping rules (eq. 30) and the
+    /// --horizon remedy.
     #[arg(long)]
     cases: PathBuf,
     #[command(flatten)]
     lut: LutArgs,
+    #[arg(long, value_parser = horizon_parser(), default_value = "eq30", help = HORIZON_HELP)]
+    horizon: Horizon,
 }
 
 pub fn run(a: &Args) -> Result<()> {
     let text = read_text(&a.cases)?;
     let cases = parse_cases(&text, &a.cases.display().to_string())?;
-    let lut = a.lut.load()?;
+    a.lut.check_horizon(a.horizon)?;
+    let lut = a.lut.load_for(a.horizon)?;
     let mut out = format!("{HEADER},{OUTPUT_COLUMNS}\n");
     for c in &cases {
-        out.push_str(&evaluate(c, &lut));
+        out.push_str(&evaluate(c, &lut, a.horizon.rule()));
         out.push('\n');
     }
     print(&out)

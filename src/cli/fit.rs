@@ -6,7 +6,7 @@ use std::time::Instant;
 use ltc_lab::error::{Error, Result};
 use ltc_lab::files::{Claim, check_writable};
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
-use ltc_lab::ltc::fit_point::{REFINEMENTS, fit_point_table};
+use ltc_lab::ltc::fit_point::{PointObjective, REFINEMENTS, fit_table_for};
 use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut, Table};
 
 use super::one_of;
@@ -17,10 +17,13 @@ pub struct Args {
     #[arg(long, default_value_t = 64)]
     size: usize,
     /// classic: ltc_code's objective (luts/ltc.exr); point: the pointwise relative L1
-    /// error a point light sees, from the classic fit (luts/ltc_point.exr).
+    /// error a point light sees, from the classic fit (luts/ltc_point.exr); arrival: the
+    /// same weighted by where lights above a plane arrive from (luts/ltc_arrival.exr);
+    /// constrained: point with m20 = 0, no direction carried across the horizon
+    /// (luts/ltc_constrained.exr).
     #[arg(long, value_parser = one_of(&Table::ALL, Table::name), default_value = "classic")]
     objective: Table,
-    /// Where to write the table (OpenEXR, .exr); default luts/ltc.exr or luts/ltc_point.exr.
+    /// Where to write the table (OpenEXR, .exr); default the shipped file of the objective.
     #[arg(long)]
     out: Option<PathBuf>,
     /// Replace the default output file if it exists (a file named with --out is replaced
@@ -59,7 +62,12 @@ pub fn run(a: &Args) -> Result<()> {
             let fitted = fit_table(&settings, &|| bar.inc(1));
             (fitted.lut, Some(fitted.at_iteration_limit))
         }
-        Table::Point => {
+        point => {
+            let objective = match point {
+                Table::Arrival => PointObjective::Arrival,
+                Table::Constrained => PointObjective::Constrained,
+                _ => PointObjective::Lobe,
+            };
             // Each point-fit sweep visits every cell (both lobes) once.
             bar.set_length((2 * (1 + REFINEMENTS) * n * n) as u64);
             // Warm start: the classic fit of the same cells (the shipped one at its size).
@@ -69,7 +77,7 @@ pub fn run(a: &Args) -> Result<()> {
                 bar.inc_length((2 * n * n) as u64);
                 fit_table(&settings, &|| bar.inc(1)).lut
             };
-            let lut = fit_point_table(&classic, &settings, &|| bar.inc(2));
+            let lut = fit_table_for(&classic, objective, &settings, &|| bar.inc(2));
             (lut, None)
         }
     };

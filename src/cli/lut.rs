@@ -44,7 +44,7 @@ pub fn run(a: &Args) -> Result<()> {
         a.lut.load()?
     };
     if let (Some(format), Some(out)) = (a.export, &a.out) {
-        let shipped = a.lut.lut.is_none().then_some(a.lut.table);
+        let shipped = a.lut.lut.is_none().then_some(a.lut.table());
         let header = Header::new(&lut, &a.lut.describe(), shipped);
         let written = export(&lut, &header, format, a.precision, out)?;
         let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();

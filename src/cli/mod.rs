@@ -21,6 +21,7 @@ use ltc_lab::error::{Error, Result};
 use ltc_lab::gpu::limits::{LimitError, Limited};
 use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::{Lut, Table};
+use ltc_lab::ltc::remedy::Horizon;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -94,12 +95,53 @@ pub struct LutArgs {
     /// three.js's copy of it), or its ltc_1.dds / ltc_2.dds (either file, or their directory).
     #[arg(long)]
     pub lut: Option<PathBuf>,
-    /// Which shipped table: classic (ltc_code's fit) or point (the point-light fit).
-    #[arg(long, value_parser = one_of(&Table::ALL, Table::name), default_value = "classic")]
-    pub table: Table,
+    /// Which shipped table: classic (ltc_code's fit, the default), point (the point-light
+    /// fit), arrival or constrained (the horizon remedies' fits).
+    #[arg(long, value_parser = one_of(&Table::ALL, Table::name))]
+    pub table: Option<Table>,
+}
+
+/// `--horizon`'s help: what LTC does for lights near the horizon (docs/design.md §4.7).
+pub const HORIZON_HELP: &str = "What LTC does for lights near the horizon (docs/design.md §4.7): eq30 (the paper's clipping alone), arrival-fit and constrained-fit (shaded with the shipped arrival and constrained tables), nl-fit (each lobe scaled by a fitted quadratic in n·l below 30°), exact-band (the exact BRDF below 15°)";
+
+/// `--horizon NAME`.
+pub fn horizon_parser() -> impl TypedValueParser<Value = Horizon> {
+    one_of(&Horizon::ALL, Horizon::name)
 }
 
 impl LutArgs {
+    /// The shipped table asked for: `--table`, or the classic one.
+    pub fn table(&self) -> Table {
+        self.table.unwrap_or_default()
+    }
+
+    /// `--lut` and `--table` for a command shading with one horizon remedy: a remedy that
+    /// is a table cannot shade with another one.
+    pub fn check_horizon(&self, horizon: Horizon) -> Result<()> {
+        match horizon.table() {
+            Some(own) if self.lut.is_some() || self.table.is_some_and(|t| t != own) => {
+                Err(Error::input(
+                    "--horizon",
+                    format!(
+                        "{} is the {} table ({}): it takes no --lut or other --table",
+                        horizon.name(),
+                        own.name(),
+                        own.path()
+                    ),
+                ))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// The table a remedy shades with: its own where it is a table, else this one.
+    pub fn load_for(&self, horizon: Horizon) -> Result<Cow<'static, Lut>> {
+        match horizon.table() {
+            Some(own) => Ok(Cow::Borrowed(Lut::shipped(own))),
+            None => self.load(),
+        }
+    }
+
     /// The table to shade with; what a foreign layout could not hold is said on stderr.
     pub fn load(&self) -> Result<Cow<'static, Lut>> {
         Ok(self.loaded()?.lut)
@@ -118,7 +160,7 @@ impl LutArgs {
     }
 
     fn loaded(&self) -> Result<formats::Loaded> {
-        let loaded = formats::load(self.lut.as_deref(), self.table)?;
+        let loaded = formats::load(self.lut.as_deref(), self.table())?;
         if let Some(note) = &loaded.note {
             eprintln!("ltc-lab: note: {note}");
         }
@@ -127,20 +169,18 @@ impl LutArgs {
 
     /// The table's name, for a column: the shipped table's name or the file's path.
     pub fn name(&self) -> String {
+        let table = self.table();
         self.lut
             .as_ref()
-            .map_or(self.table.name().to_string(), |p| p.display().to_string())
+            .map_or(table.name().to_string(), |p| p.display().to_string())
     }
 
     /// What the table is, for messages.
     pub fn describe(&self) -> String {
+        let table = self.table();
         match &self.lut {
             Some(p) => p.display().to_string(),
-            None => format!(
-                "the embedded {} table ({})",
-                self.table.name(),
-                self.table.path()
-            ),
+            None => format!("the embedded {} table ({})", table.name(), table.path()),
         }
     }
 }

@@ -17,7 +17,8 @@ use ltc_lab::render::{Frame, Method, RenderSettings, View};
 use ltc_lab::scene::Scene;
 use ltc_lab::tables::{NamedTable, NamedTables};
 
-use super::{LutArgs, one_of, parse_cull, parse_size};
+use super::{HORIZON_HELP, LutArgs, horizon_parser, one_of, parse_cull, parse_size};
+use ltc_lab::ltc::remedy::Horizon;
 
 /// What `--method` names: one method alone, or LTC against the BRDF.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,6 +92,8 @@ pub struct Args {
     cull: bool,
     #[command(flatten)]
     lut: LutArgs,
+    #[arg(long, value_parser = horizon_parser(), default_value = "eq30", help = HORIZON_HELP)]
+    horizon: Horizon,
     /// Compare with this table instead of the BRDF: split and diff show LTC with the table
     /// of --lut/--table (left) against LTC with this one (right). A file in any format --lut
     /// reads.
@@ -113,10 +116,12 @@ pub fn run(a: &Args) -> Result<()> {
     settings.normalization = a.normalization;
     settings.divider = a.divider;
     settings.cull = a.cull;
+    settings.horizon = a.horizon.rule();
+    a.lut.check_horizon(a.horizon)?;
     let out = a
         .out
         .clone()
-        .unwrap_or_else(|| default_name(&a.scene, a.method));
+        .unwrap_or_else(|| default_name(&a.scene, a.method, a.horizon));
     let format = ImageFormat::of(&out)?;
     check_writable(&out)?;
     // Taken before any work: a file that appears meanwhile, or another run, gets another
@@ -127,9 +132,13 @@ pub fn run(a: &Args) -> Result<()> {
         .then(|| Claim::first_free(&out))
         .transpose()?;
     let scene = Scene::load(&a.scene)?;
+    let table_a = a.horizon.table().unwrap_or(a.lut.table());
     let named_a = NamedTable {
-        lut: a.lut.load()?.into_owned(),
-        name: a.lut.describe(),
+        lut: a.lut.load_for(a.horizon)?.into_owned(),
+        name: match a.horizon.table() {
+            Some(t) => format!("the embedded {} table ({})", t.name(), t.path()),
+            None => a.lut.describe(),
+        },
     };
     let tables = match table_b(a)? {
         Some(b) => {
@@ -147,7 +156,7 @@ pub fn run(a: &Args) -> Result<()> {
                 b_chosen: true,
             }
         }
-        None => NamedTables::with_a(named_a, a.lut.table),
+        None => NamedTables::with_a(named_a, table_a),
     };
     let start = Instant::now();
     let (frame, device) = if a.cpu {
@@ -186,12 +195,17 @@ pub fn run(a: &Args) -> Result<()> {
     Ok(())
 }
 
-/// `<scene stem>-<method>.png` in the current directory.
-fn default_name(scene: &Path, shown: Shown) -> PathBuf {
+/// `<scene stem>-<method>.png` in the current directory, `<scene stem>-<method>-<remedy>.png`
+/// with a horizon remedy.
+fn default_name(scene: &Path, shown: Shown, horizon: Horizon) -> PathBuf {
     let stem = scene
         .file_stem()
         .map_or("render".into(), |s| s.to_string_lossy());
-    PathBuf::from(format!("{stem}-{}.png", shown.name()))
+    let remedy = match horizon {
+        Horizon::Eq30 => String::new(),
+        h => format!("-{}", h.name()),
+    };
+    PathBuf::from(format!("{stem}-{}{remedy}.png", shown.name()))
 }
 
 /// The second table of a comparison, if one is asked for.

@@ -9,11 +9,11 @@ use ltc_lab::error::{Error, Result, number};
 use ltc_lab::files::Outputs;
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::horizon;
-use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::{ALPHA_MIN, Lut};
+use ltc_lab::ltc::remedy::Horizon;
 use ltc_lab::study;
 
-use super::{CullArgs, LutArgs, Range, check_frames_and_lights, parse_size, print};
+use super::{CullArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size, print};
 
 /// The directory `study` writes into unless told otherwise.
 const DEFAULT_DIR: &str = "study";
@@ -38,9 +38,22 @@ pub struct Args {
     #[command(flatten)]
     culling: CullArgs,
     /// The table of the variants that shade with the shipped one (ltc, ltc-fast, ltc-paper,
-    /// ltc-nearest, ltc-f16).
+    /// ltc-nearest, ltc-f16, ltc-fast-nl-fit, ltc-fast-exact-band).
     #[command(flatten)]
     lut: LutArgs,
+    /// Horizon remedies, comma-separated, each run as an ltc-fast variant
+    /// (ltc-fast-<remedy>) beside the others; eq30 alone runs none. See docs/design.md §4.7.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_parser = horizon_parser(),
+        default_value = "arrival-fit,constrained-fit,nl-fit,exact-band"
+    )]
+    horizon: Vec<Horizon>,
+    /// paper-100: paper-100's lights (0.05–0.6 above the plane); low-lights: lights
+    /// 0.02–0.15 above it, most of them within 15° of the horizon where they shade.
+    #[arg(long, default_value = "paper-100", value_parser = ["paper-100", "low-lights"])]
+    scene: String,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -75,6 +88,12 @@ pub fn run(a: &Args) -> Result<()> {
         frames: a.frames,
         culls: a.culling.cull.clone(),
         range: Range::or_default(a.culling.range),
+        horizons: a.horizon.clone(),
+        heights: if a.scene == "low-lights" {
+            study::LOW_HEIGHTS
+        } else {
+            ltc_lab::bench::PAPER_HEIGHTS
+        },
     };
     let rows = study::run(&ctx, &lut, &settings, |r| {
         eprintln!(
@@ -101,16 +120,29 @@ pub fn run(a: &Args) -> Result<()> {
     print(&csv)
 }
 
-/// The error by light elevation (docs/design.md §4.7) of the study's two tables: `lut`, which
-/// `ltc`, `ltc-fast`, `ltc-paper`, `ltc-nearest` and `ltc-f16` shade with (named `name`), and
-/// the point fit of `ltc-point` and `ltc-fast-point`; with eq. 30's rules.
+/// The error by light elevation (docs/design.md §4.7) of the study's table `lut` (named
+/// `name`) under every horizon remedy (the fitted ones with their own tables), and of the
+/// point fit of `ltc-point` and `ltc-fast-point` with eq. 30's rules.
 fn horizon_csv(lut: &Lut, name: &str) -> String {
     let mut text = String::from("table,rules,band,cases,specular,diffuse,specular_energy\n");
     // A path may hold a comma: the CSV's own separator.
     let name = name.replace(',', ";");
-    for (table, lut) in [(name.as_str(), lut), ("point", Lut::embedded_point())] {
-        let bands = horizon::band_errors(lut, Clipping::BOTH, horizon::CASES, horizon::SEED);
-        text.push_str(&horizon::csv_rows(&format!("{table},eq30,"), &bands));
+    let point = Lut::embedded_point();
+    let runs = Horizon::ALL
+        .map(|r| (r, lut))
+        .into_iter()
+        .chain([(Horizon::Eq30, point)]);
+    for (remedy, lut) in runs {
+        let (used, bands) = horizon::remedy_errors(lut, remedy, horizon::CASES, horizon::SEED);
+        let table = match remedy.table() {
+            Some(t) => t.name(),
+            None if std::ptr::eq(used, point) => "point",
+            None => &name,
+        };
+        text.push_str(&horizon::csv_rows(
+            &format!("{table},{},", remedy.name()),
+            &bands,
+        ));
     }
     text
 }

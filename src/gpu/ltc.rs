@@ -5,20 +5,27 @@
 use crate::error::Result;
 use crate::gpu::{GpuContext, limits};
 use crate::ltc::lut::{Channel, Lut};
+use crate::ltc::nl_fit::nl_terms;
 
 /// The shader text (composed after `brdf::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/ltc.wgsl");
 
-/// Three vec4s per cell, as `lut_texel` in ltc.wgsl reads them:
+/// `LUT_VEC4S_PER_CELL` of ltc.wgsl.
+pub const VEC4S_PER_CELL: usize = 4;
+
+/// Four vec4s per cell, as `lut_texel` and `nl_sample_uv` in ltc.wgsl read them:
 /// `[spec m00 m02 m20 m22] [diff m00 m02 m20 m22] [scale·spec.norm scale·spec.fresnel diff.norm
 /// spec.scale]`: the specular magnitudes with the scale folded in per cell, as
-/// `LutCell::shaded` (and ltc_code's layout) has them, rounded to f32 once as an export does.
-/// The `err` channels are not needed for shading and stay on the CPU.
+/// `LutCell::shaded` (and ltc_code's layout) has them, rounded to f32 once as an export does;
+/// then the cell's `nl-fit` correction (`crate::ltc::nl_fit`, fitted here on the table's first
+/// use). The `err` channels are not needed for shading and stay on the CPU.
 pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
+    debug_assert_eq!(VEC4S_PER_CELL, 4);
     use Channel::*;
     lut.cells
         .iter()
-        .flat_map(|c| {
+        .zip(nl_terms(lut))
+        .flat_map(|(c, nl)| {
             [
                 [
                     c.get(SpecM00),
@@ -38,6 +45,7 @@ pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
                     c.get(DiffNorm),
                     c.get(SpecScale),
                 ],
+                nl.map(|x| x as f32),
             ]
         })
         .collect()
@@ -55,14 +63,16 @@ impl LutBuffer {
     /// Table A packed, B packed after it; refused where they exceed one storage binding.
     pub fn new(ctx: &GpuContext, a: &Lut, b: Option<&Lut>) -> Result<Self> {
         let size_a = a.size;
+        // Checked before packing: packing fits the nl-fit correction of every cell.
+        let bytes = |lut: &Lut| (lut.size * lut.size * VEC4S_PER_CELL * 16) as u64;
+        let largest = b.map_or(size_a, |lut| lut.size.max(size_a));
+        limits::check_lut_size(ctx, largest, bytes(a) + b.map_or(0, bytes))?;
         let mut all = pack_lut(a);
         let b = b.map(|lut| {
             let base = all.len() as u32;
             all.extend(pack_lut(lut));
             (lut.size, base)
         });
-        let largest = b.map_or(size_a, |(n, _)| n.max(size_a));
-        limits::check_lut_size(ctx, largest, std::mem::size_of_val(all.as_slice()) as u64)?;
         let buffer = wgpu::util::DeviceExt::create_buffer_init(
             &ctx.device,
             &wgpu::util::BufferInitDescriptor {

@@ -16,6 +16,7 @@ use crate::gpu::scene::{GpuLight, Params, params};
 use crate::gpu::target::{self, OUTPUT_FORMAT, Target};
 use crate::gpu::timing::{PassTimer, Slot, SlotTimes};
 use crate::ltc::lut::Lut;
+use crate::ltc::remedy::HorizonRule;
 use crate::render::{Frame, LutFilter, Method, RenderSettings, View};
 use crate::scene::Scene;
 
@@ -36,14 +37,23 @@ pub fn method_constant(m: Method) -> u32 {
     }
 }
 
+/// `HORIZON_*` of ltc.wgsl.
+pub fn horizon_constant(h: HorizonRule) -> u32 {
+    match h {
+        HorizonRule::Eq30 => 0,
+        HorizonRule::NlFit => 1,
+        HorizonRule::ExactBand => 2,
+    }
+}
+
 /// `VIEW_*` of plane.wgsl: method A alone, A | B split, or their difference.
 const VIEW_SINGLE: u32 = 0;
 const VIEW_SPLIT: u32 = 1;
 const VIEW_DIFF: u32 = 2;
 
 /// What a pipeline is specialized for (its override constants): methods A and B, the
-/// `VIEW_*`, the LUT filter, and whether B reads table B.
-type PipelineKey = (Method, Method, u32, LutFilter, bool);
+/// `VIEW_*`, the LUT filter, whether B reads table B, and the horizon rule.
+type PipelineKey = (Method, Method, u32, LutFilter, bool, HorizonRule);
 
 /// The pipeline's methods and view: `View::B` is B shaded as the single A (with B's table).
 fn pipeline_key(s: &RenderSettings) -> PipelineKey {
@@ -54,7 +64,7 @@ fn pipeline_key(s: &RenderSettings) -> PipelineKey {
         View::Split => (s.method_a, s.method_b, VIEW_SPLIT, s.table_b),
         View::Diff => (s.method_a, s.method_b, VIEW_DIFF, s.table_b),
     };
-    (a, b, view, s.lut_filter, table_b)
+    (a, b, view, s.lut_filter, table_b, s.horizon)
 }
 
 /// Whether wgpu wraps the shader in its runtime bounds checks.
@@ -225,6 +235,16 @@ impl PlaneRenderer {
         if settings.table_b && self.tables.b.is_none() {
             return Err(Error::input("table B", "no second table was given"));
         }
+        let f16 = settings.methods().into_iter().find(|m| m.needs_f16());
+        if let Some(m) = f16.filter(|_| settings.horizon != HorizonRule::Eq30) {
+            return Err(Error::input(
+                "--horizon",
+                format!(
+                    "{} shades with eq30's rules only (docs/design.md §4.7)",
+                    m.name()
+                ),
+            ));
+        }
         Ok(target::check_size(ctx, settings.width, settings.height)?)
     }
 
@@ -334,7 +354,7 @@ impl PlaneRenderer {
     fn pipelines(&mut self, ctx: &GpuContext, key: PipelineKey) -> &Pipelines {
         let (module, layout) = (&self.module, &self.pipeline_layout);
         self.pipelines.entry(key).or_insert_with(|| {
-            let (a, b, view, filter, table_b) = key;
+            let (a, b, view, filter, table_b, horizon) = key;
             let constants = [
                 ("METHOD_A", f64::from(method_constant(a))),
                 ("METHOD_B", f64::from(method_constant(b))),
@@ -344,6 +364,7 @@ impl PlaneRenderer {
                     f64::from(u8::from(filter == LutFilter::Nearest)),
                 ),
                 ("TABLE_B", f64::from(u8::from(table_b))),
+                ("HORIZON", f64::from(horizon_constant(horizon))),
             ];
             let pipeline = |entry_point| {
                 ctx.device

@@ -336,6 +336,7 @@ pub fn fit_table(settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> FittedT
         .collect();
     FittedTable {
         lut: Lut {
+            nl_terms: Default::default(),
             size: settings.size,
             alpha_min: settings.alpha_min,
             cells,

@@ -81,6 +81,114 @@ impl CellQuadrature {
     }
 }
 
+/// What a cell's fit minimizes: a relative L1 error of `scale · norm · D` against the lobe,
+/// relative to `norm`.
+pub trait CellObjective: Sync {
+    fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64;
+}
+
+impl CellObjective for CellQuadrature {
+    fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64 {
+        CellQuadrature::relative_l1(self, fit, norm)
+    }
+}
+
+/// Below this `n·l` (sin 5°) the arrival weight stops growing: a light 0.3 above the plane,
+/// as paper-100's are at most, is at 5° once it is 3.4 away, past the range (3) its lights
+/// reach (docs/design.md §4.7).
+pub const ARRIVAL_Z_MIN: f64 = 0.087_155_742_747_658_17;
+
+/// How much of a point light's shading arrives from elevation `asin z` for lights spread
+/// evenly over a plane above the surface: per solid angle there are `∝ 1/sin³e` of them, each
+/// giving irradiance `∝ sin²e` (docs/design.md §4.7), so `1/sin e`, floored at `ARRIVAL_Z_MIN`.
+pub fn arrival_weight(z: f64) -> f64 {
+    1.0 / z.max(ARRIVAL_Z_MIN)
+}
+
+/// One node of the arrival quadrature: a direction, its lobe value, and its weight
+/// `arrival / (N₁ p_lobe + N₂ p_uniform)` (the balance heuristic of two node sets).
+#[derive(Clone, Copy, Debug)]
+struct ArrivalNode {
+    l: DVec3,
+    f: f64,
+    weight: f64,
+}
+
+/// The arrival objective `∫ |s n D − f cos| a dω / ∫ f cos a dω` with `a = arrival_weight`.
+/// The lobe's own nodes cover its peak; as many nodes uniform in solid angle cover the
+/// horizon, where `a` is largest and the lobe has few; the two sets are combined by the
+/// balance heuristic. The overlap form of `CellQuadrature` does not apply (`∫ D a` is not
+/// 1), so the L1 is summed directly.
+pub struct ArrivalQuadrature {
+    nodes: Vec<ArrivalNode>,
+    exact_total: f64,
+}
+
+impl ArrivalQuadrature {
+    pub fn new(lobe: Lobe, view: DVec3, alpha: f64, strata: &[Stratum]) -> Self {
+        let n = strata.len() as f64;
+        let uniform_pdf = 1.0 / std::f64::consts::TAU;
+        let lobe_pdf = |l: DVec3| lobe_density(lobe, view, alpha, l);
+        let node = |l: DVec3, f: f64| ArrivalNode {
+            l,
+            f,
+            weight: arrival_weight(l.z) / (n * lobe_pdf(l) + n * uniform_pdf),
+        };
+        let from_lobe = strata
+            .iter()
+            .filter_map(|s| lobe_node(lobe, view, alpha, s))
+            .map(|q| node(q.l, q.weight * q.pdf));
+        let uniform = strata
+            .iter()
+            .map(|s| uniform_direction(s.u))
+            .filter(|l| l.z > 0.0);
+        let uniform = uniform.map(|l| node(l, lobe.eval(view, l, alpha).value));
+        let nodes: Vec<ArrivalNode> = from_lobe.chain(uniform).collect();
+        let exact_total = nodes.iter().map(|q| q.f * q.weight).sum();
+        Self { nodes, exact_total }
+    }
+}
+
+impl CellObjective for ArrivalQuadrature {
+    fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64 {
+        let ltc = fit.ltc(norm, 0.0);
+        let magnitude = ltc.magnitude();
+        let l1: f64 = self
+            .nodes
+            .iter()
+            .map(|q| {
+                let d = ltc.ltc_eval(q.l, Clipping::BOTH, Normalization::Corrected);
+                (magnitude * d - q.f).abs() * q.weight
+            })
+            .sum();
+        l1 / self.exact_total.max(1e-300)
+    }
+}
+
+/// The density of `lobe_node`'s directions at `l`: visible GGX normals reflected about
+/// (`G1(v) D(h) / (4 v.z)` where `v·h > 0`), or the cosine.
+fn lobe_density(lobe: Lobe, v: DVec3, alpha: f64, l: DVec3) -> f64 {
+    match lobe {
+        Lobe::Specular => {
+            let h = (v + l).normalize_or_zero();
+            if h.dot(v) <= 0.0 || h.z <= 0.0 {
+                return 0.0;
+            }
+            let g1 = 1.0 / (1.0 + lambda_ggx(v.z, alpha));
+            g1 * d_ggx(h.z, alpha) / (4.0 * v.z)
+        }
+        Lobe::Diffuse => l.z.max(0.0) / std::f64::consts::PI,
+    }
+}
+
+/// A direction uniform in solid angle over the upper hemisphere from a stratum's `(u1, u2)`:
+/// `z = u1`, `φ = 2π u2`.
+fn uniform_direction([u1, u2]: [f64; 2]) -> DVec3 {
+    let r = (1.0 - u1 * u1).max(0.0).sqrt();
+    let phi = std::f64::consts::TAU * u2;
+    DVec3::new(r * phi.cos(), r * phi.sin(), u1)
+}
+
 /// The lobe's sample for stratum `s` where the lobe is non-zero.
 fn lobe_node(lobe: Lobe, v: DVec3, alpha: f64, s: &Stratum) -> Option<Node> {
     let (l, pdf, weight) = match lobe {
@@ -127,11 +235,12 @@ impl PointFit {
         }
     }
 
-    /// `det M⁻¹ > 0` and a scale of at least `SCALE_MIN`.
+    /// `det M⁻¹ > 0` and a scale in `[SCALE_MIN, SCALE_MAX]`.
     fn is_valid(&self) -> bool {
         let m = self.entries;
         let det = m[0] * m[3] - m[1] * m[2];
-        m.iter().all(|x| x.is_finite()) && det > 1e-12 && self.scale >= SCALE_MIN
+        let scale = (SCALE_MIN..=SCALE_MAX).contains(&self.scale);
+        m.iter().all(|x| x.is_finite()) && det > 1e-12 && scale
     }
 }
 
@@ -141,33 +250,103 @@ impl PointFit {
 /// may at most halve the light.
 pub const SCALE_MIN: f64 = 0.5;
 
+/// The largest scale the fit may choose. The lobe objective never goes above 1.004; the
+/// arrival objective goes to 1.06 where it should, and at the grazing `α_min` cell, where no
+/// lobe of the family fits the sliver along the horizon, it would more than double the light
+/// (2.3), which bilinear filtering would spread to the neighbouring highlights.
+pub const SCALE_MAX: f64 = 1.1;
+
 /// Which parameters the point fit frees for a lobe: the magnitude's scale only for the
 /// specular lobe (the diffuse fit is within 2% already; docs/design.md §1 keeps its magnitude `n_d`).
 pub fn fits_scale(lobe: Lobe) -> bool {
     lobe == Lobe::Specular
 }
 
+/// What a point-light table's fit minimizes, and under which constraint (docs/design.md §2,
+/// §4.7). Each starts from the classic table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointObjective {
+    /// `∫ |s n D − f cos| dω / ∫ f cos dω`: the lobe as one point light sees it
+    /// (`luts/ltc_point.exr`).
+    Lobe,
+    /// The same, each direction weighted by how much light arrives from it for lights
+    /// spread over a plane above the surface (`arrival_weight`): the horizon counts
+    /// (`luts/ltc_arrival.exr`).
+    Arrival,
+    /// `Lobe` with `m20 = 0`: then `(M⁻¹l).z = m22 l.z`, so `M⁻¹` keeps every direction on
+    /// its side of the horizon and eq. 30's cases 1 and 2 cannot occur
+    /// (`luts/ltc_constrained.exr`).
+    Constrained,
+}
+
+/// Which parameters a cell's fit frees beyond `m00, m02, m22`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Free {
+    /// The scale on the magnitude (`fits_scale`).
+    pub scale: bool,
+    /// `m20`: fixed at 0 by the constrained fit.
+    pub m20: bool,
+}
+
+impl Free {
+    /// What the point fit frees for `lobe` under `objective`.
+    pub fn of(lobe: Lobe, objective: PointObjective) -> Self {
+        Self {
+            scale: fits_scale(lobe),
+            m20: objective != PointObjective::Constrained,
+        }
+    }
+
+    /// `fit` moved into the set: `m20` set to 0 where it is not free.
+    fn project(self, fit: PointFit) -> PointFit {
+        let mut entries = fit.entries;
+        if !self.m20 {
+            entries[2] = 0.0;
+        }
+        PointFit { entries, ..fit }
+    }
+}
+
+impl PointObjective {
+    /// The quadrature of the objective at one cell.
+    pub fn quadrature(
+        self,
+        lobe: Lobe,
+        view: DVec3,
+        alpha: f64,
+        strata: &[Stratum],
+    ) -> Box<dyn CellObjective> {
+        match self {
+            Self::Lobe | Self::Constrained => {
+                Box::new(CellQuadrature::new(lobe, view, alpha, strata))
+            }
+            Self::Arrival => Box::new(ArrivalQuadrature::new(lobe, view, alpha, strata)),
+        }
+    }
+}
+
 /// Fits one lobe of a cell from `starts` (the best of them by the objective).
 pub fn fit_cell(
-    q: &CellQuadrature,
+    q: &dyn CellObjective,
     norm: f64,
     starts: &[PointFit],
-    free_scale: bool,
+    free: Free,
     settings: &FitSettings,
 ) -> PointFit {
-    fit_cell_observed(q, norm, starts, free_scale, settings, &mut |_, _| CONTINUE)
+    fit_cell_observed(q, norm, starts, free, settings, &mut |_, _| CONTINUE)
 }
 
 /// `fit_cell`, telling `observe` the best objective so far at every Nelder–Mead iteration
 /// (counted across starts and restarts); a `Break` ends the fit with the best point found.
 pub fn fit_cell_observed(
-    q: &CellQuadrature,
+    q: &dyn CellObjective,
     norm: f64,
     starts: &[PointFit],
-    free_scale: bool,
+    free: Free,
     settings: &FitSettings,
     observe: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
 ) -> PointFit {
+    let starts: Vec<PointFit> = starts.iter().map(|&f| free.project(f)).collect();
     let objective = |fit: &PointFit| {
         if fit.is_valid() {
             q.relative_l1(fit, norm)
@@ -189,13 +368,13 @@ pub fn fit_cell_observed(
         stopped.set(flow.is_break());
         flow
     };
-    'starts: for &first in starts {
+    'starts: for &first in &starts {
         let mut start = first;
         for _ in 0..RESTARTS {
-            start = if free_scale {
-                descend::<5>(start, &objective, settings, &mut step)
+            start = if free.scale {
+                descend::<5>(start, &objective, free, settings, &mut step)
             } else {
-                descend::<4>(start, &objective, settings, &mut step)
+                descend::<4>(start, &objective, free, settings, &mut step)
             };
             if objective(&start) < objective(&best) {
                 best = start;
@@ -209,21 +388,26 @@ pub fn fit_cell_observed(
 }
 
 /// One Nelder–Mead run from `start` over the entries (relative moves: each scaled by its own
-/// size, as they span 1e-4..2) and, with `D = 5`, the log of the scale.
+/// size, as they span 1e-4..2) and, with `D = 5`, the log of the scale. An entry that is
+/// not free has no step: the simplex moves along it without changing the fit.
 fn descend<const D: usize>(
     start: PointFit,
     objective: &impl Fn(&PointFit) -> f64,
+    free: Free,
     settings: &FitSettings,
     observe: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
 ) -> PointFit {
     let largest = start.entries.iter().fold(0.0f64, |a, y| a.max(y.abs()));
-    let step = start.entries.map(|x| x.abs().max(1e-3 * largest));
+    let mut step = start.entries.map(|x| x.abs().max(1e-3 * largest));
+    if !free.m20 {
+        step[2] = 0.0;
+    }
     let at = |p: &[f64; D]| PointFit {
         entries: std::array::from_fn(|k| start.entries[k] + p[k] * step[k]),
         // Clamped rather than walled off: a simplex that meets a plateau keeps moving the
         // other coordinates, one that meets an infinite wall collapses against it.
         scale: if D == 5 {
-            (start.scale * p[D - 1].exp()).max(SCALE_MIN)
+            (start.scale * p[D - 1].exp()).clamp(SCALE_MIN, SCALE_MAX)
         } else {
             start.scale
         },
@@ -267,6 +451,19 @@ fn merge(current: &LutCell, fits: [Option<(PointFit, f64)>; 2]) -> LutCell {
 /// neighbour often sits in a deeper one). Each sweep reads only the previous table, so the
 /// result does not depend on the thread count.
 pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> Lut {
+    fit_table_for(classic, PointObjective::Lobe, settings, on_cell)
+}
+
+/// `fit_point_table` by any of the point objectives. The lobe objective keeps a cell's fit
+/// only where the table's error metric rates it below the classic cell; the others keep
+/// theirs always (the classic cell breaks the constraint, or is not what they minimize;
+/// their fit is never worse than its starts by their own objective).
+pub fn fit_table_for(
+    classic: &Lut,
+    objective: PointObjective,
+    settings: &FitSettings,
+    on_cell: &(dyn Fn() + Sync),
+) -> Lut {
     let n = classic.size;
     assert_eq!(
         n, settings.size,
@@ -276,8 +473,9 @@ pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn(
     let quadrature = crate::ltc::lobe::strata(QUADRATURE_STRATA);
     let refit = |current: &LutCell, lobe: Lobe, i: usize, j: usize, starts: &[PointFit]| {
         let problem = CellProblem::new(lobe, i, j, settings, &strata);
-        let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &quadrature);
-        let point = fit_cell(&q, problem.norm, starts, fits_scale(lobe), settings);
+        let q = objective.quadrature(lobe, problem.view, problem.alpha, &quadrature);
+        let free = Free::of(lobe, objective);
+        let point = fit_cell(&*q, problem.norm, starts, free, settings);
         let err = pointwise_error(
             lobe,
             problem.view,
@@ -288,7 +486,8 @@ pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn(
         // Kept only where the table's own error metric rates it below the current cell's
         // stored error (at first the classic one), so that no cell gets worse.
         let stored = f64::from(current.get(Channel::err(lobe)));
-        (point, (err < stored).then_some((point, err)))
+        let keep = objective != PointObjective::Lobe || err < stored;
+        (point, keep.then_some((point, err)))
     };
     let columns: Vec<Vec<LutCell>> = (0..n)
         .into_par_iter()
@@ -312,6 +511,7 @@ pub fn fit_point_table(classic: &Lut, settings: &FitSettings, on_cell: &(dyn Fn(
         })
         .collect();
     let mut table = Lut {
+        nl_terms: Default::default(),
         size: n,
         alpha_min: classic.alpha_min,
         cells: (0..n)

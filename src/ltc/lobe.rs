@@ -100,6 +100,8 @@ impl Lobe {
 /// One midpoint stratum `(u1, u2)` with what both sampling routines derive from it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stratum {
+    /// The stratum's midpoint in the unit square.
+    pub u: [f64; 2],
     /// The clamped-cosine direction (`cosine_sample(u1, u2)`).
     pub cosine: DVec3,
     /// GGX sampling: `φ = 2π u1`, `tan θh / α = sqrt(u2 / (1 − u2))`.
@@ -112,6 +114,7 @@ impl Stratum {
     pub fn new(u1: f64, u2: f64) -> Self {
         let phi = std::f64::consts::TAU * u1;
         Self {
+            u: [u1, u2],
             cosine: cosine_sample(u1, u2),
             ggx_cos_phi: phi.cos(),
             ggx_sin_phi: phi.sin(),

@@ -164,8 +164,10 @@ pub fn channel_limits(c: usize) -> ChannelLimits {
         c if c == SpecNorm as usize || c == SpecFresnel as usize => limits(
             0.0,
             c == SpecNorm as usize,
-            1.05,
-            "GGX's directional albedo is at most 1 (single scattering only loses energy); 5% for estimation noise",
+            // 1.05 for the albedo, times the fits' largest scale (1.1), which tables in
+            // ltc_code's layout carry folded into these channels.
+            1.05 * 1.1 * (1.0 + f64::from(f32::EPSILON)),
+            "GGX's directional albedo is at most 1 (single scattering only loses energy), 5% for estimation noise, times the fitted scale (at most 1.1) that ltc_code's layout folds in",
         ),
         c if c == DiffNorm as usize => limits(
             0.0,
@@ -176,8 +178,9 @@ pub fn channel_limits(c: usize) -> ChannelLimits {
         c if c == SpecScale as usize => limits(
             0.0,
             true,
-            1.05,
-            "a fitted factor on the albedo: 1 in the classic fit, 0.5–1.004 in the point fit",
+            // The fits' cap (`fit_point::SCALE_MAX`), as f32 rounds it up.
+            1.1 * (1.0 + f64::from(f32::EPSILON)),
+            "a fitted factor on the albedo: 1 in the classic fit, 0.5–1.004 in the point fit, up to 1.1 (the fits' cap) in the arrival fit",
         ),
         c if c == SpecErr as usize || c == DiffErr as usize => limits(
             0.0,
@@ -203,6 +206,13 @@ pub const EMBEDDED_EXR: &[u8] = include_bytes!("../../luts/ltc.exr");
 /// The shipped point-light fit (`luts/ltc_point.exr`, `ltc-lab fit --objective point`).
 pub const EMBEDDED_POINT_EXR: &[u8] = include_bytes!("../../luts/ltc_point.exr");
 
+/// The arrival-weighted point fit (`luts/ltc_arrival.exr`, `ltc-lab fit --objective arrival`).
+pub const EMBEDDED_ARRIVAL_EXR: &[u8] = include_bytes!("../../luts/ltc_arrival.exr");
+
+/// The horizon-constrained point fit (`luts/ltc_constrained.exr`,
+/// `ltc-lab fit --objective constrained`).
+pub const EMBEDDED_CONSTRAINED_EXR: &[u8] = include_bytes!("../../luts/ltc_constrained.exr");
+
 /// Which shipped table (and the objective that fitted it).
 #[derive(
     Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
@@ -213,15 +223,23 @@ pub enum Table {
     Classic,
     /// The point-light objective (`luts/ltc_point.exr`).
     Point,
+    /// The point-light objective weighted by where lights above a plane arrive from, the
+    /// horizon included (`luts/ltc_arrival.exr`; docs/design.md §4.7).
+    Arrival,
+    /// The point-light objective with `m20 = 0`, so that `M⁻¹` never carries a direction
+    /// across the horizon (`luts/ltc_constrained.exr`; docs/design.md §4.7).
+    Constrained,
 }
 
 impl Table {
-    pub const ALL: [Self; 2] = [Self::Classic, Self::Point];
+    pub const ALL: [Self; 4] = [Self::Classic, Self::Point, Self::Arrival, Self::Constrained];
 
     pub fn name(self) -> &'static str {
         match self {
             Self::Classic => "classic",
             Self::Point => "point",
+            Self::Arrival => "arrival",
+            Self::Constrained => "constrained",
         }
     }
 
@@ -230,14 +248,26 @@ impl Table {
         match self {
             Self::Classic => "luts/ltc.exr",
             Self::Point => "luts/ltc_point.exr",
+            Self::Arrival => "luts/ltc_arrival.exr",
+            Self::Constrained => "luts/ltc_constrained.exr",
         }
     }
 
-    /// The other shipped table.
+    fn bytes(self) -> &'static [u8] {
+        match self {
+            Self::Classic => EMBEDDED_EXR,
+            Self::Point => EMBEDDED_POINT_EXR,
+            Self::Arrival => EMBEDDED_ARRIVAL_EXR,
+            Self::Constrained => EMBEDDED_CONSTRAINED_EXR,
+        }
+    }
+
+    /// The table a lab compares with this one: the classic table, or the point table
+    /// beside the classic one.
     pub fn other(self) -> Self {
         match self {
             Self::Classic => Self::Point,
-            Self::Point => Self::Classic,
+            _ => Self::Classic,
         }
     }
 }
@@ -349,22 +379,41 @@ impl LutSample {
     }
 }
 
+/// One axis of bilinear filtering with clamp-to-edge addressing at coordinate `t` of a table
+/// of `n` cells: the two texels (clamped into the table) and the weight of the second.
+pub fn bilinear_taps(n: usize, t: f64) -> (usize, usize, f64) {
+    let x = if t.is_finite() {
+        t * n as f64 - 0.5
+    } else {
+        0.0
+    };
+    let x0 = x.floor();
+    let clamp = |k: f64| k.clamp(0.0, (n - 1) as f64) as usize;
+    (clamp(x0), clamp(x0 + 1.0), x - x0)
+}
+
 /// An N×N table; `cells[j * size + i]`.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default)]
 pub struct Lut {
     pub size: usize,
     pub alpha_min: f64,
     pub cells: Vec<LutCell>,
+    /// The `nl-fit` correction of each cell (`crate::ltc::nl_fit::nl_terms`), fitted on
+    /// first use; the cells must not change after it.
+    pub nl_terms: OnceLock<Vec<[f64; 4]>>,
+}
+
+impl PartialEq for Lut {
+    /// The same cells: whether the correction was fitted yet does not matter.
+    fn eq(&self, other: &Self) -> bool {
+        (self.size, self.alpha_min) == (other.size, other.alpha_min) && self.cells == other.cells
+    }
 }
 
 impl Lut {
     /// The table embedded in the binary (parsed once).
     pub fn embedded() -> &'static Lut {
-        static LUT: OnceLock<Lut> = OnceLock::new();
-        LUT.get_or_init(|| {
-            Lut::from_exr_bytes(EMBEDDED_EXR, "embedded luts/ltc.exr")
-                .expect("the embedded LUT is checked by the test suite")
-        })
+        Lut::shipped(Table::Classic)
     }
 
     /// Reads and validates a LUT file; errors name the file.
@@ -376,19 +425,16 @@ impl Lut {
 
     /// The shipped point-light table (parsed once).
     pub fn embedded_point() -> &'static Lut {
-        static LUT: OnceLock<Lut> = OnceLock::new();
-        LUT.get_or_init(|| {
-            Lut::from_exr_bytes(EMBEDDED_POINT_EXR, "embedded luts/ltc_point.exr")
-                .expect("the embedded point LUT is checked by the test suite")
-        })
+        Lut::shipped(Table::Point)
     }
 
-    /// One of the shipped tables.
+    /// One of the shipped tables (each parsed once).
     pub fn shipped(table: Table) -> &'static Lut {
-        match table {
-            Table::Classic => Lut::embedded(),
-            Table::Point => Lut::embedded_point(),
-        }
+        static PARSED: [OnceLock<Lut>; Table::ALL.len()] = [const { OnceLock::new() }; 4];
+        PARSED[table as usize].get_or_init(|| {
+            Lut::from_exr_bytes(table.bytes(), &format!("embedded {}", table.path()))
+                .expect("the embedded tables are checked by the test suite")
+        })
     }
 
     pub fn from_exr_bytes(bytes: &[u8], name: &str) -> Result<Lut> {
@@ -453,6 +499,7 @@ impl Lut {
             }
         }
         let lut = Lut {
+            nl_terms: Default::default(),
             size: w,
             alpha_min,
             cells,
@@ -556,20 +603,8 @@ impl Lut {
     /// Bilinear filtering at `uv` with clamp-to-edge addressing, as a GPU sampler does it:
     /// texel centres at `(k + ½)/N`, the four nearest texels clamped into the table.
     pub fn sample_uv(&self, u: f64, v: f64) -> LutSample {
-        let n = self.size;
-        let axis = |t: f64| {
-            let x = if t.is_finite() {
-                t * n as f64 - 0.5
-            } else {
-                0.0
-            };
-            let x0 = x.floor();
-            let frac = x - x0;
-            let clamp = |k: f64| k.clamp(0.0, (n - 1) as f64) as usize;
-            (clamp(x0), clamp(x0 + 1.0), frac)
-        };
-        let (i0, i1, fx) = axis(u);
-        let (j0, j1, fy) = axis(v);
+        let (i0, i1, fx) = bilinear_taps(self.size, u);
+        let (j0, j1, fy) = bilinear_taps(self.size, v);
         let (c00, c10, c01, c11) = (
             self.cell(i0, j0),
             self.cell(i1, j0),

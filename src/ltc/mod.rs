@@ -10,6 +10,8 @@ pub mod formats;
 pub mod lobe;
 pub mod lut;
 pub mod nelder_mead;
+pub mod nl_fit;
+pub mod remedy;
 pub mod sphere;
 
 use glam::{DMat3, DVec3};

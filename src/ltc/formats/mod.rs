@@ -210,6 +210,12 @@ impl Header {
             Some(Table::Point) => {
                 "the point-light fit (∫|s·n·D − f·cos| / ∫ f·cos, a fitted scale s)"
             }
+            Some(Table::Arrival) => {
+                "the arrival-weighted point fit (∫|s·n·D − f·cos|·a / ∫ f·cos·a, a = 1/max(n·l, sin 5°))"
+            }
+            Some(Table::Constrained) => {
+                "the constrained point fit (∫|s·n·D − f·cos| / ∫ f·cos with m20 = 0)"
+            }
             None if fitted_scale => "a fitted magnitude scale: the point-light fit's form",
             None => "not recorded in the source (its magnitude scale is 1)",
         };

@@ -80,6 +80,7 @@ pub const ERROR_SAMPLES: usize = 64;
 pub fn unpack(p: &Packed, alpha_min: f64, diffuse: &Lut) -> Lut {
     let n = p.size;
     let mut lut = Lut {
+        nl_terms: Default::default(),
         size: n,
         alpha_min,
         cells: vec![LutCell([0.0; crate::ltc::lut::CHANNEL_COUNT]); n * n],
