@@ -88,21 +88,32 @@ fn lut_texel(i: u32, j: u32, size: u32, base: u32) -> LutTexel {
     return LutTexel(lut[k], lut[k + 1u], lut[k + 2u]);
 }
 
+// The two texels along each axis (clamped into the table) and the weights of the second.
+struct Taps {
+    i: vec2<u32>,
+    j: vec2<u32>,
+    f: vec2<f32>,
+}
+
+// lut::bilinear_taps on both axes at uv, for a table of `size` cells per side.
+fn bilinear_taps(uv: vec2<f32>, size: u32) -> Taps {
+    let x = uv * f32(size) - 0.5;
+    let x0 = floor(x);
+    let last = f32(size - 1u);
+    let i = vec2<u32>(u32(clamp(x0.x, 0.0, last)), u32(clamp(x0.x + 1.0, 0.0, last)));
+    let j = vec2<u32>(u32(clamp(x0.y, 0.0, last)), u32(clamp(x0.y + 1.0, 0.0, last)));
+    return Taps(i, j, x - x0);
+}
+
 // Lut::sample_uv: bilinear filtering with clamp-to-edge addressing, done in the shader so
 // that it is the CPU sampler exactly (hardware filtering uses 8-bit weights on many GPUs).
 fn lut_sample_uv(uv: vec2<f32>, size: u32, base: u32) -> LutTexel {
-    let x = uv * f32(size) - 0.5;
-    let x0 = floor(x);
-    let f = x - x0;
-    let last = f32(size - 1u);
-    let i0 = u32(clamp(x0.x, 0.0, last));
-    let i1 = u32(clamp(x0.x + 1.0, 0.0, last));
-    let j0 = u32(clamp(x0.y, 0.0, last));
-    let j1 = u32(clamp(x0.y + 1.0, 0.0, last));
-    let a = lut_texel(i0, j0, size, base);
-    let b = lut_texel(i1, j0, size, base);
-    let c = lut_texel(i0, j1, size, base);
-    let d = lut_texel(i1, j1, size, base);
+    let t = bilinear_taps(uv, size);
+    let f = t.f;
+    let a = lut_texel(t.i.x, t.j.x, size, base);
+    let b = lut_texel(t.i.y, t.j.x, size, base);
+    let c = lut_texel(t.i.x, t.j.y, size, base);
+    let d = lut_texel(t.i.y, t.j.y, size, base);
     return LutTexel(
         mix(mix(a.spec_m, b.spec_m, f.x), mix(c.spec_m, d.spec_m, f.x), f.y),
         mix(mix(a.diff_m, b.diff_m, f.x), mix(c.diff_m, d.diff_m, f.x), f.y),
@@ -112,20 +123,13 @@ fn lut_sample_uv(uv: vec2<f32>, size: u32, base: u32) -> LutTexel {
 
 // nl_fit::nl_sample_uv: the nl-fit correction filtered as lut_sample_uv filters the cells.
 fn nl_sample_uv(uv: vec2<f32>, size: u32, base: u32) -> vec4<f32> {
-    let x = uv * f32(size) - 0.5;
-    let x0 = floor(x);
-    let f = x - x0;
-    let last = f32(size - 1u);
-    let i0 = u32(clamp(x0.x, 0.0, last));
-    let i1 = u32(clamp(x0.x + 1.0, 0.0, last));
-    let j0 = u32(clamp(x0.y, 0.0, last));
-    let j1 = u32(clamp(x0.y + 1.0, 0.0, last));
+    let t = bilinear_taps(uv, size);
     let at = base + 3u;
-    let a = lut[at + (j0 * size + i0) * LUT_VEC4S_PER_CELL];
-    let b = lut[at + (j0 * size + i1) * LUT_VEC4S_PER_CELL];
-    let c = lut[at + (j1 * size + i0) * LUT_VEC4S_PER_CELL];
-    let d = lut[at + (j1 * size + i1) * LUT_VEC4S_PER_CELL];
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    let a = lut[at + (t.j.x * size + t.i.x) * LUT_VEC4S_PER_CELL];
+    let b = lut[at + (t.j.x * size + t.i.y) * LUT_VEC4S_PER_CELL];
+    let c = lut[at + (t.j.y * size + t.i.x) * LUT_VEC4S_PER_CELL];
+    let d = lut[at + (t.j.y * size + t.i.y) * LUT_VEC4S_PER_CELL];
+    return mix(mix(a, b, t.f.x), mix(c, d, t.f.x), t.f.y);
 }
 
 // nl_fit::nl_sample_nearest: the correction of the cell whose texel contains uv.

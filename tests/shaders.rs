@@ -133,6 +133,13 @@ fn mirrored_functions_have_the_same_names() {
     };
     #[allow(unused_imports)]
     use ltc_lab::ltc::cos_from_brdf_from_entries;
+    // Issue 22's horizon rules and the sampler's taps.
+    #[allow(unused_imports)]
+    use ltc_lab::ltc::{
+        lut::bilinear_taps,
+        nl_fit::{nl_sample_nearest, nl_sample_uv, nl_weight},
+        remedy::in_exact_band,
+    };
     for f in [
         "d_ggx",
         "lambda_ggx",
@@ -152,6 +159,11 @@ fn mirrored_functions_have_the_same_names() {
         "surface_point",
         "camera_ray",
         "luminance",
+        "bilinear_taps",
+        "nl_sample_uv",
+        "nl_sample_nearest",
+        "nl_weight",
+        "in_exact_band",
     ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
     }

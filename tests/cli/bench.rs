@@ -24,6 +24,8 @@ fn bench_prints_the_table_and_writes_the_csv() {
         "2",
         "--csv",
         csv.to_str().unwrap(),
+        "--horizon",
+        "exact-band",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = String::from_utf8(o.stdout).unwrap();
@@ -31,6 +33,12 @@ fn bench_prints_the_table_and_writes_the_csv() {
         table.contains("| ltc-fast | 20 | 32×16 | on | 2 |"),
         "{table}"
     );
+    // Issue 22: each f32 LTC form again with the remedy, and its time over eq30's.
+    assert!(
+        table.contains("| ltc-fast (exact-band) | 20 | 32×16 | on | 2 |"),
+        "{table}"
+    );
+    assert!(table.contains("| method | exact-band |"), "{table}");
     assert!(table.contains("ltc-fast / brdf"), "{table}");
     assert!(
         table.contains("| 5000 | 2 | 5 |"),
@@ -40,24 +48,27 @@ fn bench_prints_the_table_and_writes_the_csv() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "method,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s"
+        "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 };
+    // Every method with eq30, and ltc and ltc-fast with exact-band too.
+    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 } + 2;
     assert_eq!(rows.len(), 2 * methods, "every method × 2 light counts");
+    let remedies = rows.iter().filter(|r| r[1] == "exact-band").count();
+    assert_eq!(remedies, 4, "ltc and ltc-fast × 2 light counts");
     for r in &rows {
-        assert_eq!(r.len(), 14);
-        assert_eq!((r[5], r[6]), ("on", "2"), "{r:?}");
-        let fraction: f64 = r[7].parse().unwrap();
+        assert_eq!(r.len(), 15);
+        assert_eq!((r[6], r[7]), ("on", "2"), "{r:?}");
+        let fraction: f64 = r[8].parse().unwrap();
         assert!(fraction > 0.0 && fraction <= 1.0, "{r:?}");
         let (median, min, max): (f64, f64, f64) = (
-            r[8].parse().unwrap(),
             r[9].parse().unwrap(),
             r[10].parse().unwrap(),
+            r[11].parse().unwrap(),
         );
         assert!(min > 0.0 && min <= median && median <= max, "{r:?}");
         // fps and G light-px/s follow from the median.
-        let fps: f64 = r[12].parse().unwrap();
+        let fps: f64 = r[13].parse().unwrap();
         assert!((fps - 1e3 / median).abs() <= 1e-3 * fps + 1e-3, "{r:?}");
     }
 }

@@ -21,11 +21,7 @@ fn eval_prints_one_row_per_case() {
     let o = ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8(o.stdout).unwrap();
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
+    let rows = numbers(&text);
     assert_eq!(
         text.lines().next().unwrap(),
         "theta_o,alpha,lx,ly,lz,f0,brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse"
@@ -42,6 +38,57 @@ fn eval_prints_one_row_per_case() {
     assert_eq!(&rows[2][6..], &[0.0; 4]);
     // At normal view on a rough surface the LTC is within the pointwise error of the table.
     assert!((rows[0][9] - rows[0][7]).abs() < 0.05 * rows[0][7]);
+}
+
+/// Issue 22: `--horizon` picks the remedy. exact-band gives the exact lobes for a light 10°
+/// above the surface and eq. 30's LTC for one at 60°; a fitted remedy is its own table, and
+/// naming another table beside it is refused.
+#[test]
+fn eval_shades_with_the_horizon_remedy() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases.csv");
+    let (low, high) = (10f64.to_radians(), 60f64.to_radians());
+    std::fs::write(
+        &cases,
+        format!(
+            "theta_o,alpha,lx,ly,lz,f0\n45,0.3,{},0,{},0.04\n45,0.3,{},0,{},0.04\n",
+            -low.cos(),
+            low.sin(),
+            -high.cos(),
+            high.sin()
+        ),
+    )
+    .unwrap();
+    let run = |extra: &[&str]| {
+        let mut args = vec!["eval", "--cases", cases.to_str().unwrap()];
+        args.extend(extra);
+        let o = ltc_lab(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        numbers(&String::from_utf8(o.stdout).unwrap())
+    };
+    let (eq30, band) = (run(&[]), run(&["--horizon", "exact-band"]));
+    // Below 15°: the exact lobes to the bit; eq. 30's LTC is off there.
+    assert_eq!(&band[0][8..], &band[0][6..8]);
+    assert!(
+        (eq30[0][8] - eq30[0][6]).abs() > 0.01 * eq30[0][6],
+        "{eq30:?}"
+    );
+    // Above it: eq. 30's LTC unchanged.
+    assert_eq!(band[1], eq30[1]);
+    // constrained-fit is the constrained table: the same as --table constrained.
+    let fitted = run(&["--horizon", "constrained-fit"]);
+    assert_eq!(fitted, run(&["--table", "constrained"]));
+    assert_ne!(fitted, eq30);
+    let o = ltc_lab(&[
+        "eval",
+        "--cases",
+        cases.to_str().unwrap(),
+        "--horizon",
+        "constrained-fit",
+        "--table",
+        "point",
+    ]);
+    assert_refused(&o, "--horizon");
 }
 
 #[test]
@@ -288,4 +335,12 @@ fn eval_takes_the_programs_alpha_range_and_echoes_its_inputs_as_written() {
         );
         assert!(stderr(&o).len() < 200, "{}", stderr(&o));
     }
+}
+
+/// The rows of eval's output after its header, as numbers.
+fn numbers(text: &str) -> Vec<Vec<f64>> {
+    text.lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect()
 }

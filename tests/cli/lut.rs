@@ -108,12 +108,17 @@ fn atlas_writes_heat_maps_and_csvs_into_a_new_directory() {
     assert_eq!(cells.lines().count(), 1 + 64 * 64);
     let orbits = std::fs::read_to_string(dir.join("orbits.csv")).unwrap();
     assert_eq!(orbits.lines().count(), 1 + 4 * 91 * 91);
-    // The error by light elevation: four bands, the lowest far worse than the highest.
+    // The error by light elevation: four bands under each of the five remedies; under eq30
+    // the lowest far worse than the highest.
     let (rows, k) = crate::horizon_rows(&dir);
-    assert_eq!(rows.len(), 4, "{rows:?}");
+    assert_eq!(rows.len(), 5 * 4, "{rows:?}");
     let low_worse = crate::specular(&rows[0], k) > 2.0 * crate::specular(&rows[3], k);
-    assert!(rows[0][1] == "0-5" && low_worse, "{rows:?}");
-    assert!(summary.contains("0–5° above the surface"), "{summary}");
+    assert!(
+        rows[0][0] == "eq30" && rows[0][1] == "0-5" && low_worse,
+        "{rows:?}"
+    );
+    assert!(summary.contains("0–5° 5–15° 15–30° 30–90°"), "{summary}");
+    assert!(summary.contains("exact-band"), "{summary}");
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 9, "stray files");
 }
 

@@ -728,3 +728,41 @@ fn no_driver_chatter_without_a_runtime_directory() {
         stderr(&ok)
     );
 }
+
+/// Issue 22: a render with a horizon remedy says so in its default name, and differs from
+/// eq. 30's where lights sit near the horizon (figure2-case2's light is 0.01 above the plane).
+#[test]
+fn a_horizon_remedy_names_its_render_and_changes_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let render = |extra: &[&str]| {
+        let scene = preset("figure2-case2.toml");
+        let mut args = vec!["render", "--cpu", "--scene", &scene, "--method", "ltc"];
+        args.extend(["--size", "16x16"]);
+        args.extend(extra);
+        let o = ltc_lab_in(dir.path(), &args);
+        assert!(o.status.success(), "{}", stderr(&o));
+    };
+    render(&[]);
+    render(&["--horizon", "exact-band"]);
+    let read = |name: &str| std::fs::read(dir.path().join(name)).unwrap();
+    assert_ne!(
+        read("figure2-case2-ltc.png"),
+        read("figure2-case2-ltc-exact-band.png")
+    );
+    let o = ltc_lab_in(
+        dir.path(),
+        &[
+            "render",
+            "--cpu",
+            "--scene",
+            &preset("figure2-case2.toml"),
+            "--method",
+            "ltc",
+            "--horizon",
+            "arrival-fit",
+            "--lut",
+            "missing.exr",
+        ],
+    );
+    assert_refused(&o, "--horizon");
+}

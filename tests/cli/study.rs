@@ -38,6 +38,13 @@ fn study_writes_every_variant_and_the_pareto_chart() {
     if gpu().unwrap().ctx.has_f16() {
         expected.extend(["ltc-f16", "ltc-f16-pairs"]);
     }
+    // Issue 22: every horizon remedy on ltc-fast, by default.
+    expected.extend([
+        "ltc-fast-arrival-fit",
+        "ltc-fast-constrained-fit",
+        "ltc-fast-nl-fit",
+        "ltc-fast-exact-band",
+    ]);
     assert_eq!(names, expected);
     for r in &rows {
         assert!(
@@ -57,14 +64,34 @@ fn study_writes_every_variant_and_the_pareto_chart() {
         png.width() >= 800 && png.pixels().filter(|p| p.0 != [255, 255, 255]).count() > 10_000,
         "blank chart"
     );
-    // The error by light elevation of both tables, four bands each, the lowest the worst.
+    // The error by light elevation of its table under each remedy and of the point fit,
+    // four bands each; the lowest the worst under eq30, exact under exact-band.
     let (rows, k) = crate::horizon_rows(&dir);
-    assert_eq!(rows.len(), 8, "{rows:?}");
-    assert!(rows[0][0] == "classic" && rows[4][0] == "point", "{rows:?}");
-    for table in rows.chunks(4) {
+    assert_eq!(rows.len(), 6 * 4, "{rows:?}");
+    let named: Vec<(&str, &str)> = rows
+        .chunks(4)
+        .map(|t| (t[0][0].as_str(), t[0][1].as_str()))
+        .collect();
+    assert_eq!(
+        named,
+        [
+            ("classic", "eq30"),
+            ("arrival", "arrival-fit"),
+            ("constrained", "constrained-fit"),
+            ("classic", "nl-fit"),
+            ("classic", "exact-band"),
+            ("point", "eq30"),
+        ]
+    );
+    for table in [&rows[0..4], &rows[20..24]] {
         let low_worse = crate::specular(&table[0], k) > 2.0 * crate::specular(&table[3], k);
         assert!(low_worse, "{rows:?}");
     }
+    assert_eq!(
+        crate::specular(&rows[16], k),
+        0.0,
+        "exact-band's 0–5°: {rows:?}"
+    );
 }
 
 #[test]
