@@ -68,7 +68,7 @@ fn gpu_lut_filtering_matches_the_cpu_sampler() {
     };
     let uv_buffer = init(bytemuck::cast_slice(&uv), wgpu::BufferUsages::STORAGE);
     let lut_buffer = init(
-        bytemuck::cast_slice(&ltc::pack_lut(lut)),
+        bytemuck::cast_slice(&ltc::pack_lut(lut, false)),
         wgpu::BufferUsages::STORAGE,
     );
     let out_size = (uv.len() * 3 * 16) as u64;

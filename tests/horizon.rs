@@ -138,8 +138,9 @@ fn the_arrival_table_improves_its_objective_on_the_classic_cells() {
 }
 
 /// The nl-fit's quadrature and passes are fine enough: twice the nodes each way and twice the
-/// passes move no band's error by more than 2% of itself (measured: 1.1% at most, the 0–5°
-/// diffuse band) — a fiftieth of what the remedy changes there (it halves that error).
+/// passes move no band's error by more than 2% of itself or 0.1 percentage point, whichever is
+/// larger (measured: 1.1% at 0–5°, where the remedy halves the diffuse error; 0.06 point on
+/// the 15–30° diffuse error of about 1%, which 20 000 cases alone pin no better).
 #[test]
 fn the_nl_fit_is_fine_enough() {
     let lut = Lut::embedded();
@@ -157,7 +158,7 @@ fn the_nl_fit_is_fine_enough() {
     let errors = |t: &Lut| remedy_errors(t, Horizon::NlFit, 20_000, 5).1;
     for (c, f) in errors(&coarse).iter().zip(errors(&fine)) {
         for (x, y) in [(c.specular, f.specular), (c.diffuse, f.diffuse)] {
-            assert!((x - y).abs() <= 0.02 * y, "{c:?} against {f:?}");
+            assert!((x - y).abs() <= (0.02 * y).max(1e-3), "{c:?} against {f:?}");
         }
     }
 }

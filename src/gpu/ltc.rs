@@ -17,14 +17,19 @@ pub const VEC4S_PER_CELL: usize = 4;
 /// `[spec m00 m02 m20 m22] [diff m00 m02 m20 m22] [scale·spec.norm scale·spec.fresnel diff.norm
 /// spec.scale]`: the specular magnitudes with the scale folded in per cell, as
 /// `LutCell::shaded` (and ltc_code's layout) has them, rounded to f32 once as an export does;
-/// then the cell's `nl-fit` correction (`crate::ltc::nl_fit`, fitted here on the table's first
-/// use). The `err` channels are not needed for shading and stay on the CPU.
-pub fn pack_lut(lut: &Lut) -> Vec<[f32; 4]> {
-    debug_assert_eq!(VEC4S_PER_CELL, 4);
+/// then the cell's `nl-fit` correction (`crate::ltc::nl_fit`, fitted on the table's first use)
+/// where `with_nl`, else zeros (the shader reads it only under that rule). The `err`
+/// channels are not needed for shading and stay on the CPU.
+pub fn pack_lut(lut: &Lut, with_nl: bool) -> Vec<[f32; 4]> {
     use Channel::*;
+    let nl = if with_nl {
+        nl_terms(lut).to_vec()
+    } else {
+        vec![[0.0; 4]; lut.cells.len()]
+    };
     lut.cells
         .iter()
-        .zip(nl_terms(lut))
+        .zip(nl)
         .flat_map(|(c, nl)| {
             [
                 [
@@ -57,20 +62,23 @@ pub struct LutBuffer {
     pub size_a: usize,
     /// Cells per side and first vec4 of table B.
     pub b: Option<(usize, u32)>,
+    /// Whether it holds the `nl-fit` correction (else zeros in its place).
+    pub with_nl: bool,
 }
 
 impl LutBuffer {
-    /// Table A packed, B packed after it; refused where they exceed one storage binding.
-    pub fn new(ctx: &GpuContext, a: &Lut, b: Option<&Lut>) -> Result<Self> {
+    /// Table A packed, B packed after it, with the `nl-fit` correction where `with_nl`;
+    /// refused where they exceed one storage binding.
+    pub fn new(ctx: &GpuContext, a: &Lut, b: Option<&Lut>, with_nl: bool) -> Result<Self> {
         let size_a = a.size;
-        // Checked before packing: packing fits the nl-fit correction of every cell.
+        // Checked before packing: packing may fit the correction of every cell.
         let bytes = |lut: &Lut| (lut.size * lut.size * VEC4S_PER_CELL * 16) as u64;
         let largest = b.map_or(size_a, |lut| lut.size.max(size_a));
         limits::check_lut_size(ctx, largest, bytes(a) + b.map_or(0, bytes))?;
-        let mut all = pack_lut(a);
+        let mut all = pack_lut(a, with_nl);
         let b = b.map(|lut| {
             let base = all.len() as u32;
-            all.extend(pack_lut(lut));
+            all.extend(pack_lut(lut, with_nl));
             (lut.size, base)
         });
         let buffer = wgpu::util::DeviceExt::create_buffer_init(
@@ -81,6 +89,11 @@ impl LutBuffer {
                 usage: wgpu::BufferUsages::STORAGE,
             },
         );
-        Ok(Self { buffer, size_a, b })
+        Ok(Self {
+            buffer,
+            size_a,
+            b,
+            with_nl,
+        })
     }
 }

@@ -128,6 +128,9 @@ pub struct PlaneRenderer {
     pipelines: HashMap<PipelineKey, Pipelines>,
     binning: Binning,
     tables: LutBuffer,
+    /// The tables it holds, kept to pack them again with the `nl-fit` correction when a render
+    /// first needs it (fitting it takes about a second: not for every render's set-up).
+    luts: (Lut, Option<Lut>),
     lights: wgpu::Buffer,
     light_count: usize,
     /// Whether any light has a finite range (else culling would keep every light).
@@ -171,7 +174,7 @@ impl PlaneRenderer {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let tables = LutBuffer::new(ctx, lut, None)?;
+        let tables = LutBuffer::new(ctx, lut, None, false)?;
         Ok(Self {
             module,
             layout,
@@ -179,6 +182,7 @@ impl PlaneRenderer {
             pipelines: HashMap::new(),
             binning: Binning::new(ctx),
             tables,
+            luts: (lut.clone(), None),
             lights: light_buffer(ctx, 1),
             light_count: 0,
             any_ranged: false,
@@ -202,7 +206,8 @@ impl PlaneRenderer {
     /// now on (their buffer rewritten, pipelines kept). Both at once: a new table A must not
     /// lose table B.
     pub fn set_tables(&mut self, ctx: &GpuContext, a: &Lut, b: Option<&Lut>) -> Result<()> {
-        self.tables = LutBuffer::new(ctx, a, b)?;
+        self.tables = LutBuffer::new(ctx, a, b, self.tables.with_nl)?;
+        self.luts = (a.clone(), b.cloned());
         self.bind_groups = None;
         Ok(())
     }
@@ -257,6 +262,11 @@ impl PlaneRenderer {
         settings: &RenderSettings,
     ) -> Result<()> {
         self.check(ctx, scene, settings)?;
+        if settings.horizon == HorizonRule::NlFit && !self.tables.with_nl {
+            let (a, b) = &self.luts;
+            self.tables = LutBuffer::new(ctx, a, b.as_ref(), true)?;
+            self.bind_groups = None;
+        }
         self.upload_lights(ctx, scene);
         let cull = settings.cull && self.any_ranged;
         let (tiles_x, tiles_y) = crate::gpu::scene::tiles(settings.width, settings.height);
