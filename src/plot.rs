@@ -1,6 +1,7 @@
 //! Charts written to PNG with plotters: the study's Pareto chart and the atlas's heat maps.
 //! Text uses egui's bundled Ubuntu-Light (nothing is read from the system's fonts).
 
+#[cfg(not(target_arch = "wasm32"))]
 use std::sync::Once;
 
 use plotters::prelude::*;
@@ -8,7 +9,13 @@ use plotters::prelude::*;
 use crate::colormap::viridis;
 use crate::error::{Error, Result};
 
+/// Registers the bundled font under plotters' "sans-serif" once per process. In the browser
+/// build plotters draws text with the page's own fonts and has no registry: nothing to do.
+#[cfg(target_arch = "wasm32")]
+fn register_font() {}
+
 /// Registers the bundled font under plotters' "sans-serif" once per process.
+#[cfg(not(target_arch = "wasm32"))]
 fn register_font() {
     static ONCE: Once = Once::new();
     ONCE.call_once(|| {

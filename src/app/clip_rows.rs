@@ -99,7 +99,7 @@ impl RowsWorker {
     pub fn start(&mut self, ctx: &egui::Context, input: RowsInput) {
         let (tx, rx) = mpsc::channel();
         let repaint = ctx.clone();
-        std::thread::spawn(move || {
+        crate::app::background::spawn("clipping rows", move || {
             let rows = ROWS.iter().map(|&row| render_row(&input, row)).collect();
             let _ = tx.send(rows);
             repaint.request_repaint();

@@ -6,7 +6,7 @@
 
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
-use std::time::Instant;
+use web_time::Instant;
 
 /// The state of the chunk last handed to the waiter.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -160,7 +160,7 @@ pub struct MeasureJob {
     /// Entries of the current render summed so far (`None`: not begun).
     done: Option<usize>,
     /// The chunk in flight: its entries and when it was submitted.
-    in_flight: Option<(usize, std::time::Instant)>,
+    in_flight: Option<(usize, web_time::Instant)>,
     /// GPU ms of the current render so far, and of each finished repeat.
     render_ms: f64,
     repeat_ms: Vec<f64>,
@@ -288,7 +288,7 @@ impl MeasureJob {
         self.ctx
             .queue
             .on_submitted_work_done(move || idle.store(true, Ordering::Release));
-        self.in_flight = Some((end - done, std::time::Instant::now()));
+        self.in_flight = Some((end - done, web_time::Instant::now()));
         self.done = Some(end);
         None
     }

@@ -3,6 +3,7 @@
 //! speed against accuracy — and the global controls beside them. State persists between runs.
 
 pub mod axes;
+pub mod background;
 pub mod chart;
 pub mod clip_rows;
 pub mod clip_setup;
@@ -145,7 +146,7 @@ impl LabApp {
         }
         self.part_ms = [0.0; screenshot::PART_COUNT];
         if !self.window.controls_hidden {
-            let started = std::time::Instant::now();
+            let started = web_time::Instant::now();
             egui::Panel::left("controls")
                 .resizable(true)
                 .default_size(250.0)
@@ -263,7 +264,7 @@ impl LabApp {
                 PanelId::Clipping => &mut self.clipping,
                 PanelId::Chart => &mut self.chart,
             };
-            let started = std::time::Instant::now();
+            let started = web_time::Instant::now();
             panel.show(ui, &mut self.lab);
             self.part_ms[1 + id as usize] = started.elapsed().as_secs_f64() * 1e3;
         });

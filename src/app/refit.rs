@@ -129,7 +129,7 @@ impl Refit {
             stored,
             objective,
         };
-        std::thread::spawn(move || {
+        crate::app::background::spawn("refit", move || {
             let mut observe = |k: usize, f: f64| {
                 let _ = tx.send(Event::Iteration(k, f));
                 if stop.load(Ordering::Relaxed) {

@@ -129,8 +129,8 @@ pub fn frame_log_csv(records: &[FrameRecord]) -> String {
 pub struct ScreenshotApp<A> {
     pub app: A,
     pending: PendingScreenshot,
-    started: std::time::Instant,
-    last_frame: Option<std::time::Instant>,
+    started: web_time::Instant,
+    last_frame: Option<web_time::Instant>,
     pub frames: Arc<Mutex<Vec<FrameRecord>>>,
     pub result: Arc<Mutex<Option<Result<(), Error>>>>,
 }
@@ -140,7 +140,7 @@ impl<A> ScreenshotApp<A> {
         Self {
             app,
             pending: PendingScreenshot::new(path),
-            started: std::time::Instant::now(),
+            started: web_time::Instant::now(),
             last_frame: None,
             frames: Arc::default(),
             result: Arc::default(),
@@ -150,7 +150,7 @@ impl<A> ScreenshotApp<A> {
 
 impl<A: eframe::App + Settling> eframe::App for ScreenshotApp<A> {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        let now = std::time::Instant::now();
+        let now = web_time::Instant::now();
         let ms = now
             .duration_since(self.last_frame.unwrap_or(self.started))
             .as_secs_f64()

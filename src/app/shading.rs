@@ -5,7 +5,9 @@
 
 use std::sync::Arc;
 use std::sync::mpsc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use web_time::Instant;
 
 use crate::app::completion::{Chunk, Completion};
 use crate::app::display::ShownImage;
@@ -339,6 +341,18 @@ impl Shading {
 
 impl GpuShading {
     fn new(rs: &egui_wgpu::RenderState, lut: &Lut) -> Result<Self, String> {
+        // WebGL2 (the browser without WebGPU) draws the window but has no compute shaders
+        // and no storage buffers: the plane is then shaded on the CPU (issue 21).
+        let downlevel = rs.adapter.get_downlevel_capabilities();
+        if !downlevel
+            .flags
+            .contains(wgpu::DownlevelFlags::COMPUTE_SHADERS)
+        {
+            return Err(format!(
+                "{} has no compute shaders (WebGL2?)",
+                rs.adapter.get_info().name
+            ));
+        }
         let ctx =
             GpuContext::from_parts(rs.device.clone(), rs.queue.clone(), rs.adapter.get_info());
         let renderer =
@@ -536,7 +550,7 @@ impl CpuShading {
         let (tx, rx) = mpsc::channel();
         let repaint = ui.clone();
         let (a, b) = (tables.a.lut.clone(), tables.b.lut.clone());
-        std::thread::spawn(move || {
+        crate::app::background::spawn("cpu render", move || {
             let _ = tx.send(crate::cpu::render(&scene, Tables { a: &a, b: &b }, &s));
             repaint.request_repaint();
         });

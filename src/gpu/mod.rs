@@ -14,6 +14,7 @@ pub mod scene;
 pub mod target;
 pub mod timing;
 
+#[cfg(not(target_arch = "wasm32"))]
 use crate::error::Error;
 
 /// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, scene.wgsl, plane.wgsl and
@@ -67,6 +68,8 @@ pub struct GpuContext {
 impl GpuContext {
     /// The default adapter without a window (`WGPU_BACKEND` picks the backend), with
     /// timestamp queries where it has them and its own limits (for the largest light buffer).
+    /// Not in the browser, which cannot block on it: the lab there uses eframe's device.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn new() -> Result<Self, Error> {
         let (opened, drivers_said) = driver_output::held_back(Self::open);
         opened.map_err(|e| match drivers_said.as_str() {
@@ -82,6 +85,7 @@ impl GpuContext {
         })
     }
 
+    #[cfg(not(target_arch = "wasm32"))]
     fn open() -> Result<Self, Error> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());

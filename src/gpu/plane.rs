@@ -558,7 +558,7 @@ impl PlaneRenderer {
         if let Some(t) = &mut self.timer {
             let _ = t.read_ms(&ctx.device);
         }
-        let start = std::time::Instant::now();
+        let start = web_time::Instant::now();
         self.step(ctx, 0..self.light_count);
         let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
         let wall_ms = start.elapsed().as_secs_f64() * 1e3;

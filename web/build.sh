@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Builds the lab for the browser into dist/ (issue 21) on a machine like the project's, whose
+# rustup has no wasm32-unknown-unknown standard library and cannot download one: Debian's Rust
+# toolchain (rustc-web, cargo-web, rust-web-src, lld) builds std for wasm32 itself. A user
+# with rustup does `rustup target add wasm32-unknown-unknown` and `trunk build --release`.
+#
+#   web/build.sh            writes dist/index.html, dist/ltc_lab_web.js, dist/ltc_lab_web_bg.wasm
+#
+# The build has its own target directory (target/web) so that the two toolchains do not
+# rebuild each other's files; wasm-bindgen-cli is installed into target/web-tools at the
+# version Cargo.lock pins for the wasm-bindgen crate (the two must match).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if [ ! -x /usr/bin/wasm-ld ] || [ ! -d /usr/lib/rustlib/src/rust/library ]; then
+    if [ "$(id -u)" = 0 ]; then
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq rustc-web cargo-web rust-web-src lld > /dev/null
+    else
+        echo "web/build.sh: needs Debian's rustc-web cargo-web rust-web-src lld (apt-get install as root)" >&2
+        exit 1
+    fi
+fi
+
+version=$(grep -A1 '^name = "wasm-bindgen"$' Cargo.lock | sed -n 's/^version = "\(.*\)"$/\1/p')
+tools=target/web-tools
+if ! "$tools/bin/wasm-bindgen" --version 2>/dev/null | grep -q " $version\$"; then
+    # Not --locked: the registry here lacks one of the CLI's pinned dependencies.
+    cargo install -q wasm-bindgen-cli --version "=$version" --root "$tools"
+fi
+
+start=$(date +%s)
+PATH=/usr/bin:$PATH RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR=target/web \
+RUSTFLAGS='-C linker=/usr/bin/wasm-ld --cfg getrandom_backend="wasm_js"' \
+    /usr/bin/cargo build -q --locked --profile web -p ltc-lab-web \
+    -Z build-std=std,panic_abort --target wasm32-unknown-unknown
+
+rm -rf dist
+mkdir -p dist
+"$tools/bin/wasm-bindgen" --target web --no-typescript --out-dir dist \
+    target/web/wasm32-unknown-unknown/web/ltc_lab_web.wasm
+if command -v wasm-opt > /dev/null; then
+    wasm-opt -Oz --enable-bulk-memory --enable-nontrapping-float-to-int \
+        -o dist/ltc_lab_web_bg.wasm dist/ltc_lab_web_bg.wasm
+fi
+python3 - <<'PY'
+import pathlib
+page = pathlib.Path("web/index.html").read_text()
+loader = """<script type="module">
+  import init from "./ltc_lab_web.js";
+  init().catch((e) => {
+    const status = document.getElementById("status");
+    status.style.display = "";
+    status.textContent = "The LTC lab could not load: " + e;
+  });
+</script>"""
+page = page.replace("<!-- loader -->", loader)
+# Trunk's own link is for Trunk only.
+page = "\n".join(l for l in page.splitlines() if "data-trunk" not in l) + "\n"
+pathlib.Path("dist/index.html").write_text(page)
+PY
+wasm=dist/ltc_lab_web_bg.wasm
+echo "web/build.sh: dist/ in $(( $(date +%s) - start )) s; $(stat -c %s $wasm) bytes of wasm, $(gzip -9 -c $wasm | wc -c) gzipped"
