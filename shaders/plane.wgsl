@@ -256,7 +256,9 @@ fn add_light(method: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, lig
 // The largest finite f32. A light of intensity 1e30 next to the surface overflows f32; the
 // sums saturate here instead, so that a zero factor (black base colour, F0 = 0 on a mirror)
 // times them stays 0 rather than NaN, and the diff view never subtracts two infinities.
-const F32_MAX: f32 = 3.40282347e38;
+// Written in hex: the decimal 3.40282347e38 lies just above it, which Chrome's WGSL compiler
+// (Tint) refuses as not representable in f32.
+const F32_MAX: f32 = 0x1.fffffep+127f;
 
 fn saturate_finite(x: vec3<f32>) -> vec3<f32> {
     return clamp(x, vec3<f32>(-F32_MAX), vec3<f32>(F32_MAX));
@@ -454,7 +456,7 @@ fn floor_of_means(@builtin(local_invocation_index) li: u32) {
         let count = max(s.z, 1.0);
         let mean = select(s.x / count, s.y / count, s.y > 0.0);
         // RELATIVE_FLOOR of src/metrics.rs, never below f32's smallest normal.
-        partials[tiles] = vec4<f32>(max(0.01 * mean, 1.17549435e-38));
+        partials[tiles] = vec4<f32>(max(0.01 * mean, 0x1p-126f));
     }
 }
 
