@@ -345,8 +345,9 @@ pub fn csv(rows: &[StudyRow]) -> String {
 }
 
 /// The Pareto chart as PNG bytes: every row as a faint marker, the case closest to
-/// paper-100 (100 lights, α = 0.27) as one large labelled marker per variant.
-pub fn pareto_png(rows: &[StudyRow], device: &str) -> Result<Vec<u8>> {
+/// paper-100 (100 lights, α = 0.27) as one large labelled marker per variant; `scene` names the
+/// light set in the title (paper-100, or the low-lights scene).
+pub fn pareto_png(rows: &[StudyRow], device: &str, scene: &str) -> Result<Vec<u8>> {
     let key =
         |r: &StudyRow| ((r.lights as f64).ln() - 100f64.ln()).abs() + (r.alpha - 0.27).abs() * 10.0;
     let best = rows.iter().map(key).fold(f64::INFINITY, f64::min);
@@ -367,7 +368,7 @@ pub fn pareto_png(rows: &[StudyRow], device: &str) -> Result<Vec<u8>> {
     crate::plot::pareto_png(
         "study.png",
         &format!(
-            "{lights} lights, α = {alpha} (large); all cases (small) — {}×{} on {device}",
+            "{scene}: {lights} lights, α = {alpha} (large); all cases (small) — {}×{} on {device}",
             size.0, size.1
         ),
         &points,

@@ -109,7 +109,8 @@ pub fn run(a: &Args) -> Result<()> {
     })?;
     let csv = study::csv(&rows);
     out.stage("study.csv", csv.as_bytes())?;
-    out.stage("study.png", &study::pareto_png(&rows, &ctx.info.name)?)?;
+    let png = study::pareto_png(&rows, &ctx.info.name, &a.scene)?;
+    out.stage("study.png", &png)?;
     out.stage("horizon.csv", horizon_csv(&lut, &a.lut.name()).as_bytes())?;
     out.commit()?;
     eprintln!(
