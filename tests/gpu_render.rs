@@ -1,7 +1,8 @@
 //! The GPU renderer's ways of getting an image, against each other and the CPU (lavapipe in
 //! CI): tiled culling gives the unculled image to the bit; a render summed in chunks across
 //! submissions gives the one-shot image to the bit; a second table reaches method B as on the
-//! CPU; the f16 pairs stay finite and within half precision.
+//! CPU; the f16 pairs stay finite and within half precision; a read-back that never waits (the
+//! browser's) gives the waiting one's frame.
 
 mod gpu_common;
 
@@ -317,4 +318,33 @@ fn limits_name_the_value_not_a_flag() {
             "{text}"
         );
     }
+}
+
+/// Issue 21: a read-back that never waits (the browser's) gives the frame the waiting one
+/// gives, to the bit: `try_take` says `None` or the texels, and once the device has finished
+/// (polled here, as the browser's event loop does for it) it has them.
+#[test]
+fn a_read_in_steps_is_the_waiting_read() {
+    let Some(g) = gpu() else { return };
+    let mut r = PlaneRenderer::new(&g.ctx, Lut::embedded(), ShaderChecks::Checked).unwrap();
+    let scene = preset("paper-100");
+    let waited = frame(
+        &mut r,
+        &scene,
+        &RenderSettings::single(W, H, Method::LtcFast),
+    );
+    let pending = r.start_read(&g.ctx);
+    let mut texels = pending.try_take(&g.ctx);
+    // Each poll without waiting lets the device finish a little more; a bound keeps a broken
+    // mapping from hanging the test (lavapipe maps this 10 kB copy within a few polls).
+    for _ in 0..10_000 {
+        if texels.is_some() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(1));
+        texels = pending.try_take(&g.ctx);
+    }
+    let stepped = r.frame_of(&texels.expect("the read-back never landed"));
+    assert_eq!(bits(&stepped), bits(&waited));
+    assert_eq!(stepped.on_plane, waited.on_plane);
 }

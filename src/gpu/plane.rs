@@ -13,7 +13,7 @@ use crate::gpu::bin::{self, BinPass, Binning};
 use crate::gpu::limits;
 use crate::gpu::ltc::LutBuffer;
 use crate::gpu::scene::{GpuLight, Params, params};
-use crate::gpu::target::{self, OUTPUT_FORMAT, Target};
+use crate::gpu::target::{self, OUTPUT_FORMAT, PendingRead, Target};
 use crate::gpu::timing::{PassTimer, Slot, SlotTimes};
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::HorizonRule;
@@ -575,6 +575,24 @@ impl PlaneRenderer {
             .as_ref()
             .expect("begin made the target")
             .read(ctx, &self.settings)
+    }
+
+    /// Starts reading the image back without waiting (the browser cannot wait):
+    /// `PendingRead::try_take` gives its texels once the GPU is done, and `frame_of` the
+    /// frame that `read` gives.
+    pub fn start_read(&self, ctx: &GpuContext) -> PendingRead {
+        self.target
+            .as_ref()
+            .expect("begin made the target")
+            .start_read(ctx)
+    }
+
+    /// The frame of texels that `start_read` fetched.
+    pub fn frame_of(&self, texels: &[u8]) -> Frame {
+        self.target
+            .as_ref()
+            .expect("begin made the target")
+            .frame_of(texels, &self.settings)
     }
 
     /// The entries of the current render's tile lists, read back (blocks): how much culling

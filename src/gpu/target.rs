@@ -2,6 +2,9 @@
 //! the per-pixel sums, the tile lists and the difference view's partial sums; and the image
 //! read back as a `Frame`.
 
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use glam::DVec3;
 
 use crate::gpu::GpuContext;
@@ -152,10 +155,23 @@ impl Target {
         );
     }
 
-    /// Reads the output back as a frame of `settings` (alpha marks the plane's pixels).
+    /// Reads the output back as a frame of `settings` (alpha marks the plane's pixels); waits
+    /// for the GPU.
     pub fn read(&self, ctx: &GpuContext, settings: &RenderSettings) -> Frame {
         let (w, h) = (self.width as u32, self.height as u32);
         let data = read_texels(ctx, &self.texture, (w, h), TEXEL_BYTES);
+        self.frame_of(&data, settings)
+    }
+
+    /// Starts reading the output back, for a caller that cannot wait (the browser): the
+    /// frame comes from `PendingRead::try_take` and `Target::frame_of` once the GPU is done.
+    pub fn start_read(&self, ctx: &GpuContext) -> PendingRead {
+        let (w, h) = (self.width as u32, self.height as u32);
+        PendingRead::start(ctx, &self.texture, (w, h), TEXEL_BYTES)
+    }
+
+    /// The output's texels (`TEXEL_BYTES` each, rows packed) as a frame of `settings`.
+    pub fn frame_of(&self, data: &[u8], settings: &RenderSettings) -> Frame {
         let texels: Vec<[f32; 4]> = data
             .chunks_exact(TEXEL_BYTES as usize)
             .map(bytemuck::pod_read_unaligned)
@@ -189,45 +205,91 @@ impl Target {
 pub fn read_texels(
     ctx: &GpuContext,
     texture: &wgpu::Texture,
-    (w, h): (u32, u32),
+    size: (u32, u32),
     texel_bytes: u32,
 ) -> Vec<u8> {
-    let row = (w * texel_bytes).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
-    let buffer = ctx.device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback"),
-        size: u64::from(row) * u64::from(h),
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let mut encoder = ctx
-        .device
-        .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("readback"),
-        });
-    encoder.copy_texture_to_buffer(
-        texture.as_image_copy(),
-        wgpu::TexelCopyBufferInfo {
-            buffer: &buffer,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(row),
-                rows_per_image: Some(h),
-            },
-        },
-        wgpu::Extent3d {
-            width: w,
-            height: h,
-            depth_or_array_layers: 1,
-        },
-    );
-    ctx.queue.submit([encoder.finish()]);
-    let slice = buffer.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
+    let pending = PendingRead::start(ctx, texture, size, texel_bytes);
     let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
-    let data = slice.get_mapped_range().expect("mapped after the wait");
-    data.chunks(row as usize)
-        .take(h as usize)
-        .flat_map(|line| &line[..(w * texel_bytes) as usize])
-        .copied()
-        .collect()
+    pending.try_take(ctx).expect("mapped after the wait")
+}
+
+/// A texture's read-back in flight: the copy submitted and the buffer's mapping asked for.
+/// Nothing waits: the mapping lands when the device is polled (the desktop) or when the
+/// browser's event loop runs (the web), and `try_take` then has the texels.
+pub struct PendingRead {
+    buffer: wgpu::Buffer,
+    mapped: Arc<AtomicBool>,
+    row: u32,
+    size: (u32, u32),
+    texel_bytes: u32,
+}
+
+impl PendingRead {
+    /// Copies `texture` (of `size`, `texel_bytes` per texel) into a buffer and asks for it.
+    pub fn start(
+        ctx: &GpuContext,
+        texture: &wgpu::Texture,
+        (w, h): (u32, u32),
+        texel_bytes: u32,
+    ) -> Self {
+        let row = (w * texel_bytes).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+        let buffer = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: u64::from(row) * u64::from(h),
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let mut encoder = ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("readback"),
+            });
+        encoder.copy_texture_to_buffer(
+            texture.as_image_copy(),
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(row),
+                    rows_per_image: Some(h),
+                },
+            },
+            wgpu::Extent3d {
+                width: w,
+                height: h,
+                depth_or_array_layers: 1,
+            },
+        );
+        ctx.queue.submit([encoder.finish()]);
+        let mapped = Arc::new(AtomicBool::new(false));
+        let flag = mapped.clone();
+        buffer.slice(..).map_async(wgpu::MapMode::Read, move |r| {
+            flag.store(r.is_ok(), Ordering::Release);
+        });
+        Self {
+            buffer,
+            mapped,
+            row,
+            size: (w, h),
+            texel_bytes,
+        }
+    }
+
+    /// The texels, rows packed tightly, once the GPU is done; `None` before. Polls the
+    /// device without waiting.
+    pub fn try_take(&self, ctx: &GpuContext) -> Option<Vec<u8>> {
+        let _ = ctx.device.poll(wgpu::PollType::Poll);
+        if !self.mapped.load(Ordering::Acquire) {
+            return None;
+        }
+        let (w, h) = self.size;
+        let data = self.buffer.slice(..).get_mapped_range().ok()?;
+        Some(
+            data.chunks(self.row as usize)
+                .take(h as usize)
+                .flat_map(|line| &line[..(w * self.texel_bytes) as usize])
+                .copied()
+                .collect(),
+        )
+    }
 }
