@@ -6,9 +6,19 @@ use crate::error::Result;
 use crate::gpu::{GpuContext, limits};
 use crate::ltc::lut::{Channel, Lut};
 use crate::ltc::nl_fit::nl_terms;
+use crate::ltc::remedy::HorizonRule;
 
 /// The shader text (composed after `brdf::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/ltc.wgsl");
+
+/// `HORIZON_*` of ltc.wgsl (the plane pipeline's `HORIZON` constant).
+pub fn horizon_constant(h: HorizonRule) -> u32 {
+    match h {
+        HorizonRule::Eq30 => 0,
+        HorizonRule::NlFit => 1,
+        HorizonRule::ExactBand => 2,
+    }
+}
 
 /// `LUT_VEC4S_PER_CELL` of ltc.wgsl.
 pub const VEC4S_PER_CELL: usize = 4;

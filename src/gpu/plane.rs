@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::bin::{self, BinPass, Binning};
 use crate::gpu::limits;
-use crate::gpu::ltc::LutBuffer;
+use crate::gpu::ltc::{LutBuffer, horizon_constant};
 use crate::gpu::scene::{GpuLight, Params, params};
 use crate::gpu::target::{self, OUTPUT_FORMAT, PendingRead, Target};
 use crate::gpu::timing::{PassTimer, Slot, SlotTimes};
@@ -34,15 +34,6 @@ pub fn method_constant(m: Method) -> u32 {
         Method::LtcFast => 3,
         Method::LtcF16 => 4,
         Method::LtcF16Pairs => 5,
-    }
-}
-
-/// `HORIZON_*` of ltc.wgsl.
-pub fn horizon_constant(h: HorizonRule) -> u32 {
-    match h {
-        HorizonRule::Eq30 => 0,
-        HorizonRule::NlFit => 1,
-        HorizonRule::ExactBand => 2,
     }
 }
 
@@ -321,7 +312,7 @@ impl PlaneRenderer {
 
     /// The plane and binning bind groups of the current target, tables and lights.
     fn make_bind_groups(&self, ctx: &GpuContext) -> (wgpu::BindGroup, wgpu::BindGroup) {
-        let t = self.target.as_ref().expect("begin made the target");
+        let t = self.made();
         fn buffer(binding: u32, buffer: &wgpu::Buffer) -> wgpu::BindGroupEntry<'_> {
             wgpu::BindGroupEntry {
                 binding,
@@ -569,30 +560,26 @@ impl PlaneRenderer {
         FrameTimes::from_slots(slots, wall_ms)
     }
 
+    /// The current render's target (`begin` makes it).
+    fn made(&self) -> &Target {
+        self.target.as_ref().expect("begin made the target")
+    }
+
     /// The output of the current render, read back.
     pub fn read(&self, ctx: &GpuContext) -> Frame {
-        self.target
-            .as_ref()
-            .expect("begin made the target")
-            .read(ctx, &self.settings)
+        self.made().read(ctx, &self.settings)
     }
 
     /// Starts reading the image back without waiting (the browser cannot wait):
     /// `PendingRead::try_take` gives its texels once the GPU is done, and `frame_of` the
     /// frame that `read` gives.
     pub fn start_read(&self, ctx: &GpuContext) -> PendingRead {
-        self.target
-            .as_ref()
-            .expect("begin made the target")
-            .start_read(ctx)
+        self.made().start_read(ctx)
     }
 
     /// The frame of texels that `start_read` fetched.
     pub fn frame_of(&self, texels: &[u8]) -> Frame {
-        self.target
-            .as_ref()
-            .expect("begin made the target")
-            .frame_of(texels, &self.settings)
+        self.made().frame_of(texels, &self.settings)
     }
 
     /// The entries of the current render's tile lists, read back (blocks): how much culling
