@@ -56,6 +56,24 @@ impl LtcPixel {
     }
 }
 
+impl LtcPixel {
+    /// Both lobes of a unit-irradiance light toward unit `l` (shading frame), base colour 1:
+    /// eq. 30 with `rules`, then the pixel's horizon rule (`exact` gives the BRDF's lobes,
+    /// asked for only inside `exact-band`'s band).
+    pub fn lobes(
+        &self,
+        l: DVec3,
+        f0: f64,
+        rules: &LtcRules,
+        exact: impl FnOnce() -> Lobes<f64>,
+    ) -> Lobes<f64> {
+        let ltc = self
+            .pair
+            .ltc_lobes(l, f0, rules.clipping, rules.normalization);
+        self.horizon.apply(l.z, ltc, &self.nl, exact)
+    }
+}
+
 /// The exact radiance toward the camera at `p` (eq. 28), summed over `lights`.
 pub fn shade_exact(scene: &Scene, p: &SurfacePoint, lights: &[Light]) -> DVec3 {
     if p.view.z <= 0.0 {
@@ -118,14 +136,10 @@ pub fn ltc_term(
         return DVec3::ZERO;
     }
     let l = u / d;
-    let ltc = px
-        .pair
-        .ltc_lobes(l, m.f0, rules.clipping, rules.normalization);
-    let exact = || {
+    let lobes = px.lobes(l, m.f0, rules, || {
         let v = px.frame.tangent_from_world(p.view);
         brdf_cos(v.to_array(), l.to_array(), m.alpha, m.f0)
-    };
-    let lobes = px.horizon.apply(l.z, ltc, &px.nl, exact);
+    });
     light.radiant_intensity() * (e * combine(lobes, m.base_color))
 }
 

@@ -129,10 +129,7 @@ pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
         ..LtcRules::default()
     };
     let px = LtcPixel::new(lut, c.alpha, v, &rules);
-    let approx = px
-        .pair
-        .ltc_lobes(c.l, c.f0, rules.clipping, rules.normalization);
-    let approx = px.horizon.apply(c.l.z, approx, &px.nl, || exact);
+    let approx = px.lobes(c.l, c.f0, &rules, || exact);
     format!(
         "{},{:e},{:e},{:e},{:e}",
         c.text, exact.specular, exact.diffuse, approx.specular, approx.diffuse

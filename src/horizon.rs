@@ -155,10 +155,7 @@ pub fn lobes(
     let v = view_from_theta(theta_o.to_radians().min(THETA_MAX));
     let exact = brdf_cos(v, l.to_array(), alpha, F0);
     let px = LtcPixel::new(lut, alpha, DVec3::from(v), rules);
-    let ltc = px
-        .pair
-        .ltc_lobes(l, F0, rules.clipping, rules.normalization);
-    (exact, px.horizon.apply(l.z, ltc, &px.nl, || exact))
+    (exact, px.lobes(l, F0, rules, || exact))
 }
 
 /// A case of `band`: θo (degrees), α, and the unit light direction in the shading frame.
