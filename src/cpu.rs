@@ -2,6 +2,8 @@
 //! BRDF (eq. 28) or the LTC approximation (eq. 30 with docs/design.md §1's corrections), rows in
 //! parallel with rayon. It is the ground truth every GPU test compares against.
 
+use std::ops::Range;
+
 use glam::DVec3;
 use rayon::prelude::*;
 
@@ -152,19 +154,103 @@ fn combine(lobes: Lobes<f64>, base_color: [f64; 3]) -> DVec3 {
 /// or their relative difference. `tables`: one table, or A's and B's (`s.table_b`).
 pub fn render<'a>(scene: &Scene, tables: impl Into<Tables<'a>>, s: &RenderSettings) -> Frame {
     let tables = tables.into();
+    let passes = (0..passes(s))
+        .map(|pass| render_rows(scene, tables, s, pass, 0..s.height))
+        .collect();
+    assemble(s, passes)
+}
+
+/// The radiance images a render of `s` is made of: two (A's and B's) for a difference view,
+/// else one.
+pub fn passes(s: &RenderSettings) -> usize {
+    if s.view == View::Diff { 2 } else { 1 }
+}
+
+/// Rows `rows` of pass `pass`'s radiance: a band of the image, for a caller that renders in
+/// steps (the browser, which has no threads to wait on).
+pub fn render_rows<'a>(
+    scene: &Scene,
+    tables: impl Into<Tables<'a>>,
+    s: &RenderSettings,
+    pass: usize,
+    rows: Range<usize>,
+) -> Frame {
+    let tables = tables.into();
     let (a, b) = ((s.method_a, tables.a), (s.method_b, tables.for_b(s)));
     let divider = s.divider_column();
-    let shade = |pick: &Pick<'_>| render_radiance(scene, s, pick);
-    match s.view {
-        View::A => shade(&|_| a),
-        View::B => shade(&|_| b),
-        View::Split => {
-            let mut frame = shade(&|x| if x < divider { a } else { b });
-            frame.divider = Some(divider);
-            frame
-        }
-        View::Diff => relative_difference(&shade(&|_| a), &shade(&|_| b)),
+    let shade = |pick: &Pick<'_>| render_radiance(scene, s, pick, rows.clone());
+    match (s.view, pass) {
+        (View::A, _) | (View::Diff, 0) => shade(&|_| a),
+        (View::B | View::Diff, _) => shade(&|_| b),
+        (View::Split, _) => shade(&|x| if x < divider { a } else { b }),
     }
+}
+
+/// The image of `s` from its passes' bands, stacked in row order.
+pub fn assemble(s: &RenderSettings, passes: Vec<Frame>) -> Frame {
+    let mut passes = passes.into_iter();
+    let first = passes.next().expect("a render has a pass");
+    match s.view {
+        View::Diff => relative_difference(&first, &passes.next().expect("B's pass")),
+        View::Split => Frame {
+            divider: Some(s.divider_column()),
+            ..first
+        },
+        View::A | View::B => first,
+    }
+}
+
+/// A render made band by band (`render_rows`), for a caller that renders in steps.
+pub struct Bands {
+    s: RenderSettings,
+    done: Vec<Vec<Frame>>,
+    pass: usize,
+    row: usize,
+}
+
+impl Bands {
+    pub fn new(s: &RenderSettings) -> Self {
+        Self {
+            s: *s,
+            done: vec![Vec::new(); passes(s)],
+            pass: 0,
+            row: 0,
+        }
+    }
+
+    /// Renders the next `rows` rows (at least one); the image once the last is done.
+    pub fn step<'a>(
+        &mut self,
+        scene: &Scene,
+        tables: impl Into<Tables<'a>>,
+        rows: usize,
+    ) -> Option<Frame> {
+        let end = (self.row + rows.max(1)).min(self.s.height);
+        let band = render_rows(scene, tables, &self.s, self.pass, self.row..end);
+        self.done[self.pass].push(band);
+        self.row = end;
+        if self.row < self.s.height {
+            return None;
+        }
+        (self.pass, self.row) = (self.pass + 1, 0);
+        if self.pass < self.done.len() {
+            return None;
+        }
+        let passes = self.done.drain(..).map(stack).collect();
+        Some(assemble(&self.s, passes))
+    }
+}
+
+/// Bands of rows of one image, stacked in order into the whole.
+pub fn stack(bands: Vec<Frame>) -> Frame {
+    let mut bands = bands.into_iter();
+    let mut whole = bands.next().expect("at least one band");
+    for band in bands {
+        whole.height += band.height;
+        whole.pixels.extend(band.pixels);
+        whole.on_plane.extend(band.on_plane);
+    }
+    whole
 }
 
 /// The method, and its table, that shades a pixel column.
@@ -185,9 +271,15 @@ pub fn shade(
     }
 }
 
-/// Radiance with the method (and table) `pick` gives for each pixel column.
-fn render_radiance(scene: &Scene, s: &RenderSettings, pick: &Pick<'_>) -> Frame {
-    let rows: Vec<(Vec<DVec3>, Vec<bool>)> = (0..s.height)
+/// Radiance over rows `rows` with the method (and table) `pick` gives for each pixel column.
+fn render_radiance(
+    scene: &Scene,
+    s: &RenderSettings,
+    pick: &Pick<'_>,
+    rows: Range<usize>,
+) -> Frame {
+    let height = rows.len();
+    let rows: Vec<(Vec<DVec3>, Vec<bool>)> = rows
         .into_par_iter()
         .map(|y| {
             (0..s.width)
@@ -210,7 +302,7 @@ fn render_radiance(scene: &Scene, s: &RenderSettings, pick: &Pick<'_>) -> Frame 
         });
     Frame {
         width: s.width,
-        height: s.height,
+        height,
         kind: FrameKind::Radiance,
         pixels,
         on_plane,

@@ -18,6 +18,7 @@ pub mod horizon;
 pub mod ltc;
 pub mod metrics;
 pub mod output;
+pub mod parity;
 pub mod pixel;
 pub mod plot;
 pub mod render;

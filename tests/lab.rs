@@ -89,13 +89,20 @@ fn drag_along(h: &mut Harness<'static, LabApp>, start: egui::Pos2, end: egui::Po
     h.drop_at(end);
 }
 
-/// The plane's finished image, read back from the lab's device.
-fn plane_image(h: &Harness<'static, LabApp>) -> Frame {
-    h.state()
-        .plane
-        .shading
-        .read()
-        .expect("the plane's render is complete")
+/// The plane's finished image, read back from the lab's device (the read never waits: it
+/// is asked for again until the copy has landed).
+fn plane_image(h: &mut Harness<'static, LabApp>) -> Frame {
+    for _ in 0..10_000 {
+        if let Some(frame) = h.state_mut().plane.shading.read() {
+            return frame;
+        }
+        assert!(
+            h.state().plane.shading.read_pending(),
+            "the plane's render is complete"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+    panic!("the plane's image never came back");
 }
 
 /// lavapipe renders bit-identically run to run; the threshold (kittest's default colour
@@ -188,7 +195,7 @@ fn moving_alpha_changes_the_matrix_and_the_plane() {
         .ltc_pair(&h.state().lab.tables().a.lut)
         .spec
         .cos_from_brdf;
-    let before_plane = plane_image(&h);
+    let before_plane = plane_image(&mut h);
     // The matrix panel's own line ("specular lobe at θo = …, α = …"), not the lobe panel's.
     let shown = |h: &Harness<'static, LabApp>, a: f64| {
         h.query_by_label_contains(&format!(", α = {a:.4} (r = "))
@@ -222,7 +229,7 @@ fn moving_alpha_changes_the_matrix_and_the_plane() {
         shown(&h, app.lab.shared().alpha()) && !shown(&h, before_alpha),
         "the matrix panel does not show the new α"
     );
-    let after_plane = plane_image(&h);
+    let after_plane = plane_image(&mut h);
     let changed = before_plane
         .pixels
         .iter()
@@ -387,7 +394,7 @@ fn dragging_the_divider_moves_it() {
     settle(&mut h);
     let divider = h.state().plane.state.divider;
     assert!((divider - 0.25).abs() < 0.02, "divider at {divider}");
-    let frame = plane_image(&h);
+    let frame = plane_image(&mut h);
     let expected = (frame.width as f64 * divider).round() as usize;
     assert_eq!(
         frame.divider,
@@ -640,14 +647,14 @@ fn one_shot(h: &Harness<'static, LabApp>) -> Frame {
 /// tests/gpu_render.rs shows for hand-picked chunks; here the lab's pacer picks them).
 #[test]
 fn the_plane_summed_over_frames_is_the_one_shot_render() {
-    let Some(h) = lab((900.0, 600.0), plane_state(300)) else {
+    let Some(mut h) = lab((900.0, 600.0), plane_state(300)) else {
         return;
     };
     let p = h.state().plane.shading.progress;
     assert!(p.complete() && p.total == 300, "{p:?}");
     // 1, 2, 4 … 256: at least nine chunks, whatever the chunks' times.
     assert!(p.frames >= 9, "summed in only {} frames", p.frames);
-    let progressive = plane_image(&h);
+    let progressive = plane_image(&mut h);
     assert!(
         progressive.pixels.iter().any(|p| p.x > 0.0),
         "a black plane"
@@ -689,7 +696,7 @@ fn a_render_in_flight_never_stops_the_window() {
     assert_eq!(settings.divider, 0.3, "the render did not restart");
     settle(&mut h);
     assert!(h.state().plane.shading.progress.complete());
-    assert!(bits(&plane_image(&h)) == bits(&one_shot(&h)));
+    assert!(bits(&plane_image(&mut h)) == bits(&one_shot(&h)));
 }
 
 /// A refit cancelled stops at its next iteration, is reported as cancelled, and — like a
@@ -731,12 +738,12 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     let Some(mut h) = lab((1000.0, 900.0), plane_state(100)) else {
         return;
     };
-    let ltc_against_brdf = plane_image(&h);
+    let ltc_against_brdf = plane_image(&mut h);
     h.get_by_label("A | B tables").click();
     settle(&mut h);
     let settings = *h.state().plane.shading.settings().unwrap();
     assert!(settings.table_b && settings.method_b == settings.method_a);
-    let gpu = plane_image(&h);
+    let gpu = plane_image(&mut h);
     let tables = ltc_lab::render::Tables {
         a: ltc_lab::ltc::lut::Lut::embedded(),
         b: ltc_lab::ltc::lut::Lut::embedded_point(),
@@ -1004,12 +1011,12 @@ fn no_lights_leave_no_old_image_on_the_plane() {
     };
     let lit = |f: &Frame| f.pixels.iter().filter(|p| p.x + p.y + p.z > 0.0).count();
     assert!(
-        lit(&plane_image(&h)) > 0,
+        lit(&plane_image(&mut h)) > 0,
         "the default scene lights the plane"
     );
     h.state_mut().lab.set_light_count(0);
     settle(&mut h);
-    let frame = plane_image(&h);
+    let frame = plane_image(&mut h);
     assert_eq!(h.state().plane.shading.progress.total, 0);
     assert_eq!(lit(&frame), 0, "the last image is still there");
 }

@@ -8,12 +8,14 @@ use egui::Color32;
 use serde::{Deserialize, Serialize};
 
 use crate::app::axes::log_axis;
-use crate::app::lab::{Lab, Panel, Shared};
+use crate::app::file_io::Purpose;
+use crate::app::lab::{Lab, Panel, Request, Shared};
 use crate::app::measure::{MEASURE_SIZE, MeasureJob, Measurement, Point, REPEATS};
 use crate::app::shading::FRAME_BUDGET_MS;
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
 use crate::colormap::{round_sig, short_number};
 use crate::render::Method;
+use crate::study::StudyRow;
 
 /// The chart's last measurement (or study), kept between runs.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -74,7 +76,7 @@ impl ChartPanel {
     }
 
     /// *measure* (or its progress and cancel), and a study to read instead.
-    fn toolbar(&mut self, ui: &mut egui::Ui, lab: &Lab) {
+    fn toolbar(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         match &self.job {
             Some(job) => {
                 ui.add(egui::ProgressBar::new(job.progress()).desired_width(90.0))
@@ -94,20 +96,28 @@ impl ChartPanel {
                 }
             }
         }
-        ui.add(
-            egui::TextEdit::singleline(&mut self.study_path)
-                .desired_width(110.0)
-                .hint_text("path to a study.csv"),
-        )
-        .on_hover_text(
-            "A study.csv written by `ltc-lab study`, to plot instead of a live measurement",
-        );
+        // A browser picks the file instead of reading a path.
+        let picks = cfg!(target_arch = "wasm32");
+        if !picks {
+            ui.add(
+                egui::TextEdit::singleline(&mut self.study_path)
+                    .desired_width(110.0)
+                    .hint_text("path to a study.csv"),
+            )
+            .on_hover_text(
+                "A study.csv written by `ltc-lab study`, to plot instead of a live measurement",
+            );
+        }
         if ui
             .small_button("load study")
-            .on_hover_text("Plot the study.csv named on the left")
+            .on_hover_text("Plot a study.csv written by `ltc-lab study` (the one named on the left, a picked one in a browser, or drop one on the window)")
             .clicked()
         {
-            self.load_study();
+            if picks {
+                lab.request = Some(Request::Pick(Purpose::Study));
+            } else {
+                self.load_study();
+            }
         }
         if let Some(m) = &self.state.measurement {
             ui.small(&m.device);
@@ -116,14 +126,20 @@ impl ChartPanel {
 
     /// Plots the study named in the field.
     fn load_study(&mut self) {
-        let path = self.study_path.trim();
+        let path = self.study_path.trim().to_string();
         if path.is_empty() {
             self.error = Some("load study: name a study.csv in the field first".into());
             return;
         }
-        match crate::study::read_csv(std::path::Path::new(path)) {
+        let rows = crate::study::read_csv(std::path::Path::new(&path));
+        self.use_study(rows, &path);
+    }
+
+    /// Plots a study's rows (read from the file `name`); or says why its file could not be.
+    pub fn use_study(&mut self, rows: crate::error::Result<Vec<StudyRow>>, name: &str) {
+        match rows {
             Ok(rows) => {
-                self.state.measurement = Some(Measurement::from_study(&rows, path));
+                self.state.measurement = Some(Measurement::from_study(&rows, name));
                 self.error = None;
             }
             // The error names the file already.

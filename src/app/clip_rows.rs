@@ -95,15 +95,23 @@ pub struct RowsWorker {
 }
 
 impl RowsWorker {
-    /// Starts making both rows from `input`.
+    /// Starts making both rows from `input`, a row a step (the browser runs one per frame).
     pub fn start(&mut self, ctx: &egui::Context, input: RowsInput) {
         let (tx, rx) = mpsc::channel();
         let repaint = ctx.clone();
-        crate::app::background::spawn("clipping rows", move || {
-            let rows = ROWS.iter().map(|&row| render_row(&input, row)).collect();
-            let _ = tx.send(rows);
-            repaint.request_repaint();
-        });
+        let mut rows = Vec::new();
+        crate::app::background::spawn_steps(
+            "clipping rows",
+            Box::new(move || {
+                rows.push(render_row(&input, ROWS[rows.len()]));
+                if rows.len() < ROWS.len() {
+                    return false;
+                }
+                let _ = tx.send(std::mem::take(&mut rows));
+                repaint.request_repaint();
+                true
+            }),
+        );
         self.rx = Some(rx);
     }
 

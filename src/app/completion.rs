@@ -2,7 +2,8 @@
 //! submission in turn, so that the UI thread never does. On a CPU driver (lavapipe, llvmpipe)
 //! this is the time a pacer must follow — the "GPU" shares the cores with the UI, and its
 //! timestamp queries were seen to read ~5 ms whatever the work (lavapipe, Mesa 22.3) — and it
-//! wakes the window the moment the work is done.
+//! wakes the window the moment the work is done. A browser has no threads: there a chunk is
+//! done when submitted (`new` says why).
 
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
@@ -26,8 +27,22 @@ pub struct Completion {
 }
 
 impl Completion {
+    /// No waiter in a browser: no threads, and the queue's callback
+    /// (`on_submitted_work_done`) failed in headless Chromium on SwiftShader ("A valid
+    /// external Instance reference no longer exists"), which stalled the plane. A chunk is
+    /// reported done when submitted: the browser runs the queue's work in order, and the
+    /// pacer follows the timestamps where they arrive.
+    #[cfg(target_arch = "wasm32")]
+    pub fn new(_: wgpu::Device, _: wgpu::Queue, _: egui::Context) -> Self {
+        Self {
+            tx: None,
+            state: Arc::new(Mutex::new(Chunk::Idle)),
+        }
+    }
+
     /// A waiter on `device`, which asks `window` for a frame when a chunk is done.
-    pub fn new(device: wgpu::Device, window: egui::Context) -> Self {
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn new(device: wgpu::Device, _: wgpu::Queue, window: egui::Context) -> Self {
         let (tx, rx) = mpsc::channel::<(wgpu::SubmissionIndex, Instant)>();
         let state = Arc::new(Mutex::new(Chunk::Idle));
         let shared = state.clone();

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
+use crate::app::file_io::{Purpose, save};
 use crate::app::lab::{Aspect, Lab, Message, Panel, Request};
 use crate::ltc::Normalization;
 use crate::ltc::formats;
@@ -37,6 +38,10 @@ impl Default for ControlsState {
         }
     }
 }
+
+/// Whether the load buttons open the browser's file picker (the web build) instead of
+/// reading the path in their field (the desktop).
+const PICKS: bool = cfg!(target_arch = "wasm32");
 
 /// The side panel.
 #[derive(Default)]
@@ -321,9 +326,17 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             );
         if ui
             .small_button("load")
-            .on_hover_text("Read the scene file named on the left")
+            .on_hover_text(if PICKS {
+                "Pick a scene .toml file (or drop one on the window)"
+            } else {
+                "Read the scene file named on the left (or drop one on the window)"
+            })
             .clicked()
         {
+            if PICKS {
+                lab.request = Some(Request::Pick(Purpose::Scene));
+                return;
+            }
             let path = &files.scene_path;
             let message = match Scene::load(Path::new(path)) {
                 Ok(scene) => match lab.use_scene(scene) {
@@ -336,7 +349,11 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
         }
         if ui
             .small_button("save")
-            .on_hover_text("Write the scene to the file named on the left (and no other)")
+            .on_hover_text(if PICKS {
+                "Download the scene as the file named on the left"
+            } else {
+                "Write the scene to the file named on the left (and no other)"
+            })
             .clicked()
         {
             // The view becomes what the file holds.
@@ -347,13 +364,11 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
                 changed
             });
             let text = lab.shared().scene.to_toml();
-            let path = &files.scene_path;
-            lab.say(
-                match crate::files::write_atomically(Path::new(path), text.as_bytes()) {
-                    Ok(()) => Message::note(format!("saved {path}")),
-                    Err(e) => Message::error(e.to_string()),
-                },
-            );
+            let path = Path::new(&files.scene_path);
+            lab.say(match save(path, text.as_bytes(), "application/toml") {
+                Ok(done) => Message::note(done),
+                Err(e) => Message::error(e),
+            });
         }
     });
 }
@@ -381,16 +396,23 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
         ui.small(format!("table A: {file}"));
     }
     ui.horizontal(|ui| {
-        ui.add(egui::TextEdit::singleline(&mut files.lut_path).desired_width(120.0).hint_text("embedded LUT"))
-            .on_hover_text("An LTC table: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
-        if ui.small_button("use LUT").on_hover_text("Shade with the table named on the left (table A); a missing or broken file is reported here and the current table stays").clicked() {
+        // A browser picks the file instead.
+        if !PICKS {
+            ui.add(egui::TextEdit::singleline(&mut files.lut_path).desired_width(120.0).hint_text("embedded LUT"))
+                .on_hover_text("An LTC table: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
+        }
+        if ui.small_button("use LUT").on_hover_text("Shade with the table named on the left (table A), or one dropped on the window; a missing or broken file is reported here and the current table stays").clicked() {
+            if PICKS {
+                lab.request = Some(Request::Pick(Purpose::Table));
+                return;
+            }
             let message = match load(&files.lut_path) {
                 Ok((table, note)) => {
                     let text = format!("shading with {}{note}", table.name);
                     // The embedded table (an empty field) is the shipped classic one.
                     match files.lut_path.trim() {
                         "" => lab.use_shipped(Table::Classic),
-                        file => lab.use_file(table, file.to_string()),
+                        file => lab.use_file(table, Some(file.to_string())),
                     }
                     Message::note(text)
                 }
@@ -399,12 +421,16 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             lab.say(message);
         }
         if ui.small_button("as B").on_hover_text("Make the table named on the left table B, the other fit: the lobe overlay, the matrix panel and the plane's A | B comparison show it beside table A").clicked() {
+            if PICKS {
+                lab.request = Some(Request::Pick(Purpose::TableB));
+                return;
+            }
             let message = match files.lut_path.trim() {
                 "" => Message::error("as B: name a table file in the field first — table B stays"),
                 file => match load(file) {
                     Ok((table, note)) => {
                         let text = format!("table B is {}{note}", table.name);
-                        lab.use_file_b(table, file.to_string());
+                        lab.use_file_b(table, Some(file.to_string()));
                         Message::note(text)
                     }
                     Err(e) => Message::error(format!("{e} — table B stays")),
@@ -426,47 +452,60 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
 /// what the file could not hold (ltc_code's layout has no diffuse lobe), as ". note".
 pub(crate) fn load(path: &str) -> Result<(NamedTable, String), String> {
     let path = path.trim();
-    let mut loaded = if path.is_empty() {
+    let loaded = if path.is_empty() {
         formats::load(None, Table::Classic)
     } else {
         formats::read(Path::new(path))
     }
     .map_err(|e| e.to_string())?;
-    // The matrix panel's heat maps show spec.err.
-    loaded.measure_spec_err(&|| {});
     let name = if path.is_empty() {
         "the embedded LUT"
     } else {
         path
     };
+    Ok(named_table(loaded, name))
+}
+
+/// A table read, named for labels, its `spec.err` measured (the matrix panel's heat maps
+/// show it), and what its file could not hold as ". note".
+pub(crate) fn named_table(mut loaded: formats::Loaded, name: &str) -> (NamedTable, String) {
+    loaded.measure_spec_err(&|| {});
     let note = loaded.note.map(|n| format!(". {n}")).unwrap_or_default();
     let table = NamedTable {
         lut: loaded.lut.into_owned(),
         name: name.to_string(),
     };
-    Ok((table, note))
+    (table, note)
 }
 
-/// The screenshot field: `.png` saves the window, `.exr` the plane's radiance.
+/// The screenshot field (`.png` saves the window, `.exr` the plane's radiance), and the
+/// view shared as a link.
 fn save_buttons(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
     ui.horizontal(|ui| {
         ui.add(egui::TextEdit::singleline(&mut files.screenshot_path).desired_width(120.0))
             .on_hover_text(
                 "Screenshot file: .png saves the window, .exr the plane's linear radiance",
             );
-        if !ui.small_button("screenshot").clicked() {
-            return;
+        if ui.small_button("screenshot").clicked() {
+            let path = PathBuf::from(&files.screenshot_path);
+            let exr = path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+            lab.request = Some(if exr {
+                Request::SaveExr(path)
+            } else {
+                Request::Screenshot(path)
+            });
         }
-        let path = PathBuf::from(&files.screenshot_path);
-        let exr = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
-        lab.request = Some(if exr {
-            Request::SaveExr(path)
-        } else {
-            Request::Screenshot(path)
-        });
     });
+    let hover = if PICKS {
+        "Put this view (scene, settings, open panel) in the page's address and copy the link"
+    } else {
+        "Copy this view (scene, settings, open panel) as a string for `ltc-lab lab --view`, or for a browser link after #view="
+    };
+    if ui.small_button("share view").on_hover_text(hover).clicked() {
+        lab.request = Some(Request::Share);
+    }
 }
 
 /// A small grey line under a control saying what it does, where a tooltip alone would hide it.

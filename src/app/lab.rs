@@ -120,6 +120,11 @@ pub enum Request {
     SaveExr(PathBuf),
     /// The window, as PNG.
     Screenshot(PathBuf),
+    /// The view as a link (the page's address in a browser; `ltc-lab lab --view` on the
+    /// desktop), copied to the clipboard.
+    Share,
+    /// The browser's file picker, for a file of this purpose (where a desktop reads a path).
+    Pick(crate::app::file_io::Purpose),
 }
 
 /// What more than one panel reads; persisted by eframe between runs.
@@ -402,9 +407,10 @@ impl Lab {
         self.edit(Aspect::Rules, |s| s.horizon = remedy.rule());
     }
 
-    /// Shades with the table read from `file` from now on; read again at the next start.
-    pub fn use_file(&mut self, table: NamedTable, file: String) {
-        self.edit(Aspect::Tables, |s| s.table_file = Some(file));
+    /// Shades with the table read from `file` from now on; read again at the next start
+    /// (`None`: bytes a browser's picker or a drop gave, which no later start can read).
+    pub fn use_file(&mut self, table: NamedTable, file: Option<String>) {
+        self.edit(Aspect::Tables, |s| s.table_file = file);
         self.use_table_a(table);
     }
 
@@ -421,8 +427,8 @@ impl Lab {
 
     /// Compares with the table read from `file` as table B from now on; read again at the
     /// next start.
-    pub fn use_file_b(&mut self, table: NamedTable, file: String) {
-        self.edit(Aspect::Tables, |s| s.table_b_file = Some(file));
+    pub fn use_file_b(&mut self, table: NamedTable, file: Option<String>) {
+        self.edit(Aspect::Tables, |s| s.table_b_file = file);
         self.tables.b = table;
         self.tables.b_chosen = true;
         self.touch(Aspect::Tables);

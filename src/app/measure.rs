@@ -12,6 +12,7 @@ use crate::app::pacer::Pacer;
 use crate::bench::{DEFAULT_RANGE, PAPER_LIGHTS, bench_scene};
 use crate::gpu::GpuContext;
 use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
+use crate::gpu::target::PendingRead;
 use crate::ltc::Normalization;
 use crate::ltc::lut::Lut;
 use crate::metrics::image_error;
@@ -168,6 +169,8 @@ pub struct MeasureJob {
     /// Sizes the chunks from their GPU times.
     pacer: Pacer,
     exact: Option<Frame>,
+    /// An error point's image on its way back, with the repeats' median and range.
+    reading: Option<(PendingRead, f64, [f64; 2])>,
     result: Measurement,
 }
 
@@ -227,6 +230,7 @@ impl MeasureJob {
             idle: Arc::new(AtomicBool::new(true)),
             pacer: Pacer::default(),
             exact: None,
+            reading: None,
         })
     }
 
@@ -244,10 +248,17 @@ impl MeasureJob {
     }
 
     /// One frame's share: a chunk within `budget_ms` once the last is done and timed; the
-    /// measurement when the last task has finished. Never waits on the GPU, but for reading
-    /// back one small finished image per error point.
+    /// measurement when the last task has finished. Never waits on the GPU: an error point's
+    /// image is read back over frames too (the browser cannot wait).
     pub fn step(&mut self, budget_ms: f64) -> Option<Measurement> {
         let _ = self.ctx.device.poll(wgpu::PollType::Poll);
+        if let Some((pending, median, range)) = &self.reading {
+            let texels = pending.try_take(&self.ctx)?;
+            let (median, range) = (*median, *range);
+            self.reading = None;
+            let frame = self.renderer.frame_of(&texels);
+            return self.error_point(&frame, median, range);
+        }
         if !self.idle.load(Ordering::Acquire) {
             return None;
         }
@@ -255,8 +266,9 @@ impl MeasureJob {
             let ms = match self.renderer.try_times() {
                 Some(t) => t.total_ms(),
                 // The timestamps follow the work; wait a frame for them.
-                None if self.renderer.timed() => return None,
-                // Without timestamp queries: submit to done, at frame granularity.
+                None if self.renderer.times_pending() => return None,
+                // Without timestamp queries (or none coming): submit to done, at frame
+                // granularity.
                 None => submitted.elapsed().as_secs_f64() * 1e3,
             };
             self.render_ms += ms;
@@ -307,14 +319,8 @@ impl MeasureJob {
         let task = &self.tasks[self.next];
         match task.curve {
             None => {
-                let frame = self.renderer.read(&self.ctx);
-                let exact = self.exact.get_or_insert_with(|| frame.clone());
-                self.result.points.push(Point {
-                    label: task.label.clone(),
-                    ms: median,
-                    rel_rmse: image_error(&frame, exact).rel_rmse,
-                    ms_range: Some(range),
-                });
+                self.reading = Some((self.renderer.start_read(&self.ctx), median, range));
+                return None;
             }
             Some((method, n)) => {
                 let fps = |ms: f64| 1e3 / ms.max(1e-9);
@@ -323,6 +329,25 @@ impl MeasureJob {
                 push_to(&mut self.result.scaling_range, method, spread);
             }
         }
+        self.next_task()
+    }
+
+    /// An error point from its image, read back: its error against the first image (the
+    /// exact BRDF's).
+    fn error_point(&mut self, frame: &Frame, median: f64, range: [f64; 2]) -> Option<Measurement> {
+        let exact = self.exact.get_or_insert_with(|| frame.clone());
+        let rel_rmse = image_error(frame, exact).rel_rmse;
+        self.result.points.push(Point {
+            label: self.tasks[self.next].label.clone(),
+            ms: median,
+            rel_rmse,
+            ms_range: Some(range),
+        });
+        self.next_task()
+    }
+
+    /// On to the next task; after the last, the measurement.
+    fn next_task(&mut self) -> Option<Measurement> {
         self.next += 1;
         (self.next == self.tasks.len()).then(|| std::mem::take(&mut self.result))
     }

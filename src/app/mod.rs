@@ -4,6 +4,8 @@
 
 pub mod axes;
 pub mod background;
+#[cfg(target_arch = "wasm32")]
+pub mod browser;
 pub mod chart;
 pub mod clip_rows;
 pub mod clip_setup;
@@ -12,7 +14,9 @@ pub mod completion;
 pub mod controls;
 pub mod display;
 pub mod elevation;
+pub mod file_io;
 pub mod lab;
+pub mod link;
 pub mod lobe;
 pub mod lobe_sphere;
 pub mod matrix;
@@ -30,8 +34,10 @@ pub use lab::{Aspect, Compare, Lab, Message, Panel};
 pub use screenshot::{PendingScreenshot, ScreenshotApp, Settling};
 pub use state::{LabState, PanelId};
 
+use crate::app::file_io::{Given, Purpose, group};
 use crate::app::lab::Request;
-use crate::tables::NamedTables;
+use crate::scene::Scene;
+use crate::tables::{NamedTable, NamedTables};
 
 /// The window: the lab the panels share, the side panel, the five panels and the layout.
 pub struct LabApp {
@@ -45,12 +51,20 @@ pub struct LabApp {
     pub window: state::WindowState,
     /// A screenshot on its way to a file.
     pub screenshot: Option<PendingScreenshot>,
+    /// The plane's EXR the user asked for, saved once its image is read back.
+    saving_exr: Option<std::path::PathBuf>,
     /// Milliseconds the last frame spent in the side panel and in each panel, for the frame
     /// log (`screenshot::PART_NAMES`).
     part_ms: [f64; screenshot::PART_COUNT],
     /// The window's size in points when the zoom was last looked at, and its size at zoom 1
     /// when it was last fitted.
     zoomed_for: Option<([u32; 2], [u32; 2])>,
+    /// The panels the last frame drew (the browser's page reports them).
+    pub shown: Vec<PanelId>,
+    /// Files the browser is reading: picked for a purpose, or dropped (`None`: each for what
+    /// its name says).
+    #[cfg(target_arch = "wasm32")]
+    picking: Option<(Option<file_io::Purpose>, browser::Picked)>,
 }
 
 /// The smallest central area that shows all five panels at once: below it each panel is
@@ -98,19 +112,26 @@ impl LabApp {
             chart: chart::ChartPanel::new(state.chart),
             window: state.window,
             screenshot: None,
+            saving_exr: None,
             part_ms: [0.0; screenshot::PART_COUNT],
             zoomed_for: None,
+            shown: Vec::new(),
+            #[cfg(target_arch = "wasm32")]
+            picking: None,
         }
     }
 
     /// For eframe: the persisted state if there is one.
     pub fn from_creation_context(cc: &eframe::CreationContext<'_>) -> Self {
-        let state = cc
-            .storage
+        Self::new(Self::stored_state(cc), cc.wgpu_render_state.as_ref())
+    }
+
+    /// The state eframe persisted, if there is one that can be shaded; else the defaults.
+    pub fn stored_state(cc: &eframe::CreationContext<'_>) -> LabState {
+        cc.storage
             .and_then(|s| eframe::get_value::<LabState>(s, STORAGE_KEY))
             .filter(|s| s.lab.scene.validate().is_ok())
-            .unwrap_or_default();
-        Self::new(state, cc.wgpu_render_state.as_ref())
+            .unwrap_or_default()
     }
 
     /// What the user set, as eframe persists it.
@@ -145,6 +166,12 @@ impl LabApp {
             }
         }
         self.part_ms = [0.0; screenshot::PART_COUNT];
+        self.shown.clear();
+        self.take_dropped(ui.ctx());
+        // The browser's share of the work that runs on threads on the desktop.
+        if background::run_for(shading::FRAME_BUDGET_MS) {
+            ui.ctx().request_repaint();
+        }
         if !self.window.controls_hidden {
             let started = web_time::Instant::now();
             egui::Panel::left("controls")
@@ -169,7 +196,7 @@ impl LabApp {
                 (None, false) => self.grid(ui),
             }
         });
-        self.carry_out();
+        self.carry_out(ui.ctx());
     }
 
     /// The side panel's fold, and the tabs where the panels do not fit side by side.
@@ -265,26 +292,68 @@ impl LabApp {
                 PanelId::Chart => &mut self.chart,
             };
             let started = web_time::Instant::now();
+            self.shown.push(id);
             panel.show(ui, &mut self.lab);
             self.part_ms[1 + id as usize] = started.elapsed().as_secs_f64() * 1e3;
         });
     }
 
-    /// Writes a file a panel asked for.
-    fn carry_out(&mut self) {
-        match self.lab.request.take() {
-            Some(Request::SaveExr(path)) => {
-                let exposure = self.lab.shared().scene.exposure;
-                self.lab.say(match self.plane.save_exr(&path, exposure) {
-                    Ok(()) => Message::note(format!("saved {}", path.display())),
-                    Err(e) => Message::error(e),
-                });
+    /// Writes a file a panel asked for, shares the view, or opens the browser's picker.
+    fn carry_out(&mut self, ctx: &egui::Context) {
+        #[cfg(target_arch = "wasm32")]
+        self.take_picked();
+        if let Some(path) = &self.saving_exr {
+            let exposure = self.lab.shared().scene.exposure;
+            match self.plane.save_exr(path, exposure) {
+                Some(Ok(done)) => self.lab.say(Message::note(done)),
+                Some(Err(e)) => self.lab.say(Message::error(e)),
+                None => ctx.request_repaint(),
             }
+            if !self.plane.shading.read_pending() {
+                self.saving_exr = None;
+            }
+        }
+        match self.lab.request.take() {
+            Some(Request::SaveExr(path)) => self.saving_exr = Some(path),
             Some(Request::Screenshot(path)) => {
                 self.screenshot = Some(PendingScreenshot::new(path));
             }
+            Some(Request::Share) => self.share(ctx),
+            #[cfg(target_arch = "wasm32")]
+            Some(Request::Pick(purpose)) => {
+                let picked = browser::pick(purpose.accept(), purpose.multiple(), ctx.clone());
+                match picked {
+                    Ok(p) => self.picking = Some((Some(purpose), p)),
+                    Err(e) => self.lab.say(Message::error(e)),
+                }
+            }
+            #[cfg(not(target_arch = "wasm32"))]
+            Some(Request::Pick(_)) => {}
             None => {}
         }
+    }
+
+    /// The view as a link: in a browser the page's address becomes it (and is copied); on the
+    /// desktop the string for `ltc-lab lab --view` is copied and shown.
+    fn share(&mut self, ctx: &egui::Context) {
+        let view = link::encode(&self.state());
+        #[cfg(target_arch = "wasm32")]
+        let message = match browser::set_fragment(&format!("{}{view}", link::FRAGMENT_KEY)) {
+            Some(url) => {
+                ctx.copy_text(url);
+                Message::note("this view's link is in the address bar, and copied")
+            }
+            None => Message::error("the browser would not change the page's address"),
+        };
+        #[cfg(not(target_arch = "wasm32"))]
+        let message = {
+            ctx.copy_text(view.clone());
+            Message::note(format!(
+                "copied this view ({} characters): ltc-lab lab --view {view}",
+                view.len()
+            ))
+        };
+        self.lab.say(message);
     }
 
     /// Fits egui's zoom to the window when the window's size changes (`auto_zoom`). A change
@@ -311,7 +380,7 @@ impl LabApp {
             return;
         };
         self.lab.say(match outcome {
-            Ok(path) => Message::note(format!("saved {}", path.display())),
+            Ok(done) => Message::note(done),
             Err(e) => Message::error(e.to_string()),
         });
         self.screenshot = None;
@@ -397,4 +466,136 @@ impl eframe::App for LabApp {
     fn persist_egui_memory(&self) -> bool {
         false
     }
+}
+
+// Files given to the window: dropped (both targets) or picked (the browser).
+impl LabApp {
+    /// Takes the files dropped on the window this frame: read at once on the desktop; in a
+    /// browser, which reads them asynchronously, once they have arrived (`take_picked`).
+    pub(crate) fn take_dropped(&mut self, ctx: &egui::Context) {
+        let files = ctx.input(|i| i.raw.dropped_files.clone());
+        if files.is_empty() {
+            return;
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let mut given = Vec::new();
+            let mut refused = Vec::new();
+            for file in files {
+                let name = file.path().display().to_string();
+                match file.bytes() {
+                    Ok(bytes) => given.push((name, bytes)),
+                    Err(e) => refused.push(format!("{name}: cannot read it ({e})")),
+                }
+            }
+            self.take_given(None, given);
+            if !refused.is_empty() {
+                self.lab.say(Message::error(refused.join("; ")));
+            }
+        }
+        #[cfg(target_arch = "wasm32")]
+        {
+            let arrived = crate::app::browser::Picked::default();
+            let into = arrived.clone();
+            let repaint = ctx.clone();
+            wasm_bindgen_futures::spawn_local(async move {
+                let mut given = Vec::new();
+                for file in files {
+                    if let Ok(bytes) = file.bytes_async().await {
+                        given.push((file.path().display().to_string(), bytes));
+                    }
+                }
+                *into.borrow_mut() = Some(given);
+                repaint.request_repaint();
+            });
+            self.picking = Some((None, arrived));
+        }
+    }
+
+    /// Takes what the browser read (picked or dropped files), once it has.
+    #[cfg(target_arch = "wasm32")]
+    pub(crate) fn take_picked(&mut self) {
+        let Some((purpose, picked)) = &self.picking else {
+            return;
+        };
+        let Some(files) = picked.borrow_mut().take() else {
+            return;
+        };
+        let purpose = *purpose;
+        self.picking = None;
+        self.take_given(purpose, files);
+    }
+
+    /// Uses given files: all for `purpose`, or (`None`, dropped) each for what its name says.
+    fn take_given(&mut self, purpose: Option<Purpose>, files: Vec<Given>) {
+        match purpose {
+            Some(p) => self.take_in(p, &files),
+            None => {
+                let (groups, refused) = group(files);
+                for (p, files) in groups {
+                    self.take_in(p, &files);
+                }
+                if !refused.is_empty() {
+                    self.lab.say(Message::error(refused.join("; ")));
+                }
+            }
+        }
+    }
+
+    /// Uses given files as `purpose` says: the scene, table A or B, the chart's study. A file
+    /// that cannot be used changes nothing and says why (its name first).
+    pub fn take_in(&mut self, purpose: Purpose, files: &[Given]) {
+        let Some((name, bytes)) = files.first() else {
+            return;
+        };
+        let text = || String::from_utf8_lossy(bytes).into_owned();
+        let message = match purpose {
+            Purpose::Scene => match Scene::from_toml(&text(), name) {
+                Ok(scene) => match self.lab.use_scene(scene) {
+                    Some(cut) => Message::error(format!("loaded {name}; {cut}")),
+                    None => Message::note(format!("loaded {name}")),
+                },
+                Err(e) => Message::error(e.to_string()),
+            },
+            Purpose::Table | Purpose::TableB => match given_table(files) {
+                Ok((table, note)) => {
+                    let text = format!("{} {}{note}", purpose_words(purpose), table.name);
+                    if purpose == Purpose::Table {
+                        self.lab.use_file(table, None);
+                    } else {
+                        self.lab.use_file_b(table, None);
+                    }
+                    Message::note(text)
+                }
+                Err(e) => Message::error(format!("{e} — the tables stay")),
+            },
+            Purpose::Study => {
+                self.chart
+                    .use_study(crate::study::parse_csv(&text(), name), name);
+                match &self.chart.error {
+                    Some(e) => Message::error(e.clone()),
+                    None => Message::note(format!("plotting {name}")),
+                }
+            }
+        };
+        self.lab.say(message);
+    }
+}
+
+fn purpose_words(purpose: Purpose) -> &'static str {
+    match purpose {
+        Purpose::TableB => "table B is",
+        _ => "shading with",
+    }
+}
+
+/// The table in given files, named for labels, with what its format could not hold.
+fn given_table(files: &[Given]) -> Result<(NamedTable, String), String> {
+    let loaded = crate::ltc::formats::read_given(files).map_err(|e| e.to_string())?;
+    let name = files
+        .iter()
+        .map(|(n, _)| n.as_str())
+        .find(|n| !n.ends_with(crate::ltc::formats::DDS_HEADER_FILE))
+        .unwrap_or_default();
+    Ok(controls::named_table(loaded, name))
 }

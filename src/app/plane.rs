@@ -107,6 +107,9 @@ impl Panel for PlanePanel {
         let shown = self.shading.update(ui.ctx(), lab, &settings);
         self.shown = Some(shown);
         self.pin_worst(lab);
+        if self.worst_pending {
+            ui.ctx().request_repaint();
+        }
         self.paint(ui, lab, placed, shown, (a, b));
         let markers = markers(lab.shared(), placed);
         self.interact(&response, lab, placed, &markers);
@@ -159,9 +162,9 @@ impl PlanePanel {
         self.pinned.terms.as_ref()
     }
 
-    /// Whether the render is still being summed.
+    /// Whether the render is still being summed (or its worst pixel read back).
     pub fn busy(&self) -> bool {
-        self.shading.in_flight()
+        self.shading.in_flight() || self.worst_pending
     }
 
     /// The image, its preview note, the divider, the lights' markers and the pin.
@@ -281,10 +284,14 @@ impl PlanePanel {
         if self.shading.in_flight() {
             return;
         }
-        self.worst_pending = false;
         let Some(frame) = self.shading.read() else {
+            // The image is on its way back: asked for again next frame (`busy` until then).
+            if !self.shading.read_pending() {
+                self.worst_pending = false;
+            }
             return;
         };
+        self.worst_pending = false;
         if let Some((x, y)) = worst_pixel(&frame) {
             self.state.pinned = Some([
                 (x as f64 + 0.5) / frame.width as f64,
@@ -361,13 +368,31 @@ impl PlanePanel {
         }
     }
 
-    /// Writes the finished image's linear values as EXR (only the path the user named).
-    pub fn save_exr(&self, path: &std::path::Path, exposure: f64) -> Result<(), String> {
-        let frame = self.shading.read().ok_or(
-            "the image is still being rendered, or there is none: try again when it is done",
-        )?;
-        crate::output::write_frame(&frame, path, exposure).map_err(|e| e.to_string())
+    /// Writes the finished image's linear values as EXR (only the path the user named), once
+    /// it is read back: `None` until then.
+    pub fn save_exr(
+        &mut self,
+        path: &std::path::Path,
+        exposure: f64,
+    ) -> Option<Result<String, String>> {
+        if self.shading.in_flight() {
+            return Some(Err(
+                "the image is still being rendered: try again when it is done".into(),
+            ));
+        }
+        match self.shading.read() {
+            Some(frame) => Some(encode_exr(&frame, path, exposure)),
+            None if self.shading.read_pending() => None,
+            None => Some(Err("there is no image to save yet".into())),
+        }
     }
+}
+
+/// `frame` saved as the EXR the user named.
+fn encode_exr(frame: &Frame, path: &std::path::Path, exposure: f64) -> Result<String, String> {
+    let format = crate::output::ImageFormat::of(path).map_err(|e| e.to_string())?;
+    let bytes = crate::output::frame_bytes(frame, format, exposure);
+    crate::app::file_io::save(path, &bytes, "image/x-exr")
 }
 
 /// Moves light `k` with the pointer at `pos`: along the plane at its height, or (Shift) up

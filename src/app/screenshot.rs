@@ -25,8 +25,8 @@ impl PendingScreenshot {
     }
 
     /// Asks for the window's pixels, then saves them once they arrive: `None` while waiting,
-    /// then the outcome (the file written, or why not).
-    pub fn poll(&mut self, ctx: &egui::Context) -> Option<Result<PathBuf, Error>> {
+    /// then the outcome (what was saved, or why not).
+    pub fn poll(&mut self, ctx: &egui::Context) -> Option<Result<String, Error>> {
         if !self.requested {
             let slot = self.slot.clone();
             ctx.request_screenshot(move |image| *slot.lock().expect("not poisoned") = Some(image));
@@ -42,8 +42,9 @@ impl PendingScreenshot {
     }
 
     /// A file that cannot be written is the path's fault (`Error::io` says which), as in
-    /// every command; an image that cannot be encoded is the machine's.
-    fn save(&self, image: &egui::ColorImage) -> Result<PathBuf, Error> {
+    /// every command; an image that cannot be encoded is the machine's. In a browser, a
+    /// download.
+    fn save(&self, image: &egui::ColorImage) -> Result<String, Error> {
         let name = self.path.display().to_string();
         let rgba = image::RgbaImage::from_raw(
             image.width() as u32,
@@ -54,8 +55,8 @@ impl PendingScreenshot {
         let mut png = std::io::Cursor::new(Vec::new());
         rgba.write_to(&mut png, image::ImageFormat::Png)
             .map_err(|e| Error::machine(&name, format!("cannot encode the PNG: {e}")))?;
-        crate::files::write_atomically(&self.path, &png.into_inner())?;
-        Ok(self.path.clone())
+        crate::app::file_io::save(&self.path, &png.into_inner(), "image/png")
+            .map_err(|why| Error::input(&name, why))
     }
 }
 

@@ -16,6 +16,7 @@ use crate::app::pacer::Pacer;
 use crate::gpu::GpuContext;
 use crate::gpu::display::DisplayPass;
 use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
+use crate::gpu::target::PendingRead;
 use crate::ltc::lut::Lut;
 use crate::render::{Frame, FrameKind, RenderSettings, Tables, View};
 use crate::scene::Scene;
@@ -138,6 +139,8 @@ pub struct Shading {
     pub progress: Progress,
     /// An error of the last render, shown over the image.
     pub error: Option<String>,
+    /// The finished image's read-back, on its way (`read`).
+    reading: Option<PendingRead>,
 }
 
 enum Path {
@@ -188,6 +191,8 @@ struct CpuShading {
     /// The exposure the texture was encoded with (`None`: not encoded yet), so that an
     /// exposure change re-encodes the frame instead of rendering it again.
     encoded: Option<f64>,
+    /// Held while the current render's steps run; dropped, they stop.
+    token: Option<Arc<()>>,
 }
 
 impl Shading {
@@ -208,6 +213,7 @@ impl Shading {
             tables: None,
             progress: Progress::default(),
             error: None,
+            reading: None,
         };
         (shading, why)
     }
@@ -281,6 +287,7 @@ impl Shading {
         let new_tables = self.tables != Some(tables_stamp);
         self.tables = Some(tables_stamp);
         self.error = None;
+        self.reading = None;
         match &mut self.path {
             Path::Gpu(g) => {
                 if new_tables {
@@ -327,13 +334,27 @@ impl Shading {
         !self.progress.complete()
     }
 
-    /// The finished image, read back (for saving an EXR); `None` while in flight.
-    pub fn read(&self) -> Option<Frame> {
+    /// Whether the finished image's read-back is on its way (`read` will have it).
+    pub fn read_pending(&self) -> bool {
+        self.reading.is_some()
+    }
+
+    /// The finished image, read back (for saving an EXR, finding the worst pixel); `None`
+    /// while in flight, and while the GPU's copy is on its way back: nothing waits (the
+    /// browser cannot), so the caller asks again in a later frame.
+    pub fn read(&mut self) -> Option<Frame> {
         if self.in_flight() {
             return None;
         }
-        match &self.path {
-            Path::Gpu(g) => Some(g.renderer.read(&g.ctx)),
+        match &mut self.path {
+            Path::Gpu(g) => {
+                let pending = self
+                    .reading
+                    .get_or_insert_with(|| g.renderer.start_read(&g.ctx));
+                let texels = pending.try_take(&g.ctx)?;
+                self.reading = None;
+                Some(g.renderer.frame_of(&texels))
+            }
             Path::Cpu(cpu) => cpu.frame.clone(),
         }
     }
@@ -413,25 +434,24 @@ impl GpuShading {
             }
         }
         let wall_ms = chunk.wall_ms.unwrap_or(0.0);
-        let times = if self.paced_on_timestamps {
-            match self.renderer.try_times() {
-                Some(t) => t,
-                // The timestamps follow the work: a frame or so later.
-                None => return false,
-            }
-        } else {
-            // Drops any timestamps read, so that they do not pile up.
-            let _ = self.renderer.try_times();
-            match chunk.work {
-                Work::Bin => FrameTimes {
-                    bin_ms: Some(wall_ms),
-                    shade_ms: 0.0,
-                },
-                Work::Shade => FrameTimes {
-                    bin_ms: None,
-                    shade_ms: wall_ms,
-                },
-            }
+        let by_wall_clock = match chunk.work {
+            Work::Bin => FrameTimes {
+                bin_ms: Some(wall_ms),
+                shade_ms: 0.0,
+            },
+            Work::Shade => FrameTimes {
+                bin_ms: None,
+                shade_ms: wall_ms,
+            },
+        };
+        let times = match self.renderer.try_times() {
+            Some(t) if self.paced_on_timestamps => t,
+            // The timestamps follow the work: a frame or so later.
+            None if self.paced_on_timestamps && self.renderer.times_pending() => return false,
+            // None coming (a chunk submitted while the last read-back was still out, or a
+            // read-back that failed: seen in a browser), or not paced on them (any read is
+            // dropped, so that they do not pile up): the wall clock.
+            _ => by_wall_clock,
         };
         if chunk.stale {
             self.in_flight = None;
@@ -473,9 +493,9 @@ impl GpuShading {
         };
         // An empty submission's index stands for all the work before it.
         let index = self.ctx.queue.submit([]);
-        let device = &self.ctx.device;
+        let (device, queue) = (&self.ctx.device, &self.ctx.queue);
         self.completion
-            .get_or_insert_with(|| Completion::new(device.clone(), window.clone()))
+            .get_or_insert_with(|| Completion::new(device.clone(), queue.clone(), window.clone()))
             .submitted(index, submitted);
         self.in_flight = Some(InFlight {
             work,
@@ -531,8 +551,9 @@ impl GpuShading {
 }
 
 impl CpuShading {
-    /// Starts the CPU render at a reduced size on a worker thread (a stale one's result is
-    /// dropped: only the newest receiver is read).
+    /// Starts the CPU render at a reduced size on a worker thread, or over the browser's
+    /// frames (a stale one stops, and its result is dropped: only the newest receiver is
+    /// read).
     fn start(
         &mut self,
         ui: &egui::Context,
@@ -550,10 +571,36 @@ impl CpuShading {
         let (tx, rx) = mpsc::channel();
         let repaint = ui.clone();
         let (a, b) = (tables.a.lut.clone(), tables.b.lut.clone());
-        crate::app::background::spawn("cpu render", move || {
-            let _ = tx.send(crate::cpu::render(&scene, Tables { a: &a, b: &b }, &s));
-            repaint.request_repaint();
-        });
+        // A restarted render stops the one before: its steps see their token gone.
+        let token = Arc::new(());
+        let current = Arc::downgrade(&token);
+        self.token = Some(token);
+        let mut bands = crate::cpu::Bands::new(&s);
+        let mut pacer = Pacer::default();
+        crate::app::background::spawn_steps(
+            "cpu render",
+            Box::new(move || {
+                if current.strong_count() == 0 {
+                    return true;
+                }
+                // A thread renders the image whole (its rows in parallel); the browser in
+                // bands of rows sized to the frame's budget.
+                let rows = if cfg!(target_arch = "wasm32") {
+                    pacer.next(FRAME_BUDGET_MS)
+                } else {
+                    s.height
+                };
+                let started = Instant::now();
+                let frame = bands.step(&scene, Tables { a: &a, b: &b }, rows);
+                pacer.record(rows, started.elapsed().as_secs_f64() * 1e3);
+                let Some(frame) = frame else {
+                    return false;
+                };
+                let _ = tx.send(frame);
+                repaint.request_repaint();
+                true
+            }),
+        );
         self.rx = Some(rx);
     }
 

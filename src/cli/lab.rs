@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
+use ltc_lab::app::link;
 use ltc_lab::app::screenshot::frame_log_csv;
 use ltc_lab::app::{LabApp, LabState, Message, PanelId, ScreenshotApp};
 use ltc_lab::error::{Error, Result};
@@ -55,6 +56,10 @@ pub struct Args {
     /// them).
     #[arg(long)]
     lights: Option<usize>,
+    /// Open this view: a string the lab's *share view* copied, or a browser link (or its
+    /// `#view=…` part).
+    #[arg(long)]
+    view: Option<String>,
     /// With --screenshot: write one row per UI frame to this CSV
     /// (frame,ms,render_in_flight,lights_done,lights_total).
     #[arg(long, requires = "screenshot")]
@@ -71,6 +76,7 @@ impl Default for Args {
             scene: None,
             measure: false,
             lights: None,
+            view: None,
             frame_log: None,
         }
     }
@@ -96,6 +102,16 @@ pub fn run(a: Args) -> Result<()> {
             ),
         ));
     }
+    // A view that cannot be opened is refused before any window opens.
+    if let Some(v) = &a.view {
+        link::decode(v, &LabState::default()).map_err(|why| Error::input("--view", why))?;
+    }
+    let view = a.view.clone();
+    // The view asked for over `state`: checked above.
+    let with_view = move |state: LabState| match &view {
+        Some(v) => link::decode(v, &state).unwrap_or(state),
+        None => state,
+    };
     let (w, h) = a.size.unwrap_or(DEFAULT_SIZE);
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
@@ -163,7 +179,8 @@ pub fn run(a: Args) -> Result<()> {
                 options,
                 Box::new(move |cc| {
                     opened();
-                    let app = LabApp::new(LabState::default(), cc.wgpu_render_state.as_ref());
+                    let state = with_view(LabState::default());
+                    let app = LabApp::new(state, cc.wgpu_render_state.as_ref());
                     let mut shot = ScreenshotApp::new(configure(app), path);
                     shot.result = slot;
                     shot.frames = log;
@@ -191,7 +208,9 @@ pub fn run(a: Args) -> Result<()> {
             options,
             Box::new(move |cc| {
                 opened();
-                Ok(Box::new(configure(LabApp::from_creation_context(cc))))
+                let state = with_view(LabApp::stored_state(cc));
+                let app = LabApp::new(state, cc.wgpu_render_state.as_ref());
+                Ok(Box::new(configure(app)))
             }),
         )
         .map_err(window),

@@ -11,6 +11,7 @@ pub mod ltc;
 pub mod ltc_f16;
 pub mod plane;
 pub mod scene;
+pub mod selfcheck;
 pub mod target;
 pub mod timing;
 
@@ -132,7 +133,12 @@ impl GpuContext {
     pub fn describe(&self) -> String {
         format!(
             "{} ({:?}, {:?}{})",
-            self.info.name,
+            // A browser may keep the adapter's name to itself (a fingerprinting defence).
+            if self.info.name.is_empty() {
+                "unnamed adapter"
+            } else {
+                &self.info.name
+            },
             self.info.backend,
             self.info.device_type,
             if self.has_timestamps() {

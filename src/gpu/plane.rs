@@ -529,6 +529,11 @@ impl PlaneRenderer {
         self.timer.is_some()
     }
 
+    /// Whether the last step's GPU times are on their way (else `try_times` has none coming).
+    pub fn times_pending(&self) -> bool {
+        self.timer.as_ref().is_some_and(PassTimer::pending)
+    }
+
     /// The last step's GPU times if they have arrived (poll the device meanwhile); never
     /// waits.
     pub fn try_times(&mut self) -> Option<FrameTimes> {

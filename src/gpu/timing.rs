@@ -86,6 +86,11 @@ impl PassTimer {
         }
     }
 
+    /// Whether a read-back is in flight (`try_read` will have it, or say it failed).
+    pub fn pending(&self) -> bool {
+        self.pending.is_some()
+    }
+
     /// Whether the read-back buffer is free for `resolve` (no read-back in flight).
     pub fn can_resolve(&self) -> bool {
         self.pending.is_none()

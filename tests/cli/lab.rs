@@ -47,3 +47,12 @@ fn an_unwritable_screenshot_path_is_bad_input() {
     let o = ltc_lab(&["lab", "--screenshot", "/sys/ltc-lab-shot.png"]);
     assert_refused(&o, "/sys/ltc-lab-shot.png");
 }
+
+/// A view that cannot be opened (cut short, not a view, a scene that cannot be shaded) is
+/// refused by name before a window opens.
+#[test]
+fn lab_refuses_a_broken_view() {
+    for view in ["v1.", "v1.AAAA", "hello", "v2.abc", "https://x/#view=v1.%%"] {
+        assert_refused(&ltc_lab(&["lab", "--view", view]), "--view");
+    }
+}

@@ -7,7 +7,7 @@ use std::sync::{Mutex, OnceLock};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::metrics::{luminance, relative_floor};
+use ltc_lab::parity::{Parity, RADIANCE_TOLERANCE};
 use ltc_lab::render::Frame;
 
 /// Says loudly that a check was skipped: straight to the process's stderr, which the test
@@ -53,48 +53,17 @@ pub fn bits(f: &Frame) -> Vec<[u64; 3]> {
         .collect()
 }
 
-/// Per-pixel agreement of a GPU frame with the CPU reference.
-///
-/// Tolerance 2e-4 of `max(|reference luminance|, floor)`: the GPU shades in f32. Its hit
-/// point is off by ~1e-7 relative (f32 ray arithmetic over a 5-unit scene), which the
-/// inverse-square falloff's relative gradient 2/d (100 at d = 0.02, figure2-case2's light)
-/// turns into ~5e-5; f32 rounding of 1000-term sums and of the LUT blend adds ~1e-5. The
-/// largest difference measured on lavapipe over all cases was 6.9e-5 (figure2-case1, no
-/// clipping, paper-literal). The floor (1% of the reference's mean,
-/// `metrics::relative_floor`) covers pixels near zero, where the clipping decisions may fall
-/// differently in f32 on terms that vanish there.
-/// Pixels whose camera ray hits the plane in one precision only (its silhouette) are skipped:
-/// at most 1% of the image.
-pub const RADIANCE_TOLERANCE: f64 = 2e-4;
-
+/// Per-pixel agreement of a GPU frame with the CPU reference, at the library's parity
+/// tolerance (`ltc_lab::parity`, which says where it comes from).
 pub fn assert_close(what: &str, gpu: &Frame, cpu: &Frame) {
-    let floor = relative_floor(cpu, cpu);
-    let mut silhouette = 0;
-    let mut worst: (f64, usize) = (0.0, 0);
-    for k in 0..cpu.pixels.len() {
-        if gpu.on_plane[k] != cpu.on_plane[k] {
-            silhouette += 1;
-            continue;
-        }
-        let (g, c) = (gpu.pixels[k], cpu.pixels[k]);
-        assert!(g.is_finite(), "{what}: pixel {k} is {g}");
-        let scale = luminance(c.abs()).max(floor);
-        let err = (g - c).abs().max_element() / scale;
-        if err > worst.0 {
-            worst = (err, k);
-        }
+    let parity = Parity::of(gpu, cpu);
+    if let Err(why) = parity.check() {
+        let k = parity.worst;
+        panic!(
+            "{what}: {why} (gpu {:?}, cpu {:?})",
+            gpu.pixels[k], cpu.pixels[k]
+        );
     }
-    assert!(
-        silhouette * 100 <= cpu.pixels.len(),
-        "{what}: {silhouette} pixels differ in coverage"
-    );
-    let (err, k) = worst;
-    assert!(
-        err <= RADIANCE_TOLERANCE,
-        "{what}: pixel {k} differs by {err:.2e} (gpu {:?}, cpu {:?})",
-        gpu.pixels[k],
-        cpu.pixels[k]
-    );
 }
 
 /// The bound on a diff-view pixel `r = |a − b| / max(b, f)` given the radiance bound ε =

@@ -61,11 +61,66 @@ pub const DDS_HEADER_FILE: &str = "ltc_dds.txt";
 /// Reads a table: this project's EXR, ltc_code's `ltc.js`, or its `ltc_1.dds`/`ltc_2.dds`
 /// (either file, or their directory).
 pub fn read(path: &Path) -> Result<Loaded> {
-    let name = path.display().to_string();
-    if path.is_dir() {
-        return read_dds_pair(&path.join("ltc_1.dds"), &path.join("ltc_2.dds"));
+    read_from(&Disk, path)
+}
+
+/// Reads a table from files given by name and bytes (picked in a browser, or dropped on the
+/// window): one table file, or a DDS pair with its header sidecar.
+pub fn read_given(files: &[(String, Vec<u8>)]) -> Result<Loaded> {
+    let first = files
+        .iter()
+        .find(|(name, _)| !name.ends_with(DDS_HEADER_FILE))
+        .ok_or_else(|| Error::input("the given files", "no table among them"))?;
+    read_from(&Given(files), Path::new(&first.0))
+}
+
+/// Where a table's files are read from.
+trait Source {
+    fn bytes(&self, path: &Path) -> Result<Vec<u8>>;
+    fn is_dir(&self, path: &Path) -> bool;
+}
+
+struct Disk;
+
+impl Source for Disk {
+    fn bytes(&self, path: &Path) -> Result<Vec<u8>> {
+        std::fs::read(path).map_err(|e| Error::io(path.display().to_string(), "read", &e))
     }
-    let bytes = std::fs::read(path).map_err(|e| Error::io(&name, "read", &e))?;
+
+    fn is_dir(&self, path: &Path) -> bool {
+        path.is_dir()
+    }
+}
+
+/// Files given by name: a path is found by its file name.
+struct Given<'a>(&'a [(String, Vec<u8>)]);
+
+impl Source for Given<'_> {
+    fn bytes(&self, path: &Path) -> Result<Vec<u8>> {
+        let file = path.file_name();
+        self.0
+            .iter()
+            .find(|(name, _)| Path::new(name).file_name() == file)
+            .map(|(_, bytes)| bytes.clone())
+            .ok_or_else(|| {
+                Error::input(
+                    path.display().to_string(),
+                    "was not given: pick (or drop) both files of a DDS pair at once",
+                )
+            })
+    }
+
+    fn is_dir(&self, _: &Path) -> bool {
+        false
+    }
+}
+
+fn read_from(source: &dyn Source, path: &Path) -> Result<Loaded> {
+    let name = path.display().to_string();
+    if source.is_dir(path) {
+        return read_dds_pair(source, &path.join("ltc_1.dds"), &path.join("ltc_2.dds"));
+    }
+    let bytes = source.bytes(path)?;
     let ext = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
@@ -74,7 +129,7 @@ pub fn read(path: &Path) -> Result<Loaded> {
     }
     if dds::looks_like(&bytes) || ext.as_deref() == Some("dds") {
         let (first, second) = dds_pair(path)?;
-        return read_dds_pair(&first, &second);
+        return read_dds_pair(source, &first, &second);
     }
     let text = String::from_utf8_lossy(&bytes);
     if js::looks_like(&text) || ext.as_deref() == Some("js") {
@@ -126,12 +181,8 @@ fn dds_pair(path: &Path) -> Result<(PathBuf, PathBuf)> {
     }
 }
 
-fn read_dds_pair(first: &Path, second: &Path) -> Result<Loaded> {
-    let texture = |p: &Path| {
-        let name = p.display().to_string();
-        let bytes = std::fs::read(p).map_err(|e| Error::io(&name, "read", &e))?;
-        dds::read(&bytes, &name)
-    };
+fn read_dds_pair(source: &dyn Source, first: &Path, second: &Path) -> Result<Loaded> {
+    let texture = |p: &Path| dds::read(&source.bytes(p)?, &p.display().to_string());
     let (n1, tex1, _) = texture(first)?;
     let (n2, tex2, _) = texture(second)?;
     let name = first.display().to_string();
@@ -145,9 +196,10 @@ fn read_dds_pair(first: &Path, second: &Path) -> Result<Loaded> {
         ));
     }
     let sidecar = first.with_file_name(DDS_HEADER_FILE);
-    let alpha_min = std::fs::read_to_string(sidecar)
+    let alpha_min = source
+        .bytes(&sidecar)
         .ok()
-        .and_then(|t| header_alpha_min(&t));
+        .and_then(|t| header_alpha_min(&String::from_utf8_lossy(&t)));
     let packed = Packed {
         size: n1,
         tex1,

@@ -1,0 +1,125 @@
+//! A view of the lab as one string (docs/design.md §5.9): the scene, the shared settings,
+//! the panels' settings and the open panel, for a link's fragment (`index.html#view=…`) and
+//! for `ltc-lab lab --view`, so that a teacher can move a view between a browser and the
+//! desktop both ways. What belongs to one machine stays out: file paths, a refit's result,
+//! a measured chart.
+
+use base64::Engine;
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use serde::{Deserialize, Serialize};
+
+use crate::app::clip_setup::ClippingState;
+use crate::app::lab::Shared;
+use crate::app::lobe::LobeState;
+use crate::app::plane::PlaneState;
+use crate::app::state::{LabState, WindowState};
+
+/// What a link's string starts with: the format's version, so that a later format can read
+/// (or refuse by name) an older link.
+const VERSION: &str = "v1.";
+
+/// The fragment's key in a page's URL: `#view=v1.…`.
+pub const FRAGMENT_KEY: &str = "view=";
+
+/// The longest string `decode` reads: a generated scene of any size fits in under 1 kB; a
+/// scene of dragged lights takes ~40 bytes a light. More is not a link a person sent.
+const MAX_LEN: usize = 1 << 20;
+
+/// The parts of the lab's state a link carries.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+struct Link {
+    /// The scene's lights are the lab's generator's `count` (from `lab.seed`), and
+    /// `lab.scene.lights` is left empty: a link of 20 000 lights stays short.
+    generated: Option<usize>,
+    lab: Shared,
+    lobe: LobeState,
+    plane: PlaneState,
+    clipping: ClippingState,
+    window: WindowState,
+}
+
+/// The view of `state` as a link's string: RON, raw deflate, URL-safe base64.
+pub fn encode(state: &LabState) -> String {
+    let mut lab = state.lab.clone();
+    lab.table_file = None;
+    lab.table_b_file = None;
+    lab.refit = None;
+    let generated = generated_count(&lab);
+    if generated.is_some() {
+        lab.scene.lights.clear();
+    } else {
+        lab.scene = lab.scene.rounded_for_saving();
+    }
+    let link = Link {
+        generated,
+        lab,
+        lobe: state.lobe.clone(),
+        plane: state.plane.clone(),
+        clipping: state.clipping.clone(),
+        window: state.window.clone(),
+    };
+    let text = ron::to_string(&link).expect("the lab's state always serializes");
+    let packed = miniz_oxide::deflate::compress_to_vec(text.as_bytes(), 9);
+    format!("{VERSION}{}", URL_SAFE_NO_PAD.encode(packed))
+}
+
+/// `state` with the view of `text` in place of its own (its chart and file paths kept); why
+/// not where `text` is not a view. `text` may be the string alone, a fragment (`#view=…`) or a
+/// whole URL.
+pub fn decode(text: &str, state: &LabState) -> Result<LabState, String> {
+    let text = text.trim();
+    let text = text
+        .rsplit_once(FRAGMENT_KEY)
+        .map_or(text, |(_, view)| view);
+    if text.len() > MAX_LEN {
+        return Err(format!("the view is {} bytes long: not a link", text.len()));
+    }
+    let body = text.strip_prefix(VERSION).ok_or_else(|| {
+        let shown: String = text.chars().take(12).collect();
+        format!("a view starts with {VERSION}, this one with '{shown}'")
+    })?;
+    let packed = URL_SAFE_NO_PAD
+        .decode(body)
+        .map_err(|e| format!("the view is not base64 ({e}): cut short when copied?"))?;
+    let bytes =
+        miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_LEN).map_err(|e| {
+            format!(
+                "the view does not unpack ({:?}): cut short when copied?",
+                e.status
+            )
+        })?;
+    let text = String::from_utf8(bytes).map_err(|_| "the view's text is not UTF-8".to_string())?;
+    let mut link: Link =
+        ron::from_str(&text).map_err(|e| format!("the view does not read: {e}"))?;
+    if let Some(count) = link.generated {
+        if count > crate::scene::MAX_LIGHTS {
+            return Err(format!(
+                "the view asks for {count} lights, over the {} a scene may have",
+                crate::scene::MAX_LIGHTS
+            ));
+        }
+        link.lab.set_light_count(count);
+    }
+    link.lab
+        .scene
+        .validate()
+        .map_err(|why| format!("the view's scene cannot be shaded: {why}"))?;
+    let mut out = state.clone();
+    link.lab.table_file = None;
+    link.lab.table_b_file = None;
+    out.lab = link.lab;
+    out.lobe = link.lobe;
+    out.plane = link.plane;
+    out.clipping = link.clipping;
+    out.window = link.window;
+    Ok(out)
+}
+
+/// How many lights the lab's generator made, where the scene's lights are exactly those it
+/// makes from the lab's seed (the lights slider's, and paper-100's).
+fn generated_count(lab: &Shared) -> Option<usize> {
+    let mut made = lab.clone();
+    made.set_light_count(lab.scene.lights.len());
+    (made.scene.lights == lab.scene.lights).then_some(lab.scene.lights.len())
+}
