@@ -1607,3 +1607,55 @@ fn the_horizon_choice_shades_with_a_remedy() {
     assert!(h.state().lab.tables().a.name.contains("classic"));
     assert_eq!(h.state().lab.shared().horizon_remedy(), Horizon::Eq30);
 }
+
+/// A file from the disk, as eframe hands a dropped one to the app.
+#[derive(Debug)]
+struct DroppedFromDisk(std::path::PathBuf);
+
+impl egui::DroppedFile for DroppedFromDisk {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+fn drop_file(h: &mut Harness<'static, LabApp>, path: &std::path::Path) {
+    h.input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(DroppedFromDisk(path.to_path_buf())));
+    h.run_steps(2);
+}
+
+/// Issue 21: a file dropped on the window is taken for what its name says (app/file_io.rs):
+/// a scene replaces the lab's, a table becomes table A, and a file the lab does not read is
+/// refused by name, changing nothing.
+#[test]
+fn files_dropped_on_the_window_are_taken() {
+    let Some(mut h) = lab((1000.0, 700.0), LabState::default()) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let scene_file = dir.path().join("dropped.toml");
+    let mut scene = ltc_lab::scene::preset("paper-100");
+    scene.material.alpha = 0.77;
+    scene.lights.truncate(3);
+    std::fs::write(&scene_file, scene.to_toml()).unwrap();
+    drop_file(&mut h, &scene_file);
+    assert_eq!(h.state().lab.shared().scene, scene);
+    let said = |h: &Harness<'static, LabApp>| h.state().lab.message.clone().unwrap();
+    assert!(!said(&h).is_error && said(&h).text.contains("dropped.toml"));
+
+    let table = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("luts/ltc_point.exr");
+    drop_file(&mut h, &table);
+    assert!(h.state().lab.tables().a.name.ends_with("ltc_point.exr"));
+
+    let notes = dir.path().join("notes.txt");
+    std::fs::write(&notes, "not a scene").unwrap();
+    drop_file(&mut h, &notes);
+    assert!(said(&h).is_error && said(&h).text.contains("notes.txt"), "{:?}", said(&h));
+    assert_eq!(h.state().lab.shared().scene, scene);
+    settle(&mut h);
+}

@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 
 if [ ! -x /usr/bin/wasm-ld ] || [ ! -d /usr/lib/rustlib/src/rust/library ]; then
     if [ "$(id -u)" = 0 ]; then
-        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq rustc-web cargo-web rust-web-src lld > /dev/null
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq rustc-web cargo-web rust-web-src lld binaryen > /dev/null
     else
         echo "web/build.sh: needs Debian's rustc-web cargo-web rust-web-src lld (apt-get install as root)" >&2
         exit 1
@@ -36,11 +36,23 @@ RUSTFLAGS='-C linker=/usr/bin/wasm-ld --cfg getrandom_backend="wasm_js"' \
 
 rm -rf dist
 mkdir -p dist
-"$tools/bin/wasm-bindgen" --target web --no-typescript --out-dir dist \
-    target/web/wasm32-unknown-unknown/web/ltc_lab_web.wasm
-# No wasm-opt yet: Debian's (binaryen 108) shrinks the wasm to 10.1 MB (4.0 MB gzip), but its
-# output fails to start in Chromium (a WebAssembly.Table.set TypeError on wasm-bindgen's
-# function table).
+wasm=target/web/wasm32-unknown-unknown/web/ltc_lab_web.wasm
+# wasm-opt (Debian's binaryen) before wasm-bindgen, not after: run on wasm-bindgen's output,
+# binaryen 108 broke its function table (a WebAssembly.Table.set TypeError in Chromium). The
+# features are those Rust's wasm32 target emits.
+# About a minute on 2 cores: skipped where the optimized file is newer than the build's.
+if command -v wasm-opt > /dev/null; then
+    optimized=target/web/ltc_lab_web.wasm
+    if [ ! "$optimized" -nt "$wasm" ]; then
+        wasm-opt -Os --enable-reference-types --enable-bulk-memory \
+            --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals \
+            --enable-multivalue "$wasm" -o "$optimized"
+    fi
+    wasm=$optimized
+else
+    echo "web/build.sh: no wasm-opt (apt-get install binaryen): the bundle is not size-optimized" >&2
+fi
+"$tools/bin/wasm-bindgen" --target web --no-typescript --out-dir dist "$wasm"
 python3 - <<'PY'
 import pathlib
 page = pathlib.Path("web/index.html").read_text()

@@ -130,11 +130,29 @@ class Page:
         return r.get("result", {}).get("value")
 
 
+def wait_for(page, expression, timeout):
+    """Whether the page's `expression` became truthy within `timeout` s (real time)."""
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        if page.evaluate(f"!!({expression})"):
+            return True
+        time.sleep(0.25)
+    return False
+
+
+def drop_files(page, paths, x, y):
+    """Drags files from the disk onto the page at (x, y) and drops them there."""
+    data = {"items": [], "files": [os.path.abspath(p) for p in paths], "dragOperationsMask": 1}
+    for kind in ("dragEnter", "dragOver", "drop"):
+        page.call("Input.dispatchDragEvent", type=kind, x=x, y=y, data=data)
+
+
 def open_page(url, wait, show="''", size="1280,800", flags=(), timeout=120, screenshot=None,
-              browser=None):
+              browser=None, act=None):
     """Opens `url` in a fresh headless Chromium with `flags`, waits (in real time, up to
-    `timeout` s) until the expression `wait` is truthy, saves a screenshot; the value of
-    `show`, the console's lines, and whether the wait ended in time."""
+    `timeout` s) until the expression `wait` is truthy, then runs `act(page)` (if given and
+    the wait ended in time; it says whether it succeeded), saves a screenshot; the value of
+    `show`, the console's lines, and whether the wait (and `act`) ended well."""
     browser = browser or shutil.which("chromium") or "chromium"
     profile = tempfile.mkdtemp(prefix="ltc-lab-chromium-")
     process = subprocess.Popen(
@@ -157,13 +175,9 @@ def open_page(url, wait, show="''", size="1280,800", flags=(), timeout=120, scre
         page.call("Log.enable")
         page.call("Page.enable")
         page.call("Page.navigate", url=url)
-        deadline = time.time() + timeout
-        done = False
-        while time.time() < deadline:
-            if page.evaluate(f"!!({wait})"):
-                done = True
-                break
-            time.sleep(0.25)
+        done = wait_for(page, wait, timeout)
+        if done and act:
+            done = act(page)
         if screenshot:
             shot = page.call("Page.captureScreenshot", format="png")
             with open(screenshot, "wb") as f:

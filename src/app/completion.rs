@@ -28,10 +28,10 @@ pub struct Completion {
 
 impl Completion {
     /// No waiter in a browser: no threads, and the queue's callback
-    /// (`on_submitted_work_done`) failed in headless Chromium on SwiftShader ("A valid
-    /// external Instance reference no longer exists"), which stalled the plane. A chunk is
-    /// reported done when submitted: the browser runs the queue's work in order, and the
-    /// pacer follows the timestamps where they arrive.
+    /// (`on_submitted_work_done`) failed on eframe's device in headless Chromium on
+    /// SwiftShader ("A valid external Instance reference no longer exists", an error in the
+    /// console at every chunk). A chunk is reported done when submitted: the browser runs the
+    /// queue's work in order, and the pacer follows the timestamps where they arrive.
     #[cfg(target_arch = "wasm32")]
     pub fn new(_: wgpu::Device, _: wgpu::Queue, _: egui::Context) -> Self {
         Self {

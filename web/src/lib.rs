@@ -13,6 +13,11 @@ mod selfcheck;
 use ltc_lab::app::browser;
 use wasm_bindgen::prelude::*;
 
+thread_local! {
+    /// The lab's runner, kept for the page's lifetime.
+    static RUNNER: std::cell::RefCell<Option<eframe::WebRunner>> = const { std::cell::RefCell::new(None) };
+}
+
 /// Starts the lab on the canvas `#lab` (or the self-check); a failure is shown in the page's
 /// `#status` element instead of a blank page.
 #[wasm_bindgen(start)]
@@ -39,7 +44,8 @@ async fn run() -> Result<(), String> {
         },
         ..Default::default()
     };
-    eframe::WebRunner::new()
+    let runner = eframe::WebRunner::new();
+    runner
         .start(
             canvas,
             options,
@@ -47,6 +53,7 @@ async fn run() -> Result<(), String> {
         )
         .await
         .map_err(|e| format!("{e:?}"))?;
+    RUNNER.with(|r| *r.borrow_mut() = Some(runner));
     page::say("");
     Ok(())
 }

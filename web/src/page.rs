@@ -19,6 +19,8 @@ pub struct PageLab {
     /// pictures made).
     settled_ms: Option<f64>,
     reported_at: f64,
+    /// Whether the lab was busy at the last report, and its message's length.
+    reported_busy: Option<(bool, Option<usize>)>,
 }
 
 impl PageLab {
@@ -43,6 +45,7 @@ impl PageLab {
             first_frame_ms: None,
             settled_ms: None,
             reported_at: f64::NEG_INFINITY,
+            reported_busy: None,
         }
     }
 
@@ -74,15 +77,21 @@ impl PageLab {
             "cpu"
         };
         format!(
-            "{{\"first_frame_ms\": {}, \"settled_ms\": {}, \"busy\": {}, \"working\": [{}], \"plane\": [{}, {}], \"shading\": \"{shading}\", \"device\": {}, \"panels\": [{}], \"view\": \"{}\"}}",
+            "{{\"first_frame_ms\": {}, \"settled_ms\": {}, \"reported_ms\": {:.0}, \"busy\": {}, \"working\": [{}], \"plane\": [{}, {}], \"shading\": \"{shading}\", \"device\": {}, \"panels\": [{}], \"message\": {}, \"view\": \"{}\"}}",
             ms(self.first_frame_ms),
             ms(self.settled_ms),
+            browser::now_ms(),
             self.app.busy(),
             self.working().join(", "),
             self.app.plane.shading.progress.done,
             self.app.plane.shading.progress.total,
             json_string(&self.app.lab.describe_device()),
             panels.join(", "),
+            self.app
+                .lab
+                .message
+                .as_ref()
+                .map_or("null".into(), |m| json_string(&m.text)),
             link::encode(&self.app.state()),
         )
     }
@@ -96,8 +105,15 @@ impl eframe::App for PageLab {
         if self.settled_ms.is_none() && !self.app.busy() {
             self.settled_ms = Some(now);
         }
-        if now - self.reported_at >= REPORT_EVERY_MS {
+        // Also at once when the lab's work starts or ends, or its message changes: a finished
+        // lab draws no more frames, and a report left from before would say it is still busy.
+        let busy = (
+            self.app.busy(),
+            self.app.lab.message.as_ref().map(|m| m.text.len()),
+        );
+        if now - self.reported_at >= REPORT_EVERY_MS || self.reported_busy != Some(busy) {
             self.reported_at = now;
+            self.reported_busy = Some(busy);
             browser::write_element("lab-state", &self.report());
         }
     }
