@@ -1655,7 +1655,11 @@ fn files_dropped_on_the_window_are_taken() {
     let notes = dir.path().join("notes.txt");
     std::fs::write(&notes, "not a scene").unwrap();
     drop_file(&mut h, &notes);
-    assert!(said(&h).is_error && said(&h).text.contains("notes.txt"), "{:?}", said(&h));
+    assert!(
+        said(&h).is_error && said(&h).text.contains("notes.txt"),
+        "{:?}",
+        said(&h)
+    );
     assert_eq!(h.state().lab.shared().scene, scene);
     settle(&mut h);
 }
