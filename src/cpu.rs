@@ -154,21 +154,23 @@ fn combine(lobes: Lobes<f64>, base_color: [f64; 3]) -> DVec3 {
 /// or their relative difference. `tables`: one table, or A's and B's (`s.table_b`).
 pub fn render<'a>(scene: &Scene, tables: impl Into<Tables<'a>>, s: &RenderSettings) -> Frame {
     let tables = tables.into();
-    let passes = (0..passes(s))
-        .map(|pass| render_rows(scene, tables, s, pass, 0..s.height))
-        .collect();
-    assemble(s, passes)
+    let mut bands = Bands::new(s);
+    // A pass a step, each band the whole image (its rows in parallel).
+    loop {
+        if let Some(frame) = bands.step(scene, tables, s.height) {
+            return frame;
+        }
+    }
 }
 
 /// The radiance images a render of `s` is made of: two (A's and B's) for a difference view,
 /// else one.
-pub fn passes(s: &RenderSettings) -> usize {
+fn passes(s: &RenderSettings) -> usize {
     if s.view == View::Diff { 2 } else { 1 }
 }
 
-/// Rows `rows` of pass `pass`'s radiance: a band of the image, for a caller that renders in
-/// steps (the browser, which has no threads to wait on).
-pub fn render_rows<'a>(
+/// Rows `rows` of pass `pass`'s radiance: a band of the image.
+fn render_rows<'a>(
     scene: &Scene,
     tables: impl Into<Tables<'a>>,
     s: &RenderSettings,
@@ -186,8 +188,8 @@ pub fn render_rows<'a>(
     }
 }
 
-/// The image of `s` from its passes' bands, stacked in row order.
-pub fn assemble(s: &RenderSettings, passes: Vec<Frame>) -> Frame {
+/// The image of `s` from its passes, each whole.
+fn assemble(s: &RenderSettings, passes: Vec<Frame>) -> Frame {
     let mut passes = passes.into_iter();
     let first = passes.next().expect("a render has a pass");
     match s.view {
@@ -200,7 +202,8 @@ pub fn assemble(s: &RenderSettings, passes: Vec<Frame>) -> Frame {
     }
 }
 
-/// A render made band by band (`render_rows`), for a caller that renders in steps.
+/// A render made band by band (`render_rows`), for a caller that renders in steps (the
+/// browser, which has no threads to wait on); `render` is one step a pass.
 pub struct Bands {
     s: RenderSettings,
     done: Vec<Vec<Frame>>,
@@ -242,7 +245,7 @@ impl Bands {
 }
 
 /// Bands of rows of one image, stacked in order into the whole.
-pub fn stack(bands: Vec<Frame>) -> Frame {
+fn stack(bands: Vec<Frame>) -> Frame {
     let mut bands = bands.into_iter();
     let mut whole = bands.next().expect("at least one band");
     for band in bands {

@@ -1,10 +1,11 @@
 //! A pixel opened into its lights (`pixel::pixel_terms`): the lights' contributions sum to
 //! the pixel's radiance by both methods, as the CPU reference shades it; with two tables,
 //! each table's contributions sum to its side's pixel, and the shares of their difference
-//! are each light's own difference as the CPU reference shades that light alone.
+//! are each light's own difference as the CPU reference shades that light alone. And the CPU
+//! render made in bands of rows (the browser's) is the one-shot render.
 
 use glam::DVec3;
-use ltc_lab::cpu::{render, shade_exact, shade_ltc};
+use ltc_lab::cpu::{Bands, render, shade_exact, shade_ltc};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Normalization};
 use ltc_lab::metrics::luminance;
@@ -191,5 +192,45 @@ fn rules(clipping: Clipping, normalization: Normalization) -> LtcRules {
         clipping,
         normalization,
         ..LtcRules::default()
+    }
+}
+
+/// The browser renders the CPU plane in bands of rows over frames (`cpu::Bands`, issue 21):
+/// the image is the one-shot render's to the bit, in every view (the difference view's floor
+/// is taken over the whole image, after the bands are stacked).
+#[test]
+fn a_render_in_bands_is_the_whole_render() {
+    let scene = preset("paper-100");
+    let lut = Lut::embedded();
+    for view in [View::A, View::Split, View::Diff] {
+        let s = RenderSettings {
+            view,
+            ..RenderSettings::single(48, 37, Method::LtcFast)
+        };
+        let whole = render(&scene, lut, &s);
+        let mut bands = Bands::new(&s);
+        let mut steps = 0;
+        let banded = loop {
+            steps += 1;
+            if let Some(f) = bands.step(&scene, lut, 5) {
+                break f;
+            }
+        };
+        // 37 rows in bands of 5: 8 steps a pass.
+        assert_eq!(
+            steps,
+            8 * if view == View::Diff { 2 } else { 1 },
+            "{view:?}"
+        );
+        assert_eq!((banded.width, banded.height), (whole.width, whole.height));
+        assert_eq!(banded.divider, whole.divider, "{view:?}");
+        assert_eq!(banded.on_plane, whole.on_plane, "{view:?}");
+        let bits = |f: &ltc_lab::render::Frame| -> Vec<[u64; 3]> {
+            f.pixels
+                .iter()
+                .map(|p| p.to_array().map(f64::to_bits))
+                .collect()
+        };
+        assert!(bits(&banded) == bits(&whole), "{view:?}");
     }
 }

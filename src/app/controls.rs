@@ -338,13 +338,7 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
                 return;
             }
             let path = &files.scene_path;
-            let message = match Scene::load(Path::new(path)) {
-                Ok(scene) => match lab.use_scene(scene) {
-                    Some(cut) => Message::error(format!("loaded {path}; {cut}")),
-                    None => Message::note(format!("loaded {path}")),
-                },
-                Err(e) => Message::error(e.to_string()),
-            };
+            let message = use_loaded_scene(lab, Scene::load(Path::new(path)), path);
             lab.say(message);
         }
         if ui
@@ -406,17 +400,14 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
                 lab.request = Some(Request::Pick(Purpose::Table));
                 return;
             }
-            let message = match load(&files.lut_path) {
-                Ok((table, note)) => {
-                    let text = format!("shading with {}{note}", table.name);
-                    // The embedded table (an empty field) is the shipped classic one.
-                    match files.lut_path.trim() {
-                        "" => lab.use_shipped(Table::Classic),
-                        file => lab.use_file(table, Some(file.to_string())),
-                    }
-                    Message::note(text)
+            let message = match (load(&files.lut_path), files.lut_path.trim()) {
+                // The embedded table (an empty field) is the shipped classic one.
+                (Ok((table, note)), "") => {
+                    lab.use_shipped(Table::Classic);
+                    Message::note(format!("shading with {}{note}", table.name))
                 }
-                Err(e) => Message::error(format!("{e} — still using the previous table")),
+                (Ok(loaded), file) => use_loaded_table(lab, loaded, Some(file.to_string()), false),
+                (Err(e), _) => Message::error(format!("{e} — still using the previous table")),
             };
             lab.say(message);
         }
@@ -428,11 +419,7 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             let message = match files.lut_path.trim() {
                 "" => Message::error("as B: name a table file in the field first — table B stays"),
                 file => match load(file) {
-                    Ok((table, note)) => {
-                        let text = format!("table B is {}{note}", table.name);
-                        lab.use_file_b(table, Some(file.to_string()));
-                        Message::note(text)
-                    }
+                    Ok(loaded) => use_loaded_table(lab, loaded, Some(file.to_string()), true),
                     Err(e) => Message::error(format!("{e} — table B stays")),
                 },
             };
@@ -446,6 +433,42 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             lab.reset_table_b();
         }
     });
+}
+
+/// Shades `loaded` (the scene read from `name`) from now on; what was done, or why the scene
+/// stays.
+pub(crate) fn use_loaded_scene(
+    lab: &mut Lab,
+    loaded: crate::error::Result<Scene>,
+    name: &str,
+) -> Message {
+    match loaded {
+        Ok(scene) => match lab.use_scene(scene) {
+            Some(cut) => Message::error(format!("loaded {name}; {cut}")),
+            None => Message::note(format!("loaded {name}")),
+        },
+        Err(e) => Message::error(e.to_string()),
+    }
+}
+
+/// Makes `table` (read from `file`, with its `note`) table A, or B; what was done.
+pub(crate) fn use_loaded_table(
+    lab: &mut Lab,
+    (table, note): (NamedTable, String),
+    file: Option<String>,
+    as_b: bool,
+) -> Message {
+    let text = if as_b {
+        format!("table B is {}{note}", table.name)
+    } else {
+        format!("shading with {}{note}", table.name)
+    };
+    if as_b {
+        lab.use_file_b(table, file);
+    } else {
+        lab.use_file(table, file);
+    }
+    Message::note(text)
 }
 
 /// The table in the file at `path` (the embedded one where empty), named for labels, and

@@ -488,10 +488,7 @@ impl LabApp {
                     Err(e) => refused.push(format!("{name}: cannot read it ({e})")),
                 }
             }
-            self.take_given(None, given);
-            if !refused.is_empty() {
-                self.lab.say(Message::error(refused.join("; ")));
-            }
+            self.take_given(None, given, refused);
         }
         #[cfg(target_arch = "wasm32")]
         {
@@ -523,22 +520,29 @@ impl LabApp {
         };
         let purpose = *purpose;
         self.picking = None;
-        self.take_given(purpose, files);
+        self.take_given(purpose, files, Vec::new());
     }
 
-    /// Uses given files: all for `purpose`, or (`None`, dropped) each for what its name says.
-    fn take_given(&mut self, purpose: Option<Purpose>, files: Vec<Given>) {
+    /// Uses given files: all for `purpose`, or (`None`, dropped) each for what its name says;
+    /// says what was `refused` before (files that could not be read) with what is refused here.
+    fn take_given(
+        &mut self,
+        purpose: Option<Purpose>,
+        files: Vec<Given>,
+        mut refused: Vec<String>,
+    ) {
         match purpose {
             Some(p) => self.take_in(p, &files),
             None => {
-                let (groups, refused) = group(files);
+                let (groups, unread) = group(files);
+                refused.extend(unread);
                 for (p, files) in groups {
                     self.take_in(p, &files);
                 }
-                if !refused.is_empty() {
-                    self.lab.say(Message::error(refused.join("; ")));
-                }
             }
+        }
+        if !refused.is_empty() {
+            self.lab.say(Message::error(refused.join("; ")));
         }
     }
 
@@ -550,23 +554,16 @@ impl LabApp {
         };
         let text = || String::from_utf8_lossy(bytes).into_owned();
         let message = match purpose {
-            Purpose::Scene => match Scene::from_toml(&text(), name) {
-                Ok(scene) => match self.lab.use_scene(scene) {
-                    Some(cut) => Message::error(format!("loaded {name}; {cut}")),
-                    None => Message::note(format!("loaded {name}")),
-                },
-                Err(e) => Message::error(e.to_string()),
-            },
+            Purpose::Scene => {
+                controls::use_loaded_scene(&mut self.lab, Scene::from_toml(&text(), name), name)
+            }
             Purpose::Table | Purpose::TableB => match given_table(files) {
-                Ok((table, note)) => {
-                    let text = format!("{} {}{note}", purpose_words(purpose), table.name);
-                    if purpose == Purpose::Table {
-                        self.lab.use_file(table, None);
-                    } else {
-                        self.lab.use_file_b(table, None);
-                    }
-                    Message::note(text)
-                }
+                Ok(loaded) => controls::use_loaded_table(
+                    &mut self.lab,
+                    loaded,
+                    None,
+                    purpose == Purpose::TableB,
+                ),
                 Err(e) => Message::error(format!("{e} — the tables stay")),
             },
             Purpose::Study => {
@@ -579,13 +576,6 @@ impl LabApp {
             }
         };
         self.lab.say(message);
-    }
-}
-
-fn purpose_words(purpose: Purpose) -> &'static str {
-    match purpose {
-        Purpose::TableB => "table B is",
-        _ => "shading with",
     }
 }
 
