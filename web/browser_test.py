@@ -9,7 +9,12 @@
 4. A shared link round-trips: a hand-made #view=… opens, and the page reports the view it
    restored; a broken one opens the defaults.
 5. Files dropped on the window are taken: a scene, a table, a study.
-6. No console errors in any run.
+6. Files by the picker and downloads, with the buttons found by their labels on the page's
+   map of the lab's texts (index.html?texts): a picked scene is taken; *save* downloads it,
+   *screenshot* downloads the window as a PNG.
+7. A refit runs in steps over the frames and ends with its result shown (its frames' gaps
+   are printed, not asserted: speed is for benchmarks).
+8. No console errors in any run.
 
     browser_test.py URL OUTDIR     prints one line per check; exit 1 on the first failure
 """
@@ -22,7 +27,7 @@ import sys
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from cdp import drop_files, open_page, wait_for  # noqa: E402
+from cdp import click_text, drop_files, open_page, wait_for  # noqa: E402
 
 WEBGPU = ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader",
           "--enable-unsafe-swiftshader"]
@@ -162,6 +167,9 @@ def main():
     # 5. Files dropped on the window.
     drops(url, out)
 
+    # 6. and 7. Files by the picker, downloads, and a refit, by the buttons' labels.
+    picks_downloads_and_refit(url, out)
+
 
 def drops(url, out):
     """Drops a scene, then a table, then a study on the lab, reading its report after each."""
@@ -199,6 +207,93 @@ def drops(url, out):
         fail(f"drops: the dropped scene is not the lab's: {after_scene[:300]}")
     print("web/browser_test.py: ok: a scene, a table (.exr) and a study (.csv) dropped on the "
           "window were taken")
+
+
+TEXTS = "document.getElementById('lab-texts').textContent"
+
+
+def picks_downloads_and_refit(url, out):
+    """Picks a scene with the browser's file picker (answered over DevTools), downloads it
+    and a screenshot, then refits a cell: each by clicking the button the lab labelled so."""
+    downloads = os.path.abspath(os.path.join(out, "downloads"))
+    os.makedirs(downloads, exist_ok=True)
+    for name in os.listdir(downloads):
+        os.remove(os.path.join(downloads, name))
+    scene = os.path.abspath(os.path.join(out, "picked-scene.toml"))
+    with open(scene, "w") as f:
+        f.write("[plane]\nhalf_size = 2.0\n[material]\nbase_color = [0.5, 0.5, 0.5]\n"
+                "f0 = 0.04\nalpha = 0.66\n[camera]\nposition = [0.0, -3.4, 2.8]\n"
+                "target = [0.0, 0.0, 0.0]\nfov_y_degrees = 40.0\n"
+                "[[lights]]\nposition = [0.1, 0.2, 0.3]\nintensity = 0.5\n")
+    message = f"(JSON.parse({STATE}).message || '')"
+    found = {}
+
+    def downloaded(page, button, name):
+        click_text(page, button)
+        done = page.wait_event("Browser.downloadProgress", 30,
+                               lambda p: p.get("state") in ("completed", "canceled"))
+        path = os.path.join(downloads, name)
+        if not done or done["state"] != "completed" or not os.path.exists(path):
+            found["why"] = f"{button}: no download of {name} ({done}); the lab says " \
+                           f"{page.evaluate(message)!r}"
+            return None
+        return path
+
+    def act(page):
+        page.call("Page.setInterceptFileChooserDialog", enabled=True)
+        page.call("Browser.setDownloadBehavior", behavior="allow", downloadPath=downloads,
+                  eventsEnabled=True)
+        # The scene's "load" opens the picker; DevTools answers it with the file.
+        click_text(page, "load")
+        chooser = page.wait_event("Page.fileChooserOpened", 30)
+        if not chooser:
+            found["why"] = "load: no file picker opened"
+            return False
+        page.call("DOM.setFileInputFiles", files=[scene], backendNodeId=chooser["backendNodeId"])
+        if not wait_for(page, f"{message}.includes('loaded picked-scene.toml')", 60):
+            found["why"] = f"the picked scene was not taken: {page.evaluate(message)!r}"
+            return False
+        found["view"] = json.loads(page.evaluate(STATE))["view"]
+        found["scene"] = downloaded(page, "save", "scene.toml")
+        found["png"] = downloaded(page, "screenshot", "ltc-lab.png")
+        found["canvas"] = page.evaluate(
+            "(c => [c.width, c.height])(document.getElementById('lab'))")
+        if not (found["scene"] and found["png"]):
+            return False
+        # A refit by ltc_code's fitter, its frames timed by the page's own animation frames.
+        page.evaluate("""window.gaps = {longest: 0, frames: 0, last: performance.now()};
+            (function frame(t) { const g = window.gaps; g.longest = Math.max(g.longest, t - g.last);
+              g.last = t; g.frames++; if (!g.stop) requestAnimationFrame(frame); })(performance.now());
+            0""")
+        click_text(page, "ltc_code")
+        if not wait_for(page, f"{TEXTS}.includes('refitted (÷ middle)')", 120):
+            found["why"] = "the refit did not end with its result shown"
+            return False
+        found["gaps"] = json.loads(page.evaluate("window.gaps.stop = true; JSON.stringify(window.gaps)"))
+        return True
+
+    shown, console, done = open_page(url + "?texts", SETTLED, STATE, "1920,1080", WEBGL2, 240,
+                                     os.path.join(out, "picks.png"), act=act)
+    check_console("picks", console, out)
+    if not done:
+        fail(f"picks: {found.get('why', shown)}")
+    if "alpha:0.66" not in view_text(found["view"]):
+        fail(f"picks: the picked scene is not the lab's: {view_text(found['view'])[:300]}")
+    with open(found["scene"]) as f:
+        saved = f.read()
+    if not re.search(r"alpha = 0\.66\b", saved):
+        fail(f"picks: the downloaded scene is not the lab's: {saved[:300]!r}")
+    with open(found["png"], "rb") as f:
+        head = f.read(24)
+    width, height = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+    if head[:8] != b"\x89PNG\r\n\x1a\n" or [width, height] != found["canvas"]:
+        fail(f"picks: the screenshot is not a PNG of the canvas {found['canvas']}: {head!r}")
+    print("web/browser_test.py: ok: a scene picked with the file picker was taken; save "
+          f"downloaded it, screenshot a {width}x{height} PNG of the window")
+    gaps = found["gaps"]
+    print(f"web/browser_test.py: ok: a refit (ltc_code) ran over {gaps['frames']} animation "
+          f"frames and showed its result; longest frame {gaps['longest']:.0f} ms (WebGL2 on "
+          "SwiftShader)")
 
 
 if __name__ == "__main__":

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The lab in a real browser (issue 21): builds dist/ (web/build.sh), serves it on 127.0.0.1
 # and runs web/browser_test.py, which opens it in headless Chromium: the self-check on
-# WebGPU (SwiftShader), the lab on WebGL2 and on WebGPU, and a shared link (the WebGPU canvas
-# is not composited in headless Chromium here: its screenshots are black, so that path is
-# read back, not seen).
+# WebGPU (SwiftShader), the lab on WebGL2 and on WebGPU, a shared link, dropped and picked
+# files, downloads and a refit (the WebGPU canvas is not composited in headless Chromium
+# here: its screenshots are black, so that path is read back, not seen).
 # Without Chromium it says so and stops with 0, unless LTC_LAB_REQUIRE_BROWSER=1 (.ci/run sets
 # it), where a missing browser is a failure.
 set -euo pipefail
@@ -35,4 +35,4 @@ url="http://127.0.0.1:$port/"
 # in real time, as WebGPU's work is not the page's virtual time.
 start=$(date +%s)
 python3 web/browser_test.py "$url" target/web-test
-echo "web/browser_test.sh: ok in $(( $(date +%s) - start )) s: the self-check on WebGPU, the lab on WebGL2 and WebGPU, a shared link; pages and screenshots in target/web-test/"
+echo "web/browser_test.sh: ok in $(( $(date +%s) - start )) s: the self-check on WebGPU, the lab on WebGL2 and WebGPU, a shared link, files, downloads, a refit; pages and screenshots in target/web-test/"

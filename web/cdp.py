@@ -100,6 +100,8 @@ class Page:
         self.ws = Socket(ws_url)
         self.next_id = 0
         self.console = []
+        # Other events, oldest first, for wait_event.
+        self.events = []
 
     def call(self, method, **params):
         self.next_id += 1
@@ -124,10 +126,59 @@ class Page:
         elif method == "Log.entryAdded":
             e = params.get("entry", {})
             self.console.append(f"{e.get('level')}: {e.get('text')}")
+        elif method:
+            self.events.append((method, params))
 
     def evaluate(self, expression):
         r = self.call("Runtime.evaluate", expression=expression, returnByValue=True)
         return r.get("result", {}).get("value")
+
+
+    def wait_event(self, method, timeout, where=lambda params: True):
+        """The parameters of the first event `method` (matching `where`) not yet taken; None
+        if none came within `timeout` s."""
+        deadline = time.time() + timeout
+        while True:
+            for k, (m, params) in enumerate(self.events):
+                if m == method and where(params):
+                    del self.events[k]
+                    return params
+            if time.time() > deadline:
+                return None
+            time.sleep(0.1)
+            # A command's round trip reads the events that came meanwhile.
+            self.evaluate("0")
+
+
+def texts(page, text):
+    """Where the lab drew `text` (index.html?texts: the page's #lab-texts map), as rectangles
+    in the page's CSS pixels."""
+    found = page.evaluate(
+        "(() => { const m = document.getElementById('lab-texts'); "
+        "const c = document.getElementById('lab').getBoundingClientRect(); "
+        "return JSON.stringify({texts: JSON.parse(m.textContent || '[]'), x: c.x, y: c.y}); })()")
+    found = json.loads(found)
+    return [[r[0] + found["x"], r[1] + found["y"], r[2] + found["x"], r[3] + found["y"]]
+            for r in (t["rect"] for t in found["texts"] if t["text"] == text)]
+
+
+def click(page, x, y):
+    """A left click at (x, y): the pointer moves there, presses and releases, as a user's."""
+    for kind in ("mouseMoved", "mousePressed", "mouseReleased"):
+        page.call("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left",
+                  buttons=1 if kind == "mousePressed" else 0,
+                  clickCount=0 if kind == "mouseMoved" else 1)
+        time.sleep(0.05)
+
+
+def click_text(page, text):
+    """Clicks the one place the lab drew `text` (a button's label); an error if it is not
+    there, or there more than once."""
+    rects = texts(page, text)
+    if len(rects) != 1:
+        raise RuntimeError(f"the lab shows {text!r} {len(rects)} times, not once")
+    x0, y0, x1, y1 = rects[0]
+    click(page, (x0 + x1) / 2, (y0 + y1) / 2)
 
 
 def wait_for(page, expression, timeout):

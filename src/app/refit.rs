@@ -1,4 +1,5 @@
-//! "Refit this cell": a fitter run live on one cell of the table, on a worker thread, from
+//! "Refit this cell": a fitter run live on one cell of the table, on a worker thread (in the
+//! browser, one iteration a step over the frames: `background::spawn_steps`), from
 //! the stored cell's own parameters: ltc_code's (the classic table's) or the point fit's
 //! (the point table's). Its objective per iteration for the plot, a cancel, and the result
 //! kept with the lab's state (the lobe panel shows the refitted lobe).
@@ -9,13 +10,12 @@ use std::sync::mpsc;
 
 use serde::{Deserialize, Serialize};
 
+use crate::ltc::cell_fitter::{CellFitter, FitNext};
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
-use crate::ltc::fit_point::{
-    CellQuadrature, Free, PointFit, PointObjective, QUADRATURE_STRATA, fit_cell_observed,
-};
+use crate::ltc::fit_point::{CellQuadrature, Free, PointFit, PointObjective, QUADRATURE_STRATA};
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{Channel, Lut, normalized_cos_from_brdf};
-use crate::ltc::nelder_mead::CONTINUE;
+use crate::ltc::nelder_mead::{Next, Simplex};
 use crate::ltc::{Ltc, cos_from_brdf_from_entries, mat3_from_rows, mat3_rows};
 
 /// Which fitter a refit runs: each shipped table is the minimum of its own objective, so a
@@ -121,34 +121,25 @@ impl Refit {
         };
         let stored = PointFit::stored(lut.cell(i, j), lobe);
         let cancel = Arc::new(AtomicBool::new(false));
-        let stop = cancel.clone();
-        let job = Job {
+        let mut job = Job {
             lobe,
             cell: (i, j),
             settings,
             stored,
             objective,
+            stage: Stage::Setup,
+            cancel: cancel.clone(),
+            tx,
+            abandoned: false,
         };
-        crate::app::background::spawn("refit", move || {
-            let mut observe = |k: usize, f: f64| {
-                let _ = tx.send(Event::Iteration(k, f));
-                if stop.load(Ordering::Relaxed) {
-                    std::ops::ControlFlow::Break(())
-                } else {
-                    CONTINUE
-                }
-            };
-            let mut result = job.run(&mut observe);
-            result.cancelled = stop.load(Ordering::Relaxed);
-            let _ = tx.send(Event::Done(Box::new(result)));
-        });
+        crate::app::background::spawn_steps("refit", Box::new(move || job.step()));
         Self {
             lobe,
             cell: (i, j),
             history: Vec::new(),
             max_iterations: match objective {
                 // Each start's runs, each up to the limit.
-                Objective::Point => settings.max_iterations * crate::ltc::fit_point::RESTARTS,
+                Objective::Point => settings.max_iterations * crate::ltc::cell_fitter::RESTARTS,
                 Objective::LtcCode => settings.max_iterations,
             },
             cancel,
@@ -181,25 +172,111 @@ impl Refit {
     }
 }
 
-/// A refit's inputs, moved to its thread.
+/// A refit's inputs and where it stands, moved to its thread (the desktop) or stepped over
+/// the browser's frames: one Nelder–Mead iteration a step, after a first step that sets the
+/// cell's problem up.
 struct Job {
     lobe: Lobe,
     cell: (usize, usize),
     settings: FitSettings,
     stored: PointFit,
     objective: Objective,
+    stage: Stage,
+    cancel: Arc<AtomicBool>,
+    tx: mpsc::Sender<Event>,
+    /// The panel dropped the refit.
+    abandoned: bool,
+}
+
+enum Stage {
+    Setup,
+    Fitting(Box<Fitting>),
+    Done,
+}
+
+/// A cell's problem and its search.
+struct Fitting {
+    problem: CellProblem,
+    search: Search,
+}
+
+/// The search of each objective, started from the stored cell.
+enum Search {
+    LtcCode {
+        strata: FitStrata,
+        simplex: Simplex<3>,
+    },
+    Point {
+        quadrature: CellQuadrature,
+        fitter: Box<CellFitter>,
+    },
 }
 
 impl Job {
-    /// Fits the cell by the objective from the stored cell, then measures both alike.
-    fn run(&self, observe: &mut dyn FnMut(usize, f64) -> std::ops::ControlFlow<()>) -> RefitResult {
+    /// One step; whether the refit is done (its result sent).
+    fn step(&mut self) -> bool {
+        match std::mem::replace(&mut self.stage, Stage::Done) {
+            Stage::Setup => self.stage = Stage::Fitting(Box::new(self.set_up())),
+            Stage::Fitting(mut fitting) => match self.advance(&mut fitting) {
+                Some(result) => self.send(Event::Done(Box::new(result))),
+                // Nobody waits for it (the panel started another, or closed): it ends here.
+                None if self.abandoned => {}
+                None => self.stage = Stage::Fitting(fitting),
+            },
+            Stage::Done => {}
+        }
+        matches!(self.stage, Stage::Done)
+    }
+
+    /// Sends `event` to the panel; notes when the panel no longer listens.
+    fn send(&mut self, event: Event) {
+        self.abandoned |= self.tx.send(event).is_err();
+    }
+
+    fn set_up(&self) -> Fitting {
         let (lobe, (i, j), settings) = (self.lobe, self.cell, &self.settings);
         let strata = FitStrata::new(settings);
         let problem = CellProblem::new(lobe, i, j, settings, &strata);
-        let (fit, iterations, converged) = match self.objective {
+        let search = match self.objective {
             Objective::LtcCode => {
                 let start = problem.params_of(cos_from_brdf_from_entries(self.stored.entries));
-                let fit = problem.fit(start, settings, &strata, observe);
+                let simplex = problem.simplex(start, settings, &strata);
+                Search::LtcCode { strata, simplex }
+            }
+            Objective::Point => {
+                let nodes = crate::ltc::lobe::strata(QUADRATURE_STRATA);
+                let quadrature = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
+                let free = Free::of(lobe, PointObjective::Lobe);
+                let fitter =
+                    CellFitter::new(&quadrature, problem.norm, &[self.stored], free, settings);
+                Search::Point {
+                    quadrature,
+                    fitter: Box::new(fitter),
+                }
+            }
+        };
+        Fitting { problem, search }
+    }
+
+    /// One iteration, sent for the plot; the result once the search ends or is cancelled.
+    fn advance(&mut self, fitting: &mut Fitting) -> Option<RefitResult> {
+        let settings = &self.settings;
+        let Fitting { problem, search } = fitting;
+        let cancelled = self.cancel.load(Ordering::Relaxed);
+        let (fit, iterations, converged) = match search {
+            Search::LtcCode { strata, simplex } => {
+                let minimum = if cancelled {
+                    simplex.stop()
+                } else {
+                    match simplex.next(|p| problem.objective(p, settings, strata)) {
+                        Next::Observed { iteration, lowest } => {
+                            self.send(Event::Iteration(iteration, lowest));
+                            return None;
+                        }
+                        Next::Done(minimum) => minimum,
+                    }
+                };
+                let fit = problem.fitted(minimum, settings);
                 let entries = normalized_cos_from_brdf(&fit.ltc);
                 let point = PointFit {
                     entries,
@@ -207,35 +284,44 @@ impl Job {
                 };
                 (point, fit.iterations, fit.converged)
             }
-            Objective::Point => {
-                let nodes = crate::ltc::lobe::strata(QUADRATURE_STRATA);
-                let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
-                let mut count = 0;
-                let mut counted = |k, f| {
-                    count = k;
-                    observe(k, f)
+            Search::Point { quadrature, fitter } => {
+                let point = if cancelled {
+                    fitter.stop(quadrature)
+                } else {
+                    match fitter.next(quadrature) {
+                        FitNext::Observed { count, lowest } => {
+                            self.send(Event::Iteration(count, lowest));
+                            return None;
+                        }
+                        FitNext::Done(point) => point,
+                    }
                 };
-                let stored = [self.stored];
-                let point = fit_cell_observed(
-                    &q,
-                    problem.norm,
-                    &stored,
-                    Free::of(lobe, PointObjective::Lobe),
-                    settings,
-                    &mut counted,
-                );
                 // Its restarts end where Nelder–Mead stops moving: there is no iteration
                 // limit to hit for the whole fit, only per run.
-                (point, count, true)
+                (point, fitter.iterations(), true)
             }
         };
+        let mut result = self.measure(problem, fit, iterations, converged);
+        result.cancelled = cancelled;
+        Some(result)
+    }
+
+    /// The refit and the stored cell, measured alike.
+    fn measure(
+        &self,
+        problem: &CellProblem,
+        fit: PointFit,
+        iterations: usize,
+        converged: bool,
+    ) -> RefitResult {
+        let lobe = self.lobe;
         let ltc = |p: &PointFit| p.ltc(problem.norm, problem.fresnel);
         let error = |p: &PointFit| {
             pointwise_error(lobe, problem.view, problem.alpha, &ltc(p), ERROR_SAMPLES)
         };
         RefitResult {
             lobe,
-            cell: (i, j),
+            cell: self.cell,
             objective: self.objective,
             scale: fit.scale,
             stored_scale: self.stored.scale,

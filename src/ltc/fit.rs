@@ -10,7 +10,7 @@ use rayon::prelude::*;
 
 use crate::ltc::lobe::{Lobe, Stratum, lobe_moments, strata};
 use crate::ltc::lut::{ALPHA_MIN, Lut, LutCell, cell_alpha, cell_theta};
-use crate::ltc::nelder_mead::{CONTINUE, Minimum, nelder_mead};
+use crate::ltc::nelder_mead::{CONTINUE, Minimum, Simplex, nelder_mead};
 use crate::ltc::{Clipping, Ltc, Normalization};
 
 /// How a table is fitted. The defaults are ltc_code's where it has one.
@@ -223,6 +223,40 @@ impl CellProblem {
         Ltc::from_brdf_from_cos(params.brdf_from_cos(), self.norm, self.fresnel)
     }
 
+    /// The fit objective at free parameters `p`.
+    pub fn objective(&self, p: &[f64; 3], settings: &FitSettings, strata: &FitStrata) -> f64 {
+        let ltc = self.ltc(&self.params(p, settings.alpha_min));
+        fit_error(self.lobe, self.view, self.alpha, &ltc, &strata.fit)
+    }
+
+    /// Nelder–Mead from `start`, to be stepped (`Simplex::next` with `objective`).
+    pub fn simplex(
+        &self,
+        start: [f64; 3],
+        settings: &FitSettings,
+        strata: &FitStrata,
+    ) -> Simplex<3> {
+        Simplex::new(
+            start,
+            settings.simplex_delta,
+            settings.tolerance,
+            settings.max_iterations,
+            |p| self.objective(p, settings, strata),
+        )
+    }
+
+    /// The cell as the search left it.
+    pub fn fitted(&self, minimum: Minimum<3>, settings: &FitSettings) -> CellFit {
+        let params = self.params(&minimum.point, settings.alpha_min);
+        CellFit {
+            params,
+            ltc: self.ltc(&params),
+            objective: minimum.value,
+            iterations: minimum.iterations,
+            converged: minimum.converged,
+        }
+    }
+
     /// Runs Nelder–Mead from `start`; `observe` sees the best objective per iteration and may
     /// stop it.
     pub fn fit(
@@ -232,31 +266,15 @@ impl CellProblem {
         strata: &FitStrata,
         observe: impl FnMut(usize, f64) -> std::ops::ControlFlow<()>,
     ) -> CellFit {
-        let objective = |p: &[f64; 3]| {
-            let ltc = self.ltc(&self.params(p, settings.alpha_min));
-            fit_error(self.lobe, self.view, self.alpha, &ltc, &strata.fit)
-        };
-        let Minimum {
-            point,
-            value,
-            iterations,
-            converged,
-        } = nelder_mead(
+        let minimum = nelder_mead(
             start,
             settings.simplex_delta,
             settings.tolerance,
             settings.max_iterations,
-            objective,
+            |p| self.objective(p, settings, strata),
             observe,
         );
-        let params = self.params(&point, settings.alpha_min);
-        CellFit {
-            params,
-            ltc: self.ltc(&params),
-            objective: value,
-            iterations,
-            converged,
-        }
+        self.fitted(minimum, settings)
     }
 }
 

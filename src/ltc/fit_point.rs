@@ -8,16 +8,14 @@
 //! table's own error metric (`pointwise_error`) rates lower — so no cell is worse than the
 //! classic table.
 
-use std::ops::ControlFlow;
-
 use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{d_ggx, g2_correlated, lambda_ggx};
+use crate::ltc::cell_fitter::fit_cell;
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
 use crate::ltc::lobe::{Lobe, Stratum, visible_normal};
 use crate::ltc::lut::{Channel, Lut, LutCell};
-use crate::ltc::nelder_mead::{CONTINUE, nelder_mead};
 use crate::ltc::{Clipping, Ltc, Normalization, cos_from_brdf_from_entries};
 
 /// Strata per axis of the fit's quadrature (64² nodes); tests/fit_point.rs compares it with
@@ -236,7 +234,7 @@ impl PointFit {
     }
 
     /// `det M⁻¹ > 0` and a scale in `[SCALE_MIN, SCALE_MAX]`.
-    fn is_valid(&self) -> bool {
+    pub(crate) fn is_valid(&self) -> bool {
         let m = self.entries;
         let det = m[0] * m[3] - m[1] * m[2];
         let scale = (SCALE_MIN..=SCALE_MAX).contains(&self.scale);
@@ -298,7 +296,7 @@ impl Free {
     }
 
     /// `fit` moved into the set: `m20` set to 0 where it is not free.
-    fn project(self, fit: PointFit) -> PointFit {
+    pub(crate) fn project(self, fit: PointFit) -> PointFit {
         let mut entries = fit.entries;
         if !self.m20 {
             entries[2] = 0.0;
@@ -324,107 +322,6 @@ impl PointObjective {
         }
     }
 }
-
-/// Fits one lobe of a cell from `starts` (the best of them by the objective).
-pub fn fit_cell(
-    q: &dyn CellObjective,
-    norm: f64,
-    starts: &[PointFit],
-    free: Free,
-    settings: &FitSettings,
-) -> PointFit {
-    fit_cell_observed(q, norm, starts, free, settings, &mut |_, _| CONTINUE)
-}
-
-/// `fit_cell`, telling `observe` the best objective so far at every Nelder–Mead iteration
-/// (counted across starts and restarts); a `Break` ends the fit with the best point found.
-pub fn fit_cell_observed(
-    q: &dyn CellObjective,
-    norm: f64,
-    starts: &[PointFit],
-    free: Free,
-    settings: &FitSettings,
-    observe: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
-) -> PointFit {
-    let starts: Vec<PointFit> = starts.iter().map(|&f| free.project(f)).collect();
-    let objective = |fit: &PointFit| {
-        if fit.is_valid() {
-            q.relative_l1(fit, norm)
-        } else {
-            f64::INFINITY
-        }
-    };
-    // From every start, Nelder–Mead restarted from its own result (a collapsed simplex
-    // stalls in 4D); the best point wins.
-    let mut best = *starts
-        .iter()
-        .min_by(|a, b| objective(a).total_cmp(&objective(b)))
-        .expect("at least one start");
-    let (mut count, mut lowest, stopped) = (0, objective(&best), std::cell::Cell::new(false));
-    let mut step = |_: usize, f: f64| {
-        count += 1;
-        lowest = lowest.min(f);
-        let flow = observe(count, lowest);
-        stopped.set(flow.is_break());
-        flow
-    };
-    'starts: for &first in &starts {
-        let mut start = first;
-        for _ in 0..RESTARTS {
-            start = if free.scale {
-                descend::<5>(start, &objective, free, settings, &mut step)
-            } else {
-                descend::<4>(start, &objective, free, settings, &mut step)
-            };
-            if objective(&start) < objective(&best) {
-                best = start;
-            }
-            if stopped.get() {
-                break 'starts;
-            }
-        }
-    }
-    best
-}
-
-/// One Nelder–Mead run from `start` over the entries (relative moves: each scaled by its own
-/// size, as they span 1e-4..2) and, with `D = 5`, the log of the scale. An entry that is
-/// not free has no step: the simplex moves along it without changing the fit.
-fn descend<const D: usize>(
-    start: PointFit,
-    objective: &impl Fn(&PointFit) -> f64,
-    free: Free,
-    settings: &FitSettings,
-    observe: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
-) -> PointFit {
-    let largest = start.entries.iter().fold(0.0f64, |a, y| a.max(y.abs()));
-    let mut step = start.entries.map(|x| x.abs().max(1e-3 * largest));
-    if !free.m20 {
-        step[2] = 0.0;
-    }
-    let at = |p: &[f64; D]| PointFit {
-        entries: std::array::from_fn(|k| start.entries[k] + p[k] * step[k]),
-        // Clamped rather than walled off: a simplex that meets a plateau keeps moving the
-        // other coordinates, one that meets an infinite wall collapses against it.
-        scale: if D == 5 {
-            (start.scale * p[D - 1].exp()).clamp(SCALE_MIN, SCALE_MAX)
-        } else {
-            start.scale
-        },
-    };
-    let m = nelder_mead(
-        [0.0; D],
-        settings.simplex_delta,
-        settings.tolerance,
-        settings.max_iterations,
-        |p| objective(&at(p)),
-        observe,
-    );
-    at(&m.point)
-}
-
-/// Nelder–Mead runs per start (each from the previous one's result).
-pub const RESTARTS: usize = 3;
 
 /// A cell of the point table: `current`, with each lobe the point fit improved replaced
 /// (entries, scale, error; `norm` and `fresnel` stay the true albedos).

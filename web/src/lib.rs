@@ -2,13 +2,14 @@
 //! on the page's canvas by eframe's `WebRunner`. On WebGPU the plane is shaded by the same
 //! compute shaders; where the browser has only WebGL2 the lab falls back to the CPU
 //! reference, as it does on a desktop without an adapter. `index.html#view=…` opens a shared
-//! view; `index.html#selfcheck` runs the self-check instead of the lab. `web/index.html` is
-//! the page.
+//! view; `index.html#selfcheck` runs the self-check instead of the lab; `index.html?texts`
+//! also maps the texts drawn, for tools (`texts.rs`). `web/index.html` is the page.
 
 #![cfg(target_arch = "wasm32")]
 
 mod page;
 mod selfcheck;
+mod texts;
 
 use ltc_lab::app::browser;
 use wasm_bindgen::prelude::*;

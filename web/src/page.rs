@@ -34,6 +34,9 @@ impl PageLab {
                 Err(why) => (LabState::default(), Some(why)),
             },
         };
+        if crate::texts::requested() {
+            cc.egui_ctx.add_plugin(crate::texts::TextMap::default());
+        }
         let mut app = LabApp::new(state, cc.wgpu_render_state.as_ref());
         if let Some(why) = refused {
             app.lab.say(Message::error(format!(
