@@ -1,15 +1,18 @@
 //! The point-light fit: on a coarse grid it is never worse than the classic fit at any cell
-//! and lower on average; its quadrature is fine enough on the hardest cells and measures
+//! and lower on average; its search, stepped, makes one Nelder–Mead iteration a step and ends
+//! no worse than its starts; its quadrature is fine enough on the hardest cells and measures
 //! what the table's error metric measures; the shipped table is what the file holds, never
 //! worse than the classic one, and halves its error where the metric is re-measured
 //! independently.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use ltc_lab::ltc::cell_fitter::{CellFitter, FitNext, RESTARTS};
 use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata, fit_table, pointwise_error};
-use ltc_lab::ltc::fit_point::{
-    CellQuadrature, PointFit, QUADRATURE_STRATA, SCALE_MIN, fit_point_table,
-};
+use ltc_lab::ltc::fit_point::{CellQuadrature, PointObjective, QUADRATURE_STRATA, fit_point_table};
 use ltc_lab::ltc::lobe::{Lobe, strata};
-use ltc_lab::ltc::lut::{Channel, Lut};
+use ltc_lab::ltc::lut::{Channel, Lut, Table};
+use ltc_lab::ltc::point_params::{CellObjective, PointFit, SCALE_MIN};
 
 #[test]
 fn point_fit_is_never_worse_and_better_on_average_on_a_coarse_grid() {
@@ -160,4 +163,62 @@ fn point_table_halves_the_mean_specular_error() {
     }
     let ratio = point_sum / classic_sum;
     assert!(ratio <= 0.55, "mean spec.err ratio {ratio}");
+}
+
+/// A quadrature that counts its evaluations.
+struct Counted(CellQuadrature, AtomicUsize);
+
+impl CellObjective for Counted {
+    fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64 {
+        self.1.fetch_add(1, Ordering::Relaxed);
+        self.0.relative_l1(fit, norm)
+    }
+}
+
+#[test]
+fn a_step_is_one_iteration_and_the_fit_never_worse_than_its_starts() {
+    let settings = FitSettings::default();
+    let fit_strata = FitStrata::new(&settings);
+    let (lobe, i, j) = (Lobe::Specular, 20, 50);
+    let problem = CellProblem::new(lobe, i, j, &settings, &fit_strata);
+    let nodes = strata(QUADRATURE_STRATA);
+    let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
+    let q = Counted(q, AtomicUsize::new(0));
+    let stored = PointFit::stored(Lut::shipped(Table::Classic).cell(i, j), lobe);
+    let nudged = PointFit {
+        entries: stored.entries.map(|x| 1.1 * x),
+        scale: 1.0,
+    };
+    let starts = [stored, nudged];
+    let free = PointObjective::Lobe.free(lobe);
+    let mut fitter = CellFitter::new(&q, problem.norm, &starts, free, &settings);
+    let (mut most, mut observed) = (0, 0);
+    let fit = loop {
+        q.1.store(0, Ordering::Relaxed);
+        let next = fitter.next(&q);
+        most = most.max(q.1.load(Ordering::Relaxed));
+        match next {
+            FitNext::Observed { count, .. } => {
+                observed += 1;
+                assert_eq!(count, observed);
+            }
+            FitNext::Done(fit) => break fit,
+        }
+    };
+    // D = 5 (four entries and the scale): a run's step (D + 2), its end measured (1) and
+    // the next run's simplex (D + 1).
+    assert!(
+        most <= 2 * 5 + 4,
+        "a step evaluated the objective {most} times"
+    );
+    assert_eq!(fitter.iterations(), observed);
+    // Six runs (two starts, three restarts each) of at least one iteration.
+    assert!(observed >= 2 * RESTARTS, "{observed} iterations");
+    let value = |f: &PointFit| q.0.relative_l1(f, problem.norm);
+    for start in &starts {
+        assert!(
+            value(&fit) <= value(start),
+            "{fit:?} is worse than {start:?}"
+        );
+    }
 }

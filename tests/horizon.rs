@@ -10,10 +10,11 @@ use glam::DVec3;
 use ltc_lab::horizon::{BandError, remedy_errors};
 use ltc_lab::ltc::ClipCase;
 use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata};
-use ltc_lab::ltc::fit_point::{ArrivalQuadrature, CellObjective, PointFit, QUADRATURE_STRATA};
+use ltc_lab::ltc::fit_point::{ArrivalQuadrature, QUADRATURE_STRATA};
 use ltc_lab::ltc::lobe::{Lobe, strata};
 use ltc_lab::ltc::lut::{Channel, Lut, Table};
 use ltc_lab::ltc::nl_fit::{NlFitSettings, fit_terms};
+use ltc_lab::ltc::point_params::{CellObjective, PointFit};
 use ltc_lab::ltc::remedy::Horizon;
 use ltc_lab::scene::SplitMix64;
 

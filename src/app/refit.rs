@@ -12,10 +12,11 @@ use serde::{Deserialize, Serialize};
 
 use crate::ltc::cell_fitter::{CellFitter, FitNext};
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
-use crate::ltc::fit_point::{CellQuadrature, Free, PointFit, PointObjective, QUADRATURE_STRATA};
+use crate::ltc::fit_point::{CellQuadrature, PointObjective, QUADRATURE_STRATA};
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{Channel, Lut, normalized_cos_from_brdf};
 use crate::ltc::nelder_mead::{Next, Simplex};
+use crate::ltc::point_params::PointFit;
 use crate::ltc::{Ltc, cos_from_brdf_from_entries, mat3_from_rows, mat3_rows};
 
 /// Which fitter a refit runs: each shipped table is the minimum of its own objective, so a
@@ -246,7 +247,7 @@ impl Job {
             Objective::Point => {
                 let nodes = crate::ltc::lobe::strata(QUADRATURE_STRATA);
                 let quadrature = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
-                let free = Free::of(lobe, PointObjective::Lobe);
+                let free = PointObjective::Lobe.free(lobe);
                 let fitter =
                     CellFitter::new(&quadrature, problem.norm, &[self.stored], free, settings);
                 Search::Point {

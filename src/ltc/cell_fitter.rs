@@ -5,8 +5,8 @@
 use std::ops::ControlFlow;
 
 use crate::ltc::fit::FitSettings;
-use crate::ltc::fit_point::{CellObjective, Free, PointFit, SCALE_MAX, SCALE_MIN};
 use crate::ltc::nelder_mead::{CONTINUE, Next, Simplex};
+use crate::ltc::point_params::{CellObjective, Free, PointFit, SCALE_MAX, SCALE_MIN};
 
 /// Fits one lobe of a cell from `starts` (the best of them by the objective).
 pub fn fit_cell(
@@ -264,72 +264,3 @@ fn at<const D: usize>(start: PointFit, step: [f64; 4], p: &[f64; D]) -> PointFit
 
 /// Nelder–Mead runs per start (each from the previous one's result).
 pub const RESTARTS: usize = 3;
-
-#[cfg(test)]
-mod tests {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-
-    use super::*;
-    use crate::ltc::fit::{CellProblem, FitStrata};
-    use crate::ltc::fit_point::{CellQuadrature, PointObjective, QUADRATURE_STRATA};
-    use crate::ltc::lobe::Lobe;
-    use crate::ltc::lut::{Lut, Table};
-
-    /// A quadrature that counts its evaluations.
-    struct Counted(CellQuadrature, AtomicUsize);
-
-    impl CellObjective for Counted {
-        fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64 {
-            self.1.fetch_add(1, Ordering::Relaxed);
-            self.0.relative_l1(fit, norm)
-        }
-    }
-
-    #[test]
-    fn a_step_is_one_iteration_and_the_fit_never_worse_than_its_starts() {
-        let settings = FitSettings::default();
-        let strata = FitStrata::new(&settings);
-        let (lobe, i, j) = (Lobe::Specular, 20, 50);
-        let problem = CellProblem::new(lobe, i, j, &settings, &strata);
-        let nodes = crate::ltc::lobe::strata(QUADRATURE_STRATA);
-        let q = CellQuadrature::new(lobe, problem.view, problem.alpha, &nodes);
-        let q = Counted(q, AtomicUsize::new(0));
-        let stored = PointFit::stored(Lut::shipped(Table::Classic).cell(i, j), lobe);
-        let nudged = PointFit {
-            entries: stored.entries.map(|x| 1.1 * x),
-            scale: 1.0,
-        };
-        let starts = [stored, nudged];
-        let free = Free::of(lobe, PointObjective::Lobe);
-        let mut fitter = CellFitter::new(&q, problem.norm, &starts, free, &settings);
-        let (mut most, mut observed) = (0, 0);
-        let fit = loop {
-            q.1.store(0, Ordering::Relaxed);
-            let next = fitter.next(&q);
-            most = most.max(q.1.load(Ordering::Relaxed));
-            match next {
-                FitNext::Observed { count, .. } => {
-                    observed += 1;
-                    assert_eq!(count, observed);
-                }
-                FitNext::Done(fit) => break fit,
-            }
-        };
-        // D = 5 (four entries and the scale): a run's step (D + 2), its end measured (1) and
-        // the next run's simplex (D + 1).
-        assert!(
-            most <= 2 * 5 + 4,
-            "a step evaluated the objective {most} times"
-        );
-        assert_eq!(fitter.iterations(), observed);
-        // Six runs (two starts, three restarts each) of at least one iteration.
-        assert!(observed >= 2 * RESTARTS, "{observed} iterations");
-        let value = |f: &PointFit| q.0.relative_l1(f, problem.norm);
-        for start in &starts {
-            assert!(
-                value(&fit) <= value(start),
-                "{fit:?} is worse than {start:?}"
-            );
-        }
-    }
-}

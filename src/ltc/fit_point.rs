@@ -16,7 +16,8 @@ use crate::ltc::cell_fitter::fit_cell;
 use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
 use crate::ltc::lobe::{Lobe, Stratum, visible_normal};
 use crate::ltc::lut::{Channel, Lut, LutCell};
-use crate::ltc::{Clipping, Ltc, Normalization, cos_from_brdf_from_entries};
+use crate::ltc::point_params::{CellObjective, Free, PointFit, fits_scale};
+use crate::ltc::{Clipping, Normalization};
 
 /// Strata per axis of the fit's quadrature (64² nodes); tests/fit_point.rs compares it with
 /// a 4× finer one on the hardest cells.
@@ -77,12 +78,6 @@ impl CellQuadrature {
         overlap /= self.count as f64;
         (magnitude + self.exact_total - 2.0 * overlap) / norm
     }
-}
-
-/// What a cell's fit minimizes: a relative L1 error of `scale · norm · D` against the lobe,
-/// relative to `norm`.
-pub trait CellObjective: Sync {
-    fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64;
 }
 
 impl CellObjective for CellQuadrature {
@@ -208,58 +203,6 @@ fn lobe_node(lobe: Lobe, v: DVec3, alpha: f64, s: &Stratum) -> Option<Node> {
     (weight > 0.0 && pdf > 0.0 && l.z > 0.0).then_some(Node { l, pdf, weight })
 }
 
-/// One lobe of a point-fit cell: the free entries `m00, m02, m20, m22` of the normalized
-/// `M⁻¹` and the scale on its magnitude.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PointFit {
-    pub entries: [f64; 4],
-    pub scale: f64,
-}
-
-impl PointFit {
-    pub fn ltc(&self, norm: f64, fresnel: f64) -> Ltc {
-        Ltc::from_cos_from_brdf(cos_from_brdf_from_entries(self.entries), norm, fresnel)
-            .with_scale(self.scale)
-    }
-
-    /// What a cell of a table stores for `lobe`.
-    pub fn stored(cell: &LutCell, lobe: Lobe) -> Self {
-        Self {
-            entries: Channel::entries(lobe).map(|ch| f64::from(cell.get(ch))),
-            scale: match lobe {
-                Lobe::Specular => f64::from(cell.get(Channel::SpecScale)),
-                Lobe::Diffuse => 1.0,
-            },
-        }
-    }
-
-    /// `det M⁻¹ > 0` and a scale in `[SCALE_MIN, SCALE_MAX]`.
-    pub(crate) fn is_valid(&self) -> bool {
-        let m = self.entries;
-        let det = m[0] * m[3] - m[1] * m[2];
-        let scale = (SCALE_MIN..=SCALE_MAX).contains(&self.scale);
-        m.iter().all(|x| x.is_finite()) && det > 1e-12 && scale
-    }
-}
-
-/// The smallest scale the fit may choose. Where no lobe of the family overlaps the exact
-/// one (α = 1e-4 at θo = 90°) the L1 optimum is to switch the lobe off (error 1 instead of
-/// 2); bilinear filtering would then dim the neighbouring cells' highlights too, so the fit
-/// may at most halve the light.
-pub const SCALE_MIN: f64 = 0.5;
-
-/// The largest scale the fit may choose. The lobe objective never goes above 1.004; the
-/// arrival objective goes to 1.06 where it should, and at the grazing `α_min` cell, where no
-/// lobe of the family fits the sliver along the horizon, it would more than double the light
-/// (2.3), which bilinear filtering would spread to the neighbouring highlights.
-pub const SCALE_MAX: f64 = 1.1;
-
-/// Which parameters the point fit frees for a lobe: the magnitude's scale only for the
-/// specular lobe (the diffuse fit is within 2% already; docs/design.md §1 keeps its magnitude `n_d`).
-pub fn fits_scale(lobe: Lobe) -> bool {
-    lobe == Lobe::Specular
-}
-
 /// What a point-light table's fit minimizes, and under which constraint (docs/design.md §2,
 /// §4.7). Each starts from the classic table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -277,35 +220,15 @@ pub enum PointObjective {
     Constrained,
 }
 
-/// Which parameters a cell's fit frees beyond `m00, m02, m22`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Free {
-    /// The scale on the magnitude (`fits_scale`).
-    pub scale: bool,
-    /// `m20`: fixed at 0 by the constrained fit.
-    pub m20: bool,
-}
-
-impl Free {
-    /// What the point fit frees for `lobe` under `objective`.
-    pub fn of(lobe: Lobe, objective: PointObjective) -> Self {
-        Self {
-            scale: fits_scale(lobe),
-            m20: objective != PointObjective::Constrained,
-        }
-    }
-
-    /// `fit` moved into the set: `m20` set to 0 where it is not free.
-    pub(crate) fn project(self, fit: PointFit) -> PointFit {
-        let mut entries = fit.entries;
-        if !self.m20 {
-            entries[2] = 0.0;
-        }
-        PointFit { entries, ..fit }
-    }
-}
-
 impl PointObjective {
+    /// What the point fit frees for `lobe` under this objective.
+    pub fn free(self, lobe: Lobe) -> Free {
+        Free {
+            scale: fits_scale(lobe),
+            m20: self != Self::Constrained,
+        }
+    }
+
     /// The quadrature of the objective at one cell.
     pub fn quadrature(
         self,
@@ -371,7 +294,7 @@ pub fn fit_table_for(
     let refit = |current: &LutCell, lobe: Lobe, i: usize, j: usize, starts: &[PointFit]| {
         let problem = CellProblem::new(lobe, i, j, settings, &strata);
         let q = objective.quadrature(lobe, problem.view, problem.alpha, &quadrature);
-        let free = Free::of(lobe, objective);
+        let free = objective.free(lobe);
         let point = fit_cell(&*q, problem.norm, starts, free, settings);
         let err = pointwise_error(
             lobe,

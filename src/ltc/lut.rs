@@ -178,7 +178,7 @@ pub fn channel_limits(c: usize) -> ChannelLimits {
         c if c == SpecScale as usize => limits(
             0.0,
             true,
-            // The fits' cap (`fit_point::SCALE_MAX`), as f32 rounds it up.
+            // The fits' cap (`point_params::SCALE_MAX`), as f32 rounds it up.
             1.1 * (1.0 + f64::from(f32::EPSILON)),
             "a fitted factor on the albedo: 1 in the classic fit, 0.5–1.004 in the point fit, up to 1.1 (the fits' cap) in the arrival fit",
         ),

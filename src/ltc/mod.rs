@@ -12,6 +12,7 @@ pub mod lobe;
 pub mod lut;
 pub mod nelder_mead;
 pub mod nl_fit;
+pub mod point_params;
 pub mod remedy;
 pub mod sphere;
 
