@@ -16,6 +16,8 @@ fn main() -> ExitCode {
     // claimed default names and directories made for outputs behind; the handler removes
     // them (see ltc_lab::files) and exits 128 + SIGINT.
     let handler = ctrlc::set_handler(|| {
+        // Standard error may be held back while an adapter opens: the message must be seen.
+        drop(ltc_lab::gpu::driver_output::give_back());
         ltc_lab::files::exit_interrupted(130, |n| {
             let s = if n == 1 { "" } else { "s" };
             eprintln!("ltc-lab: interrupted; removed {n} unfinished output{s}");

@@ -49,7 +49,8 @@ fn lab_screenshot_is_the_requested_size_and_not_blank() {
             .unwrap();
         assert!(
             o.status.success(),
-            "{panel}: {}",
+            "{panel}: {}: {}",
+            o.status,
             String::from_utf8_lossy(&o.stderr)
         );
         let img = image::open(&out).unwrap().to_rgb8();
@@ -93,7 +94,12 @@ fn the_frame_log_shows_the_plane_filling_in_over_frames() {
         .arg(&log)
         .output()
         .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        o.status.success(),
+        "{}: {}",
+        o.status,
+        String::from_utf8_lossy(&o.stderr)
+    );
     let text = std::fs::read_to_string(&log).unwrap();
     let mut lines = text.lines();
     assert_eq!(

@@ -8,7 +8,7 @@ use ltc_lab::app::link;
 use ltc_lab::app::screenshot::frame_log_csv;
 use ltc_lab::app::{LabApp, LabState, Message, PanelId, ScreenshotApp};
 use ltc_lab::error::{Error, Result};
-use ltc_lab::gpu::driver_output::HeldBack;
+use ltc_lab::gpu::driver_output;
 use ltc_lab::scene::Scene;
 
 use super::parse_size;
@@ -155,19 +155,15 @@ pub fn run(a: Args) -> Result<()> {
     };
     // Drivers print while eframe opens the window's adapter (gpu::driver_output says what):
     // held back until the app is made, then dropped; handed to the error if the window
-    // cannot open.
-    let held = Arc::new(Mutex::new(HeldBack::start()));
-    let release = move || {
-        let held = held.lock().expect("not poisoned").take();
-        held.map(HeldBack::release).unwrap_or_default()
-    };
-    let (opened, released) = (release.clone(), release);
-    let window = move |e: eframe::Error| {
-        let said = match released() {
+    // cannot open, or closes before the app is made.
+    driver_output::hold();
+    let opened = || drop(driver_output::give_back());
+    let window = |why: String| {
+        let said = match driver_output::give_back() {
             s if s.is_empty() => String::new(),
             s => format!(" (the driver said: {})", s.replace('\n', "; ")),
         };
-        Error::machine("lab", format!("cannot open the window: {e}{said}"))
+        Error::machine("lab", format!("{why}{said}"))
     };
     match a.screenshot {
         Some(path) => {
@@ -179,6 +175,7 @@ pub fn run(a: Args) -> Result<()> {
                 options,
                 Box::new(move |cc| {
                     opened();
+                    keep_driver_loaded(cc);
                     let state = with_view(LabState::default());
                     let app = LabApp::new(state, cc.wgpu_render_state.as_ref());
                     let mut shot = ScreenshotApp::new(configure(app), path);
@@ -196,11 +193,8 @@ pub fn run(a: Args) -> Result<()> {
             // user's to fix (exit 2), as in every command.
             match (run, taken) {
                 (Ok(()), Some(outcome)) => outcome,
-                (Ok(()), None) => Err(Error::machine(
-                    "lab",
-                    "the window closed before the screenshot",
-                )),
-                (Err(e), _) => Err(window(e)),
+                (Ok(()), None) => Err(window("the window closed before the screenshot".into())),
+                (Err(e), _) => Err(window(format!("cannot open the window: {e}"))),
             }
         }
         None => eframe::run_native(
@@ -208,12 +202,20 @@ pub fn run(a: Args) -> Result<()> {
             options,
             Box::new(move |cc| {
                 opened();
+                keep_driver_loaded(cc);
                 let state = with_view(LabApp::stored_state(cc));
                 let app = LabApp::new(state, cc.wgpu_render_state.as_ref());
                 Ok(Box::new(configure(app)))
             }),
         )
-        .map_err(window),
+        .map_err(|e| window(format!("cannot open the window: {e}"))),
+    }
+}
+
+/// The window's driver is not unloaded before the process exits (gpu::keep_driver says why).
+fn keep_driver_loaded(cc: &eframe::CreationContext<'_>) {
+    if let Some(rs) = &cc.wgpu_render_state {
+        ltc_lab::gpu::keep_driver::keep_driver_loaded(&rs.device);
     }
 }
 

@@ -1,4 +1,4 @@
-//! What drivers print while an adapter opens. Mesa's Vulkan device-select layer connects to
+//! What drivers print while an adapter opens (docs/design.md §5.10). Mesa's Vulkan device-select layer connects to
 //! a Wayland display to find the default GPU, and where `XDG_RUNTIME_DIR` is not set (a
 //! container, an SSH session, `env -i`) libwayland prints "error: XDG_RUNTIME_DIR is invalid
 //! or not set in the environment." twice: ahead of the program's own output, or of its real
@@ -10,15 +10,62 @@
 /// Runs `open` with standard error held back; its result, and what was written meanwhile
 /// (empty where standard error could not be redirected).
 pub fn held_back<T>(open: impl FnOnce() -> T) -> (T, String) {
-    let held = HeldBack::start();
+    hold();
     let out = open();
-    (out, held.map(HeldBack::release).unwrap_or_default())
+    (out, give_back())
 }
 
-/// Standard error written to an unlinked temporary file until `release`: for an adapter that
-/// opens where a closure cannot wrap it (eframe's window opens its own, then calls back).
+/// Holds standard error back from now on, until `give_back`: for an adapter that opens
+/// where a closure cannot wrap it (eframe's window opens its own, then calls back). Nothing
+/// where it is already held or cannot be redirected. A panic meanwhile gives it back first,
+/// so that the panic, and what the driver said before it, is not lost with the file.
+pub fn hold() {
+    give_back_on_panic();
+    let mut held = lock_held();
+    if held.is_none() {
+        *held = HeldBack::start();
+    }
+}
+
+/// Gives standard error back, and what was written to it since `hold` (empty where it was
+/// not held). Every way out of a hold ends here: an error, a panic, an interrupt.
+pub fn give_back() -> String {
+    let held = lock_held().take();
+    held.map(HeldBack::release).unwrap_or_default()
+}
+
+/// Standard error is the process's: one hold at a time, kept where the panic hook and the
+/// interrupt handler can find it.
+static HELD: std::sync::Mutex<Option<HeldBack>> = std::sync::Mutex::new(None);
+
+/// The hold, even after a panic elsewhere poisoned the lock (the hold itself stays whole:
+/// nothing panics while changing it).
+fn lock_held() -> std::sync::MutexGuard<'static, Option<HeldBack>> {
+    HELD.lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// Chains a panic hook, once, that gives standard error back before the usual report.
+fn give_back_on_panic() {
+    static INSTALLED: std::sync::Once = std::sync::Once::new();
+    INSTALLED.call_once(|| {
+        let report = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            // `try_lock`: a panic inside `give_back` itself must not wait on its own lock.
+            let held = HELD.try_lock().ok().and_then(|mut h| h.take());
+            if let Some(said) = held.map(HeldBack::release)
+                && !said.is_empty()
+            {
+                eprintln!("(the driver said: {})", said.replace('\n', "; "));
+            }
+            report(info);
+        }));
+    });
+}
+
+/// Standard error written to an unlinked temporary file until `release`.
 #[cfg(unix)]
-pub struct HeldBack {
+struct HeldBack {
     saved: std::os::fd::OwnedFd,
     file: std::fs::File,
 }
@@ -26,12 +73,12 @@ pub struct HeldBack {
 #[cfg(unix)]
 impl HeldBack {
     /// Holds standard error back from now on; `None` where it cannot be redirected.
-    pub fn start() -> Option<Self> {
+    fn start() -> Option<Self> {
         redirect().map(|(saved, file)| Self { saved, file })
     }
 
     /// Gives standard error back, and what was written to it meanwhile.
-    pub fn release(mut self) -> String {
+    fn release(mut self) -> String {
         use std::io::{Read, Seek};
         // Restored before anything else is said; a failure to restore leaves it where it is.
         let _ = nix::unistd::dup2_stderr(&self.saved);
@@ -45,15 +92,15 @@ impl HeldBack {
 }
 
 #[cfg(not(unix))]
-pub struct HeldBack;
+struct HeldBack;
 
 #[cfg(not(unix))]
 impl HeldBack {
-    pub fn start() -> Option<Self> {
+    fn start() -> Option<Self> {
         None
     }
 
-    pub fn release(self) -> String {
+    fn release(self) -> String {
         String::new()
     }
 }

@@ -6,6 +6,7 @@ pub mod binding;
 pub mod brdf;
 pub mod display;
 pub mod driver_output;
+pub mod keep_driver;
 pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
