@@ -159,10 +159,7 @@ pub fn run(a: Args) -> Result<()> {
     driver_output::hold();
     let opened = || drop(driver_output::give_back());
     let window = |why: String| {
-        let said = match driver_output::give_back() {
-            s if s.is_empty() => String::new(),
-            s => format!(" (the driver said: {})", s.replace('\n', "; ")),
-        };
+        let said = driver_output::as_note(&driver_output::give_back());
         Error::machine("lab", format!("{why}{said}"))
     };
     match a.screenshot {

@@ -34,6 +34,14 @@ pub fn give_back() -> String {
     held.map(HeldBack::release).unwrap_or_default()
 }
 
+/// What the driver said, as a note after a message: " (the driver said: …)", or nothing.
+pub fn as_note(said: &str) -> String {
+    match said {
+        "" => String::new(),
+        s => format!(" (the driver said: {})", s.replace('\n', "; ")),
+    }
+}
+
 /// Standard error is the process's: one hold at a time, kept where the panic hook and the
 /// interrupt handler can find it.
 static HELD: std::sync::Mutex<Option<HeldBack>> = std::sync::Mutex::new(None);
@@ -53,10 +61,9 @@ fn give_back_on_panic() {
         std::panic::set_hook(Box::new(move |info| {
             // `try_lock`: a panic inside `give_back` itself must not wait on its own lock.
             let held = HELD.try_lock().ok().and_then(|mut h| h.take());
-            if let Some(said) = held.map(HeldBack::release)
-                && !said.is_empty()
-            {
-                eprintln!("(the driver said: {})", said.replace('\n', "; "));
+            let said = held.map(HeldBack::release).unwrap_or_default();
+            if !said.is_empty() {
+                eprintln!("{}", as_note(&said).trim_start());
             }
             report(info);
         }));

@@ -74,16 +74,9 @@ impl GpuContext {
     #[cfg(not(target_arch = "wasm32"))]
     pub fn new() -> Result<Self, Error> {
         let (opened, drivers_said) = driver_output::held_back(Self::open);
-        opened.map_err(|e| match drivers_said.as_str() {
-            "" => e,
-            said => Error {
-                message: format!(
-                    "{} (the driver said: {})",
-                    e.message,
-                    said.replace('\n', "; ")
-                ),
-                ..e
-            },
+        opened.map_err(|e| Error {
+            message: format!("{}{}", e.message, driver_output::as_note(&drivers_said)),
+            ..e
         })
     }
 
