@@ -170,7 +170,7 @@ fn no_driver_chatter_reaches_the_user_when_the_window_opens() {
         .output()
         .unwrap();
     let said = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success(), "{said}");
+    assert!(o.status.success(), "{}: {said}", o.status);
     assert!(said.trim().is_empty(), "the user saw: {said}");
     assert!(out.exists());
 }

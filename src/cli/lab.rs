@@ -158,7 +158,7 @@ pub fn run(a: Args) -> Result<()> {
     // cannot open, or closes before the app is made.
     driver_output::hold();
     let opened = || drop(driver_output::give_back());
-    let window = |why: String| {
+    let window_error = |why: String| {
         let said = driver_output::as_note(&driver_output::give_back());
         Error::machine("lab", format!("{why}{said}"))
     };
@@ -190,8 +190,10 @@ pub fn run(a: Args) -> Result<()> {
             // user's to fix (exit 2), as in every command.
             match (run, taken) {
                 (Ok(()), Some(outcome)) => outcome,
-                (Ok(()), None) => Err(window("the window closed before the screenshot".into())),
-                (Err(e), _) => Err(window(format!("cannot open the window: {e}"))),
+                (Ok(()), None) => Err(window_error(
+                    "the window closed before the screenshot".into(),
+                )),
+                (Err(e), _) => Err(window_error(format!("cannot open the window: {e}"))),
             }
         }
         None => eframe::run_native(
@@ -205,7 +207,7 @@ pub fn run(a: Args) -> Result<()> {
                 Ok(Box::new(configure(app)))
             }),
         )
-        .map_err(|e| window(format!("cannot open the window: {e}"))),
+        .map_err(|e| window_error(format!("cannot open the window: {e}"))),
     }
 }
 

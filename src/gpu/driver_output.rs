@@ -1,11 +1,11 @@
-//! What drivers print while an adapter opens (docs/design.md §5.10). Mesa's Vulkan device-select layer connects to
-//! a Wayland display to find the default GPU, and where `XDG_RUNTIME_DIR` is not set (a
-//! container, an SSH session, `env -i`) libwayland prints "error: XDG_RUNTIME_DIR is invalid
-//! or not set in the environment." twice: ahead of the program's own output, or of its real
-//! error. wgpu always enables the Wayland surface extension, and the layer can only be
-//! turned off through the environment, which this program does not change. So the
-//! process's standard error is held back while the adapter opens: dropped when it opens,
-//! handed to the error when it does not.
+//! What drivers print while an adapter opens (docs/design.md §5.10). Mesa's Vulkan
+//! device-select layer connects to a Wayland display to find the default GPU, and where
+//! `XDG_RUNTIME_DIR` is not set (a container, an SSH session, `env -i`) libwayland prints
+//! "error: XDG_RUNTIME_DIR is invalid or not set in the environment." twice: ahead of the
+//! program's own output, or of its real error. wgpu always enables the Wayland surface
+//! extension, and the layer can only be turned off through the environment, which this
+//! program does not change. So the process's standard error is held back while the adapter
+//! opens: dropped when it opens, handed to the error when it does not.
 
 /// Runs `open` with standard error held back; its result, and what was written meanwhile
 /// (empty where standard error could not be redirected).

@@ -1,7 +1,7 @@
 //! The window's GPU driver stays loaded until the process ends. When eframe drops the
 //! window's wgpu instance, the last EGL display ends and Mesa unloads its GL driver
 //! (`swrast_dri.so`, llvmpipe, Mesa 22.3), yet an exit handler registered for it stays in
-//! libc's list: now and then (about one lab window in a hundred under load, here and in CI)
+//! libc's list: now and then (3 of some 180 lab windows under load here, and once in CI)
 //! the process then crashed with SIGSEGV in `exit`, after its screenshot and frame log were
 //! written. Keeping one device keeps its instance, whose display keeps the driver mapped
 //! until the operating system takes the whole process back (docs/design.md §5.10).
