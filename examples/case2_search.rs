@@ -24,7 +24,7 @@ fn main() {
                     s.material.alpha = alpha;
                     s.lights[0].position = [x, y, z];
                     let mut r = RenderSettings::single(96, 54, Method::Ltc);
-                    r.clipping = Clipping::HORIZON;
+                    r.rules.clipping = Clipping::CASE1;
                     let r = luminance_range(&render(&s, lut, &r));
                     results.push((-r.min / r.max, alpha, [x, y, z], r.min, r.max, r.negative));
                 }

@@ -9,7 +9,7 @@ use crate::gpu::GpuContext;
 use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::Horizon;
-use crate::render::{Method, RenderSettings};
+use crate::render::{LtcRules, Method, RenderSettings};
 use crate::scene::{RandomLights, Scene, generate_lights, preset};
 
 /// The paper's Table 1 (GTX 1060, its resolution unstated): fps at 100, 500, 1000, 5000
@@ -232,7 +232,10 @@ pub fn run(
                 renderer.set_tables(ctx, table, None)?;
                 let settings = RenderSettings {
                     cull,
-                    horizon: horizon.rule(),
+                    rules: LtcRules {
+                        horizon: horizon.rule(),
+                        ..LtcRules::default()
+                    },
                     ..RenderSettings::single(width, height, method)
                 };
                 renderer.begin(ctx, &scene, &settings)?;

@@ -268,7 +268,7 @@ pub fn shade(
     method: Method,
 ) -> DVec3 {
     if method.is_ltc() {
-        shade_ltc(scene, lut, p, &scene.lights, &s.ltc_rules())
+        shade_ltc(scene, lut, p, &scene.lights, &s.rules)
     } else {
         shade_exact(scene, p, &scene.lights)
     }

@@ -108,24 +108,24 @@ pub struct RenderSettings {
     /// The reference (right of a split, the denominator of a difference).
     pub method_b: Method,
     pub view: View,
-    pub clipping: Clipping,
-    pub normalization: Normalization,
+    /// What the LTC methods shade by beyond their table.
+    pub rules: LtcRules,
     /// Where `Split` changes from A to B, as a fraction of the width.
     pub divider: f64,
-    pub lut_filter: LutFilter,
     /// Each 16×16 tile sums only the lights whose range reaches it (the image is the same to
     /// the bit: the others add exactly 0).
     pub cull: bool,
-    /// B is an LTC method shading with the second table: two tables compared, not LTC
-    /// against the BRDF.
-    pub table_b: bool,
-    /// What the LTC methods do for lights near the horizon (docs/design.md §4.7).
-    pub horizon: HorizonRule,
+    /// B is an LTC method shading with table B: two tables compared, not LTC against the
+    /// BRDF.
+    pub b_reads_table_b: bool,
 }
 
 /// How an LTC method shades beyond its table: eq. 30's clipping, the normalization, how the
 /// table is read, and the horizon rule.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
+#[serde(default)]
 pub struct LtcRules {
     pub clipping: Clipping,
     pub normalization: Normalization,
@@ -142,23 +142,10 @@ impl RenderSettings {
             method_a: method,
             method_b: Method::Brdf,
             view: View::A,
-            clipping: Clipping::BOTH,
-            normalization: Normalization::Corrected,
+            rules: LtcRules::default(),
             divider: 0.5,
-            lut_filter: LutFilter::Bilinear,
             cull: true,
-            table_b: false,
-            horizon: HorizonRule::Eq30,
-        }
-    }
-
-    /// What the LTC methods of this render shade by.
-    pub fn ltc_rules(&self) -> LtcRules {
-        LtcRules {
-            clipping: self.clipping,
-            normalization: self.normalization,
-            filter: self.lut_filter,
-            horizon: self.horizon,
+            b_reads_table_b: false,
         }
     }
 
@@ -195,7 +182,7 @@ impl RenderSettings {
 }
 
 /// The tables a render reads: method A's, and method B's where it shades with one of its own
-/// (`RenderSettings::table_b`).
+/// (`RenderSettings::b_reads_table_b`).
 #[derive(Clone, Copy, Debug)]
 pub struct Tables<'a> {
     pub a: &'a Lut,
@@ -212,7 +199,11 @@ impl<'a> From<&'a Lut> for Tables<'a> {
 impl<'a> Tables<'a> {
     /// The table of method B under `settings`.
     pub fn for_b(&self, settings: &RenderSettings) -> &'a Lut {
-        if settings.table_b { self.b } else { self.a }
+        if settings.b_reads_table_b {
+            self.b
+        } else {
+            self.a
+        }
     }
 }
 
@@ -243,7 +234,7 @@ impl Frame {
     /// where the rules forbid one. Only LTC without the case-2 rule (`max(ω'.z, 0)` dropped)
     /// sums negative terms; every term of eq. 28, of eq. 30 and of a difference is ≥ 0.
     pub fn first_invalid(&self, clipping: Clipping) -> Option<(usize, DVec3)> {
-        let negative_forbidden = clipping.transformed || self.kind != FrameKind::Radiance;
+        let negative_forbidden = clipping.case2 || self.kind != FrameKind::Radiance;
         self.pixels
             .iter()
             .copied()
@@ -313,11 +304,7 @@ mod tests {
         );
         // Negative light is the case-2 artifact: allowed exactly when its rule is off.
         assert!(radiance(negative).first_invalid(Clipping::BOTH).is_some());
-        assert!(
-            radiance(negative)
-                .first_invalid(Clipping::HORIZON)
-                .is_none()
-        );
+        assert!(radiance(negative).first_invalid(Clipping::CASE1).is_none());
         let diff = frame(FrameKind::RelativeDifference, negative);
         assert!(diff.first_invalid(Clipping::NONE).is_some());
     }

@@ -5,12 +5,12 @@
 use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
-use crate::ltc::Normalization;
 use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::{Lut, Table};
 use crate::ltc::remedy::Horizon;
+use crate::ltc::{Clipping, Normalization};
 use crate::metrics::image_error;
-use crate::render::{LutFilter, Method, RenderSettings};
+use crate::render::{LtcRules, LutFilter, Method, RenderSettings};
 use crate::scene::Scene;
 
 /// Which table a variant shades with.
@@ -297,9 +297,12 @@ pub fn run(
                         .expect("made above")
                         .1;
                     let settings = RenderSettings {
-                        normalization: v.normalization,
-                        lut_filter: v.filter,
-                        horizon: v.horizon.rule(),
+                        rules: LtcRules {
+                            clipping: Clipping::BOTH,
+                            normalization: v.normalization,
+                            filter: v.filter,
+                            horizon: v.horizon.rule(),
+                        },
                         cull,
                         ..RenderSettings::single(width, height, v.method)
                     };

@@ -48,7 +48,7 @@ impl NamedTables {
     pub fn with_a(a: NamedTable, shipped_a: Table) -> Self {
         Self {
             a,
-            b: NamedTable::shipped(shipped_a.other()),
+            b: NamedTable::shipped(shipped_a.default_b()),
             b_chosen: false,
         }
     }

@@ -14,8 +14,8 @@ use ltc_lab::scene::{Scene, preset};
 /// A lobe's case from what `ltc_eval` returns with one rule at a time.
 fn case_from_rules(ltc: &Ltc, l: DVec3) -> ClipCase {
     let n = Normalization::Corrected;
-    let horizon_only = ltc.ltc_eval(l, Clipping::HORIZON, n);
-    let transformed_only = ltc.ltc_eval(l, Clipping::TRANSFORMED, n);
+    let horizon_only = ltc.ltc_eval(l, Clipping::CASE1, n);
+    let transformed_only = ltc.ltc_eval(l, Clipping::CASE2, n);
     match (horizon_only, transformed_only) {
         (h, t) if h > 0.0 && t > 0.0 => ClipCase::Visible,
         (h, t) if h == 0.0 && t > 0.0 => ClipCase::Lifted,

@@ -194,9 +194,8 @@ fn stored_errors_match_quadrature() {
             (Lobe::Diffuse, pair.diff, Channel::DiffErr),
         ] {
             let exact = |l: DVec3| lobe.eval(v, l, alpha).value;
-            let approx = |l: DVec3| {
-                ltc.norm * ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected)
-            };
+            let approx =
+                |l: DVec3| ltc.norm * ltc.ltc_eval(l, Clipping::CASE2, Normalization::Corrected);
             // One quadrature centred on the exact lobe's peak; at these cells (α ≥ 0.07) both
             // lobes are broad enough for its resolution everywhere on the sphere.
             let centre = if lobe == Lobe::Specular {

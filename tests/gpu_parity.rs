@@ -53,16 +53,16 @@ fn scenes() -> Vec<(String, Scene)> {
 
 const CLIPS: [Clipping; 4] = [
     Clipping::BOTH,
-    Clipping::HORIZON,
-    Clipping::TRANSFORMED,
+    Clipping::CASE1,
+    Clipping::CASE2,
     Clipping::NONE,
 ];
 const NORMALIZATIONS: [Normalization; 2] = [Normalization::Corrected, Normalization::PaperLiteral];
 
 fn cpu_frame(scene: &Scene, method: Method, clip: Clipping, normalization: Normalization) -> Frame {
     let mut s = RenderSettings::single(W, H, method);
-    s.clipping = clip;
-    s.normalization = normalization;
+    s.rules.clipping = clip;
+    s.rules.normalization = normalization;
     render(scene, Lut::embedded(), &s)
 }
 
@@ -90,8 +90,8 @@ fn gpu_matches_cpu_for_every_method_clip_and_normalization() {
             for (clip, normalization) in combos {
                 // The same settings for both: the CPU shades the literal form of each method.
                 let mut s = RenderSettings::single(W, H, method);
-                s.clipping = clip;
-                s.normalization = normalization;
+                s.rules.clipping = clip;
+                s.rules.normalization = normalization;
                 let cpu = render(&scene, Lut::embedded(), &s);
                 let gpu = gpu_frame(&scene, &s);
                 assert_close(
@@ -152,11 +152,11 @@ fn gpu_nearest_lut_lookup_matches_cpu() {
     }
     for (name, scene) in scenes() {
         let mut cs = RenderSettings::single(W, H, Method::Ltc);
-        cs.lut_filter = LutFilter::Nearest;
+        cs.rules.filter = LutFilter::Nearest;
         let cpu = render(&scene, Lut::embedded(), &cs);
         for method in [Method::Ltc, Method::LtcFast] {
             let mut s = RenderSettings::single(W, H, method);
-            s.lut_filter = LutFilter::Nearest;
+            s.rules.filter = LutFilter::Nearest;
             assert_close(
                 &format!("{name} {} nearest", method.name()),
                 &gpu_frame(&scene, &s),
@@ -214,7 +214,7 @@ fn ltc_and_ltc_fast_agree_to_f32_rounding() {
     for (name, scene) in scenes() {
         for clip in CLIPS {
             let mut s = RenderSettings::single(W, H, Method::Ltc);
-            s.clipping = clip;
+            s.rules.clipping = clip;
             let a = gpu_frame(&scene, &s);
             s.method_a = Method::LtcFast;
             let b = gpu_frame(&scene, &s);
@@ -272,7 +272,7 @@ fn no_nan_reaches_the_image() {
                     for clip in [Clipping::BOTH, Clipping::NONE] {
                         let mut s = RenderSettings::single(W, H, method);
                         s.view = view;
-                        s.clipping = clip;
+                        s.rules.clipping = clip;
                         let mut r = g.renderer.lock().unwrap();
                         let frame = r.render(&g.ctx, &scene, &s).unwrap().0;
                         let bad = frame.pixels.iter().filter(|p| p.is_nan()).count();
@@ -382,7 +382,7 @@ fn gpu_matches_cpu_for_every_horizon_remedy() {
             let mut renderer = PlaneRenderer::new(&g.ctx, lut, ShaderChecks::Checked).unwrap();
             for method in [Method::Ltc, Method::LtcFast] {
                 let mut s = RenderSettings::single(W, H, method);
-                s.horizon = remedy.rule();
+                s.rules.horizon = remedy.rule();
                 let mut gpu = renderer.render(&g.ctx, &scene, &s).unwrap().0;
                 let cpu = render(
                     &scene,

@@ -13,7 +13,7 @@ use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::metrics::{luminance, relative_floor};
-use ltc_lab::render::{Frame, Method, RenderSettings, Tables, View};
+use ltc_lab::render::{Frame, LtcRules, Method, RenderSettings, Tables, View};
 use ltc_lab::scene::{Light, RandomLights, Scene, generate_lights, preset};
 
 const W: usize = 64;
@@ -183,7 +183,7 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
             let s = RenderSettings {
                 method_b: method,
                 view,
-                table_b: true,
+                b_reads_table_b: true,
                 ..RenderSettings::single(W, H, method)
             };
             let gpu = r.render(&g.ctx, &scene, &s).unwrap().0;
@@ -194,7 +194,7 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
         let alone = RenderSettings {
             method_b: method,
             view: View::B,
-            table_b: true,
+            b_reads_table_b: true,
             ..RenderSettings::single(W, H, method)
         };
         let b = r.render(&g.ctx, &scene, &alone).unwrap().0;
@@ -207,7 +207,7 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
     let diff = RenderSettings {
         method_b: Method::Ltc,
         view: View::Diff,
-        table_b: true,
+        b_reads_table_b: true,
         ..RenderSettings::single(W, H, Method::Ltc)
     };
     let gpu_diff = r.render(&g.ctx, &scene, &diff).unwrap().0;
@@ -276,8 +276,11 @@ fn f16_pairs_are_finite_and_within_half_precision() {
             let mut scene = binning_scene(0.5, 200);
             scene.material.alpha = alpha;
             let s = RenderSettings {
-                clipping: clip,
-                normalization: Normalization::Corrected,
+                rules: LtcRules {
+                    clipping: clip,
+                    normalization: Normalization::Corrected,
+                    ..LtcRules::default()
+                },
                 ..RenderSettings::single(W, H, Method::LtcF16Pairs)
             };
             let f = frame(&mut r, &scene, &s);

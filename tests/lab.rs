@@ -303,7 +303,7 @@ fn clipping_rules_off_show_the_glow_and_the_negative_light() {
     h.get_by_label_contains("case 1 rule").click();
     settle(&mut h);
     // One set of rules: the panel's checkbox is the lab's.
-    assert!(!h.state().lab.shared().clipping.horizon);
+    assert!(!h.state().lab.shared().clipping.case1);
     assert!(
         picture_energy(&h, 0, 2) > 0.0,
         "no glow without the horizon rule"
@@ -742,7 +742,7 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     h.get_by_label("A | B tables").click();
     settle(&mut h);
     let settings = *h.state().plane.shading.settings().unwrap();
-    assert!(settings.table_b && settings.method_b == settings.method_a);
+    assert!(settings.b_reads_table_b && settings.method_b == settings.method_a);
     let gpu = plane_image(&mut h);
     let tables = ltc_lab::render::Tables {
         a: ltc_lab::ltc::lut::Lut::embedded(),

@@ -11,7 +11,7 @@ use proptest::prelude::*;
 
 /// D with only the transform's own clamp: the distribution as defined.
 fn density(ltc: &Ltc, l: DVec3) -> f64 {
-    ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected)
+    ltc.ltc_eval(l, Clipping::CASE2, Normalization::Corrected)
 }
 
 /// ∫ D over the sphere, the quadrature centred on D's peak direction M·z.
@@ -114,10 +114,10 @@ fn case_1_light_below_the_horizon_glows_only_without_the_horizon_rule() {
         0.0
     );
     assert_eq!(
-        ltc.ltc_eval(l, Clipping::HORIZON, Normalization::Corrected),
+        ltc.ltc_eval(l, Clipping::CASE1, Normalization::Corrected),
         0.0
     );
-    assert!(ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected) > 0.0);
+    assert!(ltc.ltc_eval(l, Clipping::CASE2, Normalization::Corrected) > 0.0);
     assert!(ltc.ltc_eval(l, Clipping::NONE, Normalization::Corrected) > 0.0);
 }
 
@@ -132,10 +132,10 @@ fn case_2_light_pushed_below_is_negative_only_without_the_transformed_rule() {
         0.0
     );
     assert_eq!(
-        ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected),
+        ltc.ltc_eval(l, Clipping::CASE2, Normalization::Corrected),
         0.0
     );
-    assert!(ltc.ltc_eval(l, Clipping::HORIZON, Normalization::Corrected) < 0.0);
+    assert!(ltc.ltc_eval(l, Clipping::CASE1, Normalization::Corrected) < 0.0);
     assert!(ltc.ltc_eval(l, Clipping::NONE, Normalization::Corrected) < 0.0);
 }
 
@@ -146,7 +146,7 @@ fn a_light_below_that_stays_below_is_removed_by_either_rule_and_negative_by_none
     let l = DVec3::new(0.1, 0.0, -0.9).normalize();
     assert!((ltc.cos_from_brdf * l).z < 0.0);
     assert_eq!(ltc.clip_case(l), ClipCase::StaysBelow);
-    for c in [Clipping::BOTH, Clipping::HORIZON, Clipping::TRANSFORMED] {
+    for c in [Clipping::BOTH, Clipping::CASE1, Clipping::CASE2] {
         assert_eq!(ltc.ltc_eval(l, c, Normalization::Corrected), 0.0);
     }
     assert!(ltc.ltc_eval(l, Clipping::NONE, Normalization::Corrected) < 0.0);
@@ -159,7 +159,7 @@ fn visible_light_is_unaffected_by_clipping() {
     assert_eq!(ltc.clip_case(l), ClipCase::Visible);
     let d = ltc.ltc_eval(l, Clipping::BOTH, Normalization::Corrected);
     assert!(d > 0.0);
-    for c in [Clipping::HORIZON, Clipping::TRANSFORMED, Clipping::NONE] {
+    for c in [Clipping::CASE1, Clipping::CASE2, Clipping::NONE] {
         assert_eq!(ltc.ltc_eval(l, c, Normalization::Corrected), d);
     }
 }

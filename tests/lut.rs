@@ -2,7 +2,7 @@
 //! GPU-style clamping at the edges, and clear errors for broken files.
 
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
-use ltc_lab::ltc::lut::{CHANNEL_COUNT, Channel, Lut, LutCell};
+use ltc_lab::ltc::lut::{Channel, Lut, LutCell};
 
 #[test]
 fn embedded_lut_is_the_shipped_64x64_table() {
@@ -45,7 +45,7 @@ fn sampler_returns_cell_values_at_cell_centres() {
             let r = i as f64 / (lut.size - 1) as f64;
             let s = lut.sample(r * r, cos);
             let cell = lut.cell(i, j);
-            for c in 0..CHANNEL_COUNT {
+            for c in 0..Channel::COUNT {
                 let want = f64::from(cell.0[c]);
                 // The uv arithmetic rounds (a few ulps of 1.0); the bilinear weight of the
                 // neighbour is then ~1e-15, times channel differences of order 1.
@@ -64,7 +64,7 @@ fn sampler_interpolates_between_cells_and_clamps_outside() {
         nl_terms: Default::default(),
         size: 2,
         alpha_min: 1e-4,
-        cells: vec![LutCell([0.0; CHANNEL_COUNT]); 4],
+        cells: vec![LutCell([0.0; Channel::COUNT]); 4],
     };
     for (k, v) in [1.0f32, 2.0, 3.0, 5.0].iter().enumerate() {
         lut.cells[k].0[Channel::SpecNorm as usize] = *v;
@@ -127,14 +127,13 @@ fn exr_without(lut: &Lut, skip: &str) -> Vec<u8> {
 /// The table as another writer might make it: without channel `skip`, α_min as `alpha_min`.
 fn exr_written(lut: &Lut, skip: &str, alpha_min: exr::prelude::AttributeValue) -> Vec<u8> {
     use exr::prelude::*;
-    let channels = ltc_lab::ltc::lut::CHANNEL_NAMES
+    let channels = Channel::ALL
         .iter()
-        .enumerate()
-        .filter(|(_, name)| **name != skip)
-        .map(|(c, name)| {
+        .filter(|c| c.name() != skip)
+        .map(|&c| {
             AnyChannel::new(
-                *name,
-                FlatSamples::F32(lut.cells.iter().map(|cell| cell.0[c]).collect()),
+                c.name(),
+                FlatSamples::F32(lut.cells.iter().map(|cell| cell.get(c)).collect()),
             )
         })
         .collect();
@@ -165,7 +164,7 @@ fn design_layout_without_the_scale_reads_with_scale_one() {
     let read = Lut::from_exr_bytes(&exr_without(point, "spec.scale"), "design.exr").unwrap();
     for (a, b) in point.cells.iter().zip(&read.cells) {
         assert_eq!(b.get(Channel::SpecScale), 1.0);
-        for c in 0..CHANNEL_COUNT {
+        for c in 0..Channel::COUNT {
             if c != Channel::SpecScale as usize {
                 assert_eq!(a.0[c].to_bits(), b.0[c].to_bits());
             }
@@ -208,7 +207,7 @@ fn the_specular_magnitude_is_filtered_as_the_product_of_scale_and_albedo() {
         nl_terms: Default::default(),
         size: 2,
         alpha_min: 1e-4,
-        cells: vec![LutCell([0.0; CHANNEL_COUNT]); 4],
+        cells: vec![LutCell([0.0; Channel::COUNT]); 4],
     };
     let (norms, scales) = ([0.2f32, 0.9, 0.4, 0.8], [1.0f32, 0.5, 0.8, 0.6]);
     for k in 0..4 {
@@ -246,4 +245,32 @@ fn the_specular_magnitude_is_filtered_as_the_product_of_scale_and_albedo() {
     );
     assert!((sample.get(Channel::SpecScale) - mean_scale).abs() <= 1e-15);
     assert!((sample.ltc_pair().spec_magnitude(0.0) - 0.5 * products).abs() <= 1e-15);
+}
+
+/// A cell's channels are one enum: its order is the cell's (and the file's `--dump` columns),
+/// each name is the file's and says the lobe the channel belongs to.
+#[test]
+fn each_channel_knows_its_place_name_and_lobe() {
+    use ltc_lab::ltc::lobe::Lobe;
+    let names: Vec<&str> = Channel::ALL.iter().map(|c| c.name()).collect();
+    assert_eq!(
+        names.join(" "),
+        "spec.m00 spec.m02 spec.m20 spec.m22 spec.norm spec.fresnel spec.err \
+         diff.m00 diff.m02 diff.m20 diff.m22 diff.norm diff.err spec.scale",
+        "docs/design.md §2.4's order"
+    );
+    for (k, c) in Channel::ALL.into_iter().enumerate() {
+        assert_eq!(c as usize, k, "{} is not at its place", c.name());
+        let prefix = match c.lobe() {
+            Lobe::Specular => "spec.",
+            Lobe::Diffuse => "diff.",
+        };
+        assert!(
+            c.name().starts_with(prefix),
+            "{} is of the {:?} lobe",
+            c.name(),
+            c.lobe()
+        );
+        assert_eq!(c.is_err(), c.name().ends_with(".err"));
+    }
 }

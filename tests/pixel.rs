@@ -20,8 +20,8 @@ fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
     let mut pixels = 0;
     for (name, clip) in [
         ("paper-100", Clipping::BOTH),
-        ("figure2-case1", Clipping::TRANSFORMED),
-        ("figure2-case2", Clipping::HORIZON),
+        ("figure2-case1", Clipping::CASE2),
+        ("figure2-case2", Clipping::CASE1),
     ] {
         let scene = preset(name);
         for (x, y) in [(8, 30), (32, 18), (50, 20), (60, 5)] {
@@ -85,17 +85,20 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
     let mut pixels = 0;
     for (name, clip) in [
         ("paper-100", Clipping::BOTH),
-        ("figure2-case1", Clipping::TRANSFORMED),
+        ("figure2-case1", Clipping::CASE2),
         ("figure2-normal", Clipping::BOTH),
     ] {
         let scene = preset(name);
         let n = Normalization::Corrected;
         let settings = |view| RenderSettings {
             view,
-            table_b: true,
+            b_reads_table_b: true,
             method_b: Method::Ltc,
-            clipping: clip,
-            normalization: n,
+            rules: LtcRules {
+                clipping: clip,
+                normalization: n,
+                ..LtcRules::default()
+            },
             ..RenderSettings::single(w, h, Method::Ltc)
         };
         let side = |view| render(&scene, Tables { a, b }, &settings(view));

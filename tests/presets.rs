@@ -47,7 +47,7 @@ fn figure2_presets_place_the_paper_light() {
 /// the brightest, rendered on the CPU without the case-2 rule.
 fn negative_ratio(s: &Scene, lut: &Lut, (w, h): (usize, usize)) -> (f64, usize) {
     let mut r = RenderSettings::single(w, h, Method::Ltc);
-    r.clipping = Clipping::HORIZON;
+    r.rules.clipping = Clipping::CASE1;
     let range = luminance_range(&render(s, lut, &r));
     (-range.min / range.max, range.negative)
 }

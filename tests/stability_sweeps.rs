@@ -13,7 +13,7 @@ use ltc_lab::gpu::plane::PlaneRenderer;
 use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata};
 use ltc_lab::ltc::lobe::Lobe;
 use ltc_lab::ltc::lut::ALPHA_MIN;
-use ltc_lab::ltc::lut::{CHANNEL_COUNT, Lut};
+use ltc_lab::ltc::lut::{Channel, Lut};
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::render::{Method, RenderSettings, View};
 use ltc_lab::scene::{Camera, Light, Material, Plane, Scene};
@@ -82,7 +82,7 @@ fn cpu_sweep_is_finite_non_negative_and_dark_below_the_horizon() {
 #[test]
 fn lut_sampler_at_and_beyond_the_edges() {
     let lut = Lut::embedded();
-    let (lo, hi): (Vec<f64>, Vec<f64>) = (0..CHANNEL_COUNT)
+    let (lo, hi): (Vec<f64>, Vec<f64>) = (0..Channel::COUNT)
         .map(|c| {
             lut.cells
                 .iter()
@@ -95,7 +95,7 @@ fn lut_sampler_at_and_beyond_the_edges() {
     for u in sweep(-1.0, 2.0, 61).chain([f64::NAN, f64::INFINITY, f64::NEG_INFINITY]) {
         for v in sweep(-1.0, 2.0, 61).chain([f64::NAN, 1e300]) {
             let s = lut.sample_uv(u, v);
-            for c in 0..CHANNEL_COUNT {
+            for c in 0..Channel::COUNT {
                 // Bilinear weights are convex: a sample never leaves its channel's range.
                 assert!(
                     s.0[c].is_finite() && s.0[c] >= lo[c] - 1e-12 && s.0[c] <= hi[c] + 1e-12,

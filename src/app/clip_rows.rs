@@ -12,12 +12,11 @@ use crate::app::clip_setup::{ClipScene, ClipSetup};
 use crate::app::display::rgb;
 use crate::colormap::{diverging, round_sig, short_number};
 use crate::cpu::{ClipCounts, clip_counts_map, render};
+use crate::ltc::Clipping;
 use crate::ltc::lut::Lut;
-use crate::ltc::remedy::HorizonRule;
-use crate::ltc::{Clipping, Normalization};
 use crate::metrics::{LuminanceRange, luminance, luminance_range};
 use crate::output::srgb_encode;
-use crate::render::{Frame, Method, RenderSettings};
+use crate::render::{Frame, LtcRules, Method, RenderSettings};
 
 /// Size of each picture: the CPU reference renders all of them (one light each, ~2 ms).
 pub const PICTURE: (usize, usize) = (192, 108);
@@ -40,9 +39,7 @@ const BACKGROUND: Color32 = Color32::from_rgb(24, 24, 28);
 /// What the rows are rendered with: the lab's rules, the panel's α and lights, a table.
 #[derive(Clone)]
 pub struct RowsInput {
-    pub clip: Clipping,
-    pub normalization: Normalization,
-    pub horizon: HorizonRule,
+    pub rules: LtcRules,
     pub setup: ClipSetup,
     pub lut: Lut,
 }
@@ -139,8 +136,8 @@ impl RowsWorker {
 /// The rule that case `row` is about, off: what the profile's last line shows.
 pub fn without_case_rule(row: ClipScene) -> Clipping {
     match row {
-        ClipScene::Case2 => Clipping::HORIZON,
-        _ => Clipping::TRANSFORMED,
+        ClipScene::Case2 => Clipping::CASE1,
+        _ => Clipping::CASE2,
     }
 }
 
@@ -149,12 +146,13 @@ fn render_row(input: &RowsInput, row: ClipScene) -> RowRenders {
     let (w, h) = PICTURE;
     let shot = |which: ClipScene, method: Method, clip: Clipping| {
         let mut r = RenderSettings::single(w, h, method);
-        r.clipping = clip;
-        r.normalization = input.normalization;
-        r.horizon = input.horizon;
+        r.rules = LtcRules {
+            clipping: clip,
+            ..input.rules
+        };
         render(&input.setup.scene(which, row), &input.lut, &r)
     };
-    let clip = input.clip;
+    let clip = input.rules.clipping;
     let pictures = [
         ("(a) LTC ref.", shot(ClipScene::Normal, Method::Ltc, clip)),
         ("(b) BRDF ref.", shot(ClipScene::Normal, Method::Brdf, clip)),

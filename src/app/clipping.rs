@@ -313,9 +313,7 @@ impl ClippingPanel {
             let tables = lab.tables();
             let lut = if setup.table_b { &tables.b } else { &tables.a };
             let input = RowsInput {
-                clip: lab.shared().clipping,
-                normalization: lab.shared().normalization,
-                horizon: lab.shared().horizon,
+                rules: lab.shared().ltc_rules(),
                 setup: setup.clone(),
                 lut: lut.lut.clone(),
             };

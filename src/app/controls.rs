@@ -273,11 +273,11 @@ fn horizon_remedy(ui: &mut egui::Ui, lab: &mut Lab) {
 /// clipping panel word them for their place).
 pub fn clipping_rules(ui: &mut egui::Ui, lab: &mut Lab, [case1, case2]: [(&str, &str); 2]) {
     lab.edit(Aspect::Rules, |s| {
-        ui.checkbox(&mut s.clipping.horizon, case1.0)
+        ui.checkbox(&mut s.clipping.case1, case1.0)
             .on_hover_text(case1.1)
     });
     lab.edit(Aspect::Rules, |s| {
-        ui.checkbox(&mut s.clipping.transformed, case2.0)
+        ui.checkbox(&mut s.clipping.case2, case2.0)
             .on_hover_text(case2.1)
     });
 }

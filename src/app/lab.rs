@@ -437,7 +437,7 @@ impl Lab {
     /// Table B back to the other shipped table.
     pub fn reset_table_b(&mut self) {
         self.edit(Aspect::Tables, |s| s.table_b_file = None);
-        self.tables.b = NamedTable::shipped(self.shared.table.other());
+        self.tables.b = NamedTable::shipped(self.shared.table.default_b());
         self.tables.b_chosen = false;
         self.touch(Aspect::Tables);
     }

@@ -146,10 +146,7 @@ impl LobePanel {
     fn drawn(&self, lab: &Lab) -> Drawn {
         let s = lab.shared();
         let theta = s.theta_o();
-        let pick = |pair: crate::ltc::LtcPair| match s.lobe {
-            Lobe::Specular => pair.spec,
-            Lobe::Diffuse => pair.diff,
-        };
+        let pick = |pair: crate::ltc::LtcPair| *pair.lobe(s.lobe);
         let fitted = match lab.refit_ltc() {
             Some((lobe, ltc)) if lobe == s.lobe => ltc,
             _ => pick(s.ltc_pair(&lab.tables().a.lut)),

@@ -18,7 +18,7 @@ const SEGMENTS: usize = 128;
 /// `f cos` of the lobe (F = 1, c = 1) and `n D` of the LTC toward `l`.
 pub fn values(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, l: DVec3) -> (f64, f64) {
     let exact = lobe.eval(v, l, alpha).value;
-    let approx = ltc.magnitude() * ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
+    let approx = ltc.magnitude() * ltc.ltc_eval(l, Clipping::CASE2, Normalization::Corrected);
     (exact, approx)
 }
 

@@ -12,7 +12,7 @@ use crate::app::lab::{Aspect, Lab, Panel, Stamp};
 use crate::app::refit::{Objective, Refit};
 use crate::colormap::{ColourScale, short_number};
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{CHANNEL_COUNT, CHANNEL_NAMES, Channel, Lut, cell_theta};
+use crate::ltc::lut::{Channel, Lut, cell_theta};
 use crate::ltc::mat3_rows;
 
 /// Heat maps per row (14 channels: three rows).
@@ -22,7 +22,7 @@ pub struct MatrixPanel {
     /// Table A's channels as heat maps, made again when the tables change.
     maps: Option<HeatMaps>,
     /// The channel whose colour bar is shown (the last one clicked).
-    pub focus: usize,
+    pub focus: Channel,
     /// The reading under the pointer at the last frame.
     hovered: Option<Reading>,
     /// A refit under way (its result goes to the lab).
@@ -33,7 +33,7 @@ impl Default for MatrixPanel {
     fn default() -> Self {
         Self {
             maps: None,
-            focus: Channel::err(Lobe::Specular) as usize,
+            focus: Channel::err(Lobe::Specular),
             hovered: None,
             refit: None,
         }
@@ -41,7 +41,7 @@ impl Default for MatrixPanel {
 }
 
 /// A channel's value at a cell: (channel, column, row, value).
-type Reading = (usize, usize, usize, f64);
+type Reading = (Channel, usize, usize, f64);
 
 /// Every channel of a table as an image, with its colour scale: viridis, diverging for
 /// signed channels, log for errors.
@@ -56,16 +56,16 @@ struct HeatMaps {
 impl HeatMaps {
     fn new(lut: &Lut, stamp: Stamp) -> Self {
         let n = lut.size;
-        let scales: Vec<ColourScale> = (0..CHANNEL_COUNT).map(|c| channel_scale(lut, c)).collect();
+        let scales: Vec<ColourScale> = Channel::ALL.map(|c| channel_scale(lut, c)).to_vec();
         let images = scales
             .iter()
-            .enumerate()
-            .map(|(c, scale)| {
+            .zip(Channel::ALL)
+            .map(|(scale, c)| {
                 // Row j = 0 (normal view) at the top, column i = 0 (α_min) at the left.
                 let pixels = lut
                     .cells
                     .iter()
-                    .map(|cell| rgb(scale.colour(f64::from(cell.0[c]))))
+                    .map(|cell| rgb(scale.colour(f64::from(cell.get(c)))))
                     .collect();
                 egui::ColorImage::new([n, n], pixels)
             })
@@ -74,7 +74,7 @@ impl HeatMaps {
             stamp,
             images,
             scales,
-            textures: vec![None; CHANNEL_COUNT],
+            textures: vec![None; Channel::COUNT],
         }
     }
 }
@@ -109,10 +109,7 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
     let cell = s.nearest_cell(lut);
     let sample = lut.sample(s.alpha(), theta.cos());
     let pair = sample.ltc_pair();
-    let ltc = match s.lobe {
-        Lobe::Specular => pair.spec,
-        Lobe::Diffuse => pair.diff,
-    };
+    let ltc = *pair.lobe(s.lobe);
     let err = sample.get(Channel::err(s.lobe));
     ui.label(format!(
         "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
@@ -227,7 +224,7 @@ impl MatrixPanel {
         let gaps = (MAPS_PER_ROW - 1) as f32 * ui.spacing().item_spacing.x;
         let side = ((visible - gaps - ui.spacing().scroll.bar_width - 4.0) / MAPS_PER_ROW as f32)
             .clamp(40.0, 160.0);
-        let channels: Vec<usize> = (0..CHANNEL_COUNT).collect();
+        let channels = Channel::ALL;
         let mut hovered = None;
         let mut clicked = chosen;
         // Rows of fixed length: a wrapping layout cannot know a column's size before it is
@@ -259,16 +256,16 @@ impl MatrixPanel {
         ));
         // The reading is last frame's hover.
         let scales = &self.maps.as_ref()?.scales;
-        let scale = &scales[self.focus];
+        let scale = &scales[self.focus as usize];
         colour_bar(ui, scale, 260.0);
         ui.horizontal(|ui| {
             let text = match self.hovered {
                 Some((c, i, j, x)) => format!(
                     "{} at cell ({i}, {j}): α = {}, θo = {:.1}°: {}",
-                    CHANNEL_NAMES[c],
+                    c.name(),
                     short_number(lut.alpha(i)),
                     cell_theta(j, n).to_degrees(),
-                    scales[c].format(x)
+                    scales[c as usize].format(x)
                 ),
                 None => "hover a map to read a cell; click one to choose it (and its channel's colour bar)".into(),
             };
@@ -276,16 +273,16 @@ impl MatrixPanel {
             // pointer between the hover and the click.
             ui.add(egui::Label::new(egui::RichText::new(text).small()).truncate());
         });
-        let err = worst_channel(self.focus);
+        let err = Channel::err(self.focus.lobe());
         let jump = ui
-            .small_button(format!("worst cell of {}", CHANNEL_NAMES[err]))
+            .small_button(format!("worst cell of {}", err.name()))
             .on_hover_text(
                 "Jump to the cell with the largest pointwise error of the shown channel's lobe",
             )
             .clicked();
         jump.then(|| {
             let k = (0..lut.cells.len())
-                .max_by(|&a, &b| lut.cells[a].0[err].total_cmp(&lut.cells[b].0[err]))
+                .max_by(|&a, &b| lut.cells[a].get(err).total_cmp(&lut.cells[b].get(err)))
                 .unwrap_or(0);
             (k % n, k / n)
         })
@@ -297,7 +294,7 @@ impl MatrixPanel {
         &mut self,
         ui: &mut egui::Ui,
         lut: &Lut,
-        (c, side): (usize, f32),
+        (c, side): (Channel, f32),
         (u, v): (f64, f64),
     ) -> (Option<Reading>, Option<(usize, usize)>) {
         let n = lut.size;
@@ -305,18 +302,18 @@ impl MatrixPanel {
         let Some(maps) = &mut self.maps else {
             return (None, None);
         };
-        let texture = maps.textures[c].get_or_insert_with(|| {
+        let texture = maps.textures[c as usize].get_or_insert_with(|| {
             ui.ctx().load_texture(
-                CHANNEL_NAMES[c],
-                maps.images[c].clone(),
+                c.name(),
+                maps.images[c as usize].clone(),
                 egui::TextureOptions::NEAREST,
             )
         });
         ui.vertical(|ui| {
             let title = if c == self.focus {
-                egui::RichText::new(CHANNEL_NAMES[c]).small().strong()
+                egui::RichText::new(c.name()).small().strong()
             } else {
-                egui::RichText::new(CHANNEL_NAMES[c]).small()
+                egui::RichText::new(c.name()).small()
             };
             ui.label(title);
             let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::click());
@@ -332,7 +329,7 @@ impl MatrixPanel {
             let stroke = egui::Stroke::new(1.0, Color32::WHITE);
             ui.painter().hline(rect.x_range(), p.y, stroke);
             ui.painter().vline(p.x, rect.y_range(), stroke);
-            let name = format!("{} heat map", CHANNEL_NAMES[c]);
+            let name = format!("{} heat map", c.name());
             response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
             let cell_at = |pos: Pos2| {
                 let cell = ((pos - rect.min) / side * n as f32).floor();
@@ -343,7 +340,7 @@ impl MatrixPanel {
             };
             if let Some(pos) = response.hover_pos() {
                 let (i, j) = cell_at(pos);
-                hovered = Some((c, i, j, f64::from(lut.cell(i, j).0[c])));
+                hovered = Some((c, i, j, f64::from(lut.cell(i, j).get(c))));
             }
             if response.clicked()
                 && let Some(pos) = response.interact_pointer_pos()
@@ -436,25 +433,15 @@ fn choose_cell(lab: &mut Lab, (i, j): (usize, usize)) {
     lab.edit(Aspect::LobeView, |s| s.theta_o_deg = theta);
 }
 
-/// The `err` channel of the lobe channel `c` belongs to (`spec.scale` to the specular one).
-fn worst_channel(c: usize) -> usize {
-    let diffuse = CHANNEL_NAMES[c].starts_with("diff");
-    Channel::err(if diffuse {
-        Lobe::Diffuse
-    } else {
-        Lobe::Specular
-    }) as usize
-}
-
 /// A channel's colour scale: errors over decades (0.1% … their largest), a channel with both
 /// signs diverging about zero, any other viridis from its least to its largest value.
-fn channel_scale(lut: &Lut, c: usize) -> ColourScale {
-    let values = lut.cells.iter().map(|cell| f64::from(cell.0[c]));
+fn channel_scale(lut: &Lut, c: Channel) -> ColourScale {
+    let values = lut.cells.iter().map(|cell| f64::from(cell.get(c)));
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
         (a.min(x), b.max(x))
     });
-    let name = CHANNEL_NAMES[c];
-    if name.ends_with(".err") {
+    let name = c.name();
+    if c.is_err() {
         // 0.1%: the fit's own noise floor (64² strata, docs/design.md §4); errors below read alike.
         ColourScale::log(1e-3, hi, format!("{name} (log)")).in_percent()
     } else if lo < 0.0 && hi > 0.0 {

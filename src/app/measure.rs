@@ -16,7 +16,7 @@ use crate::gpu::target::PendingRead;
 use crate::ltc::Normalization;
 use crate::ltc::lut::Lut;
 use crate::metrics::image_error;
-use crate::render::{Frame, Method, RenderSettings};
+use crate::render::{Frame, LtcRules, Method, RenderSettings};
 use crate::scene::Scene;
 
 /// Size of the measured frames: small enough for a CPU driver to finish in seconds.
@@ -193,7 +193,10 @@ impl MeasureJob {
                 label: label.into(),
                 scene: scene.clone(),
                 settings: RenderSettings {
-                    normalization,
+                    rules: LtcRules {
+                        normalization,
+                        ..LtcRules::default()
+                    },
                     ..RenderSettings::single(w, h, method)
                 },
                 curve: None,

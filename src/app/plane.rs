@@ -146,11 +146,9 @@ impl PlanePanel {
         let tables = s.compare == Compare::TableB;
         RenderSettings {
             method_b: if tables { s.method_ltc } else { s.method_brdf },
-            table_b: tables,
+            b_reads_table_b: tables,
             view: self.state.view,
-            clipping: s.clipping,
-            normalization: s.normalization,
-            horizon: s.horizon,
+            rules: s.ltc_rules(),
             divider: self.state.divider,
             cull: s.cull,
             ..RenderSettings::single(width, height, s.method_ltc)
@@ -457,7 +455,7 @@ fn image_area(ui: &mut egui::Ui, avail: Vec2, unpinned: Vec2) -> (Placed, egui::
 /// fault: say why.
 fn below_plane_note(ui: &mut egui::Ui, s: &Shared) {
     let lights = &s.scene.lights;
-    if s.clipping.horizon && !lights.is_empty() && lights.iter().all(|l| l.position[2] <= 0.0) {
+    if s.clipping.case1 && !lights.is_empty() && lights.iter().all(|l| l.position[2] <= 0.0) {
         ui.small("every light is at or below the plane: the case-1 rule (n·l ≤ 0 -> 0) keeps it black; turn the rule off, or see the Clipping panel, for the glow M^-1 would lift");
     }
 }

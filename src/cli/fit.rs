@@ -7,7 +7,7 @@ use ltc_lab::error::{Error, Result};
 use ltc_lab::files::{Claim, check_writable};
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::fit_point::{PointObjective, REFINEMENTS, fit_table_for};
-use ltc_lab::ltc::lut::{CHANNEL_NAMES, Channel, Lut, Table};
+use ltc_lab::ltc::lut::{Channel, Lut, Table};
 
 use super::one_of;
 
@@ -100,7 +100,7 @@ pub fn run(a: &Args) -> Result<()> {
         let (mean, max, i, j) = channel_stats(&lut, c);
         eprintln!(
             "  {:<9} mean {mean:.4}  max {max:.4} at i={i} (α={:.4}), j={j} (θo={:.1}°)",
-            CHANNEL_NAMES[c as usize],
+            c.name(),
             lut.alpha(i),
             lut.theta_o(j).to_degrees()
         );

@@ -7,7 +7,7 @@ use ltc_lab::error::{Error, Result};
 use ltc_lab::files::check_distinct;
 use ltc_lab::ltc::formats::dds::Precision;
 use ltc_lab::ltc::formats::{Export, Header, export};
-use ltc_lab::ltc::lut::CHANNEL_NAMES;
+use ltc_lab::ltc::lut::Channel;
 
 use super::{LutArgs, one_of, print};
 
@@ -77,10 +77,10 @@ pub fn run(a: &Args) -> Result<()> {
             lut.size,
             lut.size,
             lut.alpha_min,
-            CHANNEL_NAMES.join(" ")
+            channel_names().join(" ")
         ));
     }
-    let mut out = format!("i,j,alpha,theta_o,{}\n", CHANNEL_NAMES.join(","));
+    let mut out = format!("i,j,alpha,theta_o,{}\n", channel_names().join(","));
     for j in 0..lut.size {
         for i in 0..lut.size {
             let values: Vec<String> = lut.cell(i, j).0.iter().map(f32::to_string).collect();
@@ -110,4 +110,9 @@ fn check_export_beside_atlas(a: &Args) -> Result<()> {
     outputs.extend(files.iter().map(|f| ("--atlas", f.as_path())));
     outputs.push(("--out", out.as_path()));
     check_distinct(&outputs)
+}
+
+/// The channels' names in a cell's order.
+fn channel_names() -> Vec<&'static str> {
+    Channel::ALL.map(Channel::name).to_vec()
 }

@@ -112,11 +112,11 @@ pub fn run(a: &Args) -> Result<()> {
         ));
     }
     let mut settings = a.method.settings(a.size);
-    settings.clipping = a.clip;
-    settings.normalization = a.normalization;
+    settings.rules.clipping = a.clip;
+    settings.rules.normalization = a.normalization;
     settings.divider = a.divider;
     settings.cull = a.cull;
-    settings.horizon = a.horizon.rule();
+    settings.rules.horizon = a.horizon.rule();
     a.lut.check_horizon(a.horizon)?;
     let out = a
         .out
@@ -149,7 +149,7 @@ pub fn run(a: &Args) -> Result<()> {
                 ));
             }
             settings.method_b = settings.method_a;
-            settings.table_b = true;
+            settings.b_reads_table_b = true;
             NamedTables {
                 a: named_a,
                 b,
@@ -167,7 +167,7 @@ pub fn run(a: &Args) -> Result<()> {
         render_gpu(&scene, &tables, &settings)?
     };
     let seconds = start.elapsed().as_secs_f64();
-    if let Some((k, p)) = frame.first_invalid(settings.clipping) {
+    if let Some((k, p)) = frame.first_invalid(settings.rules.clipping) {
         return Err(Error::machine(
             "render",
             format!(
@@ -236,7 +236,7 @@ fn render_gpu(scene: &Scene, tables: &NamedTables, s: &RenderSettings) -> Result
     })?;
     ltc_lab::gpu::target::check_size(&ctx, s.width, s.height).map_err(super::flag_of)?;
     let mut renderer = PlaneRenderer::new(&ctx, &tables.a.lut, ShaderChecks::Checked)?;
-    if s.table_b {
+    if s.b_reads_table_b {
         renderer.set_tables(&ctx, &tables.a.lut, Some(&tables.b.lut))?;
     }
     let (frame, ms) = renderer.render(&ctx, scene, s)?;

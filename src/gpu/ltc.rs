@@ -55,8 +55,8 @@ pub fn pack_lut(lut: &Lut, with_nl: bool) -> Vec<[f32; 4]> {
                     c.get(DiffM22),
                 ],
                 [
-                    c.shaded(SpecNorm as usize) as f32,
-                    c.shaded(SpecFresnel as usize) as f32,
+                    c.shaded(SpecNorm) as f32,
+                    c.shaded(SpecFresnel) as f32,
                     c.get(DiffNorm),
                     c.get(SpecScale),
                 ],

@@ -52,10 +52,10 @@ fn pipeline_key(s: &RenderSettings) -> PipelineKey {
         View::A => (s.method_a, s.method_b, VIEW_SINGLE, false),
         // B alone, as A: its table must then be A's slot's, so the renderer swaps them.
         View::B => (s.method_b, s.method_b, VIEW_SINGLE, false),
-        View::Split => (s.method_a, s.method_b, VIEW_SPLIT, s.table_b),
-        View::Diff => (s.method_a, s.method_b, VIEW_DIFF, s.table_b),
+        View::Split => (s.method_a, s.method_b, VIEW_SPLIT, s.b_reads_table_b),
+        View::Diff => (s.method_a, s.method_b, VIEW_DIFF, s.b_reads_table_b),
     };
-    (a, b, view, s.lut_filter, table_b, s.horizon)
+    (a, b, view, s.rules.filter, table_b, s.rules.horizon)
 }
 
 /// Whether wgpu wraps the shader in its runtime bounds checks.
@@ -228,11 +228,11 @@ impl PlaneRenderer {
                 format!("{} has no f16 shaders (SHADER_F16)", ctx.info.name),
             ));
         }
-        if settings.table_b && self.tables.b.is_none() {
+        if settings.b_reads_table_b && self.tables.b.is_none() {
             return Err(Error::input("table B", "no second table was given"));
         }
         let f16 = settings.methods().into_iter().find(|m| m.needs_f16());
-        if let Some(m) = f16.filter(|_| settings.horizon != HorizonRule::Eq30) {
+        if let Some(m) = f16.filter(|_| settings.rules.horizon != HorizonRule::Eq30) {
             return Err(Error::input(
                 "--horizon",
                 format!(
@@ -253,7 +253,7 @@ impl PlaneRenderer {
         settings: &RenderSettings,
     ) -> Result<()> {
         self.check(ctx, scene, settings)?;
-        if settings.horizon == HorizonRule::NlFit && !self.tables.with_nl {
+        if settings.rules.horizon == HorizonRule::NlFit && !self.tables.with_nl {
             let (a, b) = &self.luts;
             self.tables = LutBuffer::new(ctx, a, b.as_ref(), true)?;
             self.bind_groups = None;
@@ -281,7 +281,7 @@ impl PlaneRenderer {
         let (size_b, base_b) = self.tables.b.unwrap_or((self.tables.size_a, 0));
         self.params.lut_size_b = size_b as u32;
         self.params.lut_base_b = base_b;
-        if settings.view == View::B && settings.table_b {
+        if settings.view == View::B && settings.b_reads_table_b {
             // B alone is shaded as the single method A: with B's table in A's slot.
             self.params.lut_size = size_b as u32;
             self.params.lut_base = base_b;

@@ -103,9 +103,9 @@ pub fn params(settings: &RenderSettings, scene: &Scene) -> Params {
         width: settings.width as u32,
         height: settings.height as u32,
         light_count: scene.lights.len() as u32,
-        clip: u32::from(settings.clipping.horizon)
-            | (u32::from(settings.clipping.transformed) << 1),
-        normalization: match settings.normalization {
+        clip: u32::from(settings.rules.clipping.case1)
+            | (u32::from(settings.rules.clipping.case2) << 1),
+        normalization: match settings.rules.normalization {
             Normalization::Corrected => 0,
             Normalization::PaperLiteral => 1,
         },

@@ -131,7 +131,7 @@ fn mis_sum(
         }
         // The fitted distribution covers the whole sphere: only the transformed cosine's own
         // clamp applies, never the horizon rule (light below the horizon is fit error).
-        let d = ltc.ltc_eval(l, Clipping::TRANSFORMED, Normalization::Corrected);
+        let d = ltc.ltc_eval(l, Clipping::CASE2, Normalization::Corrected);
         let pdf = d + exact.pdf;
         if pdf > 0.0 {
             g(exact.value - ltc.magnitude() * d) / pdf

@@ -72,7 +72,7 @@ impl CellQuadrature {
         let magnitude = ltc.magnitude();
         let mut overlap = 0.0;
         for node in &self.nodes {
-            let d = ltc.ltc_eval(node.l, Clipping::TRANSFORMED, Normalization::Corrected);
+            let d = ltc.ltc_eval(node.l, Clipping::CASE2, Normalization::Corrected);
             overlap += (magnitude * d / node.pdf).min(node.weight);
         }
         overlap /= self.count as f64;

@@ -21,43 +21,44 @@ use glam::{DMat3, DVec3};
 use crate::brdf::Lobes;
 
 /// Which of the paper's two light-clipping rules (eq. 30) are applied. The paper applies both.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+/// The command line names them by what they test: `horizon` (case 1) and `transformed` (case 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct Clipping {
     /// Case 1: a light below the surface (`n·l ≤ 0`) contributes nothing. Off, `M⁻¹` can lift
     /// it above the horizon and it glows (the paper's Figure 2c).
-    pub horizon: bool,
+    pub case1: bool,
     /// Case 2: a light that `M⁻¹` pushes below the horizon (`(M⁻¹l).z ≤ 0`) contributes
     /// nothing. Off, it contributes negative light.
-    pub transformed: bool,
+    pub case2: bool,
 }
 
 impl Clipping {
     /// The paper's eq. 30: both rules.
     pub const BOTH: Self = Self {
-        horizon: true,
-        transformed: true,
+        case1: true,
+        case2: true,
     };
-    pub const HORIZON: Self = Self {
-        horizon: true,
-        transformed: false,
+    /// Case 1's rule alone (`--clip horizon`).
+    pub const CASE1: Self = Self {
+        case1: true,
+        case2: false,
     };
-    pub const TRANSFORMED: Self = Self {
-        horizon: false,
-        transformed: true,
+    /// Case 2's rule alone (`--clip transformed`).
+    pub const CASE2: Self = Self {
+        case1: false,
+        case2: true,
     };
     pub const NONE: Self = Self {
-        horizon: false,
-        transformed: false,
+        case1: false,
+        case2: false,
     };
-}
 
-impl Clipping {
     /// Every combination, named as on the command line.
-    pub const ALL: [Self; 4] = [Self::BOTH, Self::HORIZON, Self::TRANSFORMED, Self::NONE];
+    pub const ALL: [Self; 4] = [Self::BOTH, Self::CASE1, Self::CASE2, Self::NONE];
 
     /// `both`, `horizon` (case 1's rule only), `transformed` (case 2's only) or `none`.
     pub fn name(self) -> &'static str {
-        match (self.horizon, self.transformed) {
+        match (self.case1, self.case2) {
             (true, true) => "both",
             (true, false) => "horizon",
             (false, true) => "transformed",
@@ -73,7 +74,9 @@ impl Default for Clipping {
 }
 
 /// How the LTC sum is normalized.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
 pub enum Normalization {
     /// docs/design.md §1: `D` carries its 1/π, and each lobe its magnitude (`F0 n_s + (1−F0) f_s` for
     /// specular, `n_d` for diffuse).
@@ -158,11 +161,11 @@ impl Ltc {
     /// `D(l)` for a unit `l` in the shading frame, with the given clipping rules;
     /// `PaperLiteral` drops the 1/π (eq. 25).
     pub fn ltc_eval(&self, l: DVec3, clip: Clipping, normalization: Normalization) -> f64 {
-        if clip.horizon && l.z <= 0.0 {
+        if clip.case1 && l.z <= 0.0 {
             return 0.0;
         }
         let w = self.cos_from_brdf * l;
-        if clip.transformed && w.z <= 0.0 {
+        if clip.case2 && w.z <= 0.0 {
             return 0.0;
         }
         let len2 = w.length_squared();
@@ -203,6 +206,14 @@ pub struct LtcPair {
 }
 
 impl LtcPair {
+    /// The LTC of `lobe`.
+    pub fn lobe(&self, lobe: lobe::Lobe) -> &Ltc {
+        match lobe {
+            lobe::Lobe::Specular => &self.spec,
+            lobe::Lobe::Diffuse => &self.diff,
+        }
+    }
+
     /// The specular magnitude for a material with `F0` (docs/design.md §1): `F0 n_s + (1 − F0) f_s`,
     /// times the fitted scale.
     pub fn spec_magnitude(&self, f0: f64) -> f64 {

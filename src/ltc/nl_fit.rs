@@ -115,10 +115,7 @@ fn lobe_terms(
     (view, alpha): (DVec3, f64),
     settings: &NlFitSettings,
 ) -> [f64; 2] {
-    let ltc = match lobe {
-        Lobe::Specular => pair.spec,
-        Lobe::Diffuse => pair.diff,
-    };
+    let ltc = *pair.lobe(lobe);
     // (t, L, f, 1 / Σ_band f) per node.
     let mut nodes: Vec<[f64; 4]> = Vec::new();
     for [lo, hi] in FIT_BANDS {

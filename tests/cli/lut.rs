@@ -14,7 +14,7 @@ fn lut_dump_lists_every_cell() {
     assert!(header.starts_with("i,j,alpha,theta_o,spec.m00,spec.m02,spec.m20,spec.m22,spec.norm"));
     assert_eq!(
         header.split(',').count(),
-        4 + ltc_lab::ltc::lut::CHANNEL_COUNT
+        4 + ltc_lab::ltc::lut::Channel::COUNT
     );
     assert_eq!(lines.clone().count(), 64 * 64);
     let last: Vec<f64> = lines

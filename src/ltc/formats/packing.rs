@@ -83,7 +83,7 @@ pub fn unpack(p: &Packed, alpha_min: f64, diffuse: &Lut) -> Lut {
         nl_terms: Default::default(),
         size: n,
         alpha_min,
-        cells: vec![LutCell([0.0; crate::ltc::lut::CHANNEL_COUNT]); n * n],
+        cells: vec![LutCell([0.0; crate::ltc::lut::Channel::COUNT]); n * n],
     };
     let cells: Vec<LutCell> = (0..n * n)
         .into_par_iter()
