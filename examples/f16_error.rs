@@ -7,7 +7,8 @@
 
 use ltc_lab::app::Lab;
 use ltc_lab::gpu::GpuContext;
-use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
+use ltc_lab::gpu::plane::ShaderChecks;
+use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::relative_difference;
 use ltc_lab::render::{Method, RenderSettings};

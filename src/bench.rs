@@ -6,7 +6,9 @@ use glam::DVec3;
 
 use crate::error::Result;
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
+use crate::gpu::plane::ShaderChecks;
+use crate::gpu::renderer::PlaneRenderer;
+use crate::gpu::timing::FrameTimes;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::Horizon;
 use crate::render::{LtcRules, Method, RenderSettings};
@@ -223,6 +225,7 @@ pub fn run(
     let (width, height) = s.size;
     let mut renderer = PlaneRenderer::new(ctx, lut, s.checks)?;
     let mut rows = Vec::new();
+    let mut kept = None;
     for &lights in &s.lights {
         let scene = bench_scene(lights, s.range);
         let fraction = in_range_fraction(&scene, width, height);
@@ -238,11 +241,12 @@ pub fn run(
                     },
                     ..RenderSettings::single(width, height, method)
                 };
-                renderer.begin(ctx, &scene, &settings)?;
+                let mut render = renderer.begin(ctx, &scene, &settings, kept.take())?;
                 for _ in 0..WARM_UP_FRAMES {
-                    renderer.run(ctx);
+                    render.run(ctx);
                 }
-                let times: Vec<FrameTimes> = (0..s.frames).map(|_| renderer.run(ctx)).collect();
+                let times: Vec<FrameTimes> = (0..s.frames).map(|_| render.run(ctx)).collect();
+                kept = Some(render.into_kept());
                 let mut ms: Vec<f64> = times.iter().map(FrameTimes::total_ms).collect();
                 let mut bins: Vec<f64> = times.iter().filter_map(|t| t.bin_ms).collect();
                 let row = BenchRow {

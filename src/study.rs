@@ -4,7 +4,8 @@
 
 use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
+use crate::gpu::plane::ShaderChecks;
+use crate::gpu::renderer::PlaneRenderer;
 use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::{Lut, Table};
 use crate::ltc::remedy::Horizon;
@@ -306,13 +307,13 @@ pub fn run(
                         cull,
                         ..RenderSettings::single(width, height, v.method)
                     };
-                    renderer.begin(ctx, &scene, &settings)?;
-                    renderer.run(ctx);
+                    let mut render = renderer.begin(ctx, &scene, &settings, None)?;
+                    render.run(ctx);
                     let mut ms: Vec<f64> = (0..s.frames.max(1))
-                        .map(|_| renderer.run(ctx).total_ms())
+                        .map(|_| render.run(ctx).total_ms())
                         .collect();
                     ms.sort_by(f64::total_cmp);
-                    let image = renderer.read(ctx);
+                    let image = render.read(ctx);
                     let reference = exact.get_or_insert_with(|| image.clone());
                     let e = image_error(&image, reference);
                     let row = StudyRow {

@@ -9,7 +9,8 @@ mod gpu_common;
 use glam::DVec3;
 use gpu_common::{assert_close, bits, gpu};
 use ltc_lab::cpu::render;
-use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
+use ltc_lab::gpu::plane::ShaderChecks;
+use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::metrics::{luminance, relative_floor};
@@ -95,8 +96,11 @@ fn culled_images_equal_unculled_ones_exactly() {
                 s.cull = false;
                 let unculled = frame(&mut r, &scene, &s);
                 s.cull = true;
-                let culled = frame(&mut r, &scene, &s);
-                let (kept, all) = r.tile_entries(&g.ctx).expect("a culled render");
+                let mut render = r.begin(&g.ctx, &scene, &s, None).unwrap();
+                render.poison(&g.ctx);
+                render.run(&g.ctx);
+                let culled = render.read(&g.ctx);
+                let (kept, all) = render.tile_entries(&g.ctx).expect("a culled render");
                 assert!(
                     kept > 0 && kept < all,
                     "range {range}: {kept} of {all} kept"
@@ -136,13 +140,13 @@ fn a_render_summed_in_chunks_is_the_one_shot_render() {
                 ..RenderSettings::single(W, H, method)
             };
             let whole = frame(&mut r, &scene, &s);
-            r.begin(&g.ctx, &scene, &s).unwrap();
+            let mut render = r.begin(&g.ctx, &scene, &s, None).unwrap();
             // Chunks of uneven size, one not a multiple of the 256-light load.
             for range in [0..1, 1..300, 300..301, 301..n] {
-                r.step(&g.ctx, range);
+                render.step(&g.ctx, range);
                 let _ = g.ctx.device.poll(wgpu::PollType::wait_indefinitely());
             }
-            let chunked = r.read(&g.ctx);
+            let chunked = render.read(&g.ctx);
             assert!(
                 bits(&chunked) == bits(&whole),
                 "{} {view:?} cull {cull}: the chunked image differs",
@@ -150,10 +154,12 @@ fn a_render_summed_in_chunks_is_the_one_shot_render() {
             );
             // The first entries alone give another image (the chunks are really summed;
             // a culled tile's list may be shorter than half the lights).
-            r.begin(&g.ctx, &scene, &s).unwrap();
-            r.step(&g.ctx, 0..3);
+            let mut render = r
+                .begin(&g.ctx, &scene, &s, Some(render.into_kept()))
+                .unwrap();
+            render.step(&g.ctx, 0..3);
             assert!(
-                bits(&r.read(&g.ctx)) != bits(&whole),
+                bits(&render.read(&g.ctx)) != bits(&whole),
                 "{} {view:?} cull {cull}: three entries give the whole image",
                 method.name()
             );
@@ -308,7 +314,7 @@ fn limits_name_the_value_not_a_flag() {
     use ltc_lab::gpu::limits::Limited;
     let Some(g) = gpu_common::gpu() else { return };
     let side = g.ctx.limits.max_texture_dimension_2d as usize + 1;
-    let too_many = ltc_lab::gpu::plane::PlaneRenderer::max_lights(&g.ctx) + 1;
+    let too_many = ltc_lab::gpu::renderer::PlaneRenderer::max_lights(&g.ctx) + 1;
     for (lights, size, value) in [
         (1, (side, 8), Limited::ImageSize),
         (too_many, (8, 8), Limited::LightCount),
@@ -331,12 +337,17 @@ fn a_read_in_steps_is_the_waiting_read() {
     let Some(g) = gpu() else { return };
     let mut r = PlaneRenderer::new(&g.ctx, Lut::embedded(), ShaderChecks::Checked).unwrap();
     let scene = preset("paper-100");
-    let waited = frame(
-        &mut r,
-        &scene,
-        &RenderSettings::single(W, H, Method::LtcFast),
-    );
-    let pending = r.start_read(&g.ctx);
+    let mut render = r
+        .begin(
+            &g.ctx,
+            &scene,
+            &RenderSettings::single(W, H, Method::LtcFast),
+            None,
+        )
+        .unwrap();
+    render.run(&g.ctx);
+    let waited = render.read(&g.ctx);
+    let pending = render.start_read(&g.ctx);
     let mut texels = pending.try_take(&g.ctx);
     // Each poll without waiting lets the device finish a little more; a bound keeps a broken
     // mapping from hanging the test (lavapipe maps this 10 kB copy within a few polls).
@@ -347,7 +358,7 @@ fn a_read_in_steps_is_the_waiting_read() {
         std::thread::sleep(std::time::Duration::from_millis(1));
         texels = pending.try_take(&g.ctx);
     }
-    let stepped = r.frame_of(&texels.expect("the read-back never landed"));
+    let stepped = render.frame_of(&texels.expect("the read-back never landed"));
     assert_eq!(bits(&stepped), bits(&waited));
     assert_eq!(stepped.on_plane, waited.on_plane);
 }

@@ -15,7 +15,8 @@ use ltc_lab::app::lab::Shared;
 use ltc_lab::app::plane::PlaneState;
 use ltc_lab::app::state::WindowState;
 use ltc_lab::app::{Aspect, Compare, LabApp, LabState, PanelId};
-use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
+use ltc_lab::gpu::plane::ShaderChecks;
+use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::render::{Frame, View};
 
 /// A harness showing the lab at `size`, drawing with the same wgpu device the lab renders on

@@ -1,6 +1,7 @@
 //! The WGSL, without an adapter: naga parses and validates every file (in the order they are
-//! composed), the Rust Pod types have the WGSL structs' layout, and the functions mirrored
-//! between Rust and WGSL carry the same names.
+//! composed), the Rust Pod types have the WGSL structs' layout, the functions mirrored
+//! between Rust and WGSL carry the same names, and the constants and bindings Rust writes
+//! for the shaders are the WGSL's.
 
 use ltc_lab::gpu::scene::{GpuLight, Params};
 use ltc_lab::gpu::{bin_module_source, brdf, ltc, plane_module_source};
@@ -133,7 +134,7 @@ fn mirrored_functions_have_the_same_names() {
     };
     #[allow(unused_imports)]
     use ltc_lab::ltc::cos_from_brdf_from_entries;
-    // Issue 22's horizon rules and the sampler's taps.
+    // The horizon rules and the sampler's taps.
     #[allow(unused_imports)]
     use ltc_lab::ltc::{
         lut::bilinear_taps,
@@ -166,5 +167,118 @@ fn mirrored_functions_have_the_same_names() {
         "in_exact_band",
     ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
+
+/// The value of the WGSL constant `name` (a `u32`).
+fn constant(module: &naga::Module, name: &str) -> u32 {
+    let (_, c) = module
+        .constants
+        .iter()
+        .find(|(_, c)| c.name.as_deref() == Some(name))
+        .unwrap_or_else(|| panic!("no constant {name} in the WGSL"));
+    match module.global_expressions[c.init] {
+        naga::Expression::Literal(naga::Literal::U32(v)) => v,
+        ref other => panic!("{name} is {other:?}, not a u32 literal"),
+    }
+}
+
+/// The pipelines' override constants name the methods, views and horizon rules by the
+/// values plane.wgsl and ltc.wgsl give them: a constant renumbered on one side only would
+/// shade every pixel with another method.
+#[test]
+fn the_constants_rust_passes_are_the_wgsl_ones() {
+    use ltc_lab::gpu::ltc::horizon_constant;
+    use ltc_lab::gpu::plane::{ViewConstant, method_constant};
+    use ltc_lab::ltc::remedy::HorizonRule;
+    use ltc_lab::render::Method;
+    let module = validate("plane", &plane_module_source(true));
+    let mut checked = Vec::new();
+    let methods = Method::ALL.map(method_constant);
+    let views = ViewConstant::ALL.map(ViewConstant::constant);
+    let rules = [
+        HorizonRule::Eq30,
+        HorizonRule::NlFit,
+        HorizonRule::ExactBand,
+    ]
+    .map(horizon_constant);
+    for (value, name) in methods.into_iter().chain(views).chain(rules) {
+        assert_eq!(constant(&module, name), value, "{name}");
+        checked.push(name);
+    }
+    // Every such constant of the WGSL has its Rust twin.
+    for (_, c) in module.constants.iter() {
+        let name = c.name.as_deref().unwrap_or_default();
+        let family = ["METHOD_", "VIEW_", "HORIZON_"];
+        if family.iter().any(|f| name.starts_with(f)) {
+            assert!(checked.contains(&name), "{name} has no Rust twin");
+        }
+    }
+}
+
+/// What a WGSL global bound in group 0 is, in `binding::Kind`'s terms.
+fn kind_of(module: &naga::Module, var: &naga::GlobalVariable) -> ltc_lab::gpu::binding::Kind {
+    use ltc_lab::gpu::binding::Kind;
+    match (var.space, &module.types[var.ty].inner) {
+        (naga::AddressSpace::Uniform, _) => Kind::Uniform,
+        (naga::AddressSpace::Storage { access }, _)
+            if access.contains(naga::StorageAccess::STORE) =>
+        {
+            Kind::ReadWrite
+        }
+        (naga::AddressSpace::Storage { .. }, _) => Kind::Read,
+        (_, naga::TypeInner::Image { class, .. }) => match class {
+            naga::ImageClass::Storage { format, .. } => Kind::WrittenTexture(match format {
+                naga::StorageFormat::Rgba32Float => wgpu::TextureFormat::Rgba32Float,
+                naga::StorageFormat::Rgba8Unorm => wgpu::TextureFormat::Rgba8Unorm,
+                other => panic!("a storage texture of {other:?}"),
+            }),
+            _ => Kind::Texture,
+        },
+        other => panic!("{:?} is bound as {other:?}", var.name),
+    }
+}
+
+/// Each shader module's bindings as Rust lists them (and makes its layout and bind groups
+/// from) are exactly the WGSL's: the same numbers, variables and kinds, none missing.
+#[test]
+fn the_bindings_rust_lists_are_the_wgsl_ones() {
+    use ltc_lab::gpu::binding::Binding;
+    use ltc_lab::gpu::{bin, display, plane};
+    let modules: [(&str, String, &[Binding]); 4] = [
+        ("plane", plane_module_source(false), &plane::BINDINGS),
+        (
+            "plane with f16",
+            plane_module_source(true),
+            &plane::BINDINGS,
+        ),
+        ("bin", bin_module_source(), &bin::BINDINGS),
+        ("display", display::SOURCE.to_string(), &display::BINDINGS),
+    ];
+    for (name, src, listed) in modules {
+        let module = validate(name, &src);
+        let mut wgsl: Vec<Binding> = module
+            .global_variables
+            .iter()
+            .filter_map(|(_, v)| {
+                let b = v.binding.as_ref()?;
+                assert_eq!(b.group, 0, "{name}: {:?} is not in group 0", v.name);
+                let var = v.name.clone().unwrap_or_default();
+                let listed_name = listed
+                    .iter()
+                    .find(|l| l.name == var)
+                    .unwrap_or_else(|| panic!("{name}: Rust does not list {var}"))
+                    .name;
+                Some(Binding {
+                    number: b.binding,
+                    name: listed_name,
+                    kind: kind_of(&module, v),
+                })
+            })
+            .collect();
+        wgsl.sort_by_key(|b| b.number);
+        let mut rust = listed.to_vec();
+        rust.sort_by_key(|b| b.number);
+        assert_eq!(rust, wgsl, "{name}");
     }
 }

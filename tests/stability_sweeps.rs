@@ -9,7 +9,7 @@ mod gpu_common;
 
 use glam::DVec3;
 use ltc_lab::brdf::{irradiance_scale, point_light_exact};
-use ltc_lab::gpu::plane::PlaneRenderer;
+use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata};
 use ltc_lab::ltc::lobe::Lobe;
 use ltc_lab::ltc::lut::ALPHA_MIN;

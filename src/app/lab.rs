@@ -343,7 +343,7 @@ impl Lab {
     /// The most lights the plane shades at once: the GPU's limit, or the scene's on the CPU.
     pub fn max_lights(&self) -> usize {
         self.gpu.as_ref().map_or(crate::scene::MAX_LIGHTS, |g| {
-            crate::gpu::plane::PlaneRenderer::max_lights(g)
+            crate::gpu::renderer::PlaneRenderer::max_lights(g)
         })
     }
 

@@ -11,7 +11,9 @@ use serde::{Deserialize, Serialize};
 use crate::app::pacer::Pacer;
 use crate::bench::{DEFAULT_RANGE, PAPER_LIGHTS, bench_scene};
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
+use crate::gpu::plane::ShaderChecks;
+use crate::gpu::plane_render::{Kept, PlaneRender};
+use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::target::PendingRead;
 use crate::ltc::Normalization;
 use crate::ltc::lut::Lut;
@@ -152,16 +154,32 @@ struct Task {
     curve: Option<(Method, usize)>,
 }
 
+/// The render being summed: its entries summed so far, and the chunk in flight (its entries
+/// and when it was submitted).
+struct Current {
+    render: PlaneRender,
+    done: usize,
+    in_flight: Option<(usize, web_time::Instant)>,
+}
+
+/// An error point's image on its way back, with the repeats' median and range.
+struct Reading {
+    render: PlaneRender,
+    pending: PendingRead,
+    median: f64,
+    range: [f64; 2],
+}
+
 /// A measurement under way.
 pub struct MeasureJob {
     ctx: GpuContext,
     renderer: PlaneRenderer,
     tasks: Vec<Task>,
     next: usize,
-    /// Entries of the current render summed so far (`None`: not begun).
-    done: Option<usize>,
-    /// The chunk in flight: its entries and when it was submitted.
-    in_flight: Option<(usize, web_time::Instant)>,
+    /// `None`: the next repeat not begun.
+    current: Option<Current>,
+    /// The buffers the last render left, for the next.
+    kept: Option<Kept>,
     /// GPU ms of the current render so far, and of each finished repeat.
     render_ms: f64,
     repeat_ms: Vec<f64>,
@@ -169,8 +187,7 @@ pub struct MeasureJob {
     /// Sizes the chunks from their GPU times.
     pacer: Pacer,
     exact: Option<Frame>,
-    /// An error point's image on its way back, with the repeats' median and range.
-    reading: Option<(PendingRead, f64, [f64; 2])>,
+    reading: Option<Reading>,
     result: Measurement,
 }
 
@@ -226,8 +243,8 @@ impl MeasureJob {
             renderer,
             tasks,
             next: 0,
-            done: None,
-            in_flight: None,
+            current: None,
+            kept: None,
             render_ms: 0.0,
             repeat_ms: Vec::new(),
             idle: Arc::new(AtomicBool::new(true)),
@@ -255,64 +272,82 @@ impl MeasureJob {
     /// image is read back over frames too (the browser cannot wait).
     pub fn step(&mut self, budget_ms: f64) -> Option<Measurement> {
         let _ = self.ctx.device.poll(wgpu::PollType::Poll);
-        if let Some((pending, median, range)) = &self.reading {
-            let texels = pending.try_take(&self.ctx)?;
-            let (median, range) = (*median, *range);
-            self.reading = None;
-            let frame = self.renderer.frame_of(&texels);
-            return self.error_point(&frame, median, range);
+        if let Some(r) = self.reading.take() {
+            let Some(texels) = r.pending.try_take(&self.ctx) else {
+                self.reading = Some(r);
+                return None;
+            };
+            let frame = r.render.frame_of(&texels);
+            self.kept = Some(r.render.into_kept());
+            return self.error_point(&frame, r.median, r.range);
         }
         if !self.idle.load(Ordering::Acquire) {
             return None;
         }
-        if let Some((entries, submitted)) = self.in_flight {
-            let ms = match self.renderer.try_times() {
+        let task = self.tasks.get(self.next)?;
+        let mut current = match self.current.take() {
+            Some(c) => c,
+            None => {
+                let kept = self.kept.take();
+                match self
+                    .renderer
+                    .begin(&self.ctx, &task.scene, &task.settings, kept)
+                {
+                    Ok(render) => {
+                        self.render_ms = 0.0;
+                        Current {
+                            render,
+                            done: 0,
+                            in_flight: None,
+                        }
+                    }
+                    Err(e) => {
+                        // Checked in `new`: a failure now is the device's.
+                        self.result.device = format!("measurement failed: {e}");
+                        self.next = self.tasks.len();
+                        return Some(std::mem::take(&mut self.result));
+                    }
+                }
+            }
+        };
+        if let Some((entries, submitted)) = current.in_flight {
+            let ms = match current.render.try_times() {
                 Some(t) => t.total_ms(),
                 // The timestamps follow the work; wait a frame for them.
-                None if self.renderer.times_pending() => return None,
+                None if current.render.times_pending() => {
+                    self.current = Some(current);
+                    return None;
+                }
                 // Without timestamp queries (or none coming): submit to done, at frame
                 // granularity.
                 None => submitted.elapsed().as_secs_f64() * 1e3,
             };
             self.render_ms += ms;
             self.pacer.record(entries, ms);
-            self.in_flight = None;
+            current.in_flight = None;
         }
-        let task = self.tasks.get(self.next)?;
-        let total = task.scene.lights.len();
-        let done = match self.done {
-            Some(d) => d,
-            None => {
-                if let Err(e) = self.renderer.begin(&self.ctx, &task.scene, &task.settings) {
-                    // Checked in `new`: a failure now is the device's.
-                    self.result.device = format!("measurement failed: {e}");
-                    self.next = self.tasks.len();
-                    return Some(std::mem::take(&mut self.result));
-                }
-                self.render_ms = 0.0;
-                0
-            }
-        };
+        let (done, total) = (current.done, current.render.light_count());
         if done >= total {
-            return self.finish_repeat();
+            return self.finish_repeat(current.render);
         }
         let end = (done + self.pacer.next(budget_ms)).min(total);
         self.idle.store(false, Ordering::Release);
-        self.renderer.step(&self.ctx, done..end);
+        current.render.step(&self.ctx, done..end);
         let idle = self.idle.clone();
         self.ctx
             .queue
             .on_submitted_work_done(move || idle.store(true, Ordering::Release));
-        self.in_flight = Some((end - done, web_time::Instant::now()));
-        self.done = Some(end);
+        current.in_flight = Some((end - done, web_time::Instant::now()));
+        current.done = end;
+        self.current = Some(current);
         None
     }
 
     /// A repeat's renders are all summed: its time; after the last repeat, the point.
-    fn finish_repeat(&mut self) -> Option<Measurement> {
+    fn finish_repeat(&mut self, render: PlaneRender) -> Option<Measurement> {
         self.repeat_ms.push(self.render_ms);
-        self.done = None;
         if self.repeat_ms.len() < REPEATS {
+            self.kept = Some(render.into_kept());
             return None;
         }
         let mut ms = std::mem::take(&mut self.repeat_ms);
@@ -322,10 +357,17 @@ impl MeasureJob {
         let task = &self.tasks[self.next];
         match task.curve {
             None => {
-                self.reading = Some((self.renderer.start_read(&self.ctx), median, range));
+                let pending = render.start_read(&self.ctx);
+                self.reading = Some(Reading {
+                    render,
+                    pending,
+                    median,
+                    range,
+                });
                 return None;
             }
             Some((method, n)) => {
+                self.kept = Some(render.into_kept());
                 let fps = |ms: f64| 1e3 / ms.max(1e-9);
                 push_to(&mut self.result.scaling, method, [n as f64, fps(median)]);
                 let spread = [n as f64, fps(range[1]), fps(range[0])];

@@ -15,8 +15,11 @@ use crate::app::lab::{Aspect, Lab, Stamp};
 use crate::app::pacer::Pacer;
 use crate::gpu::GpuContext;
 use crate::gpu::display::DisplayPass;
-use crate::gpu::plane::{FrameTimes, PlaneRenderer, ShaderChecks};
+use crate::gpu::plane::ShaderChecks;
+use crate::gpu::plane_render::PlaneRender;
+use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::target::PendingRead;
+use crate::gpu::timing::FrameTimes;
 use crate::ltc::lut::Lut;
 use crate::render::{Frame, FrameKind, RenderSettings, Tables, View};
 use crate::scene::Scene;
@@ -152,6 +155,8 @@ enum Path {
 struct GpuShading {
     ctx: GpuContext,
     renderer: PlaneRenderer,
+    /// The current render, once one has begun.
+    render: Option<PlaneRender>,
     display: DisplayPass,
     egui: egui_wgpu::RenderState,
     texture: Option<egui::TextureId>,
@@ -297,8 +302,8 @@ impl Shading {
                     self.error = g.begin(&scene, settings).err();
                 }
                 self.progress = Progress {
-                    total: g.renderer.light_count(),
-                    binning: g.renderer.binning_progress(),
+                    total: g.render.as_ref().map_or(0, PlaneRender::light_count),
+                    binning: g.render.as_ref().and_then(PlaneRender::binning_progress),
                     started: Some(Instant::now()),
                     ..Progress::default()
                 };
@@ -348,12 +353,13 @@ impl Shading {
         }
         match &mut self.path {
             Path::Gpu(g) => {
+                let render = g.render.as_ref()?;
                 let pending = self
                     .reading
-                    .get_or_insert_with(|| g.renderer.start_read(&g.ctx));
+                    .get_or_insert_with(|| render.start_read(&g.ctx));
                 let texels = pending.try_take(&g.ctx)?;
                 self.reading = None;
-                Some(g.renderer.frame_of(&texels))
+                Some(render.frame_of(&texels))
             }
             Path::Cpu(cpu) => cpu.frame.clone(),
         }
@@ -381,9 +387,11 @@ impl GpuShading {
         Ok(Self {
             display: DisplayPass::new(&ctx),
             completion: None,
-            paced_on_timestamps: renderer.timed() && ctx.info.device_type != wgpu::DeviceType::Cpu,
+            paced_on_timestamps: ctx.has_timestamps()
+                && ctx.info.device_type != wgpu::DeviceType::Cpu,
             ctx,
             renderer,
+            render: None,
             egui: rs.clone(),
             texture: None,
             shade_pacer: Pacer::default(),
@@ -407,9 +415,13 @@ impl GpuShading {
         if let Some(chunk) = &mut self.in_flight {
             chunk.stale = true;
         }
-        self.renderer
-            .begin(&self.ctx, scene, settings)
-            .map_err(|e| e.to_string())
+        let kept = self.render.take().map(PlaneRender::into_kept);
+        self.render = Some(
+            self.renderer
+                .begin(&self.ctx, scene, settings, kept)
+                .map_err(|e| e.to_string())?,
+        );
+        Ok(())
     }
 
     /// Whether the last chunk's work is done and its time taken (into the progress and its
@@ -444,10 +456,14 @@ impl GpuShading {
                 shade_ms: wall_ms,
             },
         };
-        let times = match self.renderer.try_times() {
+        let times = match self.render.as_mut().and_then(PlaneRender::try_times) {
             Some(t) if self.paced_on_timestamps => t,
             // The timestamps follow the work: a frame or so later.
-            None if self.paced_on_timestamps && self.renderer.times_pending() => return false,
+            None if self.paced_on_timestamps
+                && self.render.as_ref().is_some_and(PlaneRender::times_pending) =>
+            {
+                return false;
+            }
             // None coming (a chunk submitted while the last read-back was still out, or a
             // read-back that failed: seen in a browser), or not paced on them (any read is
             // dropped, so that they do not pile up): the wall clock.
@@ -479,13 +495,16 @@ impl GpuShading {
     ) {
         let budget_ms = FRAME_BUDGET_MS;
         let submitted = Instant::now();
-        let (work, units) = if self.renderer.binning_progress().is_some() {
+        let Some(render) = &mut self.render else {
+            return;
+        };
+        let (work, units) = if render.binning_progress().is_some() {
             let rows = self.bin_pacer.next(budget_ms);
-            self.renderer.bin_step(&self.ctx, rows);
+            render.bin_step(&self.ctx, rows);
             (Work::Bin, rows)
         } else {
             let end = (progress.done + self.shade_pacer.next(budget_ms)).min(progress.total);
-            self.renderer.step(&self.ctx, progress.done..end);
+            render.step(&self.ctx, progress.done..end);
             let units = end - progress.done;
             progress.done = end;
             self.encode_display(kind, exposure * progress.preview_scale());
@@ -503,7 +522,7 @@ impl GpuShading {
             wall_ms: None,
             stale: false,
         });
-        progress.binning = self.renderer.binning_progress();
+        progress.binning = self.render.as_ref().and_then(PlaneRender::binning_progress);
         progress.frames += 1;
     }
 
@@ -515,7 +534,7 @@ impl GpuShading {
     }
 
     fn encode_display(&mut self, kind: FrameKind, exposure: f64) {
-        let Some(image) = self.renderer.output() else {
+        let Some(image) = self.render.as_ref().map(PlaneRender::output) else {
             return;
         };
         let size = image.texture().size();

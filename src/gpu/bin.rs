@@ -3,12 +3,22 @@
 //! sizes and the passes.
 
 use crate::gpu::GpuContext;
+use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::timing::{PassTimer, Slot};
 
 /// The shader text (composed after scene.wgsl).
 pub const SOURCE: &str = include_str!("../../shaders/bin.wgsl");
 
+/// The binning shader's bindings (scene.wgsl's and its own; the tile lists are those the
+/// plane shader reads, at the same numbers).
+pub const PARAMS: Binding = binding(0, "params", Kind::Uniform);
+pub const LIGHTS: Binding = binding(1, "lights", Kind::Read);
+pub const TILE_OFFSETS: Binding = binding(5, "tile_offsets", Kind::ReadWrite);
+pub const TILE_LIGHTS: Binding = binding(6, "tile_lights", Kind::ReadWrite);
+pub const BINDINGS: [Binding; 4] = [PARAMS, LIGHTS, TILE_OFFSETS, TILE_LIGHTS];
+
 /// The binning shader's pipelines (count, prefix sum, write) and their layout.
+#[derive(Clone)]
 pub struct Binning {
     pub layout: wgpu::BindGroupLayout,
     count: wgpu::ComputePipeline,
@@ -38,16 +48,7 @@ impl Binning {
             label: Some("bin.wgsl"),
             source: wgpu::ShaderSource::Wgsl(super::bin_module_source().into()),
         });
-        use super::binding::{compute, storage, uniform};
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("bin"),
-            entries: &[
-                compute(0, uniform()),
-                compute(1, storage(true)),
-                compute(5, storage(false)),
-                compute(6, storage(false)),
-            ],
-        });
+        let layout = binding::layout(device, "bin", &BINDINGS);
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("bin"),
             bind_group_layouts: &[Some(&layout)],
@@ -100,9 +101,7 @@ impl Binning {
         &self,
         encoder: &mut wgpu::CommandEncoder,
         bind_group: &wgpu::BindGroup,
-        tiles_x: u32,
-        rows: u32,
-        pass: BinPass,
+        (tiles_x, rows, pass): (u32, u32, BinPass),
         timer: Option<&mut PassTimer>,
     ) {
         let mut compute = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {

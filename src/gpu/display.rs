@@ -5,6 +5,7 @@
 use bytemuck::{Pod, Zeroable};
 
 use crate::gpu::GpuContext;
+use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::render::FrameKind;
 
 /// The shader text (composed alone).
@@ -24,6 +25,12 @@ pub struct Display {
 /// gamma-space values, so it shows them as a PNG viewer does).
 const STORED: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
+/// The display shader's bindings.
+pub const DISPLAY: Binding = binding(0, "display", Kind::Uniform);
+pub const IMAGE: Binding = binding(1, "image", Kind::Texture);
+pub const SHOWN: Binding = binding(2, "shown", Kind::WrittenTexture(STORED));
+pub const BINDINGS: [Binding; 3] = [DISPLAY, IMAGE, SHOWN];
+
 /// The display pass and its texture.
 pub struct DisplayPass {
     pipeline: wgpu::ComputePipeline,
@@ -39,22 +46,7 @@ impl DisplayPass {
             label: Some("display.wgsl"),
             source: wgpu::ShaderSource::Wgsl(SOURCE.into()),
         });
-        use super::binding::{compute, uniform, written_texture};
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("display"),
-            entries: &[
-                compute(0, uniform()),
-                compute(
-                    1,
-                    wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                ),
-                compute(2, written_texture(STORED)),
-            ],
-        });
+        let layout = binding::layout(device, "display", &BINDINGS);
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("display"),
             bind_group_layouts: &[Some(&layout)],
@@ -84,8 +76,9 @@ impl DisplayPass {
     /// The texture to show, made for `size` if it is not that size yet;
     /// `true` when it was made anew (the window must take the new view).
     pub fn target(&mut self, ctx: &GpuContext, size: (u32, u32)) -> (&wgpu::TextureView, bool) {
-        let fresh = self.texture.as_ref().is_none_or(|t| t.2 != size);
-        if fresh {
+        let kept = self.texture.take().filter(|t| t.2 == size);
+        let fresh = kept.is_none();
+        let (_, view, _) = self.texture.insert(kept.unwrap_or_else(|| {
             let texture = ctx.device.create_texture(&wgpu::TextureDescriptor {
                 label: Some("plane display"),
                 size: wgpu::Extent3d {
@@ -103,9 +96,9 @@ impl DisplayPass {
                 view_formats: &[],
             });
             let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
-            self.texture = Some((texture, view, size));
-        }
-        (&self.texture.as_ref().expect("made above").1, fresh)
+            (texture, view, size)
+        }));
+        (view, fresh)
     }
 
     /// Records the pass from the renderer's `image` into the display texture (`target`
@@ -133,18 +126,9 @@ impl DisplayPass {
             label: Some("display"),
             layout: &self.layout,
             entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: self.uniforms.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(image),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: wgpu::BindingResource::TextureView(&stored),
-                },
+                DISPLAY.buffer(&self.uniforms),
+                IMAGE.texture(image),
+                SHOWN.texture(&stored),
             ],
         });
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
@@ -154,18 +138,5 @@ impl DisplayPass {
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &bind_group, &[]);
         pass.dispatch_workgroups(w.div_ceil(16), h.div_ceil(16), 1);
-    }
-
-    /// The display texture as the window shows it (what a PNG of the same frame holds),
-    /// read back: for tests.
-    pub fn read(&self, ctx: &GpuContext) -> Option<image::RgbImage> {
-        let (texture, _, (w, h)) = self.texture.as_ref()?;
-        let data = crate::gpu::target::read_texels(ctx, texture, (*w, *h), 4);
-        let rgb = data
-            .chunks_exact(4)
-            .flat_map(|t| [t[0], t[1], t[2]])
-            .collect();
-        let out = image::RgbImage::from_raw(*w, *h, rgb).expect("w·h texels");
-        Some(out)
     }
 }

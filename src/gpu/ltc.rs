@@ -11,12 +11,13 @@ use crate::ltc::remedy::HorizonRule;
 /// The shader text (composed after `brdf::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/ltc.wgsl");
 
-/// `HORIZON_*` of ltc.wgsl (the plane pipeline's `HORIZON` constant).
-pub fn horizon_constant(h: HorizonRule) -> u32 {
+/// `HORIZON_*` of ltc.wgsl (the plane pipeline's `HORIZON` constant): its value and its
+/// name there.
+pub fn horizon_constant(h: HorizonRule) -> (u32, &'static str) {
     match h {
-        HorizonRule::Eq30 => 0,
-        HorizonRule::NlFit => 1,
-        HorizonRule::ExactBand => 2,
+        HorizonRule::Eq30 => (0, "HORIZON_EQ30"),
+        HorizonRule::NlFit => (1, "HORIZON_NL_FIT"),
+        HorizonRule::ExactBand => (2, "HORIZON_EXACT_BAND"),
     }
 }
 
@@ -66,27 +67,44 @@ pub fn pack_lut(lut: &Lut, with_nl: bool) -> Vec<[f32; 4]> {
         .collect()
 }
 
-/// The storage buffer the shaders read their tables from: A first, B (if any) after it.
+/// The storage buffer the shaders read their tables from: A first, B (if any) after it; and
+/// the tables, to pack them again with the `nl-fit` correction when a render first needs it
+/// (fitting it takes about a second on two cores: not for every table's set-up).
 pub struct LutBuffer {
     pub buffer: wgpu::Buffer,
     pub size_a: usize,
     /// Cells per side and first vec4 of table B.
     pub b: Option<(usize, u32)>,
     /// Whether it holds the `nl-fit` correction (else zeros in its place).
-    pub with_nl: bool,
+    with_nl: bool,
+    luts: (Lut, Option<Lut>),
 }
 
 impl LutBuffer {
-    /// Table A packed, B packed after it, with the `nl-fit` correction where `with_nl`;
-    /// refused where they exceed one storage binding.
-    pub fn new(ctx: &GpuContext, a: &Lut, b: Option<&Lut>, with_nl: bool) -> Result<Self> {
+    /// Table A packed, and B packed after it, without the `nl-fit` correction; refused where
+    /// they exceed one storage binding.
+    pub fn new(ctx: &GpuContext, a: &Lut, b: Option<&Lut>) -> Result<Self> {
+        Self::packed(ctx, (a.clone(), b.cloned()), false)
+    }
+
+    /// Packs the same tables again with the `nl-fit` correction, where it does not hold it
+    /// yet (left as it was where they no longer fit).
+    pub fn ensure_nl(&mut self, ctx: &GpuContext) -> Result<()> {
+        if !self.with_nl {
+            *self = Self::packed(ctx, self.luts.clone(), true)?;
+        }
+        Ok(())
+    }
+
+    fn packed(ctx: &GpuContext, luts: (Lut, Option<Lut>), with_nl: bool) -> Result<Self> {
+        let (a, b) = (&luts.0, luts.1.as_ref());
         let size_a = a.size;
         // Checked before packing: packing may fit the correction of every cell.
         let bytes = |lut: &Lut| (lut.size * lut.size * VEC4S_PER_CELL * 16) as u64;
         let largest = b.map_or(size_a, |lut| lut.size.max(size_a));
         limits::check_lut_size(ctx, largest, bytes(a) + b.map_or(0, bytes))?;
         let mut all = pack_lut(a, with_nl);
-        let b = b.map(|lut| {
+        let b_at = b.map(|lut| {
             let base = all.len() as u32;
             all.extend(pack_lut(lut, with_nl));
             (lut.size, base)
@@ -102,8 +120,9 @@ impl LutBuffer {
         Ok(Self {
             buffer,
             size_a,
-            b,
+            b: b_at,
             with_nl,
+            luts,
         })
     }
 }

@@ -1,5 +1,7 @@
 //! The GPU side: headless device set-up, one Rust module per WGSL file (`brdf`, `ltc`,
-//! `plane`), and timing. Shaders are composed from the embedded files at load time.
+//! `ltc_f16`, `scene`, `plane`, `bin`, `display`), the plane's renderer and one render of it
+//! (`renderer`, `plane_render`), and timing. Shaders are composed from the embedded files at
+//! load time.
 
 pub mod bin;
 pub mod binding;
@@ -11,6 +13,8 @@ pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
 pub mod plane;
+pub mod plane_render;
+pub mod renderer;
 pub mod scene;
 pub mod selfcheck;
 pub mod target;

@@ -7,11 +7,13 @@
 
 use crate::cpu;
 use crate::gpu::GpuContext;
-use crate::gpu::plane::{PlaneRenderer, ShaderChecks};
+use crate::gpu::plane::ShaderChecks;
+use crate::gpu::plane_render::{Kept, PlaneRender};
+use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::target::PendingRead;
 use crate::ltc::lut::Lut;
 use crate::parity::Parity;
-use crate::render::{Method, RenderSettings};
+use crate::render::{Frame, Method, RenderSettings};
 use crate::scene::{Scene, preset};
 
 /// The image the check renders: small enough that the CPU reference of both methods takes a
@@ -63,10 +65,14 @@ impl Report {
 enum Stage {
     /// Summing the current method's lights: the next chunk starts at `done`.
     Summing {
+        render: PlaneRender,
         done: usize,
     },
     /// The image asked for.
-    Reading(PendingRead),
+    Reading {
+        render: PlaneRender,
+        pending: PendingRead,
+    },
     Finished,
 }
 
@@ -85,32 +91,19 @@ impl SelfCheck {
     /// The check on `ctx`'s device with the shipped classic table; the first method begun.
     pub fn new(ctx: GpuContext) -> Result<Self, String> {
         let lut = Lut::embedded();
-        let renderer =
+        let mut renderer =
             PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
-        let mut check = Self {
+        let scene = preset("paper-100");
+        let render = begin(&ctx, &mut renderer, &scene, 0, None)?;
+        Ok(Self {
             ctx,
             renderer,
-            scene: preset("paper-100"),
+            scene,
             lut,
             method: 0,
-            stage: Stage::Finished,
+            stage: Stage::Summing { render, done: 0 },
             methods: Vec::new(),
-        };
-        check.begin()?;
-        Ok(check)
-    }
-
-    fn settings(&self) -> RenderSettings {
-        RenderSettings::single(SIZE.0, SIZE.1, METHODS[self.method])
-    }
-
-    fn begin(&mut self) -> Result<(), String> {
-        let settings = self.settings();
-        self.renderer
-            .begin(&self.ctx, &self.scene, &settings)
-            .map_err(|e| e.to_string())?;
-        self.stage = Stage::Summing { done: 0 };
-        Ok(())
+        })
     }
 
     /// Images read back so far (the first one is the page's first GPU frame).
@@ -121,45 +114,74 @@ impl SelfCheck {
     /// One step: a chunk submitted, the read-back asked for, or a frame taken and compared.
     /// The report once both methods are compared.
     pub fn step(&mut self) -> Result<Option<Report>, String> {
-        match &self.stage {
-            Stage::Summing { done } if self.renderer.binning_progress().is_some() => {
-                let done = *done;
+        self.stage = match std::mem::replace(&mut self.stage, Stage::Finished) {
+            Stage::Summing { mut render, done } if render.binning_progress().is_some() => {
                 // Every tile row at once: 8 of them at this size.
-                self.renderer.bin_step(&self.ctx, SIZE.1);
-                self.stage = Stage::Summing { done };
+                render.bin_step(&self.ctx, SIZE.1);
+                Stage::Summing { render, done }
             }
-            Stage::Summing { done } => {
-                let total = self.renderer.light_count();
+            Stage::Summing { mut render, done } => {
+                let total = render.light_count();
                 let end = (done + CHUNK_LIGHTS).min(total);
-                self.renderer.step(&self.ctx, *done..end);
-                self.stage = if end == total {
-                    Stage::Reading(self.renderer.start_read(&self.ctx))
+                render.step(&self.ctx, done..end);
+                if end == total {
+                    let pending = render.start_read(&self.ctx);
+                    Stage::Reading { render, pending }
                 } else {
-                    Stage::Summing { done: end }
-                };
-            }
-            Stage::Reading(pending) => {
-                let Some(texels) = pending.try_take(&self.ctx) else {
-                    return Ok(None);
-                };
-                let gpu = self.renderer.frame_of(&texels);
-                let reference = cpu::render(&self.scene, self.lut, &self.settings());
-                self.methods.push(MethodParity {
-                    method: METHODS[self.method],
-                    parity: Parity::of(&gpu, &reference),
-                });
-                self.method += 1;
-                if self.method == METHODS.len() {
-                    self.stage = Stage::Finished;
-                    return Ok(Some(Report {
-                        adapter: self.ctx.describe(),
-                        methods: self.methods.clone(),
-                    }));
+                    Stage::Summing { render, done: end }
                 }
-                self.begin()?;
             }
-            Stage::Finished => {}
-        }
+            Stage::Reading { render, pending } => match pending.try_take(&self.ctx) {
+                None => Stage::Reading { render, pending },
+                Some(texels) => return self.compare(&render.frame_of(&texels), render),
+            },
+            Stage::Finished => Stage::Finished,
+        };
         Ok(None)
     }
+
+    /// Compares a method's GPU frame with the CPU's, then begins the next method (in the
+    /// buffers `render` leaves) or reports.
+    fn compare(&mut self, gpu: &Frame, render: PlaneRender) -> Result<Option<Report>, String> {
+        let reference = cpu::render(&self.scene, self.lut, &settings(self.method));
+        self.methods.push(MethodParity {
+            method: METHODS[self.method],
+            parity: Parity::of(gpu, &reference),
+        });
+        self.method += 1;
+        if self.method == METHODS.len() {
+            return Ok(Some(Report {
+                adapter: self.ctx.describe(),
+                methods: self.methods.clone(),
+            }));
+        }
+        let kept = Some(render.into_kept());
+        let render = begin(
+            &self.ctx,
+            &mut self.renderer,
+            &self.scene,
+            self.method,
+            kept,
+        )?;
+        self.stage = Stage::Summing { render, done: 0 };
+        Ok(None)
+    }
+}
+
+/// What method `k` of `METHODS` is rendered with.
+fn settings(k: usize) -> RenderSettings {
+    RenderSettings::single(SIZE.0, SIZE.1, METHODS[k])
+}
+
+/// Method `k`'s render begun.
+fn begin(
+    ctx: &GpuContext,
+    renderer: &mut PlaneRenderer,
+    scene: &Scene,
+    k: usize,
+    kept: Option<Kept>,
+) -> Result<PlaneRender, String> {
+    renderer
+        .begin(ctx, scene, &settings(k), kept)
+        .map_err(|e| e.to_string())
 }

@@ -23,6 +23,35 @@ const RESOLVE_BYTES: u64 = QUERIES as u64 * 8;
 /// GPU milliseconds per slot; `None` for a slot not written since the last `clear`.
 pub type SlotTimes = [Option<f64>; SLOTS as usize];
 
+/// The GPU milliseconds of one frame's passes.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FrameTimes {
+    /// Binning (culled renders), timestamps; `None` when there was none.
+    pub bin_ms: Option<f64>,
+    /// Shading (timestamps), or submit-to-done wall clock of the whole frame without them.
+    pub shade_ms: f64,
+}
+
+impl FrameTimes {
+    pub fn total_ms(&self) -> f64 {
+        self.shade_ms + self.bin_ms.unwrap_or(0.0)
+    }
+
+    /// The slots' times, or the wall clock where the shading pass was not timed.
+    pub fn from_slots(slots: SlotTimes, wall_ms: f64) -> Self {
+        match slots[Slot::Shade as usize] {
+            Some(shade_ms) => Self {
+                bin_ms: slots[Slot::Bin as usize],
+                shade_ms,
+            },
+            None => Self {
+                bin_ms: None,
+                shade_ms: wall_ms,
+            },
+        }
+    }
+}
+
 /// Times the passes of one submission.
 pub struct PassTimer {
     query_set: wgpu::QuerySet,

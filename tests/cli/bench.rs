@@ -2,7 +2,7 @@
 
 use std::process::Stdio;
 
-use ltc_lab::gpu::plane::PlaneRenderer;
+use ltc_lab::gpu::renderer::PlaneRenderer;
 
 use crate::gpu_common::gpu;
 use crate::{assert_no_panic, assert_refused, exe, ltc_lab, stderr};

@@ -1,7 +1,7 @@
 //! `ltc-lab study`: its two files land together, in a directory made for them, and a default
 //! directory never replaces an earlier study.
 
-use ltc_lab::gpu::plane::PlaneRenderer;
+use ltc_lab::gpu::renderer::PlaneRenderer;
 
 use crate::gpu_common::gpu;
 use crate::{assert_refused, ltc_lab, ltc_lab_in, stderr};

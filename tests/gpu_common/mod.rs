@@ -5,7 +5,8 @@
 use std::sync::{Mutex, OnceLock};
 
 use ltc_lab::gpu::GpuContext;
-use ltc_lab::gpu::plane::{PlaneRenderer, ShaderChecks};
+use ltc_lab::gpu::plane::ShaderChecks;
+use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::parity::{Parity, RADIANCE_TOLERANCE};
 use ltc_lab::render::Frame;

@@ -1,0 +1,426 @@
+//! One render of the plane on the GPU, from its start (`PlaneRenderer::begin`) to its image:
+//! its lights, uniforms, target and bind groups, the pipelines of its specialization, and how
+//! far its tile lists are made. It is summed in chunks of lights (`step`), or whole (`run`),
+//! and read back without waiting (`start_read`) or waiting (`read`). Everything it needs
+//! exists from its start, so its methods may come in any order; the buffers it leaves
+//! (`Kept`) are taken by the next render of its size.
+
+use std::ops::Range;
+
+use crate::gpu::GpuContext;
+use crate::gpu::bin::{self, BinPass, Binning};
+use crate::gpu::ltc::LutBuffer;
+use crate::gpu::plane::{self, Pipelines};
+use crate::gpu::scene::{GpuLight, Params, params};
+use crate::gpu::target::{PendingRead, Target};
+use crate::gpu::timing::{FrameTimes, PassTimer, Slot};
+use crate::render::{Frame, RenderSettings, View};
+use crate::scene::Scene;
+
+/// Where the making of the tile lists is: the next band of tile rows to count, or to write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum BinStage {
+    Count(u32),
+    Write(u32),
+}
+
+/// What a render leaves to the next: its buffers, its target and its timer.
+pub struct Kept {
+    lights: wgpu::Buffer,
+    params: wgpu::Buffer,
+    target: Target,
+    timer: Option<PassTimer>,
+}
+
+/// A render begun: everything its chunks need.
+pub struct PlaneRender {
+    pipelines: Pipelines,
+    binning: Binning,
+    kept: Kept,
+    plane_group: wgpu::BindGroup,
+    bin_group: wgpu::BindGroup,
+    params: Params,
+    settings: RenderSettings,
+    light_count: usize,
+    /// How far the tile lists are made: the next band of tile rows to count or to write
+    /// (`None`: made, or no culling).
+    bin_stage: Option<BinStage>,
+}
+
+/// What `PlaneRenderer::begin` hands a new render: the pipelines of its specialization and
+/// their layout, the binning passes and the tables' buffer.
+pub struct Begun<'a> {
+    pub pipelines: Pipelines,
+    pub layout: &'a wgpu::BindGroupLayout,
+    pub binning: &'a Binning,
+    pub tables: &'a LutBuffer,
+}
+
+impl PlaneRender {
+    /// A render of `scene` as `settings` says (checked by the renderer), in `kept`'s buffers
+    /// where they hold it. Nothing is summed yet; a culled render makes its tile lists with
+    /// its first chunk, or band by band (`bin_step`).
+    pub fn new(
+        ctx: &GpuContext,
+        begun: Begun<'_>,
+        (scene, settings): (&Scene, &RenderSettings),
+        kept: Option<Kept>,
+    ) -> Self {
+        let lights: Vec<GpuLight> = scene.lights.iter().map(GpuLight::from).collect();
+        let any_ranged = scene.lights.iter().any(|l| l.range.is_some());
+        let cull = settings.cull && any_ranged;
+        let (tiles_x, tiles_y) = crate::gpu::scene::tiles(settings.width, settings.height);
+        let capacity = if cull {
+            bin::capacity(ctx, tiles_x * tiles_y, lights.len())
+        } else {
+            1
+        };
+        let kept = Kept::for_render(ctx, kept, (settings.width, settings.height), capacity)
+            .with_lights(ctx, &lights);
+        let mut p = params(settings, scene);
+        p.cull = u32::from(cull);
+        p.tile_capacity = kept.target.tile_capacity.min(u64::from(u32::MAX)) as u32;
+        let tables = begun.tables;
+        p.lut_size = tables.size_a as u32;
+        let (size_b, base_b) = tables.b.unwrap_or((tables.size_a, 0));
+        p.lut_size_b = size_b as u32;
+        p.lut_base_b = base_b;
+        if settings.view == View::B && settings.b_reads_table_b {
+            // B alone is shaded as the single method A: with B's table in A's place.
+            p.lut_size = size_b as u32;
+            p.lut_base = base_b;
+        }
+        let (plane_group, bin_group) = bind_groups(ctx, &kept, &begun);
+        Self {
+            pipelines: begun.pipelines,
+            binning: begun.binning.clone(),
+            kept,
+            plane_group,
+            bin_group,
+            params: p,
+            settings: *settings,
+            light_count: lights.len(),
+            bin_stage: cull.then_some(BinStage::Count(0)),
+        }
+    }
+
+    /// Its buffers, for the next render.
+    pub fn into_kept(self) -> Kept {
+        self.kept
+    }
+
+    /// What it renders.
+    pub fn settings(&self) -> &RenderSettings {
+        &self.settings
+    }
+
+    /// The number of entries a full render sums per pixel (every light, unculled).
+    pub fn light_count(&self) -> usize {
+        self.light_count
+    }
+
+    /// Sums entries `range` of every pixel's list into the kept sums (from zero where the
+    /// range starts at 0), then resolves the image; one submission. The first chunk of a
+    /// culled render makes the tile lists first, where `bin_step` has not.
+    pub fn step(&mut self, ctx: &GpuContext, range: Range<usize>) -> wgpu::SubmissionIndex {
+        self.params.light_start = range.start as u32;
+        self.params.light_end = range.end as u32;
+        self.params.bin_row = 0;
+        self.write_params(ctx);
+        let mut encoder = ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("plane"),
+            });
+        // Taken while the passes are recorded, and given back.
+        let mut timer = self.kept.timer.take();
+        let mut timing = timer.as_mut().filter(|t| t.can_resolve());
+        if let Some(t) = &mut timing {
+            t.clear();
+        }
+        let tiles = self.tiles();
+        if self.bin_stage.take().is_some() {
+            // Lists not (all) made band by band: made whole here, in one pass from row 0.
+            self.binning
+                .encode_all(&mut encoder, &self.bin_group, tiles, timing.as_deref_mut());
+        }
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("shade"),
+                timestamp_writes: timing.as_deref_mut().map(|t| t.writes(Slot::Shade)),
+            });
+            pass.set_bind_group(0, &self.plane_group, &[]);
+            pass.set_pipeline(&self.pipelines.shade);
+            pass.dispatch_workgroups(tiles.0, tiles.1, 1);
+        }
+        self.encode_resolve(&mut encoder);
+        let timed = timing.is_some();
+        if let Some(t) = timing {
+            t.resolve(&mut encoder);
+        }
+        let index = ctx.queue.submit([encoder.finish()]);
+        if timed && let Some(t) = &mut timer {
+            t.request();
+        }
+        self.kept.timer = timer;
+        index
+    }
+
+    /// The image from the sums: the difference view's floor first where it shows one.
+    fn encode_resolve(&self, encoder: &mut wgpu::CommandEncoder) {
+        let tiles = self.tiles();
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("resolve"),
+            timestamp_writes: None,
+        });
+        pass.set_bind_group(0, &self.plane_group, &[]);
+        if self.settings.view == View::Diff {
+            pass.set_pipeline(&self.pipelines.reduce);
+            pass.dispatch_workgroups(tiles.0, tiles.1, 1);
+            pass.set_pipeline(&self.pipelines.floor);
+            pass.dispatch_workgroups(1, 1, 1);
+        }
+        pass.set_pipeline(&self.pipelines.resolve);
+        pass.dispatch_workgroups(tiles.0, tiles.1, 1);
+    }
+
+    fn tiles(&self) -> (u32, u32) {
+        let t = self.kept.target.tiles;
+        (t.0 as u32, t.1 as u32)
+    }
+
+    fn write_params(&self, ctx: &GpuContext) {
+        ctx.queue
+            .write_buffer(&self.kept.params, 0, bytemuck::bytes_of(&self.params));
+    }
+
+    /// How far the tile lists are made, 0 to 1; `None` when they are (or there are none).
+    pub fn binning_progress(&self) -> Option<f32> {
+        let rows = self.kept.target.tiles.1 as f32;
+        self.bin_stage.map(|stage| match stage {
+            BinStage::Count(r) => r as f32 / (2.0 * rows),
+            BinStage::Write(r) => (rows + r as f32) / (2.0 * rows),
+        })
+    }
+
+    /// Makes the next `rows` tile rows of the tile lists (counting them, then writing them):
+    /// binning spread over frames. One submission, timed in `Slot::Bin`. Does nothing when
+    /// the lists are made.
+    pub fn bin_step(&mut self, ctx: &GpuContext, rows: usize) {
+        let Some(stage) = self.bin_stage else {
+            return;
+        };
+        let (tiles_x, tiles_y) = self.tiles();
+        let (first, pass) = match stage {
+            BinStage::Count(r) => (r, BinPass::Count),
+            BinStage::Write(0) => (0, BinPass::ScanThenWrite),
+            BinStage::Write(r) => (r, BinPass::Write),
+        };
+        let end = (first + rows.max(1) as u32).min(tiles_y);
+        self.params.bin_row = first;
+        self.write_params(ctx);
+        let mut encoder = ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("bin band"),
+            });
+        let mut timer = self.kept.timer.take();
+        let mut timing = timer.as_mut().filter(|t| t.can_resolve());
+        if let Some(t) = &mut timing {
+            t.clear();
+        }
+        let band = (tiles_x, end - first, pass);
+        self.binning
+            .encode_band(&mut encoder, &self.bin_group, band, timing.as_deref_mut());
+        let timed = timing.is_some();
+        if let Some(t) = timing {
+            t.resolve(&mut encoder);
+        }
+        ctx.queue.submit([encoder.finish()]);
+        if timed && let Some(t) = &mut timer {
+            t.request();
+        }
+        self.kept.timer = timer;
+        self.bin_stage = match (pass, end == tiles_y) {
+            (BinPass::Count, true) => Some(BinStage::Write(0)),
+            (BinPass::Count, false) => Some(BinStage::Count(end)),
+            (_, true) => None,
+            (_, false) => Some(BinStage::Write(end)),
+        };
+    }
+
+    /// Whether its steps are timed (the device has timestamp queries).
+    pub fn timed(&self) -> bool {
+        self.kept.timer.is_some()
+    }
+
+    /// Whether the last step's GPU times are on their way (else `try_times` has none coming).
+    pub fn times_pending(&self) -> bool {
+        self.kept.timer.as_ref().is_some_and(PassTimer::pending)
+    }
+
+    /// The last step's GPU times if they have arrived (poll the device meanwhile); never
+    /// waits.
+    pub fn try_times(&mut self) -> Option<FrameTimes> {
+        let slots = self.kept.timer.as_mut()?.try_read()?;
+        Some(FrameTimes {
+            bin_ms: slots[Slot::Bin as usize],
+            shade_ms: slots[Slot::Shade as usize].unwrap_or(0.0),
+        })
+    }
+
+    /// Renders it whole (one chunk of every light, its tile lists made again) and waits: the
+    /// GPU times (timestamp queries), or the wall clock of submit-to-done where the adapter
+    /// has none.
+    pub fn run(&mut self, ctx: &GpuContext) -> FrameTimes {
+        if self.params.cull != 0 {
+            self.bin_stage = Some(BinStage::Count(0));
+        }
+        // A read-back still in flight is taken first, so that this frame's timestamps land.
+        if let Some(t) = &mut self.kept.timer {
+            let _ = t.read_ms(&ctx.device);
+        }
+        let start = web_time::Instant::now();
+        self.step(ctx, 0..self.light_count);
+        let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
+        let wall_ms = start.elapsed().as_secs_f64() * 1e3;
+        let slots = self
+            .kept
+            .timer
+            .as_mut()
+            .map_or([None; 2], |t| t.read_ms(&ctx.device));
+        FrameTimes::from_slots(slots, wall_ms)
+    }
+
+    /// Fills the image with NaN, so that a pixel no pass writes shows.
+    pub fn poison(&self, ctx: &GpuContext) {
+        self.kept.target.poison(ctx);
+    }
+
+    /// The image, read back (blocks).
+    pub fn read(&self, ctx: &GpuContext) -> Frame {
+        self.kept.target.read(ctx, &self.settings)
+    }
+
+    /// Starts reading the image back without waiting (the browser cannot wait):
+    /// `PendingRead::try_take` gives its texels once the GPU is done, and `frame_of` the
+    /// frame that `read` gives.
+    pub fn start_read(&self, ctx: &GpuContext) -> PendingRead {
+        self.kept.target.start_read(ctx)
+    }
+
+    /// The frame of texels that `start_read` fetched.
+    pub fn frame_of(&self, texels: &[u8]) -> Frame {
+        self.kept.target.frame_of(texels, &self.settings)
+    }
+
+    /// The entries of its tile lists, read back (blocks): how much culling kept of
+    /// `tiles × lights`. `None` where it is not culled or not yet binned.
+    pub fn tile_entries(&self, ctx: &GpuContext) -> Option<(u64, u64)> {
+        let t = &self.kept.target;
+        (self.params.cull != 0 && self.bin_stage.is_none()).then(|| {
+            let all = (t.tiles.0 * t.tiles.1 * self.light_count) as u64;
+            (t.tile_entries(ctx), all)
+        })
+    }
+
+    /// The output texture (for the lab to show without a read-back).
+    pub fn output(&self) -> &wgpu::TextureView {
+        &self.kept.target.view
+    }
+}
+
+impl Kept {
+    /// The buffers of `kept` where they hold an image of `size` with `capacity` list
+    /// entries, else new ones in their place.
+    fn for_render(
+        ctx: &GpuContext,
+        kept: Option<Kept>,
+        (width, height): (usize, usize),
+        capacity: u64,
+    ) -> Self {
+        let fits =
+            |t: &Target| (t.width, t.height) == (width, height) && t.tile_capacity >= capacity;
+        match kept {
+            Some(k) if fits(&k.target) => k,
+            Some(k) => Self {
+                target: Target::new(ctx, width, height, capacity),
+                ..k
+            },
+            None => Self {
+                lights: light_buffer(ctx, 1),
+                params: ctx.device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some("params"),
+                    size: std::mem::size_of::<Params>() as u64,
+                    usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                }),
+                target: Target::new(ctx, width, height, capacity),
+                timer: PassTimer::new(&ctx.device, &ctx.queue),
+            },
+        }
+    }
+
+    /// `lights` in its light buffer, grown where it does not hold them.
+    fn with_lights(self, ctx: &GpuContext, lights: &[GpuLight]) -> Self {
+        let kept = if std::mem::size_of_val(lights) as u64 <= self.lights.size() {
+            self
+        } else {
+            Self {
+                lights: light_buffer(ctx, lights.len().next_power_of_two()),
+                ..self
+            }
+        };
+        if !lights.is_empty() {
+            ctx.queue
+                .write_buffer(&kept.lights, 0, bytemuck::cast_slice(lights));
+        }
+        kept
+    }
+}
+
+/// A light buffer of `count` lights (a binding cannot be empty: at least one).
+fn light_buffer(ctx: &GpuContext, count: usize) -> wgpu::Buffer {
+    ctx.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("lights"),
+        size: (count.max(1) * std::mem::size_of::<GpuLight>()) as u64,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}
+
+/// The plane's and the binning's bind groups over `kept`'s buffers and the tables.
+fn bind_groups(
+    ctx: &GpuContext,
+    kept: &Kept,
+    begun: &Begun<'_>,
+) -> (wgpu::BindGroup, wgpu::BindGroup) {
+    let t = &kept.target;
+    let plane = ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("plane"),
+        layout: begun.layout,
+        entries: &[
+            plane::PARAMS.buffer(&kept.params),
+            plane::LIGHTS.buffer(&kept.lights),
+            plane::LUT.buffer(&begun.tables.buffer),
+            plane::OUTPUT.texture(&t.view),
+            plane::ACCUM_0.buffer(&t.sums[0]),
+            plane::TILE_OFFSETS.buffer(&t.tile_offsets),
+            plane::TILE_LIGHTS.buffer(&t.tile_lights),
+            plane::PARTIALS.buffer(&t.partials),
+            plane::ACCUM_1.buffer(&t.sums[1]),
+            plane::ACCUM_2.buffer(&t.sums[2]),
+        ],
+    });
+    let bin = ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("bin"),
+        layout: &begun.binning.layout,
+        entries: &[
+            bin::PARAMS.buffer(&kept.params),
+            bin::LIGHTS.buffer(&kept.lights),
+            bin::TILE_OFFSETS.buffer(&t.tile_offsets),
+            bin::TILE_LIGHTS.buffer(&t.tile_lights),
+        ],
+    });
+    (plane, bin)
+}
