@@ -313,7 +313,7 @@ pub fn run(
                         .map(|_| render.run(ctx).total_ms())
                         .collect();
                     ms.sort_by(f64::total_cmp);
-                    let image = render.read(ctx);
+                    let image = render.read(ctx)?;
                     let reference = exact.get_or_insert_with(|| image.clone());
                     let e = image_error(&image, reference);
                     let row = StudyRow {

@@ -99,7 +99,7 @@ fn culled_images_equal_unculled_ones_exactly() {
                 let mut render = r.begin(&g.ctx, &scene, &s, None).unwrap();
                 render.poison(&g.ctx);
                 render.run(&g.ctx);
-                let culled = render.read(&g.ctx);
+                let culled = render.read(&g.ctx).unwrap();
                 let (kept, all) = render.tile_entries(&g.ctx).expect("a culled render");
                 assert!(
                     kept > 0 && kept < all,
@@ -146,7 +146,7 @@ fn a_render_summed_in_chunks_is_the_one_shot_render() {
                 render.step(&g.ctx, range);
                 let _ = g.ctx.device.poll(wgpu::PollType::wait_indefinitely());
             }
-            let chunked = render.read(&g.ctx);
+            let chunked = render.read(&g.ctx).unwrap();
             assert!(
                 bits(&chunked) == bits(&whole),
                 "{} {view:?} cull {cull}: the chunked image differs",
@@ -159,7 +159,7 @@ fn a_render_summed_in_chunks_is_the_one_shot_render() {
                 .unwrap();
             render.step(&g.ctx, 0..3);
             assert!(
-                bits(&render.read(&g.ctx)) != bits(&whole),
+                bits(&render.read(&g.ctx).unwrap()) != bits(&whole),
                 "{} {view:?} cull {cull}: three entries give the whole image",
                 method.name()
             );
@@ -346,7 +346,7 @@ fn a_read_in_steps_is_the_waiting_read() {
         )
         .unwrap();
     render.run(&g.ctx);
-    let waited = render.read(&g.ctx);
+    let waited = render.read(&g.ctx).unwrap();
     let pending = render.start_read(&g.ctx);
     let mut texels = pending.try_take(&g.ctx);
     // Each poll without waiting lets the device finish a little more; a bound keeps a broken

@@ -298,7 +298,7 @@ impl PlaneRender {
     }
 
     /// The image, read back (blocks).
-    pub fn read(&self, ctx: &GpuContext) -> Frame {
+    pub fn read(&self, ctx: &GpuContext) -> crate::error::Result<Frame> {
         self.kept.target.read(ctx, &self.settings)
     }
 
@@ -315,13 +315,15 @@ impl PlaneRender {
     }
 
     /// The entries of its tile lists, read back (blocks): how much culling kept of
-    /// `tiles × lights`. `None` where it is not culled or not yet binned.
+    /// `tiles × lights`. `None` where it is not culled or not yet binned (or the device
+    /// could not read them back).
     pub fn tile_entries(&self, ctx: &GpuContext) -> Option<(u64, u64)> {
         let t = &self.kept.target;
-        (self.params.cull != 0 && self.bin_stage.is_none()).then(|| {
-            let all = (t.tiles.0 * t.tiles.1 * self.light_count) as u64;
-            (t.tile_entries(ctx), all)
-        })
+        if self.params.cull == 0 || self.bin_stage.is_some() {
+            return None;
+        }
+        let all = (t.tiles.0 * t.tiles.1 * self.light_count) as u64;
+        Some((t.tile_entries(ctx)?, all))
     }
 
     /// The output texture (for the lab to show without a read-back).

@@ -123,7 +123,7 @@ impl PlaneRenderer {
         let mut render = self.begin(ctx, scene, settings, spare)?;
         render.poison(ctx);
         let times = render.run(ctx);
-        let frame = render.read(ctx);
+        let frame = render.read(ctx)?;
         self.spare = Some(render.into_kept());
         Ok((frame, times.total_ms()))
     }

@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::limits;
 use crate::gpu::scene::tiles;
@@ -112,7 +113,8 @@ impl Target {
     }
 
     /// The entries of the tile lists (their total, after the offsets), read back; blocks.
-    pub fn tile_entries(&self, ctx: &GpuContext) -> u64 {
+    /// `None` where the device could not map the copy (it was lost).
+    pub fn tile_entries(&self, ctx: &GpuContext) -> Option<u64> {
         let tiles = (self.tiles.0 * self.tiles.1) as u64;
         let buffer = ctx.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("tile total readback"),
@@ -128,8 +130,10 @@ impl Target {
         let slice = buffer.slice(..);
         slice.map_async(wgpu::MapMode::Read, |_| {});
         let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
-        let data = slice.get_mapped_range().expect("mapped after the wait");
-        u64::from(u32::from_le_bytes([data[0], data[1], data[2], data[3]]))
+        let data = slice.get_mapped_range().ok()?;
+        Some(u64::from(u32::from_le_bytes([
+            data[0], data[1], data[2], data[3],
+        ])))
     }
 
     /// Fills the output with NaN, so that a pixel the shader fails to write shows.
@@ -154,10 +158,10 @@ impl Target {
 
     /// Reads the output back as a frame of `settings` (alpha marks the plane's pixels); waits
     /// for the GPU.
-    pub fn read(&self, ctx: &GpuContext, settings: &RenderSettings) -> Frame {
+    pub fn read(&self, ctx: &GpuContext, settings: &RenderSettings) -> Result<Frame> {
         let (w, h) = (self.width as u32, self.height as u32);
-        let data = read_texels(ctx, &self.texture, (w, h), TEXEL_BYTES);
-        self.frame_of(&data, settings)
+        let data = read_texels(ctx, &self.texture, (w, h), TEXEL_BYTES)?;
+        Ok(self.frame_of(&data, settings))
     }
 
     /// Starts reading the output back, for a caller that cannot wait (the browser): the
@@ -198,16 +202,22 @@ impl Target {
 }
 
 /// A texture of `size` read back, `texel_bytes` per texel, rows packed tightly (the copy's
-/// rows are padded to wgpu's 256-byte alignment); waits for the GPU.
+/// rows are padded to wgpu's 256-byte alignment); waits for the GPU. A copy the device could
+/// not map after the wait is the machine's failure (a lost device).
 pub fn read_texels(
     ctx: &GpuContext,
     texture: &wgpu::Texture,
     size: (u32, u32),
     texel_bytes: u32,
-) -> Vec<u8> {
+) -> Result<Vec<u8>> {
     let pending = PendingRead::start(ctx, texture, size, texel_bytes);
     let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
-    pending.try_take(ctx).expect("mapped after the wait")
+    pending.try_take(ctx).ok_or_else(|| {
+        Error::machine(
+            format!("GPU {}", ctx.info.name),
+            "the image could not be read back (the device was lost?)",
+        )
+    })
 }
 
 /// A texture's read-back in flight: the copy submitted and the buffer's mapping asked for.

@@ -165,16 +165,13 @@ impl PassTimer {
             }
             _ => {}
         }
+        // The callback said it is mapped; a device lost since has no times either.
+        self.pending = None;
         let ticks: [u64; QUERIES as usize] = {
-            let view = self
-                .readback
-                .slice(..)
-                .get_mapped_range()
-                .expect("mapped: the callback said so");
+            let view = self.readback.slice(..).get_mapped_range().ok()?;
             bytemuck::pod_read_unaligned(&view[..RESOLVE_BYTES as usize])
         };
         self.readback.unmap();
-        self.pending = None;
         Some(std::array::from_fn(|s| {
             self.pending_written[s].then(|| {
                 ticks[2 * s + 1].saturating_sub(ticks[2 * s]) as f64 * self.period_ns * 1e-6
