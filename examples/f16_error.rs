@@ -13,7 +13,6 @@ use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::relative_difference;
 use ltc_lab::render::{Method, RenderSettings};
 use ltc_lab::scene::{Scene, preset};
-use ltc_lab::tables::NamedTables;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let ctx = GpuContext::new()?;
@@ -21,15 +20,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let lut = Lut::embedded();
     let mut gpu = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked)?;
     // The lab's light generator, as its slider makes 20 000 lights.
-    let mut lab = Lab::new(
-        Default::default(),
-        NamedTables::shipped(ltc_lab::ltc::lut::Table::Classic),
-        Err("not needed".into()),
-    );
+    let mut lab = Lab::new(Default::default(), Err("not needed".into()));
     lab.set_light_count(20_000);
     let scenes: [(&str, Scene, usize); 2] = [
         ("paper-100", preset("paper-100"), 512),
-        ("lab 20 000 lights", lab.shared().shaded_scene(), 256),
+        ("lab 20 000 lights", lab.shaded_scene(), 256),
     ];
     println!("| scene | size | method | max rel | mean rel |");
     println!("|---|---|---|---:|---:|");

@@ -21,7 +21,7 @@ pub const PAPER_BRDF_FPS: [f64; 4] = [118.0, 23.0, 12.0, 2.0];
 pub const PAPER_LTC_FPS: [f64; 4] = [285.0, 56.0, 28.0, 5.0];
 
 /// The range of the benchmark's lights unless `--range` says otherwise: paper-100's.
-pub const DEFAULT_RANGE: f64 = 2.0;
+pub const DEFAULT_RANGE: f64 = crate::scene::PAPER_RANGE;
 
 /// One measured cell of the table.
 #[derive(Clone, Debug, PartialEq)]

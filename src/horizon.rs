@@ -47,7 +47,7 @@ pub struct BandError {
 }
 
 /// The specular error Σ|LTC − BRDF| / Σ BRDF over lights uniform in solid angle across the
-/// consecutive `bands` (0–5° and 5–15° give the issue's 0–15° target): each band's sums
+/// consecutive `bands` (0–5° and 5–15° give docs/design.md §4.8's 0–15° target): each band's sums
 /// weighted by its solid angle, `sin hi − sin lo`.
 pub fn aggregate_specular(bands: &[BandError]) -> f64 {
     let weight = |b: &BandError| b.band[1].to_radians().sin() - b.band[0].to_radians().sin();
@@ -204,8 +204,8 @@ mod tests {
     }
 
     /// The failure the measure is for: with the paper's rules, both shipped tables are far
-    /// worse within 15° of the horizon than above 30° (the issue measured 73% against 13%
-    /// for the classic table's specular lobe), and the same seed gives the same figures.
+    /// worse within 15° of the horizon than above 30° (docs/design.md §4.7 gives the figures;
+    /// more than twice is asserted), and the same seed gives the same figures.
     #[test]
     fn the_lowest_band_is_the_worst_for_both_tables() {
         for lut in [Lut::embedded(), Lut::embedded_point()] {

@@ -7,7 +7,6 @@ use std::path::Path;
 use glam::DVec3;
 
 use crate::error::{Error, Result};
-use crate::files::write_atomically;
 use crate::render::{Frame, FrameKind};
 
 /// The tone map of every PNG: radiance × exposure, then Reinhard's `x / (1 + x)` per channel
@@ -36,7 +35,7 @@ fn to_u8(x: f64) -> u8 {
 }
 
 /// The false-colour scale of relative differences: logarithmic from 0.1% to 100% (LTC
-/// errors span three decades, docs/design.md §4 / issue 6's measurements: 1% to 100%).
+/// errors span three decades, docs/design.md §4 measures 1% to 100%).
 pub const DIFF_SCALE_DECADES: [f64; 4] = [1e-3, 1e-2, 1e-1, 1.0];
 
 /// Position of a relative difference on the colour scale, in [0, 1].
@@ -207,11 +206,4 @@ pub fn frame_bytes(frame: &Frame, format: ImageFormat, exposure: f64) -> Vec<u8>
             out.into_inner()
         }
     }
-}
-
-/// Writes `frame` to `path` (a file the user named): `.exr` linear, `.png` tone-mapped;
-/// atomically.
-pub fn write_frame(frame: &Frame, path: &Path, exposure: f64) -> Result<()> {
-    let bytes = frame_bytes(frame, ImageFormat::of(path)?, exposure);
-    write_atomically(path, &bytes)
 }

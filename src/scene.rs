@@ -81,6 +81,13 @@ pub struct Material {
     pub alpha: f64,
 }
 
+impl Default for Material {
+    /// paper-100's (assets/scenes/paper-100.toml).
+    fn default() -> Self {
+        preset("paper-100").material
+    }
+}
+
 /// A pinhole camera looking at `target`, `+z` up.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -138,6 +145,10 @@ pub struct RandomLights {
     #[serde(default)]
     pub range: Option<f64>,
 }
+
+/// The range of paper-100's lights (assets/scenes/paper-100.toml), which the benchmark's and
+/// the lab's generated lights share.
+pub const PAPER_RANGE: f64 = 2.0;
 
 /// The largest light count a scene may ask for; far above the lab's 20 000-light slider,
 /// small enough that a typo cannot exhaust memory (32 bytes each on the GPU: 32 MiB).

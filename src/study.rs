@@ -40,7 +40,7 @@ pub struct Variant {
     pub horizon: Horizon,
 }
 
-/// The variants of issue 5, named exactly so, and `ltc-fast` with each horizon remedy
+/// The variants the study compares (docs/design.md §4.6), and `ltc-fast` with each horizon remedy
 /// (docs/design.md §4.7); `brdf` is the reference (error 0).
 pub fn variants() -> Vec<Variant> {
     let v = |name, method, normalization, filter, lut| Variant {
@@ -88,6 +88,11 @@ pub fn variants() -> Vec<Variant> {
         remedy("ltc-fast-nl-fit", Shipped, Horizon::NlFit),
         remedy("ltc-fast-exact-band", Shipped, Horizon::ExactBand),
     ]
+}
+
+/// The variant named `name`.
+pub fn variant(name: &str) -> Option<Variant> {
+    variants().into_iter().find(|v| v.name == name)
 }
 
 /// One row of `study.csv`.

@@ -19,7 +19,7 @@ fn small(size: usize) -> FitSettings {
     }
 }
 
-/// Upper bound of a fitted cell's specular pointwise error by view angle. Issue 6 measured
+/// Upper bound of a fitted cell's specular pointwise error by view angle. Measured on
 /// ltc_code's published 64×64 table with this metric: 1–4% at normal view, 5–14% at θo ≈ 42°,
 /// 24–32% at 65°, 27–49% at 78°, 70–100% near grazing. An 8×8 table warm-starts across 15°
 /// steps (a worse start than 64×64's 1.4°), so the bounds allow about 1.5× those figures, and

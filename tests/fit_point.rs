@@ -141,7 +141,7 @@ fn shipped_point_table_is_the_file_and_never_worse_than_the_classic_one() {
     }
 }
 
-/// The target of the issue, re-measured without the tables' own `err` channels: on every
+/// The point fit's target (docs/design.md §4), re-measured without the tables' own `err` channels: on every
 /// fourth cell of both axes the specular error of each table by `pointwise_error` at 128²
 /// (twice the resolution the channels were written with). The point table's mean is below
 /// 0.55× the classic one's (0.51 measured here; 0.54 over the whole table).

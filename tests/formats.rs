@@ -343,7 +343,7 @@ const PUBLISHED_ROW_0_TEX2: [[f64; 3]; 64] = [
 
 /// The classic table, exported as ltc-code-js, against ltc_code's published table, where both
 /// fit the same cells (a ≥ 1: column 0's α is α_min, 1e-4 here and 1e-5 there). The
-/// tolerances are those the core issue's comparison with that file established, measured
+/// tolerances are those a comparison with that file established, measured
 /// over this row and explained by the two fits' settings: both stop at Nelder–Mead's 1e-5
 /// tolerance or 100 iterations, ltc_code in f32 and we in f64, so entries agree to ≤ 2.0e-3
 /// (limit 5e-3); ltc_code's magnitudes come from 32² GGX samples (its own row 0 dips 1.3% at
@@ -394,7 +394,7 @@ fn the_classic_table_agrees_with_ltc_codes_published_one() {
         );
     }
     // The normal-view cells of both fits are M = diag(m11, m11, 1): tex1.w = m11, here to
-    // the file's 6 digits (a = 1 and a = 63, the values the core issue quoted).
+    // the file's 6 digits (a = 1 and a = 63).
     assert!((f64::from(tex1[1][3]) / 0.000503905 - 1.0).abs() < 1e-5);
     assert!((f64::from(tex1[63][3]) / 1.12813 - 1.0).abs() < 1e-5);
 }

@@ -239,7 +239,7 @@ fn ltc_and_ltc_fast_agree_to_f32_rounding() {
     }
 }
 
-/// The stability cases of the core issue, on the GPU: lights on the horizon, below the
+/// The stability cases (docs/design.md §4), on the GPU: lights on the horizon, below the
 /// surface, at a shading point, extremely far and extremely bright, α from α_min to 1, a
 /// grazing camera, black base colour and F0 = 0 (zero factors against overflowing sums).
 #[test]
@@ -358,7 +358,7 @@ fn gpu_matches_cpu_with_the_point_table() {
     }
 }
 
-/// Issue 22: every horizon remedy on the GPU against the CPU reference, `ltc` and `ltc-fast`,
+/// Every horizon remedy on the GPU against the CPU reference, `ltc` and `ltc-fast`,
 /// each with its own table (arrival-fit, constrained-fit) or rule (nl-fit, exact-band). Same
 /// tolerance as above: the remedies add per light a few f32 operations (the nl-fit weight, the
 /// exact BRDF divided by ltc-fast's factors), whose rounding is of the order of the LTC's own.

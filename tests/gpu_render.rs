@@ -329,7 +329,7 @@ fn limits_name_the_value_not_a_flag() {
     }
 }
 
-/// Issue 21: a read-back that never waits (the browser's) gives the frame the waiting one
+/// A read-back that never waits (the browser's) gives the frame the waiting one
 /// gives, to the bit: `try_take` says `None` or the texels, and once the device has finished
 /// (polled here, as the browser's event loop does for it) it has them.
 #[test]

@@ -1,4 +1,4 @@
-//! Issue 22: the horizon remedies, measured in f64 against the exact BRDF by the light's
+//! The horizon remedies, measured in f64 against the exact BRDF by the light's
 //! elevation (`horizon::band_errors`, docs/design.md §4.7). Each remedy's figures are pinned to
 //! the ones the docs give; the constrained table keeps the horizon by construction; the
 //! arrival table is its objective's optimum from the classic start; the nl-fit correction is

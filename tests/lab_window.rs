@@ -105,13 +105,24 @@ fn the_frame_log_shows_the_plane_filling_in_over_frames() {
     assert_eq!(
         lines.next(),
         Some(
-            "frame,ms,render_in_flight,lights_done,lights_total,ui_ms,controls_ms,lobe_ms,matrix_ms,plane_ms,clipping_ms,chart_ms"
+            "frame,ms,render_in_flight,lights_done,lights_total,ui_ms,controls_ms,lobe_ms,matrix_ms,plane_ms,clipping_ms,chart_ms,remade"
         )
     );
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
+    // The numbers, then the caches each frame made again (names without commas).
+    let (rows, remade): (Vec<Vec<f64>>, Vec<String>) = lines
+        .map(|l| {
+            let (numbers, remade) = l.rsplit_once(',').unwrap();
+            let numbers = numbers.split(',').map(|x| x.parse().unwrap()).collect();
+            (numbers, remade.to_string())
+        })
+        .unzip();
     assert!(rows.iter().all(|r| r.len() == 12 && r[1] >= 0.0));
+    // The first frame makes the plane's render (and the side panel's caches none).
+    assert!(
+        remade[0].split(' ').any(|c| c == "plane.render"),
+        "{:?}",
+        remade[0]
+    );
     // The parts are timed within the app's own time, and only the one panel shown has any
     // (--panel plane): its side panel and the plane.
     for r in &rows {
@@ -173,4 +184,56 @@ fn no_driver_chatter_reaches_the_user_when_the_window_opens() {
     assert!(o.status.success(), "{}: {said}", o.status);
     assert!(said.trim().is_empty(), "the user saw: {said}");
     assert!(out.exists());
+}
+
+/// A view from anyone (`--view`), its numbers non-finite or out of range, opens a drawn lab
+/// within seconds and says what it refused (a divider of NaN left the plane unfinished for
+/// ever: the screenshot never came); a string that is not a view is refused in one line with
+/// exit code 2, before any window opens.
+#[test]
+fn a_hostile_view_opens_a_drawn_lab_or_is_refused_in_one_line() {
+    use ltc_lab::app::LabState;
+    use ltc_lab::app::link::encode;
+    if !window_available() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let mut state = LabState::default();
+    state.plane.divider = f64::NAN;
+    state.plane.pinned = Some([f64::INFINITY, 0.5]);
+    state.lobe.morph = -1e300;
+    let shot = dir.path().join("hostile.png");
+    let started = std::time::Instant::now();
+    let o = Command::new(env!("CARGO_BIN_EXE_ltc-lab"))
+        .args([
+            "lab",
+            "--panel",
+            "plane",
+            "--size",
+            "640x400",
+            "--view",
+            &encode(&state),
+        ])
+        .arg("--screenshot")
+        .arg(&shot)
+        .output()
+        .unwrap();
+    assert!(
+        o.status.success(),
+        "{}: {}",
+        o.status,
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // Seconds on lavapipe (the plane of 100 lights at 640×400); the hang never ended.
+    assert!(started.elapsed().as_secs() < 60, "{:?}", started.elapsed());
+    assert!(shot.exists());
+    let o = Command::new(env!("CARGO_BIN_EXE_ltc-lab"))
+        .args(["lab", "--view", "v1.not-a-view!", "--screenshot"])
+        .arg(dir.path().join("never.png"))
+        .output()
+        .unwrap();
+    let said = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{said}");
+    assert_eq!(said.trim().lines().count(), 1, "{said}");
+    assert!(said.contains("--view"), "{said}");
 }

@@ -198,7 +198,7 @@ fn rules(clipping: Clipping, normalization: Normalization) -> LtcRules {
     }
 }
 
-/// The browser renders the CPU plane in bands of rows over frames (`cpu::Bands`, issue 21):
+/// The browser renders the CPU plane in bands of rows over frames (`cpu::Bands`):
 /// the image is the one-shot render's to the bit, in every view (the difference view's floor
 /// is taken over the whole image, after the bands are stacked).
 #[test]

@@ -2,11 +2,12 @@
 //! runs the fitter, so its result is never worse than what is stored and its history has the
 //! iterations to plot.
 
-use ltc_lab::app::refit::{Objective, Refit};
+use ltc_lab::app::lab::refit_result::{Objective, RefitResult};
+use ltc_lab::app::refit::Refit;
 use ltc_lab::ltc::lobe::Lobe;
 use ltc_lab::ltc::lut::{Lut, Table};
 
-fn refit(lobe: Lobe, cell: (usize, usize), lut: &Lut) -> ltc_lab::app::refit::RefitResult {
+fn refit(lobe: Lobe, cell: (usize, usize), lut: &Lut) -> RefitResult {
     let mut r = Refit::start(lobe, cell, lut, Objective::of_lut(lut));
     loop {
         if let Some(result) = r.poll() {

@@ -1,27 +1,48 @@
 //! The lab's view links (app/link.rs): what *share view* writes opens the same view, in the
-//! browser (`#view=…`) and on the desktop (`ltc-lab lab --view`); a link that is broken or
-//! edited by hand is refused with a reason, never half-applied.
+//! browser (`#view=…`) and on the desktop (`ltc-lab lab --view`); a string that is not a
+//! view is refused with a reason, never half-applied; what a view holds is checked where it
+//! enters the lab, as any state is (tests/lab/parts.rs).
 
 use base64::Engine;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use ltc_lab::app::lab::{Forms, Lights, LobeView, Part, Selection, SideB, Stage, Tables};
 use ltc_lab::app::link::{decode, encode};
-use ltc_lab::app::state::PanelId;
-use ltc_lab::app::{Compare, LabState};
+use ltc_lab::app::{LabState, PanelId};
+use ltc_lab::ltc::lut::Table;
 use ltc_lab::ltc::remedy::HorizonRule;
-use ltc_lab::render::View;
+use ltc_lab::render::{LtcRules, View};
+use ltc_lab::scene::Material;
 
 /// A state far from the defaults in every part a link carries (and in some it does not).
 fn changed_state() -> LabState {
     let mut s = LabState::default();
-    s.lab.theta_o_deg = 63.5;
-    s.lab.scene.material.alpha = 0.61;
-    s.lab.scene.camera.position = [1.0, -2.0, 1.5];
-    s.lab.seed = 9;
-    s.lab.set_light_count(2500);
-    s.lab.horizon = HorizonRule::ExactBand;
-    s.lab.compare = Compare::TableB;
-    s.lab.cull = false;
-    s.lab.selected_light = Some(7);
+    s.lab.lobe_view = Part::new(LobeView {
+        theta_o_deg: 63.5,
+        ..LobeView::default()
+    });
+    s.lab.material = Part::new(Material {
+        alpha: 0.61,
+        ..Material::default()
+    });
+    let mut stage = Stage::default();
+    stage.camera.position = [1.0, -2.0, 1.5];
+    s.lab.stage = Part::new(stage);
+    s.lab.lights = Part::new(Lights {
+        list: Vec::new(),
+        seed: 9,
+    });
+    let list = s.lab.generated_lights(2500);
+    s.lab.lights = Part::new(Lights { list, seed: 9 });
+    s.lab.rules = Part::new(LtcRules {
+        horizon: HorizonRule::ExactBand,
+        ..LtcRules::default()
+    });
+    s.lab.side_b = Part::new(SideB::TableB);
+    s.lab.forms = Part::new(Forms {
+        cull: false,
+        ..Forms::default()
+    });
+    s.lab.selection = Part::new(Selection { light: Some(7) });
     s.lobe.morph = 0.25;
     s.plane.view = View::Diff;
     s.plane.divider = 0.3;
@@ -57,10 +78,16 @@ fn a_generated_scene_is_a_short_link() {
 #[test]
 fn moved_lights_travel_as_saved() {
     let mut state = LabState::default();
-    state.lab.scene.lights[3].position = [0.123456789, -1.0, 0.333333333];
+    let mut lights = (*state.lab.lights).clone();
+    lights.list[3].position = [0.123456789, -1.0, 0.333333333];
+    state.lab.lights = Part::new(lights);
     let opened = decode(&encode(&state), &LabState::default()).unwrap();
-    assert_eq!(opened.lab.scene, state.lab.scene.rounded_for_saving());
-    assert_eq!(opened.lab.scene.lights[3].position, [0.1235, -1.0, 0.3333]);
+    let scene = ltc_lab::scene::Scene {
+        lights: state.lab.lights.list.clone(),
+        ..ltc_lab::scene::preset("paper-100")
+    };
+    assert_eq!(opened.lab.lights.list, scene.rounded_for_saving().lights);
+    assert_eq!(opened.lab.lights.list[3].position, [0.1235, -1.0, 0.3333]);
 }
 
 /// What belongs to one machine stays on it: the files tables came from, a refit, the chart
@@ -68,14 +95,20 @@ fn moved_lights_travel_as_saved() {
 #[test]
 fn machine_parts_do_not_travel() {
     let mut sender = changed_state();
-    sender.lab.table_file = Some("/home/teacher/my.exr".into());
+    let mine = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("luts/ltc_point.exr");
+    let (table, _) = ltc_lab::tables::NamedTable::from_file(&mine.display().to_string()).unwrap();
+    sender.lab.tables = Part::new(Tables::shipped(Table::Classic).with_a(table, Table::Classic));
     sender.controls.scene_path = "/home/teacher/lecture.toml".into();
     let mut receiver = LabState::default();
     receiver.controls.scene_path = "mine.toml".into();
     let opened = decode(&encode(&sender), &receiver).unwrap();
-    assert_eq!(opened.lab.table_file, None);
+    assert_eq!(
+        opened.lab.tables.a().source,
+        ltc_lab::tables::Source::Shipped(Table::Classic)
+    );
     assert_eq!(opened.controls.scene_path, "mine.toml");
-    assert!(!encode(&sender).contains("teacher"));
+    let link = encode(&sender);
+    assert!(!link.contains("teacher") && !link.contains("ltc_point"));
 }
 
 fn packed(ron_text: &str) -> String {
@@ -87,13 +120,13 @@ fn packed(ron_text: &str) -> String {
 #[test]
 fn a_partial_view_fills_in_defaults() {
     let opened = decode(
-        &packed("(lab:(theta_o_deg:30.0),window:(maximised:Some(Matrix)))"),
+        &packed("(lab:(lobe_view:(theta_o_deg:30.0)),window:(maximised:Some(Matrix)))"),
         &LabState::default(),
     )
     .unwrap();
-    assert_eq!(opened.lab.theta_o_deg, 30.0);
+    assert_eq!(opened.lab.lobe_view.theta_o_deg, 30.0);
     assert_eq!(opened.window.maximised, Some(PanelId::Matrix));
-    assert_eq!(opened.lab.scene, LabState::default().lab.scene);
+    assert_eq!(opened.lab.material, LabState::default().lab.material);
 }
 
 #[test]
@@ -108,9 +141,12 @@ fn broken_views_say_why() {
             "unpack",
         ),
         (format!("{good}!"), "base64"),
-        (packed("(lab:(theta_o_deg:\"high\"))"), "does not read"),
         (
-            packed("(lab:(scene:(plane:(half_size:-1.0))))"),
+            packed("(lab:(lobe_view:(theta_o_deg:\"high\")))"),
+            "does not read",
+        ),
+        (
+            packed("(lab:(stage:(plane:(half_size:-1.0))))"),
             "does not read",
         ),
         (packed("(generated:Some(99999999999))"), "lights"),
@@ -121,11 +157,20 @@ fn broken_views_say_why() {
     }
 }
 
-/// A scene the lab cannot shade is refused whole, never half-applied.
+/// A view whose numbers are out of range opens with them brought within it, each said
+/// naming its field (it was refused whole, which a teacher's hand-edited link did not
+/// deserve for one number).
 #[test]
-fn an_unshadable_scene_is_refused() {
-    let mut state = LabState::default();
-    state.lab.scene.material.alpha = 0.0;
-    let e = decode(&encode(&state), &LabState::default()).unwrap_err();
-    assert!(e.contains("material.alpha"), "{e}");
+fn an_out_of_range_view_opens_clamped_and_says_so() {
+    let mut state = decode(
+        &packed("(lab:(material:(base_color:[0.8,0.8,0.8],f0:0.04,alpha:0.0)))"),
+        &LabState::default(),
+    )
+    .unwrap();
+    let notes = state.check();
+    assert_eq!(state.lab.material.alpha, ltc_lab::ltc::lut::ALPHA_MIN);
+    assert!(
+        notes.iter().any(|n| n.contains("material.alpha")),
+        "{notes:?}"
+    );
 }

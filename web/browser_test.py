@@ -56,6 +56,11 @@ def check_console(name, console, out):
         fail(f"{name}: console errors:\n  " + "\n  ".join(l[:400] for l in bad))
 
 
+def grid(state):
+    """The grid's panels the lab's last frame drew (the side panel aside)."""
+    return [p for p in state["panels"] if p != "controls"]
+
+
 def lab(url, name, out, flags, fragment="", size="1920,1080", timeout=240, wait=SETTLED,
         act=None):
     """Opens the lab, waits until it has drawn everything (or `wait`), runs `act`, and gives
@@ -120,8 +125,8 @@ def main():
     if state["shading"] != "cpu":
         fail(f"webgl2: the plane is not on the CPU path: {state}")
     panels = ["lobe", "matrix", "plane", "clipping", "chart"]
-    if state["panels"] != panels:
-        fail(f"webgl2: the panels shown are {state['panels']}, not all five")
+    if grid(state) != panels:
+        fail(f"webgl2: the panels shown are {grid(state)}, not all five")
     # The panels' text, plots and the shaded plane compress to far more than an empty or
     # single-colour page (a few kB).
     size = os.path.getsize(shot)
@@ -133,7 +138,7 @@ def main():
 
     # 3. The lab on WebGPU: the plane shaded on the browser's GPU, to the last light.
     state, _ = lab(url, "webgpu", out, WEBGPU)
-    if state["shading"] != "gpu" or state["panels"] != panels:
+    if state["shading"] != "gpu" or grid(state) != panels:
         fail(f"webgpu: {state}")
     if state["plane"][0] != state["plane"][1]:
         fail(f"webgpu: the plane stopped at {state['plane']}")
@@ -142,27 +147,39 @@ def main():
           f"drawn {state['settled_ms']} ms after navigation")
 
     # 4. A link round-trips: a view made here opens, and the page reports it back.
-    sent = view_string("(lab:(theta_o_deg:30.0,scene:(plane:(half_size:2.0),"
-                       "material:(base_color:[0.5,0.5,0.5],f0:0.04,alpha:0.61),"
+    sent = view_string("(lab:(lobe_view:(theta_o_deg:30.0),stage:(plane:(half_size:2.0),"
                        "camera:(position:[0.0,-3.4,2.8],target:[0.0,-0.1,0.0],"
-                       "fov_y_degrees:40.0))),generated:Some(40),"
-                       "window:(maximised:Some(Matrix)))")
+                       "fov_y_degrees:40.0)),"
+                       "material:(base_color:[0.5,0.5,0.5],f0:0.04,alpha:0.61)),"
+                       "generated:Some(40),window:(maximised:Some(Matrix)))")
     state, _ = lab(url, "link", out, WEBGL2, fragment="#view=" + sent)
     restored = view_text(state["view"])
     for part in ["theta_o_deg:30.0", "alpha:0.61", "maximised:Some(Matrix)",
                  "generated:Some(40)"]:
         if part not in restored:
             fail(f"link: the view opened from the link lacks {part}: {restored[:600]}")
-    if state["panels"] != ["matrix"]:
-        fail(f"link: the link's panel is not the one shown: {state['panels']}")
+    if grid(state) != ["matrix"]:
+        fail(f"link: the link's panel is not the one shown: {grid(state)}")
     print("web/browser_test.py: ok: a #view= link opened its view (θo 30°, α 0.61, 40 lights, "
           "the matrix panel maximised) and the page reported it back")
 
     # A broken link: the defaults, and no crash.
     state, _ = lab(url, "broken-link", out, WEBGL2, fragment="#view=v1.broken!")
-    if state["panels"] != panels or "theta_o_deg:45.0" not in view_text(state["view"]):
-        fail(f"broken link: not the defaults: {state['panels']}")
+    if grid(state) != panels or "theta_o_deg:45.0" not in view_text(state["view"]):
+        fail(f"broken link: not the defaults: {grid(state)}")
     print("web/browser_test.py: ok: a broken #view= link opened the defaults")
+
+    # A hostile link: a view that decodes, with values no widget would write. It opens drawn
+    # (the plane finished), each value refused or clamped by name in the notices bar.
+    for hostile, field in [("(plane:(divider:NaN))", "divider"),
+                           ("(lab:(overrides:(intensity_scale:NaN)))", "intensity"),
+                           ("(lab:(overrides:(range:1e-300)))", "range")]:
+        state, _ = lab(url, "hostile-link", out, WEBGL2, fragment="#view=" + view_string(hostile),
+                       timeout=120)
+        if state["plane"][0] != state["plane"][1] or field not in (state["message"] or ""):
+            fail(f"hostile link {hostile}: plane {state['plane']}, message {state['message']!r}")
+    print("web/browser_test.py: ok: hostile #view= links (NaN divider, NaN intensity, range "
+          "1e-300) opened drawn, each field named")
 
     # 5. Files dropped on the window.
     drops(url, out)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The lab in a real browser (issue 21): builds dist/ (web/build.sh), serves it on 127.0.0.1
+# The lab in a real browser: builds dist/ (web/build.sh), serves it on 127.0.0.1
 # and runs web/browser_test.py, which opens it in headless Chromium: the self-check on
 # WebGPU (SwiftShader), the lab on WebGL2 and on WebGPU, a shared link, dropped and picked
 # files, downloads and a refit (the WebGPU canvas is not composited in headless Chromium

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the lab for the browser into dist/ (issue 21) on a machine like the project's, whose
+# Builds the lab for the browser into dist/ on a machine like the project's, whose
 # rustup has no wasm32-unknown-unknown standard library and cannot download one: Debian's Rust
 # toolchain (rustc-web, cargo-web, rust-web-src, lld) builds std for wasm32 itself. A user
 # with rustup does `rustup target add wasm32-unknown-unknown` and `trunk build --release`.

@@ -1,5 +1,5 @@
 //! Work off the UI thread. On the desktop a job runs on a thread of its own. The browser
-//! build has no threads (issue 21): there a job is a sequence of steps, and the lab runs the
+//! build has no threads: there a job is a sequence of steps, and the lab runs the
 //! queued jobs' steps at the start of each frame within a budget (`run_for`), so that a frame
 //! never waits for a whole job and the window stays live while it runs.
 

@@ -8,9 +8,10 @@ use egui::Color32;
 use serde::{Deserialize, Serialize};
 
 use crate::app::axes::log_axis;
-use crate::app::file_io::Purpose;
-use crate::app::lab::{Lab, Panel, Request, Shared};
+use crate::app::files::Purpose;
+use crate::app::lab::{Checked, Forms, Lab, Message, Request};
 use crate::app::measure::{MEASURE_SIZE, MeasureJob, Measurement, Point, REPEATS};
+use crate::app::panel::Panel;
 use crate::app::shading::FRAME_BUDGET_MS;
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
 use crate::colormap::{round_sig, short_number};
@@ -24,14 +25,28 @@ pub struct ChartState {
     pub measurement: Option<Measurement>,
 }
 
+impl Checked for ChartState {
+    /// A measurement the chart cannot plot is dropped (a zero or infinite time froze the
+    /// plot's axes at 100% CPU, at every start where it was kept).
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        let Some(why) = self.measurement.as_ref().and_then(|m| m.validate().err()) else {
+            return Vec::new();
+        };
+        self.measurement = None;
+        vec![format!(
+            "the saved chart was dropped ({why}): measure again"
+        )]
+    }
+}
+
 #[derive(Default)]
 pub struct ChartPanel {
-    pub state: ChartState,
-    pub error: Option<String>,
+    state: ChartState,
+    error: Option<String>,
     /// A measurement under way.
-    pub job: Option<MeasureJob>,
+    job: Option<MeasureJob>,
     /// A `study.csv` to read instead of measuring.
-    pub study_path: String,
+    study_path: String,
 }
 
 impl Panel for ChartPanel {
@@ -61,9 +76,14 @@ impl Panel for ChartPanel {
                 ui.vertical(|ui| time_error_plot(ui, m, height));
             });
             ui.allocate_ui(egui::vec2(half, height), |ui| {
-                ui.vertical(|ui| fps_plot(ui, m, lab.shared(), height));
+                ui.vertical(|ui| fps_plot(ui, m, lab.forms(), height));
             });
         });
+    }
+
+    /// Whether a measurement is under way.
+    fn busy(&self) -> bool {
+        self.job.is_some()
     }
 }
 
@@ -73,6 +93,10 @@ impl ChartPanel {
             state,
             ..Self::default()
         }
+    }
+
+    pub fn state(&self) -> &ChartState {
+        &self.state
     }
 
     /// *measure* (or its progress and cancel), and a study to read instead.
@@ -99,72 +123,59 @@ impl ChartPanel {
         // A browser picks the file instead of reading a path.
         let picks = cfg!(target_arch = "wasm32");
         if !picks {
-            ui.add(
-                egui::TextEdit::singleline(&mut self.study_path)
-                    .desired_width(110.0)
-                    .hint_text("path to a study.csv"),
-            )
-            .on_hover_text(
-                "A study.csv written by `ltc-lab study`, to plot instead of a live measurement",
-            );
+            let field = ui
+                .add(
+                    egui::TextEdit::singleline(&mut self.study_path)
+                        .desired_width(110.0)
+                        .hint_text("path to a study.csv"),
+                )
+                .on_hover_text(
+                    "A study.csv written by `ltc-lab study`, to plot instead of a live measurement",
+                );
+            crate::app::widgets::name(ui, &field, "study file");
         }
         if ui
             .small_button("load study")
             .on_hover_text("Plot a study.csv written by `ltc-lab study` (the one named on the left, a picked one in a browser, or drop one on the window)")
             .clicked()
         {
-            if picks {
-                lab.request = Some(Request::Pick(Purpose::Study));
-            } else {
-                self.load_study();
-            }
+            lab.request(Request::Open(Purpose::Study, self.study_path.clone()));
         }
         if let Some(m) = &self.state.measurement {
             ui.small(&m.device);
         }
     }
 
-    /// Plots the study named in the field.
-    fn load_study(&mut self) {
-        let path = self.study_path.trim().to_string();
-        if path.is_empty() {
-            self.error = Some("load study: name a study.csv in the field first".into());
-            return;
-        }
-        let rows = crate::study::read_csv(std::path::Path::new(&path));
-        self.use_study(rows, &path);
-    }
-
-    /// Plots a study's rows (read from the file `name`); or says why its file could not be.
-    pub fn use_study(&mut self, rows: crate::error::Result<Vec<StudyRow>>, name: &str) {
+    /// Plots a study's rows (read from the file `name`), or says why its file could not be
+    /// plotted (the error names the file already).
+    pub fn use_study(&mut self, rows: crate::error::Result<Vec<StudyRow>>, name: &str) -> Message {
         match rows {
             Ok(rows) => {
                 self.state.measurement = Some(Measurement::from_study(&rows, name));
                 self.error = None;
+                Message::note(format!("plotting {name}"))
             }
-            // The error names the file already.
-            Err(e) => self.error = Some(format!("load study: {e}")),
+            Err(e) => {
+                let said = format!("load study: {e}");
+                self.error = Some(said.clone());
+                Message::error(said)
+            }
         }
     }
 
     /// Starts measuring the current scene on the lab's device.
     pub fn start(&mut self, lab: &Lab) {
-        let Some(ctx) = &lab.gpu else {
+        let Some(ctx) = lab.device() else {
             self.error = Some(format!("measure: {}", lab.describe_device()));
             return;
         };
-        match MeasureJob::new(ctx, &lab.shared().shaded_scene(), &lab.tables().a.lut) {
+        match MeasureJob::new(ctx, &lab.shaded_scene(), &lab.tables().a().lut) {
             Ok(job) => {
                 self.job = Some(job);
                 self.error = None;
             }
             Err(e) => self.error = Some(e),
         }
-    }
-
-    /// Whether a measurement is under way.
-    pub fn busy(&self) -> bool {
-        self.job.is_some()
     }
 }
 
@@ -177,9 +188,18 @@ fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
     let mut names: Vec<&str> = m.points.iter().map(|p| p.label.as_str()).collect();
     names.sort_unstable();
     names.dedup();
+    let method = |name: &str| {
+        m.points
+            .iter()
+            .find(|p| p.label == name)
+            .and_then(|p| p.method)
+    };
     let entries: Vec<Entry> = names
         .iter()
-        .map(|&n| (n.to_string(), method_colour(n), Some(variant_shape(n))))
+        .map(|&n| {
+            let shape = variant_shape(n, method(n));
+            (n.to_string(), method_colour(method(n)), Some(shape))
+        })
         .collect();
     let error = |p: &Point| p.rel_rmse.max(crate::plot::ERROR_FLOOR).log10();
     let times = m
@@ -202,15 +222,18 @@ fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
                 if let Some([lo, hi]) = pt.ms_range {
                     let y = error(pt);
                     let bar = vec![[lo.log10(), y], [hi.log10(), y]];
-                    p.line(egui_plot::Line::new(name.to_string(), bar).color(method_colour(name)));
+                    p.line(
+                        egui_plot::Line::new(name.to_string(), bar)
+                            .color(method_colour(method(name))),
+                    );
                 }
             }
             let series: Vec<[f64; 2]> = mine.map(|pt| [pt.ms.log10(), error(pt)]).collect();
             p.points(
                 egui_plot::Points::new(name.to_string(), series)
                     .radius(5.0)
-                    .shape(variant_shape(name))
-                    .color(method_colour(name)),
+                    .shape(variant_shape(name, method(name)))
+                    .color(method_colour(method(name))),
             );
         }
     });
@@ -220,7 +243,7 @@ fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
 
 /// fps against the light count (the paper's Table 1 as dashed references), with the timed
 /// renders' spread as bars; its legend and the LTC/BRDF ratio under it.
-fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &Shared, height: f32) {
+fn fps_plot(ui: &mut egui::Ui, m: &Measurement, forms: &Forms, height: f32) {
     let mut entries: Vec<Entry> = vec![
         ("paper BRDF (GTX 1060)".into(), PAPER_BRDF_COLOUR, None),
         ("paper LTC (GTX 1060)".into(), PAPER_LTC_COLOUR, None),
@@ -229,7 +252,7 @@ fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &Shared, height: f32) {
         let name = method.name();
         (
             name.to_string(),
-            method_colour(name),
+            method_colour(Some(*method)),
             Some(egui_plot::MarkerShape::Circle),
         )
     }));
@@ -242,7 +265,7 @@ fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &Shared, height: f32) {
     let ys = m.scaling.iter().flat_map(|(_, s)| s.iter().map(|q| q[1]));
     let ys = ys.chain(PAPER_BRDF_FPS).chain(PAPER_LTC_FPS);
     // The paper's Table 1 comparison first, where a small window still shows it.
-    let ratio = speed_ratio(m, s);
+    let ratio = speed_ratio(m, forms);
     if let Some(line) = &ratio {
         ui.small(line);
     }
@@ -276,7 +299,7 @@ fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &Shared, height: f32) {
             );
         }
         for (method, series) in &m.scaling {
-            let (name, colour) = (method.name(), method_colour(method.name()));
+            let (name, colour) = (method.name(), method_colour(Some(*method)));
             let log: Vec<[f64; 2]> = series
                 .iter()
                 .filter(|q| q[0] > 0.0 && q[1] > 0.0)
@@ -297,15 +320,16 @@ fn fps_plot(ui: &mut egui::Ui, m: &Measurement, s: &Shared, height: f32) {
 
 /// LTC's fps over the BRDF's at each light count both were measured at, for the lab's LTC
 /// and BRDF forms (or the first of each measured): the paper's Table 1 comparison.
-pub fn speed_ratio(m: &Measurement, s: &Shared) -> Option<String> {
-    let pick = |chosen: Method, family: &str| {
-        m.scaling
-            .iter()
-            .find(|(x, _)| *x == chosen)
-            .or_else(|| m.scaling.iter().find(|(x, _)| x.name().starts_with(family)))
+pub fn speed_ratio(m: &Measurement, forms: &Forms) -> Option<String> {
+    let pick = |chosen: Method| {
+        m.scaling.iter().find(|(x, _)| *x == chosen).or_else(|| {
+            m.scaling
+                .iter()
+                .find(|(x, _)| x.is_ltc() == chosen.is_ltc())
+        })
     };
-    let (ltc, ltc_fps) = pick(s.method_ltc, "ltc")?;
-    let (brdf, brdf_fps) = pick(s.method_brdf, "brdf")?;
+    let (ltc, ltc_fps) = pick(forms.ltc)?;
+    let (brdf, brdf_fps) = pick(forms.brdf)?;
     let ratios: Vec<String> = ltc_fps
         .iter()
         .filter_map(|[n, f]| {
@@ -440,9 +464,9 @@ fn marker(
 const PAPER_BRDF_COLOUR: Color32 = Color32::from_gray(210);
 const PAPER_LTC_COLOUR: Color32 = Color32::from_gray(140);
 
-/// One colour per method in every plot, from its name (a study's variants start with it):
-/// egui_plot's automatic colours follow the drawing order and differ between the two plots.
-pub fn method_colour(label: &str) -> Color32 {
+/// One colour per method in every plot (grey for a point of no known method): egui_plot's
+/// automatic colours follow the drawing order and differ between the two plots.
+pub fn method_colour(method: Option<Method>) -> Color32 {
     const PALETTE: [Color32; 6] = [
         Color32::from_rgb(240, 150, 60),
         Color32::from_rgb(230, 90, 90),
@@ -451,24 +475,17 @@ pub fn method_colour(label: &str) -> Color32 {
         Color32::from_rgb(200, 110, 230),
         Color32::from_rgb(60, 210, 210),
     ];
-    method_of(label).map_or(Color32::from_gray(180), |(k, _)| PALETTE[k % PALETTE.len()])
-}
-
-/// The method a series label names, with its index in `Method::ALL`: the longest method
-/// name the label starts with ("ltc-fast-point" is ltc-fast's).
-fn method_of(label: &str) -> Option<(usize, Method)> {
-    Method::ALL
-        .iter()
-        .copied()
-        .enumerate()
-        .filter(|(_, m)| label.starts_with(m.name()))
-        .max_by_key(|(_, m)| m.name().len())
+    let index = method.and_then(|m| Method::ALL.iter().position(|&x| x == m));
+    index.map_or(Color32::from_gray(180), |k| PALETTE[k % PALETTE.len()])
 }
 
 /// The marker of a method's variant ("ltc-lut16" of ltc): a circle for the method itself,
-/// another shape for each variant, so that variants of one colour stay apart.
-fn variant_shape(label: &str) -> egui_plot::MarkerShape {
-    let variant = method_of(label).map_or(label, |(_, m)| &label[m.name().len()..]);
+/// another shape for each variant (by what its name adds to the method's), so that variants
+/// of one colour stay apart.
+fn variant_shape(label: &str, method: Option<Method>) -> egui_plot::MarkerShape {
+    let variant = method
+        .and_then(|m| label.strip_prefix(m.name()))
+        .unwrap_or(label);
     if variant.is_empty() {
         return egui_plot::MarkerShape::Circle;
     }

@@ -3,6 +3,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::app::lab::part::Notes;
+use crate::app::lab::{Checked, TableId};
+use crate::ltc::lut::ALPHA_MIN;
 use crate::scene::{Scene, preset};
 
 /// The clipping panel's own settings (its rules are the lab's).
@@ -53,7 +56,29 @@ impl ClipScene {
 pub struct ClipSetup {
     pub alpha: [f64; 3],
     pub light: [[f64; 3]; 3],
-    pub table_b: bool,
+    pub table: TableId,
+}
+
+/// How far the case lights' fields reach, scene units: the plane spans ±2, and a light
+/// farther than a plane's width off it lights the pictures as a distant one does.
+pub const LIGHT_REACH: f64 = 3.0;
+
+impl Checked for ClippingState {
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        let mut n = Notes(Vec::new());
+        let (s, p) = (&mut self.setup, &previous.setup);
+        n.numbers(
+            "the clipping panel's α",
+            &mut s.alpha,
+            &p.alpha,
+            [ALPHA_MIN, 1.0],
+        );
+        for (k, (light, before)) in s.light.iter_mut().zip(&p.light).enumerate() {
+            let field = format!("the clipping panel's light {k}");
+            n.numbers(&field, light, before, [-LIGHT_REACH, LIGHT_REACH]);
+        }
+        n.0
+    }
 }
 
 impl Default for ClipSetup {
@@ -63,7 +88,7 @@ impl Default for ClipSetup {
         Self {
             alpha: scenes.each_ref().map(|s| s.material.alpha),
             light: scenes.each_ref().map(|s| s.lights[0].position),
-            table_b: false,
+            table: TableId::A,
         }
     }
 }

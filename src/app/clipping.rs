@@ -9,27 +9,29 @@
 use egui::{Color32, Pos2, Vec2};
 
 use crate::app::axes::symlog_y;
+use crate::app::cache::{Cached, Own};
 use crate::app::clip_rows::{CLASS_COLOURS, CaseRow, PICTURE, ROWS, RowsInput, RowsWorker, sample};
-use crate::app::clip_setup::{ClipScene, ClipSetup, ClippingState};
+use crate::app::clip_setup::{ClipScene, ClipSetup, ClippingState, LIGHT_REACH};
 use crate::app::elevation::ElevationView;
-use crate::app::lab::{Aspect, Lab, Panel, Stamp};
+use crate::app::lab::{Lab, TableId};
+use crate::app::panel::Panel;
+use crate::app::widgets::clipping_rules;
 use crate::colormap::{round_sig, short_number};
 use crate::cpu::ClipCounts;
 use crate::ltc::ClipCase;
 use crate::render::Frame;
 
-#[derive(Default)]
 pub struct ClippingPanel {
-    pub state: ClippingState,
+    state: ClippingState,
     /// Both case rows as last made.
-    pub rows: Vec<CaseRow>,
-    /// What the rows (made or being made) were started for: the lab's stamp and the setup.
-    made_for: Option<(Stamp, ClipSetup)>,
+    rows: Vec<CaseRow>,
+    /// The rows' making, started again when what they are made from changes.
+    started: Cached<()>,
     worker: RowsWorker,
     /// One light over its elevation at the lab's (θo, α).
     elevation: ElevationView,
     /// The user's profile line (picture coordinates, 0–1), while one is drawn.
-    pub line: Option<[Pos2; 2]>,
+    line: Option<[Pos2; 2]>,
     drag_from: Option<Pos2>,
 }
 
@@ -48,15 +50,17 @@ impl Panel for ClippingPanel {
                 self.legend(ui);
                 self.profile(ui);
                 ui.separator();
-                let table_b = self.state.setup.table_b;
-                let tables = lab.tables();
-                let lut = if table_b {
-                    &tables.b.lut
-                } else {
-                    &tables.a.lut
-                };
-                self.elevation.show(ui, lab, (lut, table_b));
+                self.elevation.show(ui, lab, self.state.setup.table);
             });
+    }
+
+    /// Whether the pictures are being made.
+    fn busy(&self) -> bool {
+        self.worker.busy()
+    }
+
+    fn caches(&self) -> Vec<(&'static str, u64)> {
+        vec![self.started.count(), self.elevation.count()]
     }
 }
 
@@ -64,18 +68,22 @@ impl ClippingPanel {
     pub fn new(state: ClippingState) -> Self {
         Self {
             state,
-            ..Self::default()
+            rows: Vec::new(),
+            started: Cached::new("clipping.pictures"),
+            worker: RowsWorker::default(),
+            elevation: ElevationView::default(),
+            line: None,
+            drag_from: None,
         }
     }
 
-    /// Whether the pictures are being made.
-    pub fn busy(&self) -> bool {
-        self.worker.busy()
+    pub fn state(&self) -> &ClippingState {
+        &self.state
     }
 
     /// The lab's two rules, the table, and a reset.
     fn toolbar(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
-        crate::app::controls::clipping_rules(
+        clipping_rules(
             ui,
             lab,
             [
@@ -92,12 +100,12 @@ impl ClippingPanel {
         ui.separator();
         let setup = &mut self.state.setup;
         ui.label("table");
-        ui.selectable_value(&mut setup.table_b, false, "A")
+        ui.selectable_value(&mut setup.table, TableId::A, "A")
             .on_hover_text("Table A, the one the lab shades with");
         ui.selectable_value(
-            &mut setup.table_b,
-            true,
-            format!("B ({})", lab.tables().b.name),
+            &mut setup.table,
+            TableId::B,
+            format!("B ({})", lab.tables().b().name),
         )
         .on_hover_text("Table B, the other fit");
         if ui
@@ -139,7 +147,7 @@ impl ClippingPanel {
             for (c, axis) in ["x ", "y ", "z "].into_iter().enumerate() {
                 ui.add(
                     egui::DragValue::new(&mut setup.light[k][c])
-                        .range(-3.0..=3.0)
+                        .range(-LIGHT_REACH..=LIGHT_REACH)
                         .speed(0.005)
                         .max_decimals(4)
                         .prefix(axis),
@@ -307,19 +315,16 @@ impl ClippingPanel {
     /// Makes both rows again (on the worker) when the rules, α, a light or the table
     /// changed; takes them in once made.
     fn ensure(&mut self, ctx: &egui::Context, lab: &Lab) {
-        let setup = &self.state.setup;
-        let made_for = (lab.stamp(&[Aspect::Rules, Aspect::Tables]), setup.clone());
-        if self.made_for.as_ref() != Some(&made_for) {
-            let tables = lab.tables();
-            let lut = if setup.table_b { &tables.b } else { &tables.a };
+        let inputs = (lab.rules(), lab.tables(), Own(self.state.setup.clone()));
+        let worker = &mut self.worker;
+        self.started.get(inputs, |(rules, tables, Own(setup))| {
             let input = RowsInput {
-                rules: lab.shared().ltc_rules(),
-                setup: setup.clone(),
-                lut: lut.lut.clone(),
+                rules: **rules,
+                lut: tables.get(setup.table).lut.clone(),
+                setup,
             };
-            self.worker.start(ctx, input);
-            self.made_for = Some(made_for);
-        }
+            worker.start(ctx, input);
+        });
         if let Some(rows) = self.worker.poll(ctx) {
             self.rows = rows;
         }

@@ -1,20 +1,22 @@
 //! The side panel: every global control, each with a tooltip naming what it changes in the
-//! equations. It edits the state; what reaches beyond the state (a new table, a file to
-//! write) comes back as an `Action` for the app to carry out.
+//! equations. It edits the lab's parts; a file to read or write is a request the app carries
+//! out.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 
-use crate::app::file_io::{Purpose, save};
-use crate::app::lab::{Aspect, Lab, Message, Panel, Request};
+use crate::app::files::Purpose;
+use crate::app::lab::parts::{BRDF_FORMS, LTC_FORMS, RANGE_RANGE};
+use crate::app::lab::{Forms, Lab, LobeView, Overrides, Request};
+use crate::app::panel::Panel;
+use crate::app::widgets::{clipping_rules, explain, name};
 use crate::ltc::Normalization;
-use crate::ltc::formats;
-use crate::ltc::lut::Table;
+use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::ltc::remedy::Horizon;
-use crate::render::Method;
-use crate::scene::{PRESETS, Scene, preset};
-use crate::tables::NamedTable;
+use crate::render::LtcRules;
+use crate::scene::{Light, Material, PRESETS, preset};
+use crate::tables::Source;
 
 /// The light counts the slider offers, at most (and at most what the adapter shades).
 pub const MAX_LIGHT_SLIDER: usize = 100_000;
@@ -46,12 +48,16 @@ const PICKS: bool = cfg!(target_arch = "wasm32");
 /// The side panel.
 #[derive(Default)]
 pub struct ControlsPanel {
-    pub state: ControlsState,
+    state: ControlsState,
 }
 
 impl ControlsPanel {
     pub fn new(state: ControlsState) -> Self {
         Self { state }
+    }
+
+    pub fn state(&self) -> &ControlsState {
+        &self.state
     }
 }
 
@@ -60,7 +66,7 @@ impl Panel for ControlsPanel {
         ui.heading("LTC Lab");
         ui.label(egui::RichText::new(lab.describe_device()).small())
             .on_hover_text("The adapter the plane and chart panels shade on");
-        if let Some(e) = &lab.gpu_error {
+        if let Some(e) = lab.device_error() {
             ui.colored_label(
                 egui::Color32::from_rgb(230, 120, 60),
                 format!(
@@ -82,98 +88,74 @@ impl Panel for ControlsPanel {
     }
 }
 
-/// The last file operation's outcome, in a bar along the bottom of the window: always in
-/// view, even in a small window, and it moves no control (the panels' contents hang from
-/// their tops; at the top of the side panel it pushed every control down under the pointer).
-/// Whether it was dismissed.
-pub fn message_bar(ui: &mut egui::Ui, m: &Message) -> bool {
-    let colour = if m.is_error {
-        egui::Color32::from_rgb(230, 90, 80)
-    } else {
-        ui.visuals().text_color()
-    };
-    ui.horizontal(|ui| {
-        let dismissed = ui
-            .small_button("×")
-            .on_hover_text("Dismiss this notice")
-            .clicked();
-        ui.colored_label(colour, &m.text);
-        dismissed
-    })
-    .inner
-}
-
 fn material(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.strong("Material");
-    lab.edit(Aspect::Scene, |s| {
-        let before = s.scene.material.alpha;
-        let mut alpha = before;
-        ui.add(egui::Slider::new(&mut alpha, 1e-3..=1.0).logarithmic(true).text("α"))
+    lab.edit(|m: &mut Material| {
+        ui.add(egui::Slider::new(&mut m.alpha, 1e-3..=1.0).logarithmic(true).text("α"))
             .on_hover_text("GGX α: D = α² / (π ((n·h)²(α²−1)+1)²), Λ = (−1+sqrt(1+α² tan²θ))/2; also the LUT column (r = sqrt α) the LTC comes from");
-        let mut r = alpha.sqrt();
+        let mut r = m.alpha.sqrt();
         if ui
             .add(egui::Slider::new(&mut r, 0.0316..=1.0).text("roughness r = √α"))
             .on_hover_text("Perceptual roughness; α = r². Burley's FD = 0.5 + 2α(l·h)² uses the paper's α (ltc_code and Unity use √α)")
             .changed()
         {
-            alpha = r * r;
+            m.alpha = (r * r).max(ALPHA_MIN);
         }
-        s.scene.material.alpha = alpha.clamp(crate::ltc::lut::ALPHA_MIN, 1.0);
-        s.scene.material.alpha != before
     });
-    lab.edit(Aspect::LobeView, |s| {
-        ui.add(egui::Slider::new(&mut s.theta_o_deg, 0.0..=90.0).text("θo (°)"))
+    lab.edit(|v: &mut LobeView| {
+        ui.add(egui::Slider::new(&mut v.theta_o_deg, 0.0..=90.0).text("θo (°)"))
             .on_hover_text("View angle of the lobe and matrix panels: v = (sin θo, 0, cos θo); the LUT row is sqrt(1 − cos θo)")
     });
-    lab.edit(Aspect::Scene, |s| {
-        ui.add(egui::Slider::new(&mut s.scene.material.f0, 0.0..=1.0).text("F0"))
-            .on_hover_text("Schlick: F = F0 + (1 − F0)(1 − v·h)⁵; in the LTC, the specular magnitude F0·n_s + (1 − F0)·f_s")
-    });
-    ui.horizontal(|ui| {
-        lab.edit(Aspect::Scene, |s| {
-            let mut c = s.scene.material.base_color.map(|x| x as f32);
-            let r = ui
+    lab.edit(|m: &mut Material| {
+        ui.add(egui::Slider::new(&mut m.f0, 0.0..=1.0).text("F0"))
+            .on_hover_text("Schlick: F = F0 + (1 − F0)(1 − v·h)⁵; in the LTC, the specular magnitude F0·n_s + (1 − F0)·f_s");
+        ui.horizontal(|ui| {
+            let mut c = m.base_color.map(|x| x as f32);
+            if ui
                 .color_edit_button_rgb(&mut c)
-                .on_hover_text("Base colour c: fd = c/π (…)(…); in the LTC, c · n_d · D_d");
-            s.scene.material.base_color = c.map(f64::from);
-            r
+                .on_hover_text("Base colour c: fd = c/π (…)(…); in the LTC, c · n_d · D_d")
+                .changed()
+            {
+                m.base_color = c.map(f64::from);
+            }
+            ui.label("base colour");
         });
-        ui.label("base colour");
     });
 }
 
 fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
     let max = lab.max_lights().min(MAX_LIGHT_SLIDER);
     ui.strong("Lights");
-    lab.edit(Aspect::Shading, |s| {
+    lab.edit(|o: &mut Overrides| {
         ui.add(
-            egui::Slider::new(&mut s.intensity_scale, 0.01..=100.0)
+            egui::Slider::new(&mut o.intensity_scale, 0.01..=100.0)
                 .logarithmic(true)
                 .text("intensity ×"),
         )
-        .on_hover_text("Multiplies every light's I in E = I/d² · w(d)")
+        .on_hover_text("Multiplies every light's I in E = I/d² · w(d)");
+        explain(ui, "× every light's I (not saved to the scene)");
+        let range = ui
+            .add(egui::Slider::new(&mut o.range, 0.0..=RANGE_RANGE[1]).text("range R"))
+            .on_hover_text("The window w(d) = clamp(1 − (d/R)⁴, 0, 1)²; 0 keeps each light's own range (absent = ∞)");
+        // In steps of the smallest range it shows (0.01): a range between 0 (each light's
+        // own) and that showed as "0.00" beside a black plane.
+        if range.changed() {
+            o.range = (o.range / RANGE_RANGE[0]).round() * RANGE_RANGE[0];
+        }
+        explain(
+            ui,
+            if o.range > 0.0 {
+                "every light fades to 0 at distance R"
+            } else {
+                "0: each light's own range from the scene"
+            },
+        );
     });
-    explain(ui, "× every light's I (not saved to the scene)");
-    lab.edit(Aspect::Shading, |s| {
-        ui.add(egui::Slider::new(&mut s.range_override, 0.0..=10.0).text("range R"))
-            .on_hover_text("The window w(d) = clamp(1 − (d/R)⁴, 0, 1)²; 0 keeps each light's own range (absent = ∞)")
-    });
-    explain(
-        ui,
-        if lab.shared().range_override > 0.0 {
-            "every light fades to 0 at distance R"
-        } else {
-            "0: each light's own range from the scene"
-        },
-    );
-    let selected = lab.shared().selected_light;
-    if let Some(k) = selected.filter(|&k| k < lab.shared().scene.lights.len()) {
-        lab.edit(Aspect::Scene, |s| {
-            let half_size = s.scene.plane.half_size;
-            light_position(ui, k, &mut s.scene.lights[k].position, half_size)
-        });
+    if let Some(k) = lab.selection().light {
+        let half_size = lab.stage().plane.half_size;
+        lab.edit_light(k, |l| light_position(ui, k, l, half_size));
     }
-    let mut count = lab.shared().scene.lights.len();
+    let mut count = lab.lights().list.len();
     ui.horizontal(|ui| {
         if ui
             .add(egui::Slider::new(&mut count, 0..=max).logarithmic(true).text("lights"))
@@ -184,37 +166,38 @@ fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
         }
     });
     // The slider clamps a typed count without a word: say it where it was typed.
-    if max < MAX_LIGHT_SLIDER && lab.shared().scene.lights.len() >= max {
+    if max < MAX_LIGHT_SLIDER && lab.lights().list.len() >= max {
         ui.small(format!("at most {max} lights: this adapter's limit"));
     }
-    lab.edit(Aspect::Shading, |s| {
-        ui.checkbox(&mut s.cull, "cull by range")
+    lab.edit(|f: &mut Forms| {
+        ui.checkbox(&mut f.cull, "cull by range")
             .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. The image is the same to the bit; with short ranges it is much faster")
     });
 }
 
 fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.strong("Shading");
-    lab.edit(Aspect::Shading, |s| {
-        let ltc = egui::ComboBox::from_label("LTC form")
-            .selected_text(s.method_ltc.name())
+    lab.edit(|f: &mut Forms| {
+        egui::ComboBox::from_label("LTC form")
+            .selected_text(f.ltc.name())
             .show_ui(ui, |ui| {
-                [Method::Ltc, Method::LtcFast]
-                    .map(|m| ui.selectable_value(&mut s.method_ltc, m, m.name()).changed())
-                    .contains(&true)
-            });
-        ltc.response.on_hover_text("ltc: the paper's eq. 30 per light; ltc-fast: M^-1 folded with the frame, unnormalized u, eq. 27's factoring");
-        let brdf = egui::ComboBox::from_label("BRDF form")
-            .selected_text(s.method_brdf.name())
+                for m in LTC_FORMS {
+                    ui.selectable_value(&mut f.ltc, m, m.name());
+                }
+            })
+            .response
+            .on_hover_text("ltc: the paper's eq. 30 per light; ltc-fast: M^-1 folded with the frame, unnormalized u, eq. 27's factoring");
+        egui::ComboBox::from_label("BRDF form")
+            .selected_text(f.brdf.name())
             .show_ui(ui, |ui| {
-                [Method::Brdf, Method::BrdfFast]
-                    .map(|m| ui.selectable_value(&mut s.method_brdf, m, m.name()).changed())
-                    .contains(&true)
-            });
-        brdf.response.on_hover_text(
-            "brdf: eq. 28 as docs/design.md §1 writes it; brdf-fast: Filament's V_SmithGGXCorrelated",
-        );
-        ltc.inner == Some(true) || brdf.inner == Some(true)
+                for m in BRDF_FORMS {
+                    ui.selectable_value(&mut f.brdf, m, m.name());
+                }
+            })
+            .response
+            .on_hover_text(
+                "brdf: eq. 28 as docs/design.md §1 writes it; brdf-fast: Filament's V_SmithGGXCorrelated",
+            );
     });
     clipping_rules(
         ui,
@@ -231,23 +214,22 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
         ],
     );
     horizon_remedy(ui, lab);
-    lab.edit(Aspect::Rules, |s| {
-        let mut paper = s.normalization == Normalization::PaperLiteral;
-        let r = ui.checkbox(&mut paper, "paper-literal normalization")
+    lab.edit(|r: &mut LtcRules| {
+        let mut paper = r.normalization == Normalization::PaperLiteral;
+        ui.checkbox(&mut paper, "paper-literal normalization")
             .on_hover_text("The paper's eq. 25 as printed: no 1/π in D and no magnitudes n_s, f_s, n_d (docs/design.md §1 corrects both)");
-        s.normalization = if paper {
+        r.normalization = if paper {
             Normalization::PaperLiteral
         } else {
             Normalization::Corrected
         };
-        r
     });
 }
 
-/// The horizon remedy (docs/design.md §4.7): eq. 30 alone, a table fitted for the horizon, or
+/// The horizon remedy (docs/design.md §4.8): eq. 30 alone, a table fitted for the horizon, or
 /// a rule per light.
 fn horizon_remedy(ui: &mut egui::Ui, lab: &mut Lab) {
-    let current = lab.shared().horizon_remedy();
+    let current = lab.horizon_remedy();
     let mut chosen = None;
     egui::ComboBox::from_label("horizon")
         .selected_text(current.name())
@@ -269,24 +251,10 @@ fn horizon_remedy(ui: &mut egui::Ui, lab: &mut Lab) {
     }
 }
 
-/// Eq. 30's two rules as checkboxes, each with its label and tooltip (the side panel and the
-/// clipping panel word them for their place).
-pub fn clipping_rules(ui: &mut egui::Ui, lab: &mut Lab, [case1, case2]: [(&str, &str); 2]) {
-    lab.edit(Aspect::Rules, |s| {
-        ui.checkbox(&mut s.clipping.case1, case1.0)
-            .on_hover_text(case1.1)
-    });
-    lab.edit(Aspect::Rules, |s| {
-        ui.checkbox(&mut s.clipping.case2, case2.0)
-            .on_hover_text(case2.1)
-    });
-}
-
-/// The selected light's x, y (over the plane) and z, typed or dragged; whether one changed.
-fn light_position(ui: &mut egui::Ui, k: usize, position: &mut [f64; 3], half_size: f64) -> bool {
+/// Light `k`'s x, y (over the plane) and z, typed or dragged.
+fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64) {
     ui.horizontal(|ui| {
         ui.label(format!("light {k}"));
-        let mut changed = false;
         for (i, (axis, range, hover)) in [
             ("x", -half_size..=half_size, "Across the plane"),
             ("y", -half_size..=half_size, "Along the plane, away from the camera"),
@@ -296,14 +264,11 @@ fn light_position(ui: &mut egui::Ui, k: usize, position: &mut [f64; 3], half_siz
         .enumerate()
         {
             let label = ui.label(axis);
-            changed |= ui.add(egui::DragValue::new(&mut position[i]).speed(0.01).range(range).max_decimals(4))
+            ui.add(egui::DragValue::new(&mut light.position[i]).speed(0.01).range(range).max_decimals(4))
                 .labelled_by(label.id)
-                .on_hover_text(hover)
-                .changed();
+                .on_hover_text(hover);
         }
-        changed
-    })
-    .inner
+    });
 }
 
 /// The presets, and a scene file to load or save (only the file named is written).
@@ -315,15 +280,17 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
                 .on_hover_text("Load this shipped preset")
                 .clicked()
             {
-                lab.message = lab.use_scene(preset(name)).map(Message::error);
+                lab.use_scene(preset(name));
             }
         }
     });
     ui.horizontal(|ui| {
-        ui.add(egui::TextEdit::singleline(&mut files.scene_path).desired_width(120.0))
+        let field = ui
+            .add(egui::TextEdit::singleline(&mut files.scene_path).desired_width(120.0))
             .on_hover_text(
                 "A scene TOML file to load, or to save to (only the file named here is written)",
             );
+        name(ui, &field, "scene file");
         if ui
             .small_button("load")
             .on_hover_text(if PICKS {
@@ -333,13 +300,7 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             })
             .clicked()
         {
-            if PICKS {
-                lab.request = Some(Request::Pick(Purpose::Scene));
-                return;
-            }
-            let path = &files.scene_path;
-            let message = use_loaded_scene(lab, Scene::load(Path::new(path)), path);
-            lab.say(message);
+            lab.request(Request::Open(Purpose::Scene, files.scene_path.clone()));
         }
         if ui
             .small_button("save")
@@ -350,19 +311,7 @@ fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             })
             .clicked()
         {
-            // The view becomes what the file holds.
-            let rounded = lab.shared().scene.rounded_for_saving();
-            let changed = rounded != lab.shared().scene;
-            lab.edit(Aspect::Scene, |s| {
-                s.scene = rounded;
-                changed
-            });
-            let text = lab.shared().scene.to_toml();
-            let path = Path::new(&files.scene_path);
-            lab.say(match save(path, text.as_bytes(), "application/toml") {
-                Ok(done) => Message::note(done),
-                Err(e) => Message::error(e),
-            });
+            lab.request(Request::SaveScene(PathBuf::from(&files.scene_path)));
         }
     });
 }
@@ -379,142 +328,55 @@ fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
             (Table::Constrained, "The constrained fit (luts/ltc_constrained.exr): the point-light objective with m20 = 0, so M^-1 never carries a light across the horizon (the constrained-fit remedy)"),
         ] {
             // A shipped table is lit only while no file shades instead of it.
-            let chosen = lab.shared().table_file.is_none() && lab.shared().table == t;
+            let chosen = lab.tables().a().source == Source::Shipped(t);
             if ui.selectable_label(chosen, t.name()).on_hover_text(hover).clicked() && !chosen {
                 files.lut_path.clear();
                 lab.use_shipped(t);
             }
         }
     });
-    if let Some(file) = &lab.shared().table_file {
+    if let Source::File(file) | Source::Given(file) = &lab.tables().a().source {
         ui.small(format!("table A: {file}"));
     }
     ui.horizontal(|ui| {
         // A browser picks the file instead.
         if !PICKS {
-            ui.add(egui::TextEdit::singleline(&mut files.lut_path).desired_width(120.0).hint_text("embedded LUT"))
+            let field = ui.add(egui::TextEdit::singleline(&mut files.lut_path).desired_width(120.0).hint_text("embedded LUT"))
                 .on_hover_text("An LTC table: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
+            name(ui, &field, "table file");
         }
         if ui.small_button("use LUT").on_hover_text("Shade with the table named on the left (table A), or one dropped on the window; a missing or broken file is reported here and the current table stays").clicked() {
-            if PICKS {
-                lab.request = Some(Request::Pick(Purpose::Table));
-                return;
-            }
-            let message = match (load(&files.lut_path), files.lut_path.trim()) {
-                // The embedded table (an empty field) is the shipped classic one.
-                (Ok((table, note)), "") => {
-                    lab.use_shipped(Table::Classic);
-                    Message::note(format!("shading with {}{note}", table.name))
-                }
-                (Ok(loaded), file) => use_loaded_table(lab, loaded, Some(file.to_string()), false),
-                (Err(e), _) => Message::error(format!("{e} — still using the previous table")),
-            };
-            lab.say(message);
+            lab.request(Request::Open(Purpose::Table, files.lut_path.clone()));
         }
         if ui.small_button("as B").on_hover_text("Make the table named on the left table B, the other fit: the lobe overlay, the matrix panel and the plane's A | B comparison show it beside table A").clicked() {
-            if PICKS {
-                lab.request = Some(Request::Pick(Purpose::TableB));
-                return;
-            }
-            let message = match files.lut_path.trim() {
-                "" => Message::error("as B: name a table file in the field first — table B stays"),
-                file => match load(file) {
-                    Ok(loaded) => use_loaded_table(lab, loaded, Some(file.to_string()), true),
-                    Err(e) => Message::error(format!("{e} — table B stays")),
-                },
-            };
-            lab.say(message);
+            lab.request(Request::Open(Purpose::TableB, files.lut_path.clone()));
         }
     });
     ui.horizontal(|ui| {
-        ui.small(format!("table B: {}", lab.tables().b.name))
+        ui.small(format!("table B: {}", lab.tables().b().name))
             .on_hover_text("The other fit: the lobe overlay and the matrix panel show it beside table A, and the plane's A | B comparison shades with it");
-        if lab.tables().b_chosen && ui.small_button("reset").on_hover_text("Table B back to the other shipped table").clicked() {
-            lab.reset_table_b();
+        if !lab.tables().b_is_default() && ui.small_button("reset").on_hover_text("Table B back to the other shipped table").clicked() {
+            lab.use_table_b(None);
         }
     });
-}
-
-/// Shades `loaded` (the scene read from `name`) from now on; what was done, or why the scene
-/// stays.
-pub(crate) fn use_loaded_scene(
-    lab: &mut Lab,
-    loaded: crate::error::Result<Scene>,
-    name: &str,
-) -> Message {
-    match loaded {
-        Ok(scene) => match lab.use_scene(scene) {
-            Some(cut) => Message::error(format!("loaded {name}; {cut}")),
-            None => Message::note(format!("loaded {name}")),
-        },
-        Err(e) => Message::error(e.to_string()),
-    }
-}
-
-/// Makes `table` (read from `file`, with its `note`) table A, or B; what was done.
-pub(crate) fn use_loaded_table(
-    lab: &mut Lab,
-    (table, note): (NamedTable, String),
-    file: Option<String>,
-    as_b: bool,
-) -> Message {
-    let text = if as_b {
-        format!("table B is {}{note}", table.name)
-    } else {
-        format!("shading with {}{note}", table.name)
-    };
-    if as_b {
-        lab.use_file_b(table, file);
-    } else {
-        lab.use_file(table, file);
-    }
-    Message::note(text)
-}
-
-/// The table in the file at `path` (the embedded one where empty), named for labels, and
-/// what the file could not hold (ltc_code's layout has no diffuse lobe), as ". note".
-pub(crate) fn load(path: &str) -> Result<(NamedTable, String), String> {
-    let path = path.trim();
-    let loaded = if path.is_empty() {
-        formats::load(None, Table::Classic)
-    } else {
-        formats::read(Path::new(path))
-    }
-    .map_err(|e| e.to_string())?;
-    let name = if path.is_empty() {
-        "the embedded LUT"
-    } else {
-        path
-    };
-    Ok(named_table(loaded, name))
-}
-
-/// A table read, named for labels, its `spec.err` measured (the matrix panel's heat maps
-/// show it), and what its file could not hold as ". note".
-pub(crate) fn named_table(mut loaded: formats::Loaded, name: &str) -> (NamedTable, String) {
-    loaded.measure_spec_err(&|| {});
-    let note = loaded.note.map(|n| format!(". {n}")).unwrap_or_default();
-    let table = NamedTable {
-        lut: loaded.lut.into_owned(),
-        name: name.to_string(),
-    };
-    (table, note)
 }
 
 /// The screenshot field (`.png` saves the window, `.exr` the plane's radiance), and the
 /// view shared as a link.
 fn save_buttons(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
     ui.horizontal(|ui| {
-        ui.add(egui::TextEdit::singleline(&mut files.screenshot_path).desired_width(120.0))
+        let field = ui
+            .add(egui::TextEdit::singleline(&mut files.screenshot_path).desired_width(120.0))
             .on_hover_text(
                 "Screenshot file: .png saves the window, .exr the plane's linear radiance",
             );
+        name(ui, &field, "screenshot file");
         if ui.small_button("screenshot").clicked() {
             let path = PathBuf::from(&files.screenshot_path);
             let exr = path
                 .extension()
                 .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
-            lab.request = Some(if exr {
+            lab.request(if exr {
                 Request::SaveExr(path)
             } else {
                 Request::Screenshot(path)
@@ -527,11 +389,6 @@ fn save_buttons(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
         "Copy this view (scene, settings, open panel) as a string for `ltc-lab lab --view`, or for a browser link after #view="
     };
     if ui.small_button("share view").on_hover_text(hover).clicked() {
-        lab.request = Some(Request::Share);
+        lab.request(Request::Share);
     }
-}
-
-/// A small grey line under a control saying what it does, where a tooltip alone would hide it.
-fn explain(ui: &mut egui::Ui, text: &str) {
-    ui.label(egui::RichText::new(text).weak());
 }

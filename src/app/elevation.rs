@@ -6,7 +6,8 @@
 use egui::{Color32, Vec2};
 
 use crate::app::axes::symlog_y;
-use crate::app::lab::{Aspect, Lab, Stamp};
+use crate::app::cache::{Cached, Own};
+use crate::app::lab::{Lab, TableId};
 use crate::horizon::{self, BandError};
 use crate::ltc::lut::Lut;
 
@@ -15,39 +16,42 @@ use crate::ltc::lut::Lut;
 /// vary far more) and take about 20 ms on two cores, once per change.
 pub const CASES: usize = 20_000;
 
-/// What the view reads: the material (α), θo, the rules and the tables.
-const READS: [Aspect; 4] = [
-    Aspect::Scene,
-    Aspect::LobeView,
-    Aspect::Rules,
-    Aspect::Tables,
-];
-
-/// The band errors as last measured, and for what: the lab's stamp and which table.
-#[derive(Default)]
+/// The band errors as last measured.
 pub struct ElevationView {
-    made_for: Option<(Stamp, bool)>,
-    bands: Vec<BandError>,
+    bands: Cached<Vec<BandError>>,
+}
+
+impl Default for ElevationView {
+    fn default() -> Self {
+        Self {
+            bands: Cached::new("clipping.elevation"),
+        }
+    }
 }
 
 impl ElevationView {
-    /// The plot and the band errors for `lut` (table B where `table_b`).
-    pub fn show(&mut self, ui: &mut egui::Ui, lab: &Lab, (lut, table_b): (&Lut, bool)) {
-        let s = lab.shared();
-        let (theta_o, alpha) = (s.theta_o_deg, s.alpha());
-        let made_for = (lab.stamp(&READS), table_b);
-        if self.made_for != Some(made_for) {
-            let at = (theta_o, alpha);
-            let rules = s.ltc_rules();
-            self.bands = horizon::band_errors_at(lut, &rules, at, CASES, horizon::SEED);
-            self.made_for = Some(made_for);
-        }
+    /// The plot and the band errors for table `which`, at the lab's (θo, α) and rules.
+    pub fn show(&mut self, ui: &mut egui::Ui, lab: &Lab, which: TableId) {
+        let inputs = (
+            lab.material(),
+            lab.lobe_view(),
+            lab.rules(),
+            lab.tables(),
+            Own(which),
+        );
+        let bands = self
+            .bands
+            .get(inputs, |(material, view, rules, tables, Own(which))| {
+                let at = (view.theta_o_deg, material.alpha);
+                let lut = &tables.get(which).lut;
+                horizon::band_errors_at(lut, rules, at, CASES, horizon::SEED)
+            });
+        let (theta_o, alpha) = (lab.lobe_view().theta_o_deg, lab.alpha());
         ui.small(format!(
-            "one light over its elevation at θo = {theta_o:.1}°, α = {alpha:.4} (the side panel's), specular lobe, table {}:",
-            if table_b { "B" } else { "A" }
+            "one light over its elevation at θo = {theta_o:.1}°, α = {alpha:.4} (the side panel's), specular lobe, table {which:?}:"
         ));
         ui.horizontal_wrapped(|ui| {
-            for b in &self.bands {
+            for b in bands {
                 ui.small(format!(
                     "{:.0}–{:.0}°: {:.0}% (energy ×{:.2})",
                     b.band[0],
@@ -58,7 +62,12 @@ impl ElevationView {
                 .on_hover_text("Σ|LTC − BRDF| / Σ BRDF over lights uniform in this band at every azimuth, and Σ LTC / Σ BRDF");
             }
         });
-        plot(ui, lut, &s.ltc_rules(), (theta_o, alpha));
+        let lut = &lab.tables().get(which).lut;
+        plot(ui, lut, lab.rules(), (theta_o, alpha));
+    }
+
+    pub fn count(&self) -> (&'static str, u64) {
+        self.bands.count()
     }
 }
 

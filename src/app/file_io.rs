@@ -1,99 +1,226 @@
-//! Files into and out of the lab other than by a path read from a field: dropped on the
-//! window (the desktop and the browser), picked in the browser's file picker, and saved —
-//! to the file the user named on the desktop, as a download of that name in the browser
-//! (docs/design.md §5.8). What a given file is for comes from the button that asked for it,
-//! or, for a drop, from its name.
+//! Files into and out of the lab, all carried out by the app: read from the path a field
+//! names (the desktop), picked in the browser's file picker, dropped on the window (both),
+//! and saved — to the file the user named on the desktop, as a download of that name in the
+//! browser (docs/design.md §5.8). What a given file is for comes from the button that asked
+//! for it, or, for a drop, from its name.
 
 use std::path::Path;
 
-/// What a given file is for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Purpose {
-    Scene,
-    /// Table A, shaded with.
-    Table,
-    /// Table B, compared with.
-    TableB,
-    /// A `study.csv` for the chart.
-    Study,
-}
+use crate::app::LabApp;
+use crate::app::files::{Given, Purpose, group, save};
+use crate::app::lab::{Lab, Message};
+use crate::ltc::lut::Table;
+use crate::scene::Scene;
+use crate::tables::{NamedTable, Source};
 
-impl Purpose {
-    /// What a dropped file is for, by its extension: a scene, a table (A) or a study.
-    pub fn of_name(name: &str) -> Option<Self> {
-        let ext = Path::new(name)
-            .extension()?
-            .to_string_lossy()
-            .to_ascii_lowercase();
-        match ext.as_str() {
-            "toml" => Some(Self::Scene),
-            "exr" | "js" | "dds" => Some(Self::Table),
-            "csv" => Some(Self::Study),
-            _ => None,
-        }
-    }
-
-    /// The browser file picker's filter.
-    pub fn accept(self) -> &'static str {
-        match self {
-            Self::Scene => ".toml",
-            Self::Table | Self::TableB => ".exr,.js,.dds,.txt",
-            Self::Study => ".csv",
-        }
-    }
-
-    /// More than one file: a DDS pair (with its header sidecar).
-    pub fn multiple(self) -> bool {
-        matches!(self, Self::Table | Self::TableB)
-    }
-}
-
-/// A file's name and bytes.
-pub type Given = (String, Vec<u8>);
-
-/// Given files grouped by what they are for (by their names: the files of a DDS pair
-/// together, its header sidecar with them), and why any cannot be taken.
-pub fn group(files: Vec<Given>) -> (Vec<(Purpose, Vec<Given>)>, Vec<String>) {
-    let mut groups: Vec<(Purpose, Vec<Given>)> = Vec::new();
-    let mut refused = Vec::new();
-    let mut sidecars = Vec::new();
-    for (name, bytes) in files {
-        let Some(purpose) = Purpose::of_name(&name) else {
-            if name.ends_with(crate::ltc::formats::DDS_HEADER_FILE) {
-                sidecars.push((name, bytes));
-            } else {
-                refused.push(format!(
-                    "{name}: not a file the lab reads (a scene .toml, a table .exr/.js/.dds, a study .csv)"
-                ));
+impl LabApp {
+    /// Reads the file at `path` for `purpose` (the desktop), or opens the browser's picker
+    /// for it; says what was done, or why nothing was.
+    pub(super) fn open(&mut self, purpose: Purpose, path: &str, ctx: &egui::Context) {
+        #[cfg(target_arch = "wasm32")]
+        {
+            let _ = path;
+            let picked =
+                crate::app::browser::pick(purpose.accept(), purpose.multiple(), ctx.clone());
+            match picked {
+                Ok(p) => self.picking = Some((Some(purpose), p)),
+                Err(e) => self.lab.say(Message::error(e)),
             }
-            continue;
-        };
-        match groups.iter_mut().find(|(p, _)| *p == purpose) {
-            Some(g) if purpose == Purpose::Table => g.1.push((name, bytes)),
-            _ => groups.push((purpose, vec![(name, bytes)])),
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let _ = ctx;
+            let message = self.read(purpose, path.trim());
+            self.lab.say(message);
         }
     }
-    if let Some(g) = groups.iter_mut().find(|(p, _)| *p == Purpose::Table) {
-        g.1.extend(sidecars);
+
+    /// The file at `path` used for `purpose`.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn read(&mut self, purpose: Purpose, path: &str) -> Message {
+        match (purpose, path) {
+            // The embedded table (an empty field) is the shipped classic one.
+            (Purpose::Table, "") => {
+                self.lab.use_shipped(Table::Classic);
+                Message::note("shading with the embedded LUT (classic)")
+            }
+            (Purpose::TableB, "") => {
+                Message::error("as B: name a table file in the field first — table B stays")
+            }
+            (Purpose::Scene, _) => use_scene(&mut self.lab, Scene::load(Path::new(path)), path),
+            (Purpose::Table | Purpose::TableB, _) => {
+                let b = purpose == Purpose::TableB;
+                match NamedTable::from_file(path) {
+                    Ok(loaded) => use_table(&mut self.lab, loaded, b),
+                    Err(e) if b => Message::error(format!("{e} — table B stays")),
+                    Err(e) => Message::error(format!("{e} — still using the previous table")),
+                }
+            }
+            (Purpose::Study, "") => {
+                Message::error("load study: name a study.csv in the field first")
+            }
+            (Purpose::Study, _) => {
+                let rows = crate::study::read_csv(Path::new(path));
+                self.panels.chart().use_study(rows, path)
+            }
+        }
     }
-    (groups, refused)
+
+    /// Writes the scene to the file the user named; the view becomes what the file holds
+    /// (its numbers rounded as a person writes them).
+    pub(super) fn save_scene(&mut self, path: &Path) {
+        let rounded = self.lab.scene().rounded_for_saving();
+        if rounded != self.lab.scene() {
+            self.lab.use_scene(rounded);
+        }
+        let text = self.lab.scene().to_toml();
+        self.lab
+            .say(match save(path, text.as_bytes(), "application/toml") {
+                Ok(done) => Message::note(done),
+                Err(e) => Message::error(e),
+            });
+    }
+
+    /// Takes the files dropped on the window this frame: read at once on the desktop; in a
+    /// browser, which reads them asynchronously, once they have arrived (`take_picked`).
+    pub(super) fn take_dropped(&mut self, ctx: &egui::Context) {
+        let files = ctx.input(|i| i.raw.dropped_files.clone());
+        if files.is_empty() {
+            return;
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let mut given = Vec::new();
+            let mut refused = Vec::new();
+            for file in files {
+                let name = file.path().display().to_string();
+                match file.bytes() {
+                    Ok(bytes) => given.push((name, bytes)),
+                    Err(e) => refused.push(format!("{name}: cannot read it ({e})")),
+                }
+            }
+            self.take_given(None, given, refused);
+        }
+        #[cfg(target_arch = "wasm32")]
+        {
+            let arrived = crate::app::browser::Picked::default();
+            let into = arrived.clone();
+            let repaint = ctx.clone();
+            wasm_bindgen_futures::spawn_local(async move {
+                let mut given = Vec::new();
+                for file in files {
+                    if let Ok(bytes) = file.bytes_async().await {
+                        given.push((file.path().display().to_string(), bytes));
+                    }
+                }
+                *into.borrow_mut() = Some(given);
+                repaint.request_repaint();
+            });
+            self.picking = Some((None, arrived));
+        }
+    }
+
+    /// Takes what the browser read (picked or dropped files), once it has.
+    #[cfg(target_arch = "wasm32")]
+    pub(super) fn take_picked(&mut self) {
+        let Some((purpose, picked)) = &self.picking else {
+            return;
+        };
+        let Some(files) = picked.borrow_mut().take() else {
+            return;
+        };
+        let purpose = *purpose;
+        self.picking = None;
+        self.take_given(purpose, files, Vec::new());
+    }
+
+    /// Uses given files: all for `purpose`, or (`None`, dropped) each for what its name says;
+    /// says what was `refused` before (files that could not be read) with what is refused here.
+    fn take_given(
+        &mut self,
+        purpose: Option<Purpose>,
+        files: Vec<Given>,
+        mut refused: Vec<String>,
+    ) {
+        match purpose {
+            Some(p) => self.take_in(p, &files),
+            None => {
+                let (groups, unread) = group(files);
+                refused.extend(unread);
+                for (p, files) in groups {
+                    self.take_in(p, &files);
+                }
+            }
+        }
+        if !refused.is_empty() {
+            self.lab.say(Message::error(refused.join("; ")));
+        }
+    }
+
+    /// Uses given files as `purpose` says: the scene, table A or B, the chart's study. A file
+    /// that cannot be used changes nothing and says why (its name first).
+    fn take_in(&mut self, purpose: Purpose, files: &[Given]) {
+        let Some((name, bytes)) = files.first() else {
+            return;
+        };
+        let text = || String::from_utf8_lossy(bytes).into_owned();
+        let message = match purpose {
+            Purpose::Scene => use_scene(&mut self.lab, Scene::from_toml(&text(), name), name),
+            Purpose::Table | Purpose::TableB => match given_table(files) {
+                Ok(loaded) => use_table(&mut self.lab, loaded, purpose == Purpose::TableB),
+                Err(e) => Message::error(format!("{e} — the tables stay")),
+            },
+            Purpose::Study => self
+                .panels
+                .chart()
+                .use_study(crate::study::parse_csv(&text(), name), name),
+        };
+        self.lab.say(message);
+    }
 }
 
-/// Saves `bytes` as the file the user named, `path`: that file and no other is written on
-/// the desktop; the browser offers a download of its name. What was done, for the message.
-pub fn save(path: &Path, bytes: &[u8], mime: &str) -> Result<String, String> {
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        let _ = mime;
-        crate::files::write_atomically(path, bytes).map_err(|e| e.to_string())?;
-        Ok(format!("saved {}", path.display()))
+/// Shows `loaded` (the scene read from `name`) from now on; what was done, or why the scene
+/// stays.
+fn use_scene(lab: &mut Lab, loaded: crate::error::Result<Scene>, name: &str) -> Message {
+    let scene = match loaded {
+        Ok(scene) => scene,
+        Err(e) => return Message::error(e.to_string()),
+    };
+    lab.dismiss();
+    lab.use_scene(scene);
+    // What entering the lab refused, clamped or cut is said with the file's name.
+    match lab.message() {
+        Some(m) if m.is_error => Message::error(format!("loaded {name}; {}", m.text)),
+        _ => Message::note(format!("loaded {name}")),
     }
-    #[cfg(target_arch = "wasm32")]
-    {
-        let name = path
-            .file_name()
-            .map_or_else(|| "ltc-lab".into(), |n| n.to_string_lossy().into_owned());
-        crate::app::browser::download(&name, bytes, mime)?;
-        Ok(format!("downloaded {name}"))
+}
+
+/// Makes `table` (with what its format could not hold, `note`) table A, or B; what was done.
+fn use_table(lab: &mut Lab, (table, note): (NamedTable, String), as_b: bool) -> Message {
+    let text = if as_b {
+        format!("table B is {}{note}", table.name)
+    } else {
+        format!("shading with {}{note}", table.name)
+    };
+    if as_b {
+        lab.use_table_b(Some(table));
+    } else {
+        lab.use_table_a(table);
     }
+    Message::note(text)
+}
+
+/// The table in given files, named for labels, with what its format could not hold.
+fn given_table(files: &[Given]) -> Result<(NamedTable, String), String> {
+    let loaded = crate::ltc::formats::read_given(files).map_err(|e| e.to_string())?;
+    let name = files
+        .iter()
+        .map(|(n, _)| n.as_str())
+        .find(|n| !n.ends_with(crate::ltc::formats::DDS_HEADER_FILE))
+        .unwrap_or_default();
+    Ok(NamedTable::read(
+        loaded,
+        name,
+        Source::Given(name.to_string()),
+    ))
 }

@@ -9,7 +9,7 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::{Deserialize, Serialize};
 
 use crate::app::clip_setup::ClippingState;
-use crate::app::lab::Shared;
+use crate::app::lab::{LastRefit, Lights, Part, Shared, Tables};
 use crate::app::lobe::LobeState;
 use crate::app::plane::PlaneState;
 use crate::app::state::{LabState, WindowState};
@@ -29,8 +29,8 @@ const MAX_LEN: usize = 1 << 20;
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 struct Link {
-    /// The scene's lights are the lab's generator's `count` (from `lab.seed`), and
-    /// `lab.scene.lights` is left empty: a link of 20 000 lights stays short.
+    /// The scene's lights are the lab's generator's `count` (from the lights' seed), and
+    /// the lights' list is left empty: a link of 20 000 lights stays short.
     generated: Option<usize>,
     lab: Shared,
     lobe: LobeState,
@@ -42,15 +42,17 @@ struct Link {
 /// The view of `state` as a link's string: RON, raw deflate, URL-safe base64.
 pub fn encode(state: &LabState) -> String {
     let mut lab = state.lab.clone();
-    lab.table_file = None;
-    lab.table_b_file = None;
-    lab.refit = None;
+    lab.tables = Part::new(Tables::shipped(lab.tables.shipped));
+    lab.refit = Part::new(LastRefit(None));
     let generated = generated_count(&lab);
-    if generated.is_some() {
-        lab.scene.lights.clear();
-    } else {
-        lab.scene = lab.scene.rounded_for_saving();
-    }
+    let lights = match generated {
+        Some(_) => Vec::new(),
+        None => rounded_lights(&lab.lights.list),
+    };
+    lab.lights = Part::new(Lights {
+        list: lights,
+        seed: lab.lights.seed,
+    });
     let link = Link {
         generated,
         lab,
@@ -64,9 +66,10 @@ pub fn encode(state: &LabState) -> String {
     format!("{VERSION}{}", URL_SAFE_NO_PAD.encode(packed))
 }
 
-/// `state` with the view of `text` in place of its own (its chart and file paths kept); why
-/// not where `text` is not a view. `text` may be the string alone, a fragment (`#view=…`) or a
-/// whole URL.
+/// `state` with the view of `text` in place of its own (its chart and the side panel's file
+/// names kept); why not where `text` is not a view. `text` may be the string alone, a fragment
+/// (`#view=…`) or a whole URL. What the view holds is checked where it enters the lab
+/// (`LabState::check`), as any state is.
 pub fn decode(text: &str, state: &LabState) -> Result<LabState, String> {
     let text = text.trim();
     let text = text
@@ -93,21 +96,19 @@ pub fn decode(text: &str, state: &LabState) -> Result<LabState, String> {
     let mut link: Link =
         ron::from_str(&text).map_err(|e| format!("the view does not read: {e}"))?;
     if let Some(count) = link.generated {
+        // Refused before they are made: a count beyond the limit is not a view of the lab.
         if count > crate::scene::MAX_LIGHTS {
             return Err(format!(
                 "the view asks for {count} lights, over the {} a scene may have",
                 crate::scene::MAX_LIGHTS
             ));
         }
-        link.lab.set_light_count(count);
+        let list = link.lab.generated_lights(count);
+        let seed = link.lab.lights.seed;
+        link.lab.lights = Part::new(Lights { list, seed });
     }
-    link.lab
-        .scene
-        .validate()
-        .map_err(|why| format!("the view's scene cannot be shaded: {why}"))?;
     let mut out = state.clone();
-    link.lab.table_file = None;
-    link.lab.table_b_file = None;
+    link.lab.tables = Part::new(Tables::shipped(link.lab.tables.shipped));
     out.lab = link.lab;
     out.lobe = link.lobe;
     out.plane = link.plane;
@@ -117,9 +118,17 @@ pub fn decode(text: &str, state: &LabState) -> Result<LabState, String> {
 }
 
 /// How many lights the lab's generator made, where the scene's lights are exactly those it
-/// makes from the lab's seed (the lights slider's, and paper-100's).
+/// makes from the lights' seed (the lights slider's, and paper-100's).
 fn generated_count(lab: &Shared) -> Option<usize> {
-    let mut made = lab.clone();
-    made.set_light_count(lab.scene.lights.len());
-    (made.scene.lights == lab.scene.lights).then_some(lab.scene.lights.len())
+    let lights = &lab.lights.list;
+    (lab.generated_lights(lights.len()) == *lights).then_some(lights.len())
+}
+
+/// The lights as a saved scene rounds them: a link of moved lights stays short.
+fn rounded_lights(lights: &[crate::scene::Light]) -> Vec<crate::scene::Light> {
+    let scene = crate::scene::Scene {
+        lights: lights.to_vec(),
+        ..crate::scene::preset("paper-100")
+    };
+    scene.rounded_for_saving().lights
 }

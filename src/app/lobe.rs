@@ -7,12 +7,15 @@ use egui::{Color32, Vec2};
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 
+use crate::app::cache::{Cached, Inputs, Own};
 use crate::app::display::colour_bar;
-use crate::app::lab::{Aspect, Lab, Panel, Stamp};
+use crate::app::lab::part::Notes;
+use crate::app::lab::{Checked, Lab, LastRefit, LobeView, Part, Tables};
 use crate::app::lobe_sphere::{Drawn, Sphere, values};
-use crate::colormap::ColourScale;
+use crate::app::panel::Panel;
 use crate::ltc::Ltc;
-use crate::ltc::lobe::Lobe;
+use crate::ltc::lut::THETA_MAX;
+use crate::scene::Material;
 
 /// The lobe panel's own settings, kept between runs (θo and the lobe are the lab's).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -25,8 +28,12 @@ pub struct LobeState {
     /// The pointwise difference coloured on the unit sphere instead of the lobes.
     pub colour_difference: bool,
     /// Table B's LTC overlaid.
-    pub overlay_other_fit: bool,
+    pub overlay_table_b: bool,
 }
+
+/// How far the orbit's pitch leans: just short of the poles (±86°), where the orbit's frame
+/// would flip.
+const PITCH_LIMIT: f32 = 1.5;
 
 impl Default for LobeState {
     fn default() -> Self {
@@ -35,16 +42,44 @@ impl Default for LobeState {
             orbit_yaw: 0.6,
             orbit_pitch: 0.35,
             colour_difference: false,
-            overlay_other_fit: true,
+            overlay_table_b: true,
         }
     }
 }
 
-#[derive(Default)]
+impl Checked for LobeState {
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        let mut n = Notes(Vec::new());
+        n.number(
+            "the lobe's morph",
+            &mut self.morph,
+            previous.morph,
+            [0.0, 1.0],
+        );
+        // Any yaw is a turn; beyond a few turns it only loses precision.
+        let turns = [-100.0, 100.0];
+        n.number_f32(
+            "the lobe's orbit",
+            &mut self.orbit_yaw,
+            previous.orbit_yaw,
+            turns,
+        );
+        let pitch = [-PITCH_LIMIT, PITCH_LIMIT];
+        n.number_f32(
+            "the lobe's pitch",
+            &mut self.orbit_pitch,
+            previous.orbit_pitch,
+            pitch,
+        );
+        n.0
+    }
+}
+
 pub struct LobePanel {
-    pub state: LobeState,
-    /// The sphere as last made, and what for.
-    sphere: Option<(SphereFor, Sphere)>,
+    state: LobeState,
+    /// The sphere's surfaces (thousands of sorted triangles), made again only when what they
+    /// show changes.
+    sphere: Cached<Sphere>,
 }
 
 /// The LTC shown: M morphed from I to the fitted M, with the lobe's magnitude.
@@ -53,23 +88,11 @@ pub fn morphed_ltc(ltc: &Ltc, t: f64) -> Ltc {
     Ltc::from_brdf_from_cos(m, ltc.norm, ltc.fresnel).with_scale(ltc.scale)
 }
 
-/// What the lab's aspects, the panel's settings and the view's place a sphere was made for.
-type SphereFor = (Stamp, LobeState, egui::Rect);
-
-/// What the sphere is drawn from: the material (α), θo and the lobe, the tables and a refit,
-/// and the pinned pixel's light.
-const DRAWN_FROM: [Aspect; 5] = [
-    Aspect::Scene,
-    Aspect::LobeView,
-    Aspect::Tables,
-    Aspect::Refit,
-    Aspect::Selection,
-];
-
 impl Panel for LobePanel {
     fn show(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         self.header(ui, lab);
-        let drawn = self.drawn(lab);
+        let parts = (lab.material(), lab.lobe_view(), lab.tables(), lab.refit());
+        let shown = drawn(parts, &self.state);
         let plot_h = (ui.available_height() * 0.3).clamp(60.0, 160.0);
         let size = Vec2::new(
             ui.available_width(),
@@ -81,16 +104,29 @@ impl Panel for LobePanel {
         if response.dragged() {
             let d = response.drag_delta();
             self.state.orbit_yaw += d.x * 0.01;
-            self.state.orbit_pitch = (self.state.orbit_pitch + d.y * 0.01).clamp(-1.5, 1.5);
+            self.state.orbit_pitch =
+                (self.state.orbit_pitch + d.y * 0.01).clamp(-PITCH_LIMIT, PITCH_LIMIT);
         }
-        let stamp = lab.stamp(&DRAWN_FROM);
-        match self.paint_sphere(ui, rect, (&drawn, stamp)) {
-            Some(scale) => colour_bar(ui, &scale, 200.0),
+        let (m, v, t, r) = parts;
+        let inputs = (m, v, t, r, Own(self.state.clone()), Place(rect));
+        let sphere = self
+            .sphere
+            .get(inputs, |(m, v, t, r, Own(st), Place(rect))| {
+                let orbit = (st.orbit_yaw, st.orbit_pitch);
+                Sphere::new(&drawn((m, v, t, r), &st), orbit, st.colour_difference, rect)
+            });
+        sphere.paint(&ui.painter_at(rect), rect, &shown);
+        match &sphere.difference {
+            Some(scale) => colour_bar(ui, scale, 200.0),
             None => {
                 ui.label("orange: exact f·cos (filled); blue lines: LTC n·D; green lines: table B; n normal, v view, M x/y/z the columns of M");
             }
         }
-        slice_plot(ui, &drawn, plot_h);
+        slice_plot(ui, &shown, plot_h);
+    }
+
+    fn caches(&self) -> Vec<(&'static str, u64)> {
+        vec![self.sphere.count()]
     }
 }
 
@@ -98,8 +134,12 @@ impl LobePanel {
     pub fn new(state: LobeState) -> Self {
         Self {
             state,
-            sphere: None,
+            sphere: Cached::new("lobe.sphere"),
         }
+    }
+
+    pub fn state(&self) -> &LobeState {
+        &self.state
     }
 
     /// The parameters on the panel's face, so that a picture of it (a slide made with the
@@ -107,32 +147,31 @@ impl LobePanel {
     fn header(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         let st = &mut self.state;
         // File names without their directories: a path pushed the row past the panel.
-        let b_name = lab.tables().b.short_name().to_string();
-        let b = if st.overlay_other_fit {
+        let b_name = lab.tables().b().short_name().to_string();
+        let b = if st.overlay_table_b {
             format!(", B: {b_name}")
         } else {
             String::new()
         };
-        let refitted = if lab.refit_ltc().is_some_and(|(l, _)| l == lab.shared().lobe) {
-            " (refitted)"
-        } else {
-            ""
-        };
+        let refitted = lab
+            .refit_ltc()
+            .is_some_and(|(l, _)| l == lab.lobe_view().lobe);
         ui.strong(format!(
-            "θo = {:.1}°   α = {:.4}   table A: {}{refitted}{b}",
-            lab.shared().theta_o_deg,
-            lab.shared().alpha(),
-            lab.tables().a.short_name()
+            "θo = {:.1}°   α = {:.4}   table A: {}{}{b}",
+            lab.lobe_view().theta_o_deg,
+            lab.alpha(),
+            lab.tables().a().short_name(),
+            if refitted { " (refitted)" } else { "" }
         ));
         ui.horizontal(|ui| {
-            lab.edit(Aspect::LobeView, |s| {
-                let spec = ui.selectable_value(&mut s.lobe, Lobe::Specular, "specular")
+            lab.edit(|v: &mut LobeView| {
+                use crate::ltc::lobe::Lobe;
+                ui.selectable_value(&mut v.lobe, Lobe::Specular, "specular")
                     .on_hover_text("GGX f_s·cos with F = 1 against n_s·D_s");
-                let diff = ui.selectable_value(&mut s.lobe, Lobe::Diffuse, "diffuse")
+                ui.selectable_value(&mut v.lobe, Lobe::Diffuse, "diffuse")
                     .on_hover_text("Burley fd·cos with c = 1 against n_d·D_d");
-                spec.changed() || diff.changed()
             });
-            ui.checkbox(&mut st.overlay_other_fit, format!("table B ({b_name})"))
+            ui.checkbox(&mut st.overlay_table_b, format!("table B ({b_name})"))
                 .on_hover_text("Overlay table B's LTC (green): by default the other shipped table (the point-light fit over the classic one, or the reverse); \"as B\" in the side panel loads another");
             ui.checkbox(&mut st.colour_difference, "difference")
                 .on_hover_text("Colour the unit sphere by n·D − f·cos in 1/sr, the slice plot's units (orange: LTC too bright, blue: too dark)");
@@ -140,50 +179,66 @@ impl LobePanel {
         ui.add(egui::Slider::new(&mut st.morph, 0.0..=1.0).text("M: I -> fitted"))
             .on_hover_text("D is the clamped cosine pushed through M_t = (1−t)·I + t·M: at 0 the cosine, at 1 the fitted LTC (the transformed lobe)");
     }
+}
 
-    /// The lobe at the lab's (θo, α): table A's LTC (or the refit of its cell), morphed, and
-    /// table B's where overlaid.
-    fn drawn(&self, lab: &Lab) -> Drawn {
-        let s = lab.shared();
-        let theta = s.theta_o();
-        let pick = |pair: crate::ltc::LtcPair| *pair.lobe(s.lobe);
-        let fitted = match lab.refit_ltc() {
-            Some((lobe, ltc)) if lobe == s.lobe => ltc,
-            _ => pick(s.ltc_pair(&lab.tables().a.lut)),
-        };
-        let morph = self.state.morph;
-        Drawn {
-            lobe: s.lobe,
-            v: DVec3::new(theta.sin(), 0.0, theta.cos()),
-            alpha: s.alpha(),
-            ltc: morphed_ltc(&fitted, morph),
-            other: self
-                .state
-                .overlay_other_fit
-                .then(|| morphed_ltc(&pick(s.ltc_pair(&lab.tables().b.lut)), morph)),
-            light: s.lobe_light.map(DVec3::from),
-        }
+/// The sphere's place on the screen, as its key: the same while within a point of the place
+/// the sphere was made for. The side panel is as wide as its widest row, the selected light's
+/// numbers among them, so a dragged light moved every panel by a fraction of a point; a
+/// sphere a fraction of a point away looks the same, and is made again once the place has
+/// moved a point.
+struct Place(egui::Rect);
+
+/// A place, equal to another within a point.
+#[derive(Clone, Copy)]
+struct Near(egui::Rect);
+
+impl PartialEq for Near {
+    fn eq(&self, other: &Self) -> bool {
+        let (a, b) = (self.0, other.0);
+        (a.min - b.min).abs().max_elem() < 1.0 && (a.max - b.max).abs().max_elem() < 1.0
     }
+}
 
-    /// The exact lobe filled and the LTCs as lines over it (or the difference coloured on the
-    /// unit sphere, whose scale it returns), with the frame's arrows. The surfaces (thousands
-    /// of triangles, sorted) are made again only when what they show changes.
-    fn paint_sphere(
-        &mut self,
-        ui: &egui::Ui,
-        rect: egui::Rect,
-        (d, stamp): (&Drawn, Stamp),
-    ) -> Option<ColourScale> {
-        let made_for = (stamp, self.state.clone(), rect);
-        if self.sphere.as_ref().is_none_or(|(f, _)| *f != made_for) {
-            let st = &self.state;
-            let orbit = (st.orbit_yaw, st.orbit_pitch);
-            let sphere = Sphere::new(d, orbit, st.colour_difference, rect);
-            self.sphere = Some((made_for, sphere));
-        }
-        let (_, sphere) = self.sphere.as_ref()?;
-        sphere.paint(&ui.painter_at(rect), rect, d);
-        sphere.difference.clone()
+impl Inputs for Place {
+    type Key = Near;
+
+    fn key(&self) -> Near {
+        Near(self.0)
+    }
+}
+
+/// The parts the lobe is drawn from.
+type DrawnFrom<'a> = (
+    &'a Part<Material>,
+    &'a Part<LobeView>,
+    &'a Part<Tables>,
+    &'a Part<LastRefit>,
+);
+
+/// The lobe at the lab's (θo, α): table A's LTC (or the refit of its cell, while it is the
+/// cell chosen), morphed, and table B's where overlaid; a pinned pixel's light.
+fn drawn((material, view, tables, refit): DrawnFrom<'_>, st: &LobeState) -> Drawn {
+    let theta = view.theta_o_deg.to_radians().min(THETA_MAX);
+    let alpha = material.alpha;
+    let pair = |lut: &crate::ltc::lut::Lut| lut.sample(alpha, theta.cos()).ltc_pair();
+    let a = &tables.a().lut;
+    let refitted = refit
+        .0
+        .as_ref()
+        .filter(|r| r.lobe == view.lobe && r.cell == a.nearest_cell(alpha, theta.cos()));
+    let fitted = match refitted {
+        Some(r) => r.ltc(),
+        None => *pair(a).lobe(view.lobe),
+    };
+    Drawn {
+        lobe: view.lobe,
+        v: DVec3::new(theta.sin(), 0.0, theta.cos()),
+        alpha,
+        ltc: morphed_ltc(&fitted, st.morph),
+        other: st
+            .overlay_table_b
+            .then(|| morphed_ltc(pair(&tables.b().lut).lobe(view.lobe), st.morph)),
+        light: view.light.map(DVec3::from),
     }
 }
 

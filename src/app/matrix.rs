@@ -7,32 +7,36 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DMat3;
 
 use crate::app::axes::log_axis;
+use crate::app::cache::Cached;
 use crate::app::display::{colour_bar, rgb};
-use crate::app::lab::{Aspect, Lab, Panel, Stamp};
-use crate::app::refit::{Objective, Refit};
+use crate::app::lab::refit_result::{Objective, RefitResult};
+use crate::app::lab::{Lab, LastRefit, LobeView};
+use crate::app::panel::Panel;
+use crate::app::refit::Refit;
 use crate::colormap::{ColourScale, short_number};
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{Channel, Lut, cell_theta};
+use crate::ltc::lut::{Channel, Lut, axes, cell_theta};
 use crate::ltc::mat3_rows;
+use crate::scene::Material;
 
 /// Heat maps per row (14 channels: three rows).
 const MAPS_PER_ROW: usize = 5;
 
 pub struct MatrixPanel {
     /// Table A's channels as heat maps, made again when the tables change.
-    maps: Option<HeatMaps>,
+    maps: Cached<HeatMaps>,
     /// The channel whose colour bar is shown (the last one clicked).
-    pub focus: Channel,
+    focus: Channel,
     /// The reading under the pointer at the last frame.
     hovered: Option<Reading>,
     /// A refit under way (its result goes to the lab).
-    pub refit: Option<Refit>,
+    refit: Option<Refit>,
 }
 
 impl Default for MatrixPanel {
     fn default() -> Self {
         Self {
-            maps: None,
+            maps: Cached::new("matrix.heat_maps"),
             focus: Channel::err(Lobe::Specular),
             hovered: None,
             refit: None,
@@ -43,21 +47,18 @@ impl Default for MatrixPanel {
 /// A channel's value at a cell: (channel, column, row, value).
 type Reading = (Channel, usize, usize, f64);
 
-/// Every channel of a table as an image, with its colour scale: viridis, diverging for
+/// Every channel of a table as a texture, with its colour scale: viridis, diverging for
 /// signed channels, log for errors.
 struct HeatMaps {
-    /// The tables' stamp they were made for.
-    stamp: Stamp,
-    images: Vec<egui::ColorImage>,
     scales: Vec<ColourScale>,
-    textures: Vec<Option<egui::TextureHandle>>,
+    textures: Vec<egui::TextureHandle>,
 }
 
 impl HeatMaps {
-    fn new(lut: &Lut, stamp: Stamp) -> Self {
+    fn new(lut: &Lut, ctx: &egui::Context) -> Self {
         let n = lut.size;
         let scales: Vec<ColourScale> = Channel::ALL.map(|c| channel_scale(lut, c)).to_vec();
-        let images = scales
+        let textures = scales
             .iter()
             .zip(Channel::ALL)
             .map(|(scale, c)| {
@@ -67,15 +68,11 @@ impl HeatMaps {
                     .iter()
                     .map(|cell| rgb(scale.colour(f64::from(cell.get(c)))))
                     .collect();
-                egui::ColorImage::new([n, n], pixels)
+                let image = egui::ColorImage::new([n, n], pixels);
+                ctx.load_texture(c.name(), image, egui::TextureOptions::NEAREST)
             })
             .collect();
-        Self {
-            stamp,
-            images,
-            scales,
-            textures: vec![None; Channel::COUNT],
-        }
+        Self { scales, textures }
     }
 }
 
@@ -83,10 +80,9 @@ impl Panel for MatrixPanel {
     /// Table A at the lab's (θo, α), with table B's cell beside it.
     fn show(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         self.poll_refit(ui.ctx(), lab);
-        let stamp = lab.stamp(&[Aspect::Tables]);
-        if self.maps.as_ref().is_none_or(|m| m.stamp != stamp) {
-            self.maps = Some(HeatMaps::new(&lab.tables().a.lut, stamp));
-        }
+        let ctx = ui.ctx().clone();
+        self.maps
+            .get(lab.tables(), |t| HeatMaps::new(&t.a().lut, &ctx));
         egui::ScrollArea::vertical()
             .auto_shrink([false; 2])
             .show(ui, |ui| {
@@ -98,25 +94,32 @@ impl Panel for MatrixPanel {
                 self.heat_maps(ui, lab);
             });
     }
+
+    fn busy(&self) -> bool {
+        self.refit.is_some()
+    }
+
+    fn caches(&self) -> Vec<(&'static str, u64)> {
+        vec![self.maps.count()]
+    }
 }
 
 /// The cell at the lab's (θo, α): M^-1, M and the paper's form, the magnitudes and the
 /// error of table A, and both tables' entries side by side.
 fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
-    let s = lab.shared();
-    let lut = &lab.tables().a.lut;
-    let theta = s.theta_o();
-    let cell = s.nearest_cell(lut);
-    let sample = lut.sample(s.alpha(), theta.cos());
+    let lut = &lab.tables().a().lut;
+    let (theta, alpha, lobe) = (lab.theta_o(), lab.alpha(), lab.lobe_view().lobe);
+    let cell = lab.nearest_cell();
+    let sample = lut.sample(alpha, theta.cos());
     let pair = sample.ltc_pair();
-    let ltc = *pair.lobe(s.lobe);
-    let err = sample.get(Channel::err(s.lobe));
+    let ltc = *pair.lobe(lobe);
+    let err = sample.get(Channel::err(lobe));
     ui.label(format!(
         "{} lobe at θo = {:.1}°, α = {:.4} (r = {:.3}); bilinear between cells, nearest cell ({}, {})",
-        if s.lobe == Lobe::Specular { "specular" } else { "diffuse" },
-        s.theta_o_deg,
-        s.alpha(),
-        s.alpha().sqrt(),
+        if lobe == Lobe::Specular { "specular" } else { "diffuse" },
+        lab.lobe_view().theta_o_deg,
+        alpha,
+        alpha.sqrt(),
         cell.0,
         cell.1
     ));
@@ -154,7 +157,7 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
         "|M^-1| = {:.4e}   norm = {:.4}   fresnel = {:.4}   scale = {:.3}   pointwise error = {:.1}%",
         ltc.det_cos_from_brdf,
         ltc.norm,
-        if s.lobe == Lobe::Specular { ltc.fresnel } else { 0.0 },
+        if lobe == Lobe::Specular { ltc.fresnel } else { 0.0 },
         ltc.scale,
         100.0 * err
     ))
@@ -164,14 +167,13 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
 
 /// Tables A and B at the lab's (θo, α), side by side: M^-1's entries, scale and error.
 fn both_tables(ui: &mut egui::Ui, lab: &Lab) {
-    let s = lab.shared();
-    let (a, b) = (&lab.tables().a, &lab.tables().b);
-    let cos_theta = s.theta_o().cos();
+    let (a, b) = (lab.tables().a(), lab.tables().b());
+    let (cos_theta, alpha, lobe) = (lab.theta_o().cos(), lab.alpha(), lab.lobe_view().lobe);
     ui.vertical(|ui| {
         for (which, name, table) in [("A", &a.name, &a.lut), ("B", &b.name, &b.lut)] {
-            let t = table.sample(s.alpha(), cos_theta);
-            let (m, e) = (Channel::entries(s.lobe), Channel::err(s.lobe));
-            let scale = if s.lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
+            let t = table.sample(alpha, cos_theta);
+            let (m, e) = (Channel::entries(lobe), Channel::err(lobe));
+            let scale = if lobe == Lobe::Specular { t.get(Channel::SpecScale) } else { 1.0 };
             let e4 = |c| entry(t.get(c)).trim().to_string();
             ui.label(format!(
                 "{which} ({name}): M^-1 = [[{}, 0, {}], [0, 1, 0], [{}, 0, {}]], scale {:.3}, error {:.1}%",
@@ -195,27 +197,20 @@ impl MatrixPanel {
         };
         match r.poll() {
             Some(result) => {
-                lab.edit(Aspect::Refit, |s| s.refit = Some(result));
+                lab.set(LastRefit(Some(result)));
                 self.refit = None;
             }
             None => ctx.request_repaint(),
         }
     }
 
-    /// Whether a refit is under way.
-    pub fn busy(&self) -> bool {
-        self.refit.is_some()
-    }
-
     /// Every channel as an N×N heat map (crosshair on the chosen cell; click to choose a
     /// cell), then the focused channel's colour bar, the value under the pointer and a jump to
     /// the worst cell.
     fn heat_maps(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
-        let chosen = self.maps_header(ui, &lab.tables().a.lut);
-        let s = lab.shared();
-        let theta = s.theta_o();
-        let uv = (s.alpha().sqrt(), (1.0 - theta.cos()).max(0.0).sqrt());
-        let lut = &lab.tables().a.lut;
+        let chosen = self.maps_header(ui, &lab.tables().a().lut);
+        let uv = axes(lab.alpha(), lab.theta_o().cos());
+        let lut = &lab.tables().a().lut;
         // The visible width, not the scroll area's content width (a wide row above widens it).
         let visible = ui
             .available_width()
@@ -255,7 +250,7 @@ impl MatrixPanel {
             cell_theta(n - 1, n).to_degrees()
         ));
         // The reading is last frame's hover.
-        let scales = &self.maps.as_ref()?.scales;
+        let scales = &self.maps.last()?.scales;
         let scale = &scales[self.focus as usize];
         colour_bar(ui, scale, 260.0);
         ui.horizontal(|ui| {
@@ -299,16 +294,10 @@ impl MatrixPanel {
     ) -> (Option<Reading>, Option<(usize, usize)>) {
         let n = lut.size;
         let (mut hovered, mut clicked) = (None, None);
-        let Some(maps) = &mut self.maps else {
+        let Some(maps) = self.maps.last() else {
             return (None, None);
         };
-        let texture = maps.textures[c as usize].get_or_insert_with(|| {
-            ui.ctx().load_texture(
-                c.name(),
-                maps.images[c as usize].clone(),
-                egui::TextureOptions::NEAREST,
-            )
-        });
+        let texture = &maps.textures[c as usize];
         ui.vertical(|ui| {
             let title = if c == self.focus {
                 egui::RichText::new(c.name()).small().strong()
@@ -356,14 +345,10 @@ impl MatrixPanel {
     /// matrices and errors side by side, and the objective per iteration.
     fn refit_controls(&mut self, ui: &mut egui::Ui, lab: &Lab) {
         self.refit_buttons(ui, lab);
-        let s = lab.shared();
-        let cell = s.nearest_cell(&lab.tables().a.lut);
-        let Some(r) = s
-            .refit
-            .as_ref()
-            .filter(|r| r.cell == cell && r.lobe == s.lobe)
-        else {
-            if let Some(r) = &s.refit {
+        let (cell, lobe) = (lab.nearest_cell(), lab.lobe_view().lobe);
+        let last = lab.refit().0.as_ref();
+        let Some(r) = last.filter(|r| r.cell == cell && r.lobe == lobe) else {
+            if let Some(r) = last {
                 ui.small(format!(
                     "(last refit: cell ({}, {}), {} lobe)",
                     r.cell.0,
@@ -379,7 +364,8 @@ impl MatrixPanel {
 
     /// The refit's progress and cancel, or a button per objective.
     fn refit_buttons(&mut self, ui: &mut egui::Ui, lab: &Lab) {
-        let (s, lut) = (lab.shared(), &lab.tables().a.lut);
+        let lut = &lab.tables().a().lut;
+        let (lobe, cell) = (lab.lobe_view().lobe, lab.nearest_cell());
         ui.horizontal_wrapped(|ui| {
             match &self.refit {
                 Some(r) => {
@@ -404,33 +390,21 @@ impl MatrixPanel {
                             .on_hover_text(format!("Runs {what} on the nearest cell from the stored cell's parameters, live; then compares stored and refitted lobes by the same pointwise error.{made}"))
                             .clicked()
                         {
-                            self.refit = Some(Refit::start(s.lobe, s.nearest_cell(lut), lut, objective));
+                            self.refit = Some(Refit::start(lobe, cell, lut, objective));
                         }
                     }
                 }
             }
         });
     }
-
-    /// Blocks until a running refit is done (tests).
-    pub fn wait_for_refit(&mut self, lab: &mut Lab) {
-        while let Some(r) = &mut self.refit {
-            if let Some(result) = r.poll() {
-                lab.edit(Aspect::Refit, |s| s.refit = Some(result));
-                self.refit = None;
-            } else {
-                std::thread::sleep(std::time::Duration::from_millis(5));
-            }
-        }
-    }
 }
 
 /// Chooses cell (i, j) of table A: the lab's α and θo move to its centre.
 fn choose_cell(lab: &mut Lab, (i, j): (usize, usize)) {
-    let lut = &lab.tables().a.lut;
+    let lut = &lab.tables().a().lut;
     let (alpha, theta) = (lut.alpha(i), cell_theta(j, lut.size).to_degrees());
-    lab.edit(Aspect::Scene, |s| s.scene.material.alpha = alpha);
-    lab.edit(Aspect::LobeView, |s| s.theta_o_deg = theta);
+    lab.edit(|m: &mut Material| m.alpha = alpha);
+    lab.edit(|v: &mut LobeView| v.theta_o_deg = theta);
 }
 
 /// A channel's colour scale: errors over decades (0.1% … their largest), a channel with both
@@ -481,7 +455,7 @@ fn matrix(ui: &mut egui::Ui, title: &str, m: DMat3, hover: &str) {
 }
 
 /// A refit's stored and refitted matrices, scale and pointwise error.
-fn refit_result(ui: &mut egui::Ui, r: &crate::app::refit::RefitResult) {
+fn refit_result(ui: &mut egui::Ui, r: &RefitResult) {
     ui.horizontal(|ui| {
         matrix(
             ui,
@@ -520,7 +494,7 @@ fn refit_result(ui: &mut egui::Ui, r: &crate::app::refit::RefitResult) {
 }
 
 /// The refit's objective per iteration, on a log axis.
-fn objective_plot(ui: &mut egui::Ui, r: &crate::app::refit::RefitResult) {
+fn objective_plot(ui: &mut egui::Ui, r: &RefitResult) {
     let points: Vec<[f64; 2]> = r
         .history
         .iter()

@@ -31,6 +31,9 @@ pub const REPEATS: usize = 3;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Point {
     pub label: String,
+    /// The method the point's variant shades with (`None`: not one this program knows).
+    #[serde(default)]
+    pub method: Option<Method>,
     pub ms: f64,
     pub rel_rmse: f64,
     /// The fastest and slowest of the timed renders (a study.csv has only the median).
@@ -60,6 +63,7 @@ impl Measurement {
                 .iter()
                 .map(|r| Point {
                     label: r.variant.clone(),
+                    method: crate::study::variant(&r.variant).map(|v| v.method),
                     ms: r.ms_median,
                     rel_rmse: r.rel_rmse,
                     ms_range: None,
@@ -382,8 +386,10 @@ impl MeasureJob {
     fn error_point(&mut self, frame: &Frame, median: f64, range: [f64; 2]) -> Option<Measurement> {
         let exact = self.exact.get_or_insert_with(|| frame.clone());
         let rel_rmse = image_error(frame, exact).rel_rmse;
+        let task = &self.tasks[self.next];
         self.result.points.push(Point {
-            label: self.tasks[self.next].label.clone(),
+            label: task.label.clone(),
+            method: Some(task.settings.method_a),
             ms: median,
             rel_rmse,
             ms_range: Some(range),

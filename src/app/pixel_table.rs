@@ -7,7 +7,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::app::lab::{Aspect, Compare, Lab, Stamp};
+use crate::app::cache::{Cached, Own};
+use crate::app::lab::{Lab, LobeView, Selection, SideB, parts};
 use crate::colormap::short_number;
 use crate::ltc::ClipCase;
 use crate::metrics::luminance;
@@ -33,16 +34,19 @@ pub enum LightColumn {
     ErrorShare,
 }
 
-/// What the lights were made for: the lab's stamp, the pinned pixel and the image's size.
-type MadeFor = (Stamp, Option<[f64; 2]>, (usize, usize));
-
 /// The pinned pixel's lights, made again only when what they are made from changes: every
 /// light in f64 takes 17 ms at 100 000 lights (release build, 2-core CPU), a whole frame, and
 /// the lab repaints every frame while the plane is summed.
-#[derive(Default)]
 pub struct PinnedLights {
-    made_for: Option<MadeFor>,
-    pub terms: Option<PixelTerms>,
+    terms: Cached<Option<PixelTerms>>,
+}
+
+impl Default for PinnedLights {
+    fn default() -> Self {
+        Self {
+            terms: Cached::new("plane.pinned"),
+        }
+    }
 }
 
 impl PinnedLights {
@@ -50,28 +54,46 @@ impl PinnedLights {
     /// A (and B, where two tables are compared), as the plane renders it; `None`: none
     /// pinned, or it is off the plane.
     pub fn update(&mut self, lab: &Lab, pinned: Option<[f64; 2]>, size: (usize, usize)) {
-        let made_for = (
-            lab.stamp(&[
-                Aspect::Scene,
-                Aspect::Shading,
-                Aspect::Rules,
-                Aspect::Tables,
-            ]),
-            pinned,
-            size,
+        let inputs = (
+            lab.stage(),
+            lab.material(),
+            lab.lights(),
+            lab.overrides(),
+            lab.side_b(),
+            lab.rules(),
+            lab.tables(),
+            Own((pinned, size)),
         );
-        if self.made_for == Some(made_for) {
-            return;
-        }
-        self.made_for = Some(made_for);
-        self.terms = pinned.and_then(|[u, v]| {
-            let (s, tables) = (lab.shared(), lab.tables());
-            let scene = s.shaded_scene();
-            let (width, height) = size;
-            let p = scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
-            let b = (s.compare == Compare::TableB).then_some(&tables.b.lut);
-            pixel_terms(&scene, (&tables.a.lut, b), &p, &s.ltc_rules())
-        });
+        self.terms.get(
+            inputs,
+            |(
+                stage,
+                material,
+                lights,
+                overrides,
+                side_b,
+                rules,
+                tables,
+                Own((pinned, (width, height))),
+            )| {
+                let [u, v] = pinned?;
+                let scene = parts::scene(stage, material, lights, &Default::default());
+                let scene = parts::shaded(scene, overrides);
+                let p =
+                    scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
+                let b = (**side_b == SideB::TableB).then_some(&tables.b().lut);
+                pixel_terms(&scene, (&tables.a().lut, b), &p, rules)
+            },
+        );
+    }
+
+    /// The pinned pixel's lights, as last made.
+    pub fn terms(&self) -> Option<&PixelTerms> {
+        self.terms.last()?.as_ref()
+    }
+
+    pub fn count(&self) -> (&'static str, u64) {
+        self.terms.count()
     }
 }
 
@@ -278,7 +300,7 @@ fn readout(ui: &mut egui::Ui, (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab), 
         }
         if ui.small_button("unpin").clicked() {
             *pinned = None;
-            lab.edit(Aspect::Selection, |s| s.lobe_light = None);
+            lab.edit(|v: &mut LobeView| v.light = None);
         }
     });
 }
@@ -304,17 +326,19 @@ fn header(
 }
 
 fn row(ui: &mut egui::Ui, lab: &mut Lab, t: &PixelTerms, l: &LightTerm) {
-    let shown = lab.shared().lobe_light == Some(l.omega.to_array());
+    let shown = lab.lobe_view().light == Some(l.omega.to_array());
     if ui
         .selectable_label(shown, format!("{}", l.index))
         .on_hover_text("Show this light's ω and M^-1 ω on the lobe panel, at this pixel's θo")
         .clicked()
     {
-        lab.edit(Aspect::Selection, |s| {
-            s.lobe_light = (!shown).then_some(l.omega.to_array());
-            s.selected_light = Some(l.index);
+        lab.set(Selection {
+            light: Some(l.index),
         });
-        lab.edit(Aspect::LobeView, |s| s.theta_o_deg = t.theta_o.to_degrees());
+        lab.edit(|v: &mut LobeView| {
+            v.light = (!shown).then_some(l.omega.to_array());
+            v.theta_o_deg = t.theta_o.to_degrees();
+        });
     }
     let angles = |w| {
         let (e, a) = elevation_azimuth(w);

@@ -10,7 +10,9 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::app::display::{ShownImage, colour_bar, difference_scale};
-use crate::app::lab::{Aspect, Compare, Lab, Panel, Shared};
+use crate::app::lab::part::Notes;
+use crate::app::lab::{Checked, Exposure, Lab, Lights, LobeView, Selection, SideB};
+use crate::app::panel::Panel;
 use crate::app::pixel_table::{self, LightColumn, PinnedLights};
 use crate::app::plane_paint::{
     PixelReading, Placed, markers, paint_divider, paint_image, paint_markers, paint_pin,
@@ -18,10 +20,10 @@ use crate::app::plane_paint::{
 };
 use crate::app::shading::Shading;
 use crate::cpu::{clip_counts, shade_exact, shade_ltc};
+use crate::gpu::GpuContext;
 use crate::metrics::luminance;
 use crate::render::{Frame, FrameKind, RenderSettings, View};
 use crate::scene::{Light, Scene};
-use crate::tables::NamedTables;
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
 /// 20 000 lights in under a minute on a CPU driver (lavapipe, ~0.2 G light-px/s), and in
@@ -59,17 +61,38 @@ impl Default for PlaneState {
     }
 }
 
+impl Checked for PlaneState {
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        let mut n = Notes(Vec::new());
+        n.number(
+            "the divider",
+            &mut self.divider,
+            previous.divider,
+            [0.0, 1.0],
+        );
+        if let Some(p) = &mut self.pinned {
+            if p.iter().all(|x| x.is_finite()) {
+                n.numbers("the pinned pixel", p, &[0.5; 2], [0.0, 1.0]);
+            } else {
+                n.say("the pinned pixel: not a place on the image, refused".into());
+                self.pinned = None;
+            }
+        }
+        n.0
+    }
+}
+
 enum Drag {
     Divider,
     Light(usize),
 }
 
 pub struct PlanePanel {
-    pub state: PlaneState,
+    state: PlaneState,
     /// The renderer, on the window's GPU or the CPU.
-    pub shading: Shading,
+    shading: Shading,
     /// The last image shown, and the render's size.
-    pub shown: Option<ShownImage>,
+    shown: Option<ShownImage>,
     drag: Option<Drag>,
     /// The pinned pixel's lights, as last shown.
     pinned: PinnedLights,
@@ -79,15 +102,15 @@ pub struct PlanePanel {
 
 impl Panel for PlanePanel {
     fn show(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
-        let (a, b) = side_names(lab.shared().compare);
+        let (a, b) = side_names(**lab.side_b());
         ui.horizontal_wrapped(|ui| self.toolbar(ui, lab));
         ui.horizontal_wrapped(|ui| {
             exposure_slider(ui, lab);
             ui.checkbox(&mut self.state.show_gpu_times, "GPU times")
                 .on_hover_text("The GPU milliseconds in the progress line; off for a slide or a screenshot that should not change from run to run");
         });
-        progress_line(ui, &self.shading, !self.state.show_gpu_times);
-        below_plane_note(ui, lab.shared());
+        progress_line(ui, self.shading.progress(), !self.state.show_gpu_times);
+        below_plane_note(ui, lab);
         // A fixed strip under the image for the readout (and the pinned pixel's lights), so
         // that nothing covers it and the image does not jump when it changes.
         let pinned = self.state.pinned.is_some();
@@ -103,7 +126,7 @@ impl Panel for PlanePanel {
             avail - Vec2::new(0.0, strip),
             avail - Vec2::new(0.0, 44.0),
         );
-        let settings = self.settings(lab.shared(), placed.size);
+        let settings = self.settings(lab, placed.size);
         let shown = self.shading.update(ui.ctx(), lab, &settings);
         self.shown = Some(shown);
         self.pin_worst(lab);
@@ -111,7 +134,7 @@ impl Panel for PlanePanel {
             ui.ctx().request_repaint();
         }
         self.paint(ui, lab, placed, shown, (a, b));
-        let markers = markers(lab.shared(), placed);
+        let markers = markers(lab, placed);
         self.interact(&response, lab, placed, &markers);
         self.pinned.update(lab, self.state.pinned, placed.size);
         if self.state.view == View::Diff {
@@ -124,45 +147,61 @@ impl Panel for PlanePanel {
             .and_then(|pos| inspect(lab, placed, pos));
         reading_line(ui, inspected.as_ref(), (a, b));
         let table = (&mut self.state.pinned, &mut self.state.light_sort);
-        pixel_table::show(ui, table, lab, self.pinned.terms.as_ref(), table_h);
+        pixel_table::show(ui, table, lab, self.pinned.terms(), table_h);
+    }
+
+    /// Whether the render is still being summed (or its worst pixel read back).
+    fn busy(&self) -> bool {
+        self.shading.in_flight() || self.worst_pending
+    }
+
+    fn caches(&self) -> Vec<(&'static str, u64)> {
+        let mut caches = self.shading.caches().to_vec();
+        caches.push(self.pinned.count());
+        caches
     }
 }
 
 impl PlanePanel {
-    pub fn new(shading: Shading, state: PlaneState) -> Self {
-        Self {
+    /// The panel with its kept settings, shading on `gpu` (the lab's device and the window's
+    /// render state) where there is one: else on the CPU, and why.
+    pub fn new(
+        state: PlaneState,
+        gpu: Option<(&GpuContext, &egui_wgpu::RenderState)>,
+    ) -> (Self, Option<String>) {
+        let (shading, why) = Shading::new(gpu);
+        let panel = Self {
             state,
             shading,
             shown: None,
             drag: None,
             pinned: PinnedLights::default(),
             worst_pending: false,
-        }
+        };
+        (panel, why)
     }
 
-    /// What the plane renders: LTC (A) against the BRDF form, or — two tables compared — the
-    /// same LTC form with table A against it with table B.
-    pub fn settings(&self, s: &Shared, (width, height): (usize, usize)) -> RenderSettings {
-        let tables = s.compare == Compare::TableB;
-        RenderSettings {
-            method_b: if tables { s.method_ltc } else { s.method_brdf },
-            b_reads_table_b: tables,
-            view: self.state.view,
-            rules: s.ltc_rules(),
-            divider: self.state.divider,
-            cull: s.cull,
-            ..RenderSettings::single(width, height, s.method_ltc)
-        }
+    pub fn state(&self) -> &PlaneState {
+        &self.state
     }
 
-    /// The pinned pixel's lights, as last shown.
-    pub fn pinned(&self) -> Option<&crate::pixel::PixelTerms> {
-        self.pinned.terms.as_ref()
+    /// Whether its image's read-back is on its way (`save_exr` will have it).
+    pub fn read_pending(&self) -> bool {
+        self.shading.read_pending()
     }
 
-    /// Whether the render is still being summed (or its worst pixel read back).
-    pub fn busy(&self) -> bool {
-        self.shading.in_flight() || self.worst_pending
+    /// Its render's size in pixels, once it has shown one.
+    pub fn size(&self) -> Option<(usize, usize)> {
+        self.shown.map(|s| s.size)
+    }
+
+    /// How far its render is.
+    pub fn progress(&self) -> &crate::app::shading::Progress {
+        self.shading.progress()
+    }
+
+    fn settings(&self, lab: &Lab, size: (usize, usize)) -> RenderSettings {
+        render_settings(lab, &self.state, size)
     }
 
     /// The image, its preview note, the divider, the lights' markers and the pin.
@@ -176,12 +215,12 @@ impl PlanePanel {
     ) {
         let rect = placed.rect;
         let painter = ui.painter_at(rect);
-        paint_image(&painter, rect, shown, self.shading.error.as_deref());
-        preview_label(ui, rect, &self.shading.progress);
+        paint_image(&painter, rect, shown, self.shading.error());
+        preview_label(ui, rect, self.shading.progress());
         if self.state.view == View::Split {
             paint_divider(&painter, rect, self.divider_x(rect), sides);
         }
-        paint_markers(&painter, lab.shared(), &markers(lab.shared(), placed));
+        paint_markers(&painter, lab, &markers(lab, placed));
         if let Some([u, v]) = self.state.pinned {
             paint_pin(
                 &painter,
@@ -196,14 +235,13 @@ impl PlanePanel {
 
     /// The comparison's switch, the views, adding and removing lights, the worst pixel.
     fn toolbar(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
-        let (a, b) = side_names(lab.shared().compare);
-        let b_name = lab.tables().b.name.clone();
-        lab.edit(Aspect::Shading, |s| {
-            let brdf = ui.selectable_value(&mut s.compare, Compare::Brdf, "LTC | BRDF")
+        let (a, b) = side_names(**lab.side_b());
+        let b_name = lab.tables().b().name.clone();
+        lab.edit(|side: &mut SideB| {
+            ui.selectable_value(side, SideB::Brdf, "LTC | BRDF")
                 .on_hover_text("Side B is the exact BRDF (the BRDF form in the side panel)");
-            let tables = ui.selectable_value(&mut s.compare, Compare::TableB, "A | B tables")
+            ui.selectable_value(side, SideB::TableB, "A | B tables")
                 .on_hover_text(format!("Two tables compared: side B is the same LTC form with table B ({b_name}) instead of the BRDF; the difference map is then |L_A − L_B| / L_B"));
-            brdf.changed() || tables.changed()
         });
         ui.separator();
         for (v, name, hover) in [
@@ -242,30 +280,28 @@ impl PlanePanel {
             .clicked()
         {
             let size = self.shown.map_or((1600, 900), |i| i.size);
-            let position = free_spot(&lab.shared().scene, self.state.divider, size);
-            lab.edit(Aspect::Scene, |s| {
-                s.scene.lights.push(Light {
+            let position = free_spot(&lab.scene(), self.state.divider, size);
+            lab.edit(|l: &mut Lights| {
+                l.list.push(Light {
                     position,
                     color: [1.0; 3],
                     intensity: 0.2,
                     range: None,
                 });
             });
-            lab.edit(Aspect::Selection, |s| {
-                s.selected_light = Some(s.scene.lights.len() - 1);
-            });
+            let added = lab.lights().list.len().checked_sub(1);
+            lab.edit(|s: &mut Selection| s.light = added);
         }
-        let count = lab.shared().scene.lights.len();
-        if let Some(k) = lab.shared().selected_light.filter(|&k| k < count)
+        if let Some(k) = lab.selection().light
             && ui
                 .small_button("− light")
                 .on_hover_text("Remove the selected light")
                 .clicked()
         {
-            lab.edit(Aspect::Scene, |s| {
-                s.scene.lights.remove(k);
+            lab.edit(|l: &mut Lights| {
+                l.list.remove(k);
             });
-            lab.edit(Aspect::Selection, |s| s.selected_light = None);
+            lab.edit(|s: &mut Selection| s.light = None);
         }
     }
 
@@ -295,10 +331,8 @@ impl PlanePanel {
                 (x as f64 + 0.5) / frame.width as f64,
                 (y as f64 + 0.5) / frame.height as f64,
             ]);
-            lab.edit(Aspect::Selection, |s| {
-                s.lobe_light = None;
-                s.selected_light = None;
-            });
+            lab.set(Selection::default());
+            lab.edit(|v: &mut LobeView| v.light = None);
         }
     }
 
@@ -327,7 +361,7 @@ impl PlanePanel {
                 self.state.view == View::Split && (pos.x - self.divider_x(placed.rect)).abs() < 8.0;
             self.drag = match near(pos) {
                 Some(k) => {
-                    lab.edit(Aspect::Selection, |s| s.selected_light = Some(k));
+                    lab.edit(|s: &mut Selection| s.light = Some(k));
                     Some(Drag::Light(k))
                 }
                 None if on_divider => Some(Drag::Divider),
@@ -338,7 +372,7 @@ impl PlanePanel {
             && let Some(pos) = response.interact_pointer_pos()
         {
             let hit = near(pos);
-            lab.edit(Aspect::Selection, |s| s.selected_light = hit);
+            lab.edit(|s: &mut Selection| s.light = hit);
             // A click beside the markers pins the pixel under it.
             if hit.is_none() {
                 let u = (pos - placed.rect.min) / placed.rect.size();
@@ -346,7 +380,7 @@ impl PlanePanel {
                     f64::from(u.x.clamp(0.0, 1.0)),
                     f64::from(u.y.clamp(0.0, 1.0)),
                 ]);
-                lab.edit(Aspect::Selection, |s| s.lobe_light = None);
+                lab.edit(|v: &mut LobeView| v.light = None);
             }
         }
         if response.dragged()
@@ -386,40 +420,55 @@ impl PlanePanel {
     }
 }
 
+/// What the plane renders at `size` with the panel's settings `state`: LTC (A) against the
+/// BRDF form, or — two tables compared — the same LTC form with table A against it with
+/// table B.
+pub fn render_settings(
+    lab: &Lab,
+    state: &PlaneState,
+    (width, height): (usize, usize),
+) -> RenderSettings {
+    let forms = **lab.forms();
+    let tables = **lab.side_b() == SideB::TableB;
+    RenderSettings {
+        method_b: if tables { forms.ltc } else { forms.brdf },
+        b_reads_table_b: tables,
+        view: state.view,
+        rules: **lab.rules(),
+        divider: state.divider,
+        cull: forms.cull,
+        ..RenderSettings::single(width, height, forms.ltc)
+    }
+}
+
 /// `frame` saved as the EXR the user named.
 fn encode_exr(frame: &Frame, path: &std::path::Path, exposure: f64) -> Result<String, String> {
     let format = crate::output::ImageFormat::of(path).map_err(|e| e.to_string())?;
     let bytes = crate::output::frame_bytes(frame, format, exposure);
-    crate::app::file_io::save(path, &bytes, "image/x-exr")
+    crate::app::files::save(path, &bytes, "image/x-exr")
 }
 
 /// Moves light `k` with the pointer at `pos`: along the plane at its height, or (Shift) up
 /// and down.
 fn drag_light(response: &egui::Response, lab: &mut Lab, placed: Placed, pos: Pos2, k: usize) {
-    if k >= lab.shared().scene.lights.len() {
-        return;
-    }
     let shift = response.ctx.input(|i| i.modifiers.shift);
     let dy = f64::from(response.drag_delta().y);
     let (x, y) = placed.pixel(pos);
     let (width, height) = placed.size;
-    lab.edit(Aspect::Scene, |s| {
+    // Keep the height; follow the pointer's ray to that height.
+    let (eye, dir) = lab.scene_camera_ray(x, y, (width, height));
+    let h = lab.stage().plane.half_size * 1.5;
+    lab.edit_light(k, |light| {
         if shift {
-            s.scene.lights[k].position[2] -= dy * 0.01;
-            return dy != 0.0;
+            light.position[2] -= dy * 0.01;
+            return;
         }
-        // Keep the height; follow the pointer's ray to that height.
-        let (eye, dir) = s.scene.camera_ray(x, y, width, height);
-        let h = s.scene.plane.half_size * 1.5;
-        let light = &mut s.scene.lights[k];
         let t = (light.position[2] - eye.z) / dir.z;
-        let hits = dir.z != 0.0 && t > 0.0;
-        if hits {
+        if dir.z != 0.0 && t > 0.0 {
             let p = eye + t * dir;
             light.position[0] = p.x.clamp(-h, h);
             light.position[1] = p.y.clamp(-h, h);
         }
-        hits
     });
 }
 
@@ -453,9 +502,10 @@ fn image_area(ui: &mut egui::Ui, avail: Vec2, unpinned: Vec2) -> (Placed, egui::
 
 /// A black plane is the right answer where every light is below it, but would look like a
 /// fault: say why.
-fn below_plane_note(ui: &mut egui::Ui, s: &Shared) {
-    let lights = &s.scene.lights;
-    if s.clipping.case1 && !lights.is_empty() && lights.iter().all(|l| l.position[2] <= 0.0) {
+fn below_plane_note(ui: &mut egui::Ui, lab: &Lab) {
+    let lights = &lab.lights().list;
+    let clipped = lab.rules().clipping.case1;
+    if clipped && !lights.is_empty() && lights.iter().all(|l| l.position[2] <= 0.0) {
         ui.small("every light is at or below the plane: the case-1 rule (n·l ≤ 0 -> 0) keeps it black; turn the rule off, or see the Clipping panel, for the glow M^-1 would lift");
     }
 }
@@ -464,8 +514,9 @@ fn below_plane_note(ui: &mut egui::Ui, s: &Shared) {
 fn exposure_slider(ui: &mut egui::Ui, lab: &mut Lab) {
     // 1/64..64: six stops each way covers paper-100 (peaks near 1) down to the clipping
     // scenes' faint light without leaving the slider's fine range.
-    lab.edit(Aspect::Exposure, |s| ui.add(
-        egui::Slider::new(&mut s.scene.exposure, 1.0 / 64.0..=64.0)
+    let [lo, hi] = crate::app::lab::parts::EXPOSURE_RANGE;
+    lab.edit(|e: &mut Exposure| ui.add(
+        egui::Slider::new(&mut e.0, lo..=hi)
             .logarithmic(true)
             .text("exposure"),
     )
@@ -475,17 +526,17 @@ fn exposure_slider(ui: &mut egui::Ui, lab: &mut Lab) {
 /// Side A's and side B's radiance at screen position `pos`, in f64 on the CPU: LTC with
 /// table A, against the exact BRDF or (two tables compared) LTC with table B.
 fn inspect(lab: &Lab, placed: Placed, pos: Pos2) -> Option<PixelReading> {
-    let (s, tables) = (lab.shared(), lab.tables());
-    let scene = s.shaded_scene();
+    let tables = lab.tables();
+    let scene = lab.shaded_scene();
     let (x, y) = placed.pixel(pos);
     let p = scene.surface_point_at(x, y, placed.size.0, placed.size.1)?;
-    let ltc = |table| shade_ltc(&scene, table, &p, &scene.lights, &s.ltc_rules());
-    let a = ltc(&tables.a.lut);
-    let b = match s.compare {
-        Compare::TableB => ltc(&tables.b.lut),
-        Compare::Brdf => shade_exact(&scene, &p, &scene.lights),
+    let ltc = |table| shade_ltc(&scene, table, &p, &scene.lights, lab.rules());
+    let a = ltc(&tables.a().lut);
+    let b = match **lab.side_b() {
+        SideB::TableB => ltc(&tables.b().lut),
+        SideB::Brdf => shade_exact(&scene, &p, &scene.lights),
     };
-    let counts = clip_counts(&scene, &tables.a.lut, &p, &scene.lights);
+    let counts = clip_counts(&scene, &tables.a().lut, &p, &scene.lights);
     let lb = luminance(b);
     Some(PixelReading {
         a,
@@ -497,22 +548,10 @@ fn inspect(lab: &Lab, placed: Placed, pos: Pos2) -> Option<PixelReading> {
 }
 
 /// What sides A and B of the plane are called.
-fn side_names(compare: Compare) -> (&'static str, &'static str) {
-    match compare {
-        Compare::Brdf => ("LTC", "BRDF"),
-        Compare::TableB => ("A", "B"),
-    }
-}
-
-/// The panel's title (on its frame and its tab): what its two sides are.
-pub fn title(compare: Compare, tables: &NamedTables) -> String {
-    match compare {
-        Compare::Brdf => "Plane: LTC | BRDF".to_string(),
-        Compare::TableB => format!(
-            "Plane: table A ({}) | table B ({})",
-            tables.a.short_name(),
-            tables.b.short_name()
-        ),
+fn side_names(side_b: SideB) -> (&'static str, &'static str) {
+    match side_b {
+        SideB::Brdf => ("LTC", "BRDF"),
+        SideB::TableB => ("A", "B"),
     }
 }
 

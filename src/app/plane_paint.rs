@@ -6,8 +6,8 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use crate::app::display::ShownImage;
-use crate::app::lab::Shared;
-use crate::app::shading::{FRAME_BUDGET_MS, Progress, Shading};
+use crate::app::lab::Lab;
+use crate::app::shading::{FRAME_BUDGET_MS, Progress};
 use crate::metrics::luminance;
 
 /// The pixel inspector's numbers.
@@ -43,8 +43,7 @@ impl Placed {
 
 /// "3 200 / 20 000 lights, 16% — 312 ms GPU over 40 frames" while the render fills, the
 /// render's GPU time once it is done.
-pub fn progress_line(ui: &mut egui::Ui, shading: &Shading, hide_timings: bool) {
-    let p = shading.progress;
+pub fn progress_line(ui: &mut egui::Ui, p: &Progress, hide_timings: bool) {
     let time = if hide_timings || p.gpu_ms <= 0.0 {
         String::new()
     } else {
@@ -143,7 +142,7 @@ pub fn paint_divider(painter: &egui::Painter, rect: egui::Rect, x: f32, (a, b): 
 
 /// Where the lights' markers are on the screen (the first 200: beyond that they only hide
 /// the image).
-pub fn markers(s: &Shared, placed: Placed) -> Vec<(usize, Pos2)> {
+pub fn markers(lab: &Lab, placed: Placed) -> Vec<(usize, Pos2)> {
     let (rect, (width, height)) = (placed.rect, placed.size);
     let to_screen = |(x, y): (f64, f64)| {
         rect.min
@@ -152,13 +151,14 @@ pub fn markers(s: &Shared, placed: Placed) -> Vec<(usize, Pos2)> {
                 (y / height as f64) as f32 * rect.height(),
             )
     };
-    s.scene
-        .lights
+    let scene = lab.stage_scene();
+    lab.lights()
+        .list
         .iter()
         .enumerate()
         .take(200)
         .filter_map(|(k, l)| {
-            s.scene
+            scene
                 .project(DVec3::from(l.position), width, height)
                 .map(|p| (k, to_screen(p)))
         })
@@ -167,15 +167,17 @@ pub fn markers(s: &Shared, placed: Placed) -> Vec<(usize, Pos2)> {
 }
 
 /// The lights' markers in their colours, the selected one larger.
-pub fn paint_markers(painter: &egui::Painter, s: &Shared, markers: &[(usize, Pos2)]) {
+pub fn paint_markers(painter: &egui::Painter, lab: &Lab, markers: &[(usize, Pos2)]) {
     for (k, p) in markers {
-        let l = &s.scene.lights[*k];
+        let Some(l) = lab.lights().list.get(*k) else {
+            continue;
+        };
         let c = Color32::from_rgb(
             (l.color[0] * 255.0) as u8,
             (l.color[1] * 255.0) as u8,
             (l.color[2] * 255.0) as u8,
         );
-        let selected = s.selected_light == Some(*k);
+        let selected = lab.selection().light == Some(*k);
         painter.circle(
             *p,
             if selected { 6.0 } else { 4.0 },

@@ -4,6 +4,8 @@
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
+use crate::app::panel::PanelId;
+use crate::app::report::Report;
 use crate::error::Error;
 
 type Slot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
@@ -55,7 +57,7 @@ impl PendingScreenshot {
         let mut png = std::io::Cursor::new(Vec::new());
         rgba.write_to(&mut png, image::ImageFormat::Png)
             .map_err(|e| Error::machine(&name, format!("cannot encode the PNG: {e}")))?;
-        crate::app::file_io::save(&self.path, &png.into_inner(), "image/png")
+        crate::app::files::save(&self.path, &png.into_inner(), "image/png")
             .map_err(|why| Error::input(&name, why))
     }
 }
@@ -72,20 +74,12 @@ pub const SETTLE_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(6
 pub trait Settling {
     /// Whether anything is still being computed for the window.
     fn busy(&self) -> bool;
-    /// The plane's render: entries summed and their total (for the frame log).
-    fn progress(&self) -> (usize, usize);
-    /// Milliseconds the last frame spent in each of its parts, in `PART_NAMES`' order
-    /// (0 for a part not shown).
-    fn part_ms(&self) -> [f64; PART_COUNT];
+    /// The app as the last frame left it (for the frame log).
+    fn report(&self) -> Report;
 }
 
-/// The parts of a frame the frame log times: the side panel and the five panels.
-pub const PART_NAMES: [&str; PART_COUNT] =
-    ["controls", "lobe", "matrix", "plane", "clipping", "chart"];
-pub const PART_COUNT: usize = 6;
-
 /// One row of the frame log.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct FrameRecord {
     pub frame: usize,
     /// Wall-clock milliseconds since the previous UI frame began (the first: since start).
@@ -96,29 +90,36 @@ pub struct FrameRecord {
     /// Milliseconds in the app's own `ui` (our panels and egui's layout of their widgets;
     /// not egui's tessellation, the GPU's painting or the window's present, which follow it).
     pub ui_ms: f64,
-    /// Of those, each part's (`PART_NAMES`).
-    pub part_ms: [f64; PART_COUNT],
+    /// Of those, each panel's, in `PanelId::ALL`'s order.
+    pub part_ms: Vec<f64>,
+    /// The caches made again in the frame.
+    pub remade: Vec<&'static str>,
 }
 
 /// The frame log as CSV: `frame,ms,render_in_flight,lights_done,lights_total,ui_ms`, then a
-/// column per part of the frame (`controls_ms`, `lobe_ms`, …).
+/// column per panel (`controls_ms`, `lobe_ms`, …), then `remade`: the caches made again,
+/// separated by spaces.
 pub fn frame_log_csv(records: &[FrameRecord]) -> String {
-    let parts: Vec<String> = PART_NAMES.iter().map(|p| format!(",{p}_ms")).collect();
+    let parts: Vec<String> = PanelId::ALL
+        .iter()
+        .map(|p| format!(",{}_ms", p.name()))
+        .collect();
     let mut out = format!(
-        "frame,ms,render_in_flight,lights_done,lights_total,ui_ms{}\n",
+        "frame,ms,render_in_flight,lights_done,lights_total,ui_ms{},remade\n",
         parts.concat()
     );
     for r in records {
         let parts: Vec<String> = r.part_ms.iter().map(|ms| format!(",{ms:.3}")).collect();
         out.push_str(&format!(
-            "{},{:.3},{},{},{},{:.3}{}\n",
+            "{},{:.3},{},{},{},{:.3}{},{}\n",
             r.frame,
             r.ms,
             u8::from(r.render_in_flight),
             r.lights_done,
             r.lights_total,
             r.ui_ms,
-            parts.concat()
+            parts.concat(),
+            r.remade.join(" ")
         ));
     }
     out
@@ -160,7 +161,8 @@ impl<A: eframe::App + Settling> eframe::App for ScreenshotApp<A> {
         self.app.ui(ui, frame);
         let ui_ms = now.elapsed().as_secs_f64() * 1e3;
         let ctx = ui.ctx().clone();
-        let (lights_done, lights_total) = self.app.progress();
+        let report = self.app.report();
+        let [lights_done, lights_total] = report.plane;
         let busy = self.app.busy();
         let count = {
             let mut frames = self.frames.lock().expect("not poisoned");
@@ -171,7 +173,8 @@ impl<A: eframe::App + Settling> eframe::App for ScreenshotApp<A> {
                 lights_done,
                 lights_total,
                 ui_ms,
-                part_ms: self.app.part_ms(),
+                part_ms: report.part_ms,
+                remade: report.remade,
             };
             frames.push(record);
             frames.len()

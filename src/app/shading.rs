@@ -9,9 +9,10 @@ use std::time::Duration;
 
 use web_time::Instant;
 
+use crate::app::cache::{Cached, Own};
 use crate::app::completion::{Chunk, Completion};
 use crate::app::display::ShownImage;
-use crate::app::lab::{Aspect, Lab, Stamp};
+use crate::app::lab::{Exposure, Lab, parts};
 use crate::app::pacer::Pacer;
 use crate::gpu::GpuContext;
 use crate::gpu::display::DisplayPass;
@@ -20,7 +21,6 @@ use crate::gpu::plane_render::PlaneRender;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::target::PendingRead;
 use crate::gpu::timing::FrameTimes;
-use crate::ltc::lut::Lut;
 use crate::render::{Frame, FrameKind, RenderSettings, Tables, View};
 use crate::scene::Scene;
 use crate::tables::NamedTables;
@@ -30,26 +30,9 @@ use crate::tables::NamedTables;
 /// thread's share of the cores).
 pub const FRAME_BUDGET_MS: f64 = 8.0;
 
-/// What a render reads from the lab: a change of any of them restarts it.
-const RENDERED: [Aspect; 4] = [
-    Aspect::Scene,
-    Aspect::Shading,
-    Aspect::Rules,
-    Aspect::Tables,
-];
-
 /// The largest side the CPU fallback renders: the f64 reference shades ~1e8 light-pixels/s
 /// on two cores, so 320 px keeps 100 lights interactive.
 pub const CPU_FALLBACK_SIDE: usize = 320;
-
-/// The window's wgpu set-up: the default one (`WGPU_BACKEND` honoured) asking the device for
-/// what the plane's renderer uses — timestamp queries for its budget, f16 shaders, the
-/// adapter's own limits for the largest light buffer (`gpu::device_descriptor`).
-pub fn wgpu_setup() -> egui_wgpu::WgpuSetup {
-    let mut setup = egui_wgpu::WgpuSetupCreateNew::without_display_handle();
-    setup.device_descriptor = Arc::new(crate::gpu::device_descriptor);
-    setup.into()
-}
 
 /// What a chunk does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -134,14 +117,14 @@ pub fn thousands(n: usize) -> String {
 /// The plane's renderer: on the window's GPU, or the CPU reference where there is none.
 pub struct Shading {
     path: Path,
-    /// What the current render was started for: the lab's stamp of what it reads, and the
-    /// panel's settings.
-    started: Option<(Stamp, RenderSettings)>,
-    /// The tables' stamp the GPU's table buffer (or the CPU's copy) holds.
-    tables: Option<Stamp>,
-    pub progress: Progress,
+    /// The scene the current render shades, made from the parts it reads with the panel's
+    /// settings: made again, the render starts again.
+    render: Cached<(Scene, RenderSettings)>,
+    /// The tables the GPU's table buffer holds.
+    tables: Cached<()>,
+    progress: Progress,
     /// An error of the last render, shown over the image.
-    pub error: Option<String>,
+    error: Option<String>,
     /// The finished image's read-back, on its way (`read`).
     reading: Option<PendingRead>,
 }
@@ -201,21 +184,18 @@ struct CpuShading {
 }
 
 impl Shading {
-    /// The renderer on the window's device (`render_state`), shading table A first; or the
-    /// CPU, and why not the GPU.
-    pub fn new(lut: &Lut, render_state: Option<&egui_wgpu::RenderState>) -> (Self, Option<String>) {
-        let (path, why) = match render_state.map(|rs| GpuShading::new(rs, lut)) {
+    /// The renderer on the window's device (`gpu`: the lab's device and the window's
+    /// render state), shading the lab's tables; or the CPU, and why not the GPU.
+    pub fn new(gpu: Option<(&GpuContext, &egui_wgpu::RenderState)>) -> (Self, Option<String>) {
+        let (path, why) = match gpu.map(|(ctx, rs)| GpuShading::new(ctx, rs)) {
             Some(Ok(g)) => (Path::Gpu(Box::new(g)), None),
             Some(Err(e)) => (Path::Cpu(CpuShading::default()), Some(e)),
-            None => (
-                Path::Cpu(CpuShading::default()),
-                Some("the window draws without wgpu".to_string()),
-            ),
+            None => (Path::Cpu(CpuShading::default()), None),
         };
         let shading = Self {
             path,
-            started: None,
-            tables: None,
+            render: Cached::new("plane.render"),
+            tables: Cached::new("plane.tables"),
             progress: Progress::default(),
             error: None,
             reading: None,
@@ -223,12 +203,19 @@ impl Shading {
         (shading, why)
     }
 
-    /// The device, for the lab (the chart measures on it).
-    pub fn context(&self) -> Option<&GpuContext> {
-        match &self.path {
-            Path::Gpu(g) => Some(&g.ctx),
-            Path::Cpu(_) => None,
-        }
+    /// How far the current render is.
+    pub fn progress(&self) -> &Progress {
+        &self.progress
+    }
+
+    /// An error of the last render.
+    pub fn error(&self) -> Option<&str> {
+        self.error.as_deref()
+    }
+
+    /// Its caches, with their counts.
+    pub fn caches(&self) -> [(&'static str, u64); 2] {
+        [self.render.count(), self.tables.count()]
     }
 
     /// One frame's share of the render of the lab's scene as `settings` says: restarted when
@@ -239,18 +226,30 @@ impl Shading {
         lab: &Lab,
         settings: &RenderSettings,
     ) -> ShownImage {
-        let started = (lab.stamp(&RENDERED), *settings);
-        let restart = self.started != Some(started);
+        let (_, before) = self.render.count();
+        // The exposure is applied when the image is shown: the sums do not read it.
+        let inputs = (
+            lab.stage(),
+            lab.material(),
+            lab.lights(),
+            lab.overrides(),
+            lab.tables(),
+            Own(*settings),
+        );
+        self.render
+            .get(inputs, |(stage, material, lights, overrides, _, Own(s))| {
+                let scene = parts::scene(stage, material, lights, &Exposure(1.0));
+                (parts::shaded(scene, overrides), s)
+            });
+        let restart = self.render.count().1 != before;
         let kind = if settings.view == View::Diff {
             FrameKind::RelativeDifference
         } else {
             FrameKind::Radiance
         };
-        // Exposure is applied when the image is shown: it does not restart the sums.
-        let exposure = lab.shared().scene.exposure;
+        let exposure = lab.exposure().0;
         if restart {
-            self.started = Some(started);
-            self.restart(ui, lab, settings, kind);
+            self.restart(ui, lab, kind, exposure);
         }
         let texture = match &mut self.path {
             Path::Gpu(g) => {
@@ -279,24 +278,22 @@ impl Shading {
         }
     }
 
-    /// Starts the render of the lab's scene afresh (the tables brought up to date first).
-    fn restart(
-        &mut self,
-        ui: &egui::Context,
-        lab: &Lab,
-        settings: &RenderSettings,
-        kind: FrameKind,
-    ) {
-        let scene = lab.shared().shaded_scene();
-        let tables_stamp = lab.stamp(&[Aspect::Tables]);
-        let new_tables = self.tables != Some(tables_stamp);
-        self.tables = Some(tables_stamp);
+    /// Starts the render afresh (the tables brought up to date first).
+    fn restart(&mut self, ui: &egui::Context, lab: &Lab, kind: FrameKind, exposure: f64) {
+        let Some((scene, settings)) = self.render.last() else {
+            return;
+        };
+        let (scene, settings) = (scene.clone(), *settings);
+        let settings = &settings;
         self.error = None;
         self.reading = None;
+        let tables = &lab.tables().named;
         match &mut self.path {
             Path::Gpu(g) => {
-                if new_tables {
-                    self.error = g.set_tables(lab.tables()).err();
+                let (_, before) = self.tables.count();
+                self.tables.get(lab.tables(), |_| ());
+                if self.tables.count().1 != before {
+                    self.error = g.set_tables(tables).err();
                 }
                 if self.error.is_none() {
                     self.error = g.begin(&scene, settings).err();
@@ -310,7 +307,7 @@ impl Shading {
                 // No lights: nothing to sum, but the last image must go. One empty chunk
                 // resolves the cleared sums: the plane black, as it is.
                 if self.error.is_none() && self.progress.total == 0 {
-                    g.chunk(ui, &mut self.progress, kind, scene.exposure);
+                    g.chunk(ui, &mut self.progress, kind, exposure);
                 }
             }
             Path::Cpu(cpu) => {
@@ -319,19 +316,9 @@ impl Shading {
                     started: Some(Instant::now()),
                     ..Progress::default()
                 };
-                cpu.start(ui, scene, settings, lab.tables());
+                cpu.start(ui, scene, settings, tables);
             }
         }
-    }
-
-    /// What the current render shades, once one has started.
-    pub fn settings(&self) -> Option<&RenderSettings> {
-        self.started.as_ref().map(|(_, s)| s)
-    }
-
-    /// Forgets the current render, so that the next frame starts it again.
-    pub fn invalidate(&mut self) {
-        self.started = None;
     }
 
     /// Whether the current render is still being summed.
@@ -367,21 +354,10 @@ impl Shading {
 }
 
 impl GpuShading {
-    fn new(rs: &egui_wgpu::RenderState, lut: &Lut) -> Result<Self, String> {
-        // WebGL2 (the browser without WebGPU) draws the window but has no compute shaders
-        // and no storage buffers: the plane is then shaded on the CPU (issue 21).
-        let downlevel = rs.adapter.get_downlevel_capabilities();
-        if !downlevel
-            .flags
-            .contains(wgpu::DownlevelFlags::COMPUTE_SHADERS)
-        {
-            return Err(format!(
-                "{} has no compute shaders (WebGL2?)",
-                rs.adapter.get_info().name
-            ));
-        }
-        let ctx =
-            GpuContext::from_parts(rs.device.clone(), rs.queue.clone(), rs.adapter.get_info());
+    fn new(ctx: &GpuContext, rs: &egui_wgpu::RenderState) -> Result<Self, String> {
+        let ctx = ctx.clone();
+        // The shipped table until the first render's tables are set.
+        let lut = crate::ltc::lut::Lut::embedded();
         let renderer =
             PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
         Ok(Self {

@@ -1,57 +1,18 @@
-//! What the user set in the lab, persisted by eframe between runs: what the panels share,
-//! each panel's own settings, and the window's; and the panels' names.
+//! What the user set in the lab, as eframe keeps it between runs and a link carries it: the
+//! lab's parts, each panel's own settings, and the window's. Whoever hands it over (stored
+//! state, a link, a lesson), every value is checked where it enters (`LabState::check`).
 
 use serde::{Deserialize, Serialize};
 
 use crate::app::chart::ChartState;
 use crate::app::clip_setup::ClippingState;
 use crate::app::controls::ControlsState;
-use crate::app::lab::Shared;
+use crate::app::lab::{Checked, Shared};
 use crate::app::lobe::LobeState;
+use crate::app::panel::PanelId;
 use crate::app::plane::PlaneState;
 
-/// The panels, for maximising one and for headless screenshots.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum PanelId {
-    Lobe,
-    Matrix,
-    Plane,
-    Clipping,
-    Chart,
-}
-
-impl PanelId {
-    pub const ALL: [Self; 5] = [
-        Self::Lobe,
-        Self::Matrix,
-        Self::Plane,
-        Self::Clipping,
-        Self::Chart,
-    ];
-
-    /// The name on the command line (`lab --panel`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Lobe => "lobe",
-            Self::Matrix => "matrix",
-            Self::Plane => "plane",
-            Self::Clipping => "clipping",
-            Self::Chart => "chart",
-        }
-    }
-
-    pub fn title(self) -> &'static str {
-        match self {
-            Self::Lobe => "Lobe on the sphere",
-            Self::Matrix => "Matrix and LUT",
-            Self::Plane => "Plane: LTC | BRDF",
-            Self::Clipping => "Clipping (Figure 2)",
-            Self::Chart => "Speed vs accuracy",
-        }
-    }
-}
-
-/// Everything the user set; persisted by eframe between runs.
+/// Everything the user set.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct LabState {
@@ -62,6 +23,20 @@ pub struct LabState {
     pub chart: ChartState,
     pub controls: ControlsState,
     pub window: WindowState,
+}
+
+impl LabState {
+    /// Every value within its range (against the defaults: what came in had no value before
+    /// it); what was refused or clamped, named.
+    pub fn check(&mut self) -> Vec<String> {
+        let mut notes = self.lab.check();
+        notes.extend(self.lobe.check(&LobeState::default()));
+        notes.extend(self.plane.check(&PlaneState::default()));
+        notes.extend(self.clipping.check(&ClippingState::default()));
+        notes.extend(self.chart.check(&ChartState::default()));
+        notes.extend(self.window.check(&WindowState::default()));
+        notes
+    }
 }
 
 /// How the window lays the panels out.
@@ -82,5 +57,21 @@ impl Default for WindowState {
             tab: PanelId::Plane,
             controls_hidden: false,
         }
+    }
+}
+
+impl Checked for WindowState {
+    /// Only the grid's panels are shown alone.
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        let mut notes = Vec::new();
+        if self.maximised.is_some_and(|p| !PanelId::GRID.contains(&p)) {
+            notes.push("the maximised panel: not one of the grid's, refused".into());
+            self.maximised = previous.maximised;
+        }
+        if !PanelId::GRID.contains(&self.tab) {
+            notes.push("the tab: not one of the grid's panels, refused".into());
+            self.tab = previous.tab;
+        }
+        notes
     }
 }

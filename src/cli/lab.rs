@@ -6,7 +6,7 @@ use std::sync::{Arc, Mutex};
 
 use ltc_lab::app::link;
 use ltc_lab::app::screenshot::frame_log_csv;
-use ltc_lab::app::{LabApp, LabState, Message, PanelId, ScreenshotApp};
+use ltc_lab::app::{LabApp, LabState, PanelId, ScreenshotApp, Startup};
 use ltc_lab::error::{Error, Result};
 use ltc_lab::gpu::driver_output;
 use ltc_lab::scene::Scene;
@@ -24,14 +24,10 @@ fn parse_panel(s: &str) -> std::result::Result<Panels, String> {
     if s == "all" {
         return Ok(Panels(None));
     }
-    PanelId::ALL
-        .into_iter()
-        .find(|p| p.name() == s)
-        .map(|p| Panels(Some(p)))
-        .ok_or_else(|| {
-            let names: Vec<&str> = PanelId::ALL.iter().map(|p| p.name()).collect();
-            format!("'{s}' is not a panel: {} or all", names.join(", "))
-        })
+    PanelId::of_name(s).map(|p| Panels(Some(p))).ok_or_else(|| {
+        let names: Vec<&str> = PanelId::GRID.iter().map(|p| p.name()).collect();
+        format!("'{s}' is not a panel: {} or all", names.join(", "))
+    })
 }
 
 #[derive(clap::Args, Debug)]
@@ -102,27 +98,23 @@ pub fn run(a: Args) -> Result<()> {
             ),
         ));
     }
-    // A view that cannot be opened is refused before any window opens.
+    // A string that is not a view is refused before any window opens; what a view holds is
+    // checked where it enters the lab, and what was refused or clamped is said there.
     if let Some(v) = &a.view {
         link::decode(v, &LabState::default()).map_err(|why| Error::input("--view", why))?;
     }
     let view = a.view.clone();
-    // The view asked for over `state`: checked above.
-    let with_view = move |state: LabState| match &view {
-        Some(v) => link::decode(v, &state).unwrap_or(state),
-        None => state,
-    };
     let (w, h) = a.size.unwrap_or(DEFAULT_SIZE);
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("LTC Lab")
-            // Names eframe's store too: a new one, as the lab no longer keeps egui's memory
-            // (`LabApp::persist_egui_memory`) and the old one holds a zoom that sized windows.
+            // Names eframe's store too; the lab keeps no egui memory there
+            // (`LabApp::persist_egui_memory`), so a kept zoom cannot size a window.
             .with_app_id("ltc-lab")
             .with_inner_size([w as f32, h as f32]),
         renderer: eframe::Renderer::Wgpu,
         wgpu_options: egui_wgpu::WgpuConfiguration {
-            wgpu_setup: ltc_lab::app::shading::wgpu_setup(),
+            wgpu_setup: ltc_lab::app::device::wgpu_setup(),
             ..Default::default()
         },
         // A screenshot shows the defaults, not whatever the last session left; a size asked
@@ -130,28 +122,12 @@ pub fn run(a: Args) -> Result<()> {
         persist_window: a.screenshot.is_none() && a.size.is_none(),
         ..Default::default()
     };
-    let (panel, measure, lights) = (a.panel.0, a.measure, a.lights);
-    // What the command line asked for, over the persisted state (or the defaults).
-    let configure = move |mut app: LabApp| {
-        let lab = &mut app.lab;
-        if let Some(sc) = &scene
-            && let Some(cut) = lab.use_scene(sc.clone())
-        {
-            lab.say(Message::error(cut));
-        }
-        if let Some(n) = lights {
-            lab.set_light_count(n);
-            if let Some(cut) = lab.keep_lights() {
-                lab.say(Message::error(cut));
-            }
-        }
-        if panel.is_some() {
-            app.window.maximised = panel;
-        }
-        if measure {
-            app.chart.start(&app.lab);
-        }
-        app
+    // What the command line asked for, over the kept state (or the defaults).
+    let startup = Startup {
+        scene,
+        lights: a.lights,
+        panel: a.panel.0,
+        measure: a.measure,
     };
     // Drivers print while eframe opens the window's adapter (gpu::driver_output says what):
     // held back until the app is made, then dropped; handed to the error if the window
@@ -173,9 +149,16 @@ pub fn run(a: Args) -> Result<()> {
                 Box::new(move |cc| {
                     opened();
                     keep_driver_loaded(cc);
-                    let state = with_view(LabState::default());
-                    let app = LabApp::new(state, cc.wgpu_render_state.as_ref());
-                    let mut shot = ScreenshotApp::new(configure(app), path);
+                    // A screenshot shows the defaults (or the view, checked above), not
+                    // whatever the last session kept.
+                    let defaults = LabState::default();
+                    let state = match &view {
+                        Some(v) => link::decode(v, &defaults).unwrap_or(defaults),
+                        None => defaults,
+                    };
+                    let mut app = LabApp::new(state, cc.wgpu_render_state.as_ref());
+                    app.start_with(startup);
+                    let mut shot = ScreenshotApp::new(app, path);
                     shot.result = slot;
                     shot.frames = log;
                     Ok(Box::new(shot))
@@ -202,9 +185,9 @@ pub fn run(a: Args) -> Result<()> {
             Box::new(move |cc| {
                 opened();
                 keep_driver_loaded(cc);
-                let state = with_view(LabApp::stored_state(cc));
-                let app = LabApp::new(state, cc.wgpu_render_state.as_ref());
-                Ok(Box::new(configure(app)))
+                let mut app = LabApp::from_creation_context(cc, view.as_deref());
+                app.start_with(startup);
+                Ok(Box::new(app))
             }),
         )
         .map_err(|e| window_error(format!("cannot open the window: {e}"))),

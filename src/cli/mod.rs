@@ -176,6 +176,16 @@ impl LutArgs {
     }
 
     /// What the table is, for messages.
+    /// Where the table shaded with under `horizon` comes from.
+    pub fn source(&self, horizon: Horizon) -> ltc_lab::tables::Source {
+        use ltc_lab::tables::Source;
+        match (horizon.table(), &self.lut) {
+            (Some(own), _) => Source::Shipped(own),
+            (None, Some(p)) => Source::File(p.display().to_string()),
+            (None, None) => Source::Shipped(self.table()),
+        }
+    }
+
     pub fn describe(&self) -> String {
         let table = self.table();
         match &self.lut {

@@ -16,7 +16,7 @@ use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::output::{ImageFormat, frame_bytes};
 use ltc_lab::render::{Frame, Method, RenderSettings, View};
 use ltc_lab::scene::Scene;
-use ltc_lab::tables::{NamedTable, NamedTables};
+use ltc_lab::tables::{NamedTable, NamedTables, Source};
 
 use super::{HORIZON_HELP, LutArgs, horizon_parser, one_of, parse_cull, parse_size};
 use ltc_lab::ltc::remedy::Horizon;
@@ -140,6 +140,7 @@ pub fn run(a: &Args) -> Result<()> {
             Some(t) => format!("the embedded {} table ({})", t.name(), t.path()),
             None => a.lut.describe(),
         },
+        source: a.lut.source(a.horizon),
     };
     let tables = match table_b(a)? {
         Some(b) => {
@@ -151,11 +152,7 @@ pub fn run(a: &Args) -> Result<()> {
             }
             settings.method_b = settings.method_a;
             settings.b_reads_table_b = true;
-            NamedTables {
-                a: named_a,
-                b,
-                b_chosen: true,
-            }
+            NamedTables { a: named_a, b }
         }
         None => NamedTables::with_a(named_a, table_a),
     };
@@ -219,13 +216,17 @@ fn table_b(a: &Args) -> Result<Option<NamedTable>> {
     if let Some(note) = &loaded.note {
         eprintln!("ltc-lab: note: {note}");
     }
-    let name = a
-        .lut_b
-        .as_ref()
-        .map_or(table.name().to_string(), |p| p.display().to_string());
+    let (name, source) = match &a.lut_b {
+        Some(p) => {
+            let path = p.display().to_string();
+            (path.clone(), Source::File(path))
+        }
+        None => (table.name().to_string(), Source::Shipped(table)),
+    };
     Ok(Some(NamedTable {
         lut: loaded.lut.into_owned(),
         name,
+        source,
     }))
 }
 

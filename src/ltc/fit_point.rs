@@ -1,4 +1,4 @@
-//! The point-light fit (issue 6): the same isotropic family, fitted to what a point light
+//! The point-light fit: the same isotropic family, fitted to what a point light
 //! sees. The objective is the pointwise relative L1 error of docs/design.md §4,
 //! `∫ |s n D − f cos| dω / ∫ f cos dω`, by a deterministic quadrature that follows the lobe
 //! (`CellQuadrature`). Free are all four entries `m00, m02, m20, m22` of the normalized

@@ -33,7 +33,7 @@ fn bench_prints_the_table_and_writes_the_csv() {
         table.contains("| ltc-fast | 20 | 32×16 | on | 2 |"),
         "{table}"
     );
-    // Issue 22: each f32 LTC form again with the remedy, and its time over eq30's.
+    // Each f32 LTC form again with the remedy, and its time over eq30's.
     assert!(
         table.contains("| ltc-fast (exact-band) | 20 | 32×16 | on | 2 |"),
         "{table}"
@@ -84,7 +84,7 @@ fn bench_refuses_bad_arguments() {
 }
 
 /// Every light count is checked before the first is measured, and the message says which
-/// argument does not fit (it used to blame a "scene" the user never gave).
+/// argument does not fit (not a "scene" the user never gave).
 #[test]
 fn bench_checks_every_light_count_first() {
     let Some(g) = gpu() else { return };

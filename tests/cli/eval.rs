@@ -40,7 +40,7 @@ fn eval_prints_one_row_per_case() {
     assert!((rows[0][9] - rows[0][7]).abs() < 0.05 * rows[0][7]);
 }
 
-/// Issue 22: `--horizon` picks the remedy. exact-band gives the exact lobes for a light 10°
+/// `--horizon` picks the remedy. exact-band gives the exact lobes for a light 10°
 /// above the surface and eq. 30's LTC for one at 60°; a fitted remedy is its own table, and
 /// naming another table beside it is refused.
 #[test]

@@ -82,8 +82,8 @@ fn fit_never_replaces_the_default_table_unasked() {
     assert!(Path::new(&dir.path().join("luts/ltc_point.exr")).exists());
 }
 
-/// Without --out, `luts/ltc.exr` is taken when the fit starts (it used to be checked then
-/// and written at the end, replacing a table that appeared meanwhile): while a fit runs, its
+/// Without --out, `luts/ltc.exr` is taken when the fit starts, not when it ends (so a table
+/// that appears meanwhile is not replaced): while a fit runs, its
 /// empty claim is there, and a second default fit is refused rather than sharing the name.
 /// SIGTERM then removes the claim (exit 130, through the handler). A 1024² fit takes hours,
 /// so it is still running whenever the claim is looked at.

@@ -279,8 +279,8 @@ fn a_default_output_name_never_replaces_a_file() {
 }
 
 /// figure2-case1 without any clipping rule: the exact image is black and the LTC glows. The
-/// difference map used to divide by zero (inf in the EXR); now it is finite everywhere, on
-/// the CPU and on the GPU, and shows the glow.
+/// difference map (which divides by the exact image) is finite everywhere, on the CPU and
+/// on the GPU, and shows the glow.
 #[test]
 fn the_diff_of_an_unclipped_glow_is_finite() {
     let dir = tempfile::tempdir().unwrap();
@@ -729,7 +729,7 @@ fn no_driver_chatter_without_a_runtime_directory() {
     );
 }
 
-/// Issue 22: a render with a horizon remedy says so in its default name, and differs from
+/// A render with a horizon remedy says so in its default name, and differs from
 /// eq. 30's where lights sit near the horizon (figure2-case2's light is 0.01 above the plane).
 #[test]
 fn a_horizon_remedy_names_its_render_and_changes_it() {

@@ -38,7 +38,7 @@ fn study_writes_every_variant_and_the_pareto_chart() {
     if gpu().unwrap().ctx.has_f16() {
         expected.extend(["ltc-f16", "ltc-f16-pairs"]);
     }
-    // Issue 22: every horizon remedy on ltc-fast, by default.
+    // Every horizon remedy on ltc-fast, by default.
     expected.extend([
         "ltc-fast-arrival-fit",
         "ltc-fast-constrained-fit",
@@ -230,8 +230,8 @@ fn reported_dir(err: &str) -> String {
         .to_string()
 }
 
-/// Two studies at once without --out: each takes its own directory when it starts (both
-/// used to pick `study/`, say so, and one result was lost); both hold both files.
+/// Two studies at once without --out: each takes its own directory when it starts, so
+/// neither result is lost; both hold both files.
 #[test]
 fn two_default_studies_at_once_get_two_directories() {
     use std::collections::BTreeSet;

@@ -1,4 +1,4 @@
-//! LTC Lab in a browser (issue 21; docs/design.md §5.8): the desktop lab's `LabApp`, started
+//! LTC Lab in a browser (docs/design.md §5.8): the desktop lab's `LabApp`, started
 //! on the page's canvas by eframe's `WebRunner`. On WebGPU the plane is shaded by the same
 //! compute shaders; where the browser has only WebGL2 the lab falls back to the CPU
 //! reference, as it does on a desktop without an adapter. `index.html#view=…` opens a shared
@@ -40,7 +40,7 @@ async fn run() -> Result<(), String> {
     let canvas = page::canvas()?;
     let options = eframe::WebOptions {
         wgpu_options: eframe::egui_wgpu::WgpuConfiguration {
-            wgpu_setup: ltc_lab::app::shading::wgpu_setup(),
+            wgpu_setup: ltc_lab::app::device::wgpu_setup(),
             ..Default::default()
         },
         ..Default::default()

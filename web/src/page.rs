@@ -1,11 +1,13 @@
 //! The lab on the page: opened on the view of the address's fragment (a broken one gives the
 //! defaults and says why), and reporting itself in the page's `#lab-state` element as JSON —
-//! when its first frame was drawn, how it shades, the panels it shows, its view — for the
+//! the lab's own `Report` (busy, the plane's progress, how it shades, the panels it shows,
+//! the message), when its first frame was drawn and when it settled, and its view — for the
 //! browser test and any other tool that reads the page.
 
 use eframe::wasm_bindgen::JsCast;
 use ltc_lab::app::link::{self, FRAGMENT_KEY};
-use ltc_lab::app::{LabApp, LabState, Message, browser};
+use ltc_lab::app::{LabApp, Report, browser};
+use serde::Serialize;
 
 /// How often the page's report is brought up to date (the view's encoding regenerates a
 /// scene's lights to see whether they are generated ones: not every frame).
@@ -19,30 +21,28 @@ pub struct PageLab {
     /// pictures made).
     settled_ms: Option<f64>,
     reported_at: f64,
-    /// Whether the lab was busy at the last report, and its message's length.
-    reported_busy: Option<(bool, Option<usize>)>,
+    /// Whether the lab was busy at the last report, and its message.
+    reported_busy: Option<(bool, Option<String>)>,
+}
+
+/// What `#lab-state` holds.
+#[derive(Serialize)]
+struct PageReport {
+    first_frame_ms: Option<f64>,
+    settled_ms: Option<f64>,
+    reported_ms: f64,
+    #[serde(flatten)]
+    lab: Report,
+    view: String,
 }
 
 impl PageLab {
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
-        let stored = LabApp::stored_state(cc);
         let fragment = browser::fragment();
-        let (state, refused) = match fragment.strip_prefix(FRAGMENT_KEY) {
-            None => (stored, None),
-            Some(view) => match link::decode(view, &stored) {
-                Ok(state) => (state, None),
-                Err(why) => (LabState::default(), Some(why)),
-            },
-        };
         if crate::texts::requested() {
             cc.egui_ctx.add_plugin(crate::texts::TextMap::default());
         }
-        let mut app = LabApp::new(state, cc.wgpu_render_state.as_ref());
-        if let Some(why) = refused {
-            app.lab.say(Message::error(format!(
-                "the link's view could not be opened ({why}): showing the defaults"
-            )));
-        }
+        let app = LabApp::from_creation_context(cc, fragment.strip_prefix(FRAGMENT_KEY));
         Self {
             app,
             first_frame_ms: None,
@@ -52,51 +52,19 @@ impl PageLab {
         }
     }
 
-    /// The panels still computing, quoted.
-    fn working(&self) -> Vec<&'static str> {
-        let a = &self.app;
-        [
-            ("\"plane\"", a.plane.busy()),
-            ("\"clipping\"", a.clipping.busy()),
-            ("\"chart\"", a.chart.busy()),
-            ("\"matrix\"", a.matrix.busy()),
-        ]
-        .into_iter()
-        .filter_map(|(name, busy)| busy.then_some(name))
-        .collect()
-    }
-
     /// The page's report of the lab, as JSON.
     fn report(&self) -> String {
-        let panels: Vec<String> = self
-            .app
-            .shown
-            .iter()
-            .map(|p| format!("\"{}\"", p.name()))
-            .collect();
-        let shading = if self.app.lab.gpu.is_some() {
-            "gpu"
-        } else {
-            "cpu"
+        let report = PageReport {
+            first_frame_ms: self.first_frame_ms.map(f64::round),
+            settled_ms: self.settled_ms.map(f64::round),
+            reported_ms: browser::now_ms().round(),
+            lab: self.app.report(),
+            view: link::encode(&self.app.state()),
         };
-        format!(
-            "{{\"first_frame_ms\": {}, \"settled_ms\": {}, \"reported_ms\": {:.0}, \"busy\": {}, \"working\": [{}], \"plane\": [{}, {}], \"shading\": \"{shading}\", \"device\": {}, \"panels\": [{}], \"message\": {}, \"view\": \"{}\"}}",
-            ms(self.first_frame_ms),
-            ms(self.settled_ms),
-            browser::now_ms(),
-            self.app.busy(),
-            self.working().join(", "),
-            self.app.plane.shading.progress.done,
-            self.app.plane.shading.progress.total,
-            json_string(&self.app.lab.describe_device()),
-            panels.join(", "),
-            self.app
-                .lab
-                .message
-                .as_ref()
-                .map_or("null".into(), |m| json_string(&m.text)),
-            link::encode(&self.app.state()),
-        )
+        serde_json::to_string(&report).unwrap_or_else(|e| {
+            serde_json::json!({ "error": format!("the report does not serialize: {e}") })
+                .to_string()
+        })
     }
 }
 
@@ -112,9 +80,9 @@ impl eframe::App for PageLab {
         // lab draws no more frames, and a report left from before would say it is still busy.
         let busy = (
             self.app.busy(),
-            self.app.lab.message.as_ref().map(|m| m.text.len()),
+            self.app.lab().message().map(|m| m.text.clone()),
         );
-        if now - self.reported_at >= REPORT_EVERY_MS || self.reported_busy != Some(busy) {
+        if now - self.reported_at >= REPORT_EVERY_MS || self.reported_busy.as_ref() != Some(&busy) {
             self.reported_at = now;
             self.reported_busy = Some(busy);
             browser::write_element("lab-state", &self.report());
@@ -128,26 +96,6 @@ impl eframe::App for PageLab {
     fn persist_egui_memory(&self) -> bool {
         eframe::App::persist_egui_memory(&self.app)
     }
-}
-
-/// Milliseconds for JSON (`null`: not yet).
-fn ms(t: Option<f64>) -> String {
-    t.map_or("null".into(), |ms| format!("{ms:.0}"))
-}
-
-/// `text` as a JSON string.
-pub fn json_string(text: &str) -> String {
-    let mut out = String::from("\"");
-    for c in text.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if u32::from(c) < 0x20 => out.push_str(&format!("\\u{:04x}", u32::from(c))),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
 }
 
 /// The page's canvas `#lab`.

@@ -10,8 +10,7 @@ use ltc_lab::app::browser;
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::selfcheck::{METHODS, SIZE, SelfCheck};
 use ltc_lab::render::RenderSettings;
-
-use crate::page::json_string;
+use serde::Serialize;
 
 pub async fn run() -> Result<(), String> {
     crate::page::say("Running the self-check…");
@@ -56,6 +55,46 @@ async fn webgpu_setup() -> Result<eframe::egui_wgpu::WgpuSetupExisting, String> 
     })
 }
 
+/// What `#selfcheck` holds: `backend` "webgpu" or "webgl2"; on WebGPU the largest relative
+/// difference from the CPU reference over the methods, against the parity tolerance.
+#[derive(Serialize, Default)]
+struct CheckReport {
+    backend: &'static str,
+    adapter: Option<String>,
+    max_rel_diff: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tolerance: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    passed: Option<bool>,
+    first_frame_ms: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    total_ms: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    size: Option<[usize; 2]>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    methods: Vec<MethodReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    note: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<String>,
+}
+
+#[derive(Serialize)]
+struct MethodReport {
+    method: &'static str,
+    max_rel_diff: f64,
+    silhouette: usize,
+}
+
+impl CheckReport {
+    fn json(&self) -> String {
+        serde_json::to_string(self).unwrap_or_else(|e| {
+            serde_json::json!({ "error": format!("the report does not serialize: {e}") })
+                .to_string()
+        })
+    }
+}
+
 async fn gpu_check(ctx: GpuContext) -> String {
     let adapter = ctx.describe();
     let mut check = match SelfCheck::new(ctx) {
@@ -66,30 +105,28 @@ async fn gpu_check(ctx: GpuContext) -> String {
     loop {
         match check.step() {
             Ok(Some(report)) => {
-                let methods: Vec<String> = report
+                let methods = report
                     .methods
                     .iter()
-                    .map(|m| {
-                        format!(
-                            "{{\"method\": \"{}\", \"max_rel_diff\": {:e}, \"silhouette\": {}}}",
-                            m.method.name(),
-                            m.parity.max_rel_diff,
-                            m.parity.silhouette
-                        )
+                    .map(|m| MethodReport {
+                        method: m.method.name(),
+                        max_rel_diff: m.parity.max_rel_diff,
+                        silhouette: m.parity.silhouette,
                     })
                     .collect();
-                return format!(
-                    "{{\"backend\": \"webgpu\", \"adapter\": {}, \"max_rel_diff\": {:e}, \"tolerance\": {:e}, \"passed\": {}, \"first_frame_ms\": {:.0}, \"total_ms\": {:.0}, \"size\": [{}, {}], \"methods\": [{}]}}",
-                    json_string(&report.adapter),
-                    report.max_rel_diff(),
-                    ltc_lab::parity::RADIANCE_TOLERANCE,
-                    report.check().is_ok(),
-                    first_frame_ms.unwrap_or(f64::NAN),
-                    browser::now_ms(),
-                    SIZE.0,
-                    SIZE.1,
-                    methods.join(", ")
-                );
+                return CheckReport {
+                    backend: "webgpu",
+                    adapter: Some(report.adapter.clone()),
+                    max_rel_diff: Some(report.max_rel_diff()),
+                    tolerance: Some(ltc_lab::parity::RADIANCE_TOLERANCE),
+                    passed: Some(report.check().is_ok()),
+                    first_frame_ms: first_frame_ms.map(f64::round),
+                    total_ms: Some(browser::now_ms().round()),
+                    size: Some([SIZE.0, SIZE.1]),
+                    methods,
+                    ..CheckReport::default()
+                }
+                .json();
             }
             Ok(None) => {}
             Err(why) => return failed("webgpu", &adapter, &why),
@@ -111,21 +148,26 @@ fn cpu_check(why: &str) -> String {
         lut,
         &RenderSettings::single(SIZE.0, SIZE.1, METHODS[0]),
     );
-    format!(
-        "{{\"backend\": \"webgl2\", \"adapter\": null, \"max_rel_diff\": null, \"first_frame_ms\": {:.0}, \"note\": {}}}",
-        browser::now_ms(),
-        json_string(&format!(
+    CheckReport {
+        backend: "webgl2",
+        first_frame_ms: Some(browser::now_ms().round()),
+        note: Some(format!(
             "{why}: the plane is shaded on the CPU, nothing to compare"
-        ))
-    )
+        )),
+        ..CheckReport::default()
+    }
+    .json()
 }
 
-fn failed(backend: &str, adapter: &str, why: &str) -> String {
-    format!(
-        "{{\"backend\": \"{backend}\", \"adapter\": {}, \"max_rel_diff\": null, \"first_frame_ms\": null, \"passed\": false, \"error\": {}}}",
-        json_string(adapter),
-        json_string(why)
-    )
+fn failed(backend: &'static str, adapter: &str, why: &str) -> String {
+    CheckReport {
+        backend,
+        adapter: Some(adapter.to_owned()),
+        passed: Some(false),
+        error: Some(why.to_owned()),
+        ..CheckReport::default()
+    }
+    .json()
 }
 
 /// Yields to the browser's event loop (where the device's work completes and a read-back's

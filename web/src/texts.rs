@@ -6,12 +6,20 @@
 use egui::epaint::{ClippedShape, Shape};
 use egui::{Context, FullOutput, Rect};
 use ltc_lab::app::browser;
+use serde::Serialize;
 
 /// Whether the page's address asks for the map (`?texts`).
 pub fn requested() -> bool {
     web_sys::window()
         .and_then(|w| w.location().search().ok())
         .is_some_and(|q| q.trim_start_matches('?').split('&').any(|p| p == "texts"))
+}
+
+/// One text drawn, and the part of it that shows in the page's pixels: `[x0, y0, x1, y1]`.
+#[derive(Serialize)]
+struct TextAt {
+    text: String,
+    rect: [f32; 4],
 }
 
 /// An egui plugin that writes the map after each frame whose texts changed.
@@ -35,17 +43,16 @@ impl egui::Plugin for TextMap {
         }
         // Shapes are in points; the page's pixels are points times the zoom.
         let zoom = ctx.zoom_factor();
-        let entries: Vec<String> = texts
-            .iter()
-            .map(|(text, r)| {
-                let [x0, y0, x1, y1] = [r.min.x, r.min.y, r.max.x, r.max.y].map(|v| v * zoom);
-                format!(
-                    "{{\"text\": {}, \"rect\": [{x0:.1}, {y0:.1}, {x1:.1}, {y1:.1}]}}",
-                    crate::page::json_string(text)
-                )
+        let entries: Vec<TextAt> = texts
+            .into_iter()
+            .map(|(text, r)| TextAt {
+                text,
+                rect: [r.min.x, r.min.y, r.max.x, r.max.y].map(|v| v * zoom),
             })
             .collect();
-        let json = format!("[{}]", entries.join(",\n"));
+        let Ok(json) = serde_json::to_string(&entries) else {
+            return;
+        };
         if json != self.written {
             browser::write_element("lab-texts", &json);
             self.written = json;

@@ -1,0 +1,98 @@
+//! Files the lab reads and writes, as a vocabulary every part of the app shares: what a
+//! given file is for (`Purpose`), given files grouped by it, and saving to the file the user
+//! named (a download of that name in the browser; docs/design.md §5.8). Reading them into
+//! the lab is the app's (`file_io`).
+
+use std::path::Path;
+
+/// What a given file is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    Scene,
+    /// Table A, shaded with.
+    Table,
+    /// Table B, compared with.
+    TableB,
+    /// A `study.csv` for the chart.
+    Study,
+}
+
+impl Purpose {
+    /// What a dropped file is for, by its extension: a scene, a table (A) or a study.
+    pub fn of_name(name: &str) -> Option<Self> {
+        let ext = Path::new(name)
+            .extension()?
+            .to_string_lossy()
+            .to_ascii_lowercase();
+        match ext.as_str() {
+            "toml" => Some(Self::Scene),
+            "exr" | "js" | "dds" => Some(Self::Table),
+            "csv" => Some(Self::Study),
+            _ => None,
+        }
+    }
+
+    /// The browser file picker's filter.
+    pub fn accept(self) -> &'static str {
+        match self {
+            Self::Scene => ".toml",
+            Self::Table | Self::TableB => ".exr,.js,.dds,.txt",
+            Self::Study => ".csv",
+        }
+    }
+
+    /// More than one file: a DDS pair (with its header sidecar).
+    pub fn multiple(self) -> bool {
+        matches!(self, Self::Table | Self::TableB)
+    }
+}
+
+/// A file's name and bytes.
+pub type Given = (String, Vec<u8>);
+
+/// Given files grouped by what they are for (by their names: the files of a DDS pair
+/// together, its header sidecar with them), and why any cannot be taken.
+pub fn group(files: Vec<Given>) -> (Vec<(Purpose, Vec<Given>)>, Vec<String>) {
+    let mut groups: Vec<(Purpose, Vec<Given>)> = Vec::new();
+    let mut refused = Vec::new();
+    let mut sidecars = Vec::new();
+    for (name, bytes) in files {
+        let Some(purpose) = Purpose::of_name(&name) else {
+            if name.ends_with(crate::ltc::formats::DDS_HEADER_FILE) {
+                sidecars.push((name, bytes));
+            } else {
+                refused.push(format!(
+                    "{name}: not a file the lab reads (a scene .toml, a table .exr/.js/.dds, a study .csv)"
+                ));
+            }
+            continue;
+        };
+        match groups.iter_mut().find(|(p, _)| *p == purpose) {
+            Some(g) if purpose == Purpose::Table => g.1.push((name, bytes)),
+            _ => groups.push((purpose, vec![(name, bytes)])),
+        }
+    }
+    if let Some(g) = groups.iter_mut().find(|(p, _)| *p == Purpose::Table) {
+        g.1.extend(sidecars);
+    }
+    (groups, refused)
+}
+
+/// Saves `bytes` as the file the user named, `path`: that file and no other is written on
+/// the desktop; the browser offers a download of its name. What was done, for the message.
+pub fn save(path: &Path, bytes: &[u8], mime: &str) -> Result<String, String> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = mime;
+        crate::files::write_atomically(path, bytes).map_err(|e| e.to_string())?;
+        Ok(format!("saved {}", path.display()))
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let name = path
+            .file_name()
+            .map_or_else(|| "ltc-lab".into(), |n| n.to_string_lossy().into_owned());
+        crate::app::browser::download(&name, bytes, mime)?;
+        Ok(format!("downloaded {name}"))
+    }
+}

@@ -1,0 +1,556 @@
+//! The parts the panels share, each a value of its own type with the checks it passes where
+//! it enters the lab: the scene as four parts (its lights, its material, the stage — plane and
+//! camera — and the exposure it is shown with), the view of the lobe and matrix panels, the
+//! shading forms, side B, the lights' overrides, the LTC rules, the tables, the selection and
+//! the last refit. The lab holds each in a `Part` (`app::lab`).
+
+use serde::{Deserialize, Serialize};
+
+use crate::app::lab::part::{Checked, Notes, notes};
+use crate::app::lab::refit_result::RefitResult;
+use crate::ltc::lobe::Lobe;
+use crate::ltc::lut::{ALPHA_MIN, Table};
+use crate::render::{LtcRules, Method};
+use crate::scene::{
+    Camera, Light, MAX_COORDINATE, MAX_INTENSITY, MAX_LIGHTS, Material, Plane, Scene,
+};
+use crate::tables::{NamedTable, NamedTables, Source};
+
+/// The scene the parts make.
+pub fn scene(stage: &Stage, material: &Material, lights: &Lights, exposure: &Exposure) -> Scene {
+    Scene {
+        plane: stage.plane,
+        material: *material,
+        camera: stage.camera,
+        lights: lights.list.clone(),
+        random_lights: None,
+        exposure: exposure.0,
+    }
+}
+
+/// `scene` as shaded: every light's intensity multiplied, its range replaced where the
+/// overrides say.
+pub fn shaded(mut scene: Scene, o: &Overrides) -> Scene {
+    for l in &mut scene.lights {
+        l.intensity *= o.intensity_scale;
+        if o.range > 0.0 {
+            l.range = Some(o.range);
+        }
+    }
+    scene
+}
+
+/// The scene every part of which a lab starts with.
+fn paper_100() -> crate::scene::Scene {
+    crate::scene::preset("paper-100")
+}
+
+/// The scene's point lights, and the generator's seed the lights slider draws them with.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Lights {
+    pub list: Vec<Light>,
+    pub seed: u64,
+}
+
+impl Default for Lights {
+    fn default() -> Self {
+        Self {
+            list: paper_100().lights,
+            // paper-100's own (assets/scenes/paper-100.toml).
+            seed: 27,
+        }
+    }
+}
+
+impl Checked for Lights {
+    /// Every light within the scene file's limits (docs/design.md §3), its non-finite fields
+    /// taken from the light it replaces, or, where there is none, the light refused; at most
+    /// `MAX_LIGHTS`.
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        notes(|n| {
+            if self.list.len() > MAX_LIGHTS {
+                n.say(format!(
+                    "lights: {} is more than the {MAX_LIGHTS} a scene may hold: the first {MAX_LIGHTS} are kept",
+                    self.list.len()
+                ));
+                self.list.truncate(MAX_LIGHTS);
+            }
+            let mut k = 0;
+            self.list.retain_mut(|light| {
+                let kept = check_light(n, k, light, previous.list.get(k));
+                k += 1;
+                kept
+            });
+        })
+    }
+}
+
+/// Light `k` within the limits; `false` where it has a non-finite value and no light before
+/// it to take the value from.
+fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -> bool {
+    let values = l.position.into_iter().chain(l.color).chain([l.intensity]);
+    let finite = values.chain(l.range).all(f64::is_finite);
+    let before = match (before, finite) {
+        (Some(b), _) => *b,
+        (None, true) => *l,
+        (None, false) => {
+            n.say(format!(
+                "lights[{k}]: a non-finite value, the light refused"
+            ));
+            return false;
+        }
+    };
+    let name = |f: &str| format!("lights[{k}].{f}");
+    let coordinate = [-MAX_COORDINATE, MAX_COORDINATE];
+    n.numbers(
+        &name("position"),
+        &mut l.position,
+        &before.position,
+        coordinate,
+    );
+    n.numbers(&name("color"), &mut l.color, &before.color, [0.0, 1.0]);
+    n.number(
+        &name("intensity"),
+        &mut l.intensity,
+        before.intensity,
+        [0.0, MAX_INTENSITY],
+    );
+    if let Some(r) = &mut l.range {
+        // A range is > 0 (docs/design.md §3); 1e-6 is `brdf::MIN_LIGHT_DISTANCE`, within which
+        // a light lights nothing anyway.
+        let previous = before.range.unwrap_or(*r);
+        n.number(&name("range"), r, previous, [1e-6, 2.0 * MAX_COORDINATE]);
+    }
+    true
+}
+
+/// The plane's material: the scene file's ranges (docs/design.md §3).
+impl Checked for Material {
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        notes(|n| {
+            let p = previous;
+            n.numbers(
+                "material.base_color",
+                &mut self.base_color,
+                &p.base_color,
+                [0.0, 1.0],
+            );
+            n.number("material.f0", &mut self.f0, p.f0, [0.0, 1.0]);
+            n.number("material.alpha", &mut self.alpha, p.alpha, [ALPHA_MIN, 1.0]);
+        })
+    }
+}
+
+/// What the lights shine on and where it is seen from: the plane and the camera.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Stage {
+    pub plane: Plane,
+    pub camera: Camera,
+}
+
+impl Default for Stage {
+    fn default() -> Self {
+        let s = paper_100();
+        Self {
+            plane: s.plane,
+            camera: s.camera,
+        }
+    }
+}
+
+impl Checked for Stage {
+    /// The scene file's limits; a camera below the plane or looking straight down, which no
+    /// clamp can mend, is refused whole.
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        notes(|n| {
+            let (c, p) = (&mut self.camera, &previous.camera);
+            let size = [1e-6, MAX_COORDINATE];
+            n.number(
+                "plane.half_size",
+                &mut self.plane.half_size,
+                previous.plane.half_size,
+                size,
+            );
+            let coordinate = [-MAX_COORDINATE, MAX_COORDINATE];
+            n.numbers("camera.position", &mut c.position, &p.position, coordinate);
+            n.numbers("camera.target", &mut c.target, &p.target, coordinate);
+            // 1°–179°: beyond them the view is a point or a half-space.
+            n.number(
+                "camera.fov_y_degrees",
+                &mut c.fov_y_degrees,
+                p.fov_y_degrees,
+                [1.0, 179.0],
+            );
+            let scene = crate::scene::Scene {
+                plane: self.plane,
+                camera: *c,
+                ..paper_100()
+            };
+            if let Err(why) = scene.validate() {
+                n.say(format!("camera: {why}; the camera is kept as it was"));
+                *c = *p;
+            }
+        })
+    }
+}
+
+/// The exposure the plane is shown with: shown radiance and saved PNGs are `L · exposure`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct Exposure(pub f64);
+
+/// Six stops each way of 1 (the exposure slider's range): paper-100 (peaks near 1) down to
+/// the clipping scenes' faint light.
+pub const EXPOSURE_RANGE: [f64; 2] = [1.0 / 64.0, 64.0];
+
+impl Default for Exposure {
+    fn default() -> Self {
+        Self(paper_100().exposure)
+    }
+}
+
+impl Checked for Exposure {
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        notes(|n| n.number("exposure", &mut self.0, previous.0, EXPOSURE_RANGE))
+    }
+}
+
+/// The lobe and matrix panels' view: θo, which lobe, and a light of the plane's pinned pixel
+/// shown on the lobe.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct LobeView {
+    /// Degrees.
+    pub theta_o_deg: f64,
+    pub lobe: Lobe,
+    /// ω in the shading frame, unit.
+    pub light: Option<[f64; 3]>,
+}
+
+impl Default for LobeView {
+    fn default() -> Self {
+        Self {
+            theta_o_deg: 45.0,
+            lobe: Lobe::Specular,
+            light: None,
+        }
+    }
+}
+
+impl Checked for LobeView {
+    /// θo within the tables' rows' degrees; the light a unit vector, or none.
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        notes(|n| {
+            n.number(
+                "θo",
+                &mut self.theta_o_deg,
+                previous.theta_o_deg,
+                [0.0, 90.0],
+            );
+            let Some(w) = self.light else {
+                return;
+            };
+            let v = glam::DVec3::from(w);
+            // A unit vector (the pinned pixel's table hands over one) is kept to the bit.
+            if (v.length() - 1.0).abs() < 1e-9 {
+                return;
+            }
+            self.light = v.try_normalize().map(|u| u.to_array());
+            if self.light.is_none() {
+                n.say("the lobe panel's light: not a direction, refused".into());
+            }
+        })
+    }
+}
+
+/// The LTC and BRDF forms the plane compares (and the chart names), and whether its sum is
+/// culled by range.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Forms {
+    pub ltc: Method,
+    pub brdf: Method,
+    /// Tiled culling of ranged lights in the plane's render (the same image, faster).
+    pub cull: bool,
+}
+
+/// The forms the lab offers: each family's literal form and its fast one (the f16 forms are
+/// the benchmark's).
+pub const LTC_FORMS: [Method; 2] = [Method::Ltc, Method::LtcFast];
+pub const BRDF_FORMS: [Method; 2] = [Method::Brdf, Method::BrdfFast];
+
+impl Default for Forms {
+    fn default() -> Self {
+        Self {
+            ltc: Method::LtcFast,
+            brdf: Method::Brdf,
+            cull: true,
+        }
+    }
+}
+
+impl Checked for Forms {
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        notes(|n| {
+            for (field, form, offered, kept) in [
+                ("LTC form", &mut self.ltc, LTC_FORMS, previous.ltc),
+                ("BRDF form", &mut self.brdf, BRDF_FORMS, previous.brdf),
+            ] {
+                if !offered.contains(form) {
+                    n.say(format!(
+                        "{field}: {} refused, kept {}",
+                        form.name(),
+                        kept.name()
+                    ));
+                    *form = kept;
+                }
+            }
+        })
+    }
+}
+
+/// What the plane's side B is: the exact BRDF, or LTC with table B (two tables compared).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SideB {
+    #[default]
+    Brdf,
+    TableB,
+}
+
+impl Checked for SideB {
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
+/// What the lab does to every light as it shades: its intensity multiplied, its range
+/// replaced.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Overrides {
+    pub intensity_scale: f64,
+    /// Every light's range where > 0; 0 keeps each light's own.
+    pub range: f64,
+}
+
+/// The intensity slider's range: four decades about the scene's own.
+pub const INTENSITY_RANGE: [f64; 2] = [0.01, 100.0];
+/// The range slider's: 0 (each light's own), or 0.01 (its smallest step, the first value it
+/// shows as other than 0) to 10 (five times the plane's side).
+pub const RANGE_RANGE: [f64; 2] = [0.01, 10.0];
+
+impl Default for Overrides {
+    fn default() -> Self {
+        Self {
+            intensity_scale: 1.0,
+            range: 0.0,
+        }
+    }
+}
+
+impl Checked for Overrides {
+    fn check(&mut self, previous: &Self) -> Vec<String> {
+        notes(|n| {
+            let p = previous;
+            n.number(
+                "intensity ×",
+                &mut self.intensity_scale,
+                p.intensity_scale,
+                INTENSITY_RANGE,
+            );
+            if self.range != 0.0 {
+                n.number("range R", &mut self.range, p.range, RANGE_RANGE);
+            }
+        })
+    }
+}
+
+/// Eq. 30's rules, the normalization, the filter and the horizon rule hold no number.
+impl Checked for LtcRules {
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
+/// Which table a panel reads: A (shaded with) or B (compared with).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum TableId {
+    #[default]
+    A,
+    B,
+}
+
+/// Tables A and B, and the shipped table A stands for (whose default B is B unless a file
+/// is). Kept between runs as where they came from (`TableSources`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(from = "TableSources", into = "TableSources")]
+pub struct Tables {
+    pub shipped: Table,
+    pub named: NamedTables,
+    /// What could not be read again when the tables were made from their sources (said
+    /// where they enter the lab).
+    lost: Vec<String>,
+}
+
+/// Where the tables came from: the shipped table, and the files of A and B.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct TableSources {
+    pub shipped: Table,
+    pub a_file: Option<String>,
+    pub b_file: Option<String>,
+}
+
+impl Default for Tables {
+    fn default() -> Self {
+        Self::shipped(Table::Classic)
+    }
+}
+
+impl Tables {
+    /// The shipped table `t` as A, and its default B.
+    pub fn shipped(t: Table) -> Self {
+        Self {
+            shipped: t,
+            named: NamedTables::shipped(t),
+            lost: Vec::new(),
+        }
+    }
+
+    pub fn a(&self) -> &NamedTable {
+        &self.named.a
+    }
+
+    pub fn b(&self) -> &NamedTable {
+        &self.named.b
+    }
+
+    pub fn get(&self, id: TableId) -> &NamedTable {
+        match id {
+            TableId::A => self.a(),
+            TableId::B => self.b(),
+        }
+    }
+
+    /// Whether table B is the one A's shipped table is compared with (not one the user
+    /// named).
+    pub fn b_is_default(&self) -> bool {
+        self.b().source == Source::Shipped(self.shipped.default_b())
+    }
+
+    /// The same with `a` as table A (standing in for `shipped`): a table B the user named
+    /// stays, a default one follows A's shipped table.
+    pub fn with_a(&self, a: NamedTable, shipped: Table) -> Self {
+        let named = match self.b_is_default() {
+            true => NamedTables::with_a(a, shipped),
+            false => NamedTables {
+                a,
+                b: self.b().clone(),
+            },
+        };
+        Self {
+            shipped,
+            named,
+            lost: Vec::new(),
+        }
+    }
+
+    /// The same with `b` as table B (`None`: A's default B).
+    pub fn with_b(&self, b: Option<NamedTable>) -> Self {
+        let b = b.unwrap_or_else(|| NamedTable::shipped(self.shipped.default_b()));
+        Self {
+            named: NamedTables {
+                a: self.a().clone(),
+                b,
+            },
+            ..self.clone()
+        }
+    }
+}
+
+impl From<Tables> for TableSources {
+    fn from(t: Tables) -> Self {
+        let file = |n: &NamedTable| match &n.source {
+            Source::File(path) => Some(path.clone()),
+            Source::Shipped(_) | Source::Given(_) => None,
+        };
+        Self {
+            shipped: t.shipped,
+            a_file: file(t.a()),
+            b_file: file(t.b()),
+        }
+    }
+}
+
+impl From<TableSources> for Tables {
+    /// The tables the sources name, their files read again; a file that cannot be read
+    /// leaves the shipped table in its place, and says why where the tables enter the lab.
+    fn from(s: TableSources) -> Self {
+        let mut lost = Vec::new();
+        let mut read = |file: &Option<String>, which: &str| {
+            let path = file.as_ref()?;
+            match NamedTable::from_file(path) {
+                Ok((table, _)) => Some(table),
+                Err(e) => {
+                    lost.push(format!(
+                        "table {which} was {path}, which cannot be read again ({e})"
+                    ));
+                    None
+                }
+            }
+        };
+        let (a, b) = (read(&s.a_file, "A"), read(&s.b_file, "B"));
+        let a = a.unwrap_or_else(|| NamedTable::shipped(s.shipped));
+        let tables = Tables::shipped(s.shipped).with_a(a, s.shipped).with_b(b);
+        Self { lost, ..tables }
+    }
+}
+
+impl Checked for Tables {
+    /// Every table was checked when it was read; what could not be read again is said.
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        let lost = std::mem::take(&mut self.lost);
+        if lost.is_empty() {
+            return lost;
+        }
+        vec![format!(
+            "{}: shading with the {} table, comparing with {}",
+            lost.join("; "),
+            self.a().name,
+            self.b().name
+        )]
+    }
+}
+
+/// The selected light: its marker drawn larger, its fields in the side panel.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Selection {
+    pub light: Option<usize>,
+}
+
+/// Its index is the lab's to check against its lights.
+impl Checked for Selection {
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
+/// The matrix panel's last refit, which the lobe panel draws while its cell is chosen.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct LastRefit(pub Option<RefitResult>);
+
+impl Checked for LastRefit {
+    /// A refit whose numbers are not all finite, or whose matrix is singular, is refused.
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        match &self.0 {
+            Some(r) if !r.is_sound() => {
+                self.0 = None;
+                vec!["the last refit: not a finite, invertible fit, dropped".into()]
+            }
+            _ => Vec::new(),
+        }
+    }
+}

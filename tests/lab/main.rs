@@ -1,0 +1,16 @@
+//! The lab under egui_kittest with the wgpu renderer (lavapipe in CI), built as eframe builds
+//! it (from a creation context whose storage holds the state the test starts from) and driven
+//! by role and label as a user drives it: a file per panel, and the parts and caches that
+//! the panels share (`parts`).
+
+#[path = "../gpu_common/mod.rs"]
+mod gpu_common;
+
+mod chart;
+mod clipping;
+mod harness;
+mod lobe;
+mod matrix;
+mod parts;
+mod plane;
+mod window;
