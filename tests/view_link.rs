@@ -150,6 +150,10 @@ fn broken_views_say_why() {
             "does not read",
         ),
         (packed("(generated:Some(99999999999))"), "lights"),
+        // A field this lab does not have (a link of another format, or a typo) is refused
+        // by name rather than opened without it.
+        (packed("(lab:(theta_o_deg:30.0))"), "theta_o_deg"),
+        (packed("(zoom:2.0)"), "zoom"),
     ];
     for (link, why) in cases {
         let e = decode(&link, &LabState::default()).unwrap_err();

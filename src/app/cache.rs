@@ -99,11 +99,6 @@ impl<V> Cached<V> {
         self.value.as_ref()
     }
 
-    /// The last value, writable (work that fills in after it was made: a texture uploaded).
-    pub fn last_mut(&mut self) -> Option<&mut V> {
-        self.value.as_mut()
-    }
-
     /// The cache's name and how many values it has made.
     pub fn count(&self) -> (&'static str, u64) {
         (self.name, self.made)

@@ -9,7 +9,6 @@ use std::path::Path;
 use crate::app::LabApp;
 use crate::app::files::{Given, Purpose, group, save};
 use crate::app::lab::{Lab, Message};
-use crate::ltc::lut::Table;
 use crate::scene::Scene;
 use crate::tables::{NamedTable, Source};
 
@@ -41,7 +40,7 @@ impl LabApp {
         match (purpose, path) {
             // The embedded table (an empty field) is the shipped classic one.
             (Purpose::Table, "") => {
-                self.lab.use_shipped(Table::Classic);
+                self.lab.use_shipped(crate::ltc::lut::Table::Classic);
                 Message::note("shading with the embedded LUT (classic)")
             }
             (Purpose::TableB, "") => {

@@ -27,7 +27,7 @@ const MAX_LEN: usize = 1 << 20;
 
 /// The parts of the lab's state a link carries.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 struct Link {
     /// The scene's lights are the lab's generator's `count` (from the lights' seed), and
     /// the lights' list is left empty: a link of 20 000 lights stays short.

@@ -129,16 +129,24 @@ impl LabApp {
     /// `view` over it where given (a link; `None` where it is not a view, which is refused
     /// with why), on eframe's device.
     pub fn from_creation_context(cc: &eframe::CreationContext<'_>, view: Option<&str>) -> Self {
-        let stored = cc
-            .storage
-            .and_then(|s| eframe::get_value::<LabState>(s, STORAGE_KEY))
-            .unwrap_or_default();
+        let (stored, unread) = match cc.storage.and_then(|s| s.get_string(STORAGE_KEY)) {
+            None => (LabState::default(), None),
+            Some(text) => match ron::from_str::<LabState>(&text) {
+                Ok(state) => (state, None),
+                Err(e) => (LabState::default(), Some(e)),
+            },
+        };
         let (state, refused) = match view.map(|v| link::decode(v, &stored)) {
             None => (stored, None),
             Some(Ok(state)) => (state, None),
             Some(Err(why)) => (LabState::default(), Some(why)),
         };
         let mut app = Self::new(state, cc.wgpu_render_state.as_ref());
+        if let Some(e) = unread {
+            app.lab.say(Message::error(format!(
+                "the settings kept from the last run could not be read ({e}): showing the defaults"
+            )));
+        }
         if let Some(why) = refused {
             app.lab.say(Message::error(format!(
                 "the link's view could not be opened ({why}): showing the defaults"
@@ -187,7 +195,7 @@ impl LabApp {
 
     /// The whole window: the notices bar, the side panel (unless folded), then the panels —
     /// one maximised, all in a grid, or, below the grid's size, one at a time under tabs.
-    pub fn show(&mut self, ui: &mut egui::Ui) {
+    fn show(&mut self, ui: &mut egui::Ui) {
         self.fit_zoom(ui.ctx());
         if let Some(m) = self.lab.message().cloned() {
             let dismissed = egui::Panel::bottom("notices")

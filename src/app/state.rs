@@ -14,7 +14,7 @@ use crate::app::plane::PlaneState;
 
 /// Everything the user set.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct LabState {
     pub lab: Shared,
     pub lobe: LobeState,

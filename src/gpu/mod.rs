@@ -157,9 +157,4 @@ impl GpuContext {
             .features()
             .contains(wgpu::Features::TIMESTAMP_QUERY)
     }
-
-    /// Whether tests must fail rather than skip when there is no adapter.
-    pub fn required_by_environment() -> bool {
-        std::env::var_os("LTC_LAB_REQUIRE_GPU").is_some_and(|v| !v.is_empty() && v != "0")
-    }
 }

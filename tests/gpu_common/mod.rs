@@ -35,7 +35,7 @@ pub fn gpu() -> Option<&'static Gpu> {
             );
             Some(Gpu { ctx, renderer })
         }
-        Err(e) if GpuContext::required_by_environment() => {
+        Err(e) if required_by_environment() => {
             panic!("LTC_LAB_REQUIRE_GPU is set but {e}")
         }
         Err(e) => {
@@ -76,4 +76,9 @@ pub fn assert_close(what: &str, gpu: &Frame, cpu: &Frame) {
 /// LTC's mean error, ~1%): a 10% margin covers their mismatch.
 pub fn diff_tolerance(r: f64) -> f64 {
     2.0 * RADIANCE_TOLERANCE * (1.0 + r) * 1.1
+}
+
+/// Whether the tests must fail rather than skip when there is no adapter.
+fn required_by_environment() -> bool {
+    std::env::var_os("LTC_LAB_REQUIRE_GPU").is_some_and(|v| !v.is_empty() && v != "0")
 }

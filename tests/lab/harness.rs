@@ -62,16 +62,21 @@ pub fn opened(
     mut state: LabState,
     view: Option<&str>,
 ) -> Harness<'static, LabApp> {
+    // The live GPU times change run to run: off, as a user would for a slide.
+    state.plane.show_gpu_times = false;
+    opened_from(size, &Kept::state(&state), view)
+}
+
+/// The lab eframe starts from the storage `kept` (what a previous run left), with the view
+/// `view` over it.
+pub fn opened_from(size: (f32, f32), kept: &Kept, view: Option<&str>) -> Harness<'static, LabApp> {
     let render_state = egui_kittest::wgpu::create_render_state(
         ltc_lab::app::device::wgpu_setup(),
         egui_wgpu::RendererOptions::PREDICTABLE,
     );
-    // The live GPU times change run to run: off, as a user would for a slide.
-    state.plane.show_gpu_times = false;
-    let kept = Kept::state(&state);
     let mut cc = eframe::CreationContext::_new_kittest(egui::Context::default());
     cc.wgpu_render_state = Some(render_state.clone());
-    cc.storage = Some(&kept);
+    cc.storage = Some(kept);
     let app = LabApp::from_creation_context(&cc, view);
     assert!(
         app.lab().device().is_some(),

@@ -9,10 +9,10 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use ltc_lab::app::lab::{Part, Selection};
-use ltc_lab::app::{LabApp, LabState, PanelId};
+use ltc_lab::app::{LabApp, LabState, PanelId, STORAGE_KEY};
 
 use crate::gpu_common;
-use crate::harness::{lab, opened, settle, type_into};
+use crate::harness::{Kept, lab, opened, opened_from, settle, type_into};
 
 /// Every cache of the lab, by the name the frame's report gives it.
 const CACHES: [&str; 7] = [
@@ -367,6 +367,36 @@ fn packed(ron_text: &str) -> String {
         "v1.{}",
         base64::engine::general_purpose::URL_SAFE_NO_PAD.encode(bytes)
     )
+}
+
+/// What a previous run kept is input too: a store this lab cannot read (another version's,
+/// or edited by hand) opens the defaults and says so, naming what it could not read.
+#[test]
+fn unreadable_kept_settings_open_the_defaults_and_say_so() {
+    if gpu_common::gpu().is_none() {
+        return;
+    }
+    let mut kept = Kept::default();
+    eframe::Storage::set_string(
+        &mut kept,
+        STORAGE_KEY,
+        "(lab:(theta_o_deg:30.0))".to_string(),
+    );
+    let mut h = opened_from((1600.0, 900.0), &kept, None);
+    settle(&mut h);
+    let said = h
+        .state()
+        .lab()
+        .message()
+        .map(|m| m.text.clone())
+        .unwrap_or_default();
+    assert!(
+        said.contains("kept from the last run") && said.contains("theta_o_deg"),
+        "said '{said}'"
+    );
+    let defaults = LabState::default().lab;
+    assert_eq!(**h.state().lab().lobe_view(), *defaults.lobe_view);
+    assert_eq!(**h.state().lab().material(), *defaults.material);
 }
 
 /// Only the grid's panels are shown alone: a view maximising the side panel is refused by

@@ -72,7 +72,7 @@ pub enum Request {
 
 /// The parts, as eframe keeps them between runs and a link carries them.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct Shared {
     pub lights: Part<Lights>,
     pub material: Part<Material>,
