@@ -1,9 +1,12 @@
 //! The horizon-clipped sphere form factor: the projected (cosine-weighted) solid angle of a
 //! spherical cap cut by the horizon, the fourth channel of ltc_code's second texture. Area
 //! lights use it to clip a polygon's vector form factor without clipping the polygon: they
-//! look it up by the vector's elevation and length.
+//! look it up by the vector's elevation and length. Here too the cap a sphere light covers
+//! (`Cap`), whose clipped form factor is the sphere's irradiance (docs/design.md §1.10).
 
 use std::f64::consts::{FRAC_PI_2, PI};
+
+use glam::DVec3;
 
 /// The projected solid angle `∫_cap max(cos θ, 0) dω` of a spherical cap of angular radius
 /// `sigma` whose centre is `omega` from the zenith, in closed form (Snyder 1996, "Area Light
@@ -44,4 +47,64 @@ pub fn sphere_table_value(i: usize, j: usize, n: usize) -> f64 {
     let sigma = len.sqrt().asin();
     let omega = z.clamp(-1.0, 1.0).acos();
     clipped_cap_projected_solid_angle(omega, sigma) / (PI * len)
+}
+
+/// The directions a sphere light covers, seen from the shading point: a cap about `axis`
+/// of half-angle σ, or every direction where the point is inside the sphere.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cap {
+    /// Unit direction to the sphere's centre (`+z` for a point at the centre).
+    pub axis: DVec3,
+    /// `sin σ = r/d`, 1 where the sphere touches or encloses the point.
+    pub sin_sigma: f64,
+    /// `cos σ = √(d² − r²)/d`; −1 where the point is inside (the cap is the whole sphere).
+    pub cos_sigma: f64,
+}
+
+impl Cap {
+    /// The cap of a sphere of radius `r > 0` at offset `u` (centre − shading point), or
+    /// `None` for a point light (`r = 0`) or a sphere centred on the point with no radius.
+    pub fn of_sphere(u: DVec3, r: f64) -> Option<Self> {
+        if r <= 0.0 {
+            return None;
+        }
+        let d = u.length();
+        let axis = u.try_normalize().unwrap_or(DVec3::Z);
+        if d <= r {
+            return Some(Self {
+                axis,
+                sin_sigma: 1.0,
+                cos_sigma: -1.0,
+            });
+        }
+        let sin_sigma = r / d;
+        // √((d − r)(d + r)) keeps the cosine accurate for a light far smaller than its distance.
+        let cos_sigma = ((d - r) * (d + r)).sqrt() / d;
+        Some(Self {
+            axis,
+            sin_sigma,
+            cos_sigma,
+        })
+    }
+
+    /// True where the shading point is inside (or on) the sphere.
+    pub fn encloses(&self) -> bool {
+        self.cos_sigma <= -1.0
+    }
+
+    /// True where no direction of the cap is above the surface.
+    pub fn below_horizon(&self) -> bool {
+        !self.encloses() && self.axis.z <= -self.sin_sigma
+    }
+
+    /// `∫ max(ω.z, 0) dω` over the cap: the irradiance of unit radiance.
+    pub fn illuminance(&self) -> f64 {
+        if self.encloses() {
+            return std::f64::consts::PI;
+        }
+        clipped_cap_projected_solid_angle(
+            self.axis.z.clamp(-1.0, 1.0).acos(),
+            self.sin_sigma.min(1.0).asin(),
+        )
+    }
 }
