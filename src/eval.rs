@@ -1,5 +1,6 @@
 //! `ltc-lab eval`: light directions from a CSV file, evaluated with the exact lobes and their
-//! LTC approximation through the LUT (docs/design.md §6).
+//! LTC approximation through the LUT (docs/design.md §6); with a `sigma` column, each light is
+//! a sphere of that angular radius, shaded by the four methods of docs/design.md §1.10.
 
 use glam::DVec3;
 
@@ -9,12 +10,29 @@ use crate::error::{Error, Result, number};
 use crate::ltc::lut::{ALPHA_MIN, Lut, THETA_MAX};
 use crate::ltc::remedy::HorizonRule;
 use crate::render::LtcRules;
+use crate::sphere_light::{SphereMethod, SphereShading, sphere_light};
 
 /// The input's header: θo in degrees, α, the unit light direction in the shading frame, F0.
 pub const HEADER: &str = "theta_o,alpha,lx,ly,lz,f0";
 
 /// The columns `evaluate` adds.
 pub const OUTPUT_COLUMNS: &str = "brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse";
+
+/// The header of sphere lights: a seventh column, the sphere's angular radius σ in degrees,
+/// 0–90 (a sphere of radius sin σ at unit distance toward `l`; 90: it touches the point).
+pub const SPHERE_HEADER: &str = "theta_o,alpha,lx,ly,lz,f0,sigma";
+
+/// The columns `evaluate` adds for a sphere: both lobes by each method of
+/// `sphere_light::SphereMethod::ALL`, in its order.
+pub const SPHERE_OUTPUT_COLUMNS: &str = "exact_spec,exact_diffuse,ltc_point_spec,ltc_point_diffuse,ltc_disk_spec,ltc_disk_diffuse,representative_point_spec,representative_point_diffuse";
+
+/// The output's header for input whose rows are spheres or not.
+pub fn output_header(spheres: bool) -> String {
+    match spheres {
+        true => format!("{SPHERE_HEADER},{SPHERE_OUTPUT_COLUMNS}"),
+        false => format!("{HEADER},{OUTPUT_COLUMNS}"),
+    }
+}
 
 /// How far from unit length `l` may be: CSV values typed with 4 decimals are off by ~1e-4.
 pub const UNIT_TOLERANCE: f64 = 1e-3;
@@ -33,19 +51,32 @@ pub struct Case {
     /// Unit length (normalized after the check).
     pub l: DVec3,
     pub f0: f64,
+    /// The sphere's angular radius in degrees, where the file has a `sigma` column.
+    pub sigma_degrees: Option<f64>,
+}
+
+/// A file's cases, all points or all spheres (by its header).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Cases {
+    pub spheres: bool,
+    pub rows: Vec<Case>,
 }
 
 /// Parses the CSV text of `name`; every error names the file and the line.
-pub fn parse_cases(text: &str, name: &str) -> Result<Vec<Case>> {
+pub fn parse_cases(text: &str, name: &str) -> Result<Cases> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text.lines().enumerate();
     let header = lines.next().map(|(_, h)| h.trim().replace(' ', ""));
-    if header.as_deref() != Some(HEADER) {
-        return Err(Error::input(
-            format!("{name} line 1"),
-            format!("the header must be '{HEADER}'"),
-        ));
-    }
+    let spheres = match header.as_deref() {
+        Some(HEADER) => false,
+        Some(SPHERE_HEADER) => true,
+        _ => {
+            return Err(Error::input(
+                format!("{name} line 1"),
+                format!("the header must be '{HEADER}' or '{SPHERE_HEADER}'"),
+            ));
+        }
+    };
     let rows = lines.filter(|(_, line)| !line.trim().is_empty());
     let mut cases = Vec::new();
     for (k, line) in rows {
@@ -55,20 +86,28 @@ pub fn parse_cases(text: &str, name: &str) -> Result<Vec<Case>> {
                 format!("more than {MAX_ROWS} cases: split the file"),
             ));
         }
-        cases.push(parse_case(line, &format!("{name} line {}", k + 1))?);
+        cases.push(parse_case(
+            line,
+            &format!("{name} line {}", k + 1),
+            spheres,
+        )?);
     }
-    Ok(cases)
+    Ok(Cases {
+        spheres,
+        rows: cases,
+    })
 }
 
-fn parse_case(line: &str, at: &str) -> Result<Case> {
+fn parse_case(line: &str, at: &str, sphere: bool) -> Result<Case> {
     let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-    if fields.len() != 6 {
+    let count = if sphere { 7 } else { 6 };
+    if fields.len() != count {
         return Err(Error::input(
             at,
-            format!("expected 6 values, found {}", fields.len()),
+            format!("expected {count} values, found {}", fields.len()),
         ));
     }
-    let mut v = [0.0; 6];
+    let mut v = [0.0; 7];
     for (x, f) in v.iter_mut().zip(&fields) {
         *x = f
             .parse::<f64>()
@@ -76,7 +115,7 @@ fn parse_case(line: &str, at: &str) -> Result<Case> {
             .filter(|x| x.is_finite())
             .ok_or_else(|| Error::input(at, format!("'{f}' is not a finite number")))?;
     }
-    let [theta_o, alpha, lx, ly, lz, f0] = v;
+    let [theta_o, alpha, lx, ly, lz, f0, sigma] = v;
     if !(0.0..=90.0).contains(&theta_o) {
         return Err(Error::input(
             at,
@@ -101,6 +140,12 @@ fn parse_case(line: &str, at: &str) -> Result<Case> {
             format!("f0 must be in [0, 1], got {}", fields[5]),
         ));
     }
+    if sphere && !(0.0..=90.0).contains(&sigma) {
+        return Err(Error::input(
+            at,
+            format!("sigma must be in [0, 90] degrees, got {}", fields[6]),
+        ));
+    }
     let l = DVec3::new(lx, ly, lz);
     if (l.length() - 1.0).abs() > UNIT_TOLERANCE {
         return Err(Error::input(
@@ -114,6 +159,7 @@ fn parse_case(line: &str, at: &str) -> Result<Case> {
         alpha,
         l: l.normalize(),
         f0,
+        sigma_degrees: sphere.then_some(sigma),
     })
 }
 
@@ -123,6 +169,9 @@ fn parse_case(line: &str, at: &str) -> Result<Case> {
 pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
     let theta = c.theta_o_degrees.to_radians().min(THETA_MAX);
     let v = DVec3::from(view_from_theta(theta));
+    if let Some(sigma) = c.sigma_degrees {
+        return evaluate_sphere(c, lut, v, sigma);
+    }
     let exact = brdf_cos(v.to_array(), c.l.to_array(), c.alpha, c.f0);
     let rules = LtcRules {
         horizon,
@@ -136,12 +185,36 @@ pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
     )
 }
 
+/// A sphere's row: of unit intensity at unit distance toward `l` (so that σ = 0 is the point
+/// columns' unit-irradiance light), both lobes by each method with both clipping rules.
+fn evaluate_sphere(c: &Case, lut: &Lut, v: DVec3, sigma_degrees: f64) -> String {
+    let pair = lut.ltc_pair(c.alpha, v);
+    let s = SphereShading {
+        v,
+        u: c.l,
+        intensity: 1.0,
+        range: f64::INFINITY,
+        radius: sigma_degrees.to_radians().sin(),
+        alpha: c.alpha,
+        f0: c.f0,
+        ltc: &pair,
+        clip: crate::ltc::Clipping::BOTH,
+        normalization: crate::ltc::Normalization::Corrected,
+    };
+    let mut row = c.text.clone();
+    for method in SphereMethod::ALL {
+        let lobes = sphere_light(method, &s);
+        row += &format!(",{:e},{:e}", lobes.specular, lobes.diffuse);
+    }
+    row
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn parse(rows: &str) -> Result<Vec<Case>> {
-        parse_cases(&format!("{HEADER}\n{rows}"), "cases.csv")
+        parse_cases(&format!("{HEADER}\n{rows}"), "cases.csv").map(|c| c.rows)
     }
 
     #[test]
@@ -156,7 +229,7 @@ mod tests {
     #[test]
     fn a_byte_order_mark_before_the_header_is_accepted() {
         let text = format!("\u{feff}{HEADER}\n0,0.27,0,0,1,0.04\n");
-        assert_eq!(parse_cases(&text, "bom.csv").unwrap().len(), 1);
+        assert_eq!(parse_cases(&text, "bom.csv").unwrap().rows.len(), 1);
     }
 
     #[test]
@@ -184,5 +257,23 @@ mod tests {
         }
         let e = parse_cases("a,b\n", "x.csv").unwrap_err();
         assert!(e.to_string().contains("x.csv line 1") && e.message.contains("header"));
+    }
+
+    #[test]
+    fn sphere_rows_take_a_sigma_in_degrees() {
+        let sphere = |row: &str| parse_cases(&format!("{SPHERE_HEADER}\n{row}\n"), "s.csv");
+        let cases = sphere("30,0.3,0,0,1,0.04,10").unwrap();
+        assert!(cases.spheres);
+        assert_eq!(cases.rows[0].sigma_degrees, Some(10.0));
+        for (row, what) in [
+            ("30,0.3,0,0,1,0.04", "expected 7 values"),
+            ("30,0.3,0,0,1,0.04,-1", "sigma must be in [0, 90]"),
+            ("30,0.3,0,0,1,0.04,91", "sigma"),
+            ("30,0.3,0,0,1,0.04,nan", "'nan'"),
+        ] {
+            let e = sphere(row).unwrap_err();
+            assert_eq!(e.input, "s.csv line 2", "{row}");
+            assert!(e.message.contains(what), "{row}: {e}");
+        }
     }
 }

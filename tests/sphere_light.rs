@@ -289,6 +289,7 @@ fn spheres_anywhere_give_finite_non_negative_light() {
                 (10.0, 0.0, 0.1),
                 (-60.0, 0.0, 0.05),
                 (90.0, 0.0, 0.0),
+                (20.0, 90.0, 1.0 + 1e-15),
             ] {
                 for radius in [0.0, 0.01, 0.2, 0.3, 1.0] {
                     let s = shading(

@@ -2,8 +2,8 @@
 
 use std::path::PathBuf;
 
-use ltc_lab::error::Result;
-use ltc_lab::eval::{HEADER, OUTPUT_COLUMNS, evaluate, parse_cases};
+use ltc_lab::error::{Error, Result};
+use ltc_lab::eval::{evaluate, output_header, parse_cases};
 use ltc_lab::files::read_text;
 
 use ltc_lab::ltc::remedy::Horizon;
@@ -17,7 +17,9 @@ pub struct Args {
     /// xz-plane), f0 in [0, 1]. Output on stdout: those columns plus brdf_spec,brdf_diffuse,
     /// ltc_spec,ltc_diffuse — each f·cos for a unit-irradiance light and base colour 1, the
     /// LTC through the LUT's bilinear sampler with both clipping rules (eq. 30) and the
-    /// --horizon remedy.
+    /// --horizon remedy. With a seventh column, sigma (degrees, 0–90), each light is a sphere of
+    /// that angular radius at unit distance with unit intensity, and the output columns are
+    /// both lobes by exact, ltc-point, ltc-disk and representative-point (docs/design.md §1.10).
     #[arg(long)]
     cases: PathBuf,
     #[command(flatten)]
@@ -30,9 +32,15 @@ pub fn run(a: &Args) -> Result<()> {
     let text = read_text(&a.cases)?;
     let cases = parse_cases(&text, &a.cases.display().to_string())?;
     a.lut.check_horizon(a.horizon)?;
+    if cases.spheres && a.horizon != Horizon::Eq30 {
+        return Err(Error::input(
+            "--horizon",
+            "the horizon remedies are for point lights; sphere lights take eq30",
+        ));
+    }
     let lut = a.lut.load_for(a.horizon)?;
-    let mut out = format!("{HEADER},{OUTPUT_COLUMNS}\n");
-    for c in &cases {
+    let mut out = output_header(cases.spheres) + "\n";
+    for c in &cases.rows {
         out.push_str(&evaluate(c, &lut, a.horizon.rule()));
         out.push('\n');
     }

@@ -18,12 +18,16 @@ use super::{Ltc, Normalization};
 /// sphere). `case2` clips the transformed cone at the clamped cosine's horizon (eq. 30's
 /// second rule); off, the integral is the signed one, and negative where the cone lies below.
 pub fn ltc_disk(ltc: &Ltc, cap: &Cap, case2: bool, normalization: Normalization) -> f64 {
+    // The upper hemisphere maps to the hemisphere about `Mᵀ z` (`(Mω')·z > 0`), whose form
+    // factor is 1: the cap of a point inside the sphere, and the limit of one whose cone
+    // has opened too far for its eigenvalues (`cos σ` within f64's reach of 0).
+    let hemisphere = || ((ltc.brdf_from_cos.transpose() * DVec3::Z).normalize(), 1.0);
     let (axis, form_factor) = if cap.encloses() {
-        // The upper hemisphere maps to the hemisphere about `Mᵀ z` (`(Mω')·z > 0`), whose
-        // form factor is 1.
-        ((ltc.brdf_from_cos.transpose() * DVec3::Z).normalize(), 1.0)
+        hemisphere()
     } else {
-        transformed_cone(ltc, cap)
+        Some(transformed_cone(ltc, cap))
+            .filter(|(axis, ff)| axis.is_finite() && ff.is_finite())
+            .unwrap_or_else(hemisphere)
     };
     let integral = if case2 {
         let omega = axis.z.clamp(-1.0, 1.0).acos();

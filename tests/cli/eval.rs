@@ -337,6 +337,53 @@ fn eval_takes_the_programs_alpha_range_and_echoes_its_inputs_as_written() {
     }
 }
 
+/// With a `sigma` column each light is a sphere: at σ = 0 every method is the point light's
+/// formula (the exact ones `brdf_*`, the LTC ones `ltc_*` of the same case as a point); at
+/// σ = 10° the point formula at the centre is unchanged while the exact integral moves.
+#[test]
+fn eval_shades_sphere_lights_by_each_method() {
+    let dir = tempfile::tempdir().unwrap();
+    let (points, spheres) = (dir.path().join("p.csv"), dir.path().join("s.csv"));
+    let l = "-0.6,0.2,0.7745966692414834";
+    std::fs::write(
+        &points,
+        format!("theta_o,alpha,lx,ly,lz,f0\n60,0.5,{l},0.04\n"),
+    )
+    .unwrap();
+    std::fs::write(
+        &spheres,
+        format!("theta_o,alpha,lx,ly,lz,f0,sigma\n60,0.5,{l},0.04,0\n60,0.5,{l},0.04,10\n"),
+    )
+    .unwrap();
+    let p = ltc_lab(&["eval", "--cases", points.to_str().unwrap()]);
+    let s = ltc_lab(&["eval", "--cases", spheres.to_str().unwrap()]);
+    assert!(p.status.success() && s.status.success(), "{}", stderr(&s));
+    let text = String::from_utf8(s.stdout).unwrap();
+    assert!(
+        text.starts_with("theta_o,alpha,lx,ly,lz,f0,sigma,exact_spec,exact_diffuse,ltc_point_spec")
+    );
+    let point = &numbers(&String::from_utf8(p.stdout).unwrap())[0];
+    let rows = numbers(&text);
+    let (at0, at10) = (&rows[0][7..], &rows[1][7..]);
+    // Printed with `{:e}` (shortest round-trip), so equal values print equal.
+    assert_eq!([at0[0], at0[1]], [point[6], point[7]]);
+    assert_eq!([at0[2], at0[3]], [point[8], point[9]]);
+    assert_eq!([at0[4], at0[5]], [point[8], point[9]]);
+    assert_eq!([at0[6], at0[7]], [point[6], point[7]]);
+    assert_eq!([at10[2], at10[3]], [at0[2], at0[3]]);
+    assert_ne!(at10[0], at0[0]);
+    assert!(at10.iter().all(|x| x.is_finite() && *x >= 0.0), "{at10:?}");
+    // The remedies are point lights' only: refused by name beside spheres.
+    let o = ltc_lab(&[
+        "eval",
+        "--cases",
+        spheres.to_str().unwrap(),
+        "--horizon",
+        "nl-fit",
+    ]);
+    assert_refused(&o, "--horizon");
+}
+
 /// The rows of eval's output after its header, as numbers.
 fn numbers(text: &str) -> Vec<Vec<f64>> {
     text.lines()
