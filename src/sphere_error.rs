@@ -12,7 +12,7 @@ use crate::ltc::lut::{Lut, THETA_MAX};
 use crate::ltc::sphere::Cap;
 use crate::ltc::{Clipping, Normalization};
 use crate::scene::SplitMix64;
-use crate::sphere_light::{SphereMethod, SphereShading, exact, sphere_light};
+use crate::sphere_light::{SphereMethod, SphereShading, sphere_exact, sphere_light};
 
 /// The angular radii measured, degrees: the point light itself, then from a light that is
 /// nearly a point to one that fills a 60° cone (a bulb a hand's width from the surface).
@@ -108,7 +108,7 @@ pub fn one_sphere(
         normalization: Normalization::Corrected,
     };
     let want = match Cap::of_sphere(s.u, s.radius) {
-        Some(cap) => exact(&s, &cap, nodes),
+        Some(cap) => sphere_exact(&s, &cap, nodes),
         None => sphere_light(SphereMethod::Exact, &s),
     };
     (want, APPROXIMATIONS.map(|m| sphere_light(m, &s)))

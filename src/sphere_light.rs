@@ -80,10 +80,10 @@ pub fn sphere_light(method: SphereMethod, s: &SphereShading<'_>) -> Lobes<f64> {
         return point(method, s);
     };
     match method {
-        SphereMethod::Exact => exact(s, &cap, EXACT_NODES),
-        SphereMethod::LtcPoint => ltc_point(s),
-        SphereMethod::LtcDisk => ltc_disk(s, &cap),
-        SphereMethod::RepresentativePoint => representative_point(s, &cap),
+        SphereMethod::Exact => sphere_exact(s, &cap, EXACT_NODES),
+        SphereMethod::LtcPoint => sphere_ltc_point(s),
+        SphereMethod::LtcDisk => sphere_ltc_disk(s, &cap),
+        SphereMethod::RepresentativePoint => sphere_representative_point(s, &cap),
     }
 }
 
@@ -98,7 +98,7 @@ fn point(method: SphereMethod, s: &SphereShading<'_>) -> Lobes<f64> {
             s.alpha,
             s.f0,
         ),
-        SphereMethod::LtcPoint | SphereMethod::LtcDisk => ltc_point(s),
+        SphereMethod::LtcPoint | SphereMethod::LtcDisk => sphere_ltc_point(s),
     }
 }
 
@@ -109,7 +109,7 @@ fn window(s: &SphereShading<'_>) -> f64 {
 
 /// The exact radiance: `w(d) · L · ∫ f cos dω` over the cap's directions above the surface,
 /// with `nodes` Gauss–Legendre nodes per dimension.
-pub fn exact(s: &SphereShading<'_>, cap: &Cap, nodes: usize) -> Lobes<f64> {
+pub fn sphere_exact(s: &SphereShading<'_>, cap: &Cap, nodes: usize) -> Lobes<f64> {
     let scale = window(s) * sphere_radiance(s.intensity, s.radius);
     let cos_sigma = if cap.encloses() { -1.0 } else { cap.cos_sigma };
     // The specular lobe peaks about the mirror direction: the rule crowds its nodes there.
@@ -125,7 +125,7 @@ pub fn exact(s: &SphereShading<'_>, cap: &Cap, nodes: usize) -> Lobes<f64> {
 }
 
 /// The paper's point formula with the sphere's centre as the light (eq. 30 corrected).
-pub fn ltc_point(s: &SphereShading<'_>) -> Lobes<f64> {
+pub fn sphere_ltc_point(s: &SphereShading<'_>) -> Lobes<f64> {
     let d = s.u.length();
     let e = brdf::irradiance_scale(s.intensity, d, s.range);
     if e <= 0.0 {
@@ -141,7 +141,7 @@ pub fn ltc_point(s: &SphereShading<'_>) -> Lobes<f64> {
 /// Heitz & Hill 2017: each lobe's LTC integrated over the cap, seen as the disc facing the
 /// point with the same solid angle (`ltc::disk`), times the sphere's radiance and the lobe's
 /// magnitude.
-pub fn ltc_disk(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
+pub fn sphere_ltc_disk(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
     if s.clip.case1 && cap.below_horizon() {
         return Lobes::default();
     }
@@ -163,7 +163,7 @@ pub fn ltc_disk(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
 /// and the diffuse lobe at the centre with the sphere's exact irradiance (Lagarde & de
 /// Rousiers 2014 §4.7.2). `1/d²` takes `d ≥ r`: at the surface `I/r² = πL`, the irradiance of
 /// the half-space of radiance `L` a point touching the sphere sees.
-pub fn representative_point(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
+pub fn sphere_representative_point(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
     let d = s.u.length();
     let w = window(s);
     let reflected = DVec3::new(-s.v.x, -s.v.y, s.v.z);
@@ -190,7 +190,7 @@ pub fn representative_point(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
 
 /// Burley's diffuse BRDF (base colour 1) toward a light direction that may lie below the
 /// horizon, as a sphere's centre can while part of it is above: `n·l` is taken at 0 there.
-fn fd_toward(v: DVec3, l: DVec3, alpha: f64) -> f64 {
+pub fn fd_toward(v: DVec3, l: DVec3, alpha: f64) -> f64 {
     let Some(h) = (v + l).try_normalize() else {
         return 0.0;
     };

@@ -3,11 +3,10 @@
 
 mod gpu_common;
 
-use gpu_common::gpu;
+use gpu_common::{gpu, run_probe};
 use ltc_lab::gpu::{brdf, ltc};
 use ltc_lab::ltc::lut::{Channel, Lut};
 use ltc_lab::scene::SplitMix64;
-use wgpu::util::DeviceExt;
 
 const PROBE: &str = "
 @group(0) @binding(0) var<storage, read> probe_uv: array<vec2<f32>>;
@@ -28,8 +27,9 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
 
 #[test]
 fn gpu_lut_filtering_matches_the_cpu_sampler() {
-    let Some(g) = gpu() else { return };
-    let (device, queue) = (&g.ctx.device, &g.ctx.queue);
+    if gpu().is_none() {
+        return;
+    }
     // The point table: every channel varies there, the fitted spec.scale included.
     let lut = Lut::embedded_point();
     // Random points over the table and 10% beyond each edge (clamp-to-edge), plus centres.
@@ -44,77 +44,14 @@ fn gpu_lut_filtering_matches_the_cpu_sampler() {
         .collect();
     uv.extend((0..64).map(|k| [(k as f32 + 0.5) / 64.0, (k as f32 + 0.5) / 64.0]));
     let source = [brdf::SOURCE, ltc::SOURCE, PROBE].join("\n");
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("lut probe"),
-        source: wgpu::ShaderSource::Wgsl(source.into()),
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: None,
-        layout: None,
-        module: &module,
-        entry_point: Some("probe"),
-        compilation_options: wgpu::PipelineCompilationOptions {
-            constants: &[("LUT_SIZE", lut.size as f64)],
-            ..Default::default()
-        },
-        cache: None,
-    });
-    let init = |contents: &[u8], usage| {
-        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: None,
-            contents,
-            usage,
-        })
-    };
-    let uv_buffer = init(bytemuck::cast_slice(&uv), wgpu::BufferUsages::STORAGE);
-    let lut_buffer = init(
-        bytemuck::cast_slice(&ltc::pack_lut(lut, false)),
-        wgpu::BufferUsages::STORAGE,
+    let packed = ltc::pack_lut(lut, false);
+    let got = run_probe(
+        &source,
+        &[("LUT_SIZE", lut.size as f64)],
+        bytemuck::cast_slice(&uv),
+        &[bytemuck::cast_slice(&packed)],
+        uv.len() * 3,
     );
-    let out_size = (uv.len() * 3 * 16) as u64;
-    let out = device.create_buffer(&wgpu::BufferDescriptor {
-        label: None,
-        size: out_size,
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-        mapped_at_creation: false,
-    });
-    let read = device.create_buffer(&wgpu::BufferDescriptor {
-        label: None,
-        size: out_size,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: None,
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: uv_buffer.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: out.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 2,
-                resource: lut_buffer.as_entire_binding(),
-            },
-        ],
-    });
-    let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_compute_pass(&Default::default());
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind, &[]);
-        pass.dispatch_workgroups((uv.len() as u32).div_ceil(64), 1, 1);
-    }
-    encoder.copy_buffer_to_buffer(&out, 0, &read, 0, out_size);
-    queue.submit([encoder.finish()]);
-    read.slice(..).map_async(wgpu::MapMode::Read, |_| {});
-    let _ = device.poll(wgpu::PollType::wait_indefinitely());
-    let data = read.slice(..).get_mapped_range().unwrap();
-    let got: &[[f32; 4]] = bytemuck::cast_slice(&data);
     use Channel::*;
     let channels = [
         [SpecM00, SpecM02, SpecM20, SpecM22],

@@ -4,7 +4,7 @@
 //! for the shaders are the WGSL's.
 
 use ltc_lab::gpu::scene::{GpuLight, Params};
-use ltc_lab::gpu::{bin_module_source, brdf, ltc, plane_module_source};
+use ltc_lab::gpu::{bin_module_source, brdf, ltc, plane_module_source, sphere_light};
 
 fn validate(name: &str, src: &str) -> naga::Module {
     let module = naga::front::wgsl::parse_str(src)
@@ -37,6 +37,10 @@ fn every_wgsl_file_validates() {
             );
         }
     }
+    validate(
+        "brdf.wgsl + ltc.wgsl + sphere_light.wgsl",
+        &[brdf::SOURCE, ltc::SOURCE, sphere_light::SOURCE].join("\n"),
+    );
     let module = validate("scene.wgsl + bin.wgsl", &bin_module_source());
     for entry in ["bin_count", "bin_scan", "bin_write"] {
         assert!(
@@ -117,14 +121,19 @@ fn pod_types_match_the_wgsl_structs() {
     );
 }
 
-#[test]
-fn mirrored_functions_have_the_same_names() {
-    let module = validate("plane", &plane_module_source(false));
-    let wgsl: Vec<&str> = module
+/// The names of a module's functions.
+fn function_names(module: &naga::Module) -> Vec<&str> {
+    module
         .functions
         .iter()
         .filter_map(|(_, f)| f.name.as_deref())
-        .collect();
+        .collect()
+}
+
+#[test]
+fn mirrored_functions_have_the_same_names() {
+    let module = validate("plane", &plane_module_source(false));
+    let wgsl = function_names(&module);
     // Each exists in Rust under this name (src/brdf.rs, src/ltc/mod.rs, src/ltc/lut.rs); the
     // `use` below fails to compile if one is renamed.
     #[allow(unused_imports)]
@@ -165,6 +174,46 @@ fn mirrored_functions_have_the_same_names() {
         "nl_sample_nearest",
         "nl_weight",
         "in_exact_band",
+    ] {
+        assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
+
+/// The sphere lights' functions carry their Rust names (a method `Cap::f` as `cap_f`).
+#[test]
+fn sphere_light_functions_have_the_rust_names() {
+    let source = [brdf::SOURCE, ltc::SOURCE, sphere_light::SOURCE].join("\n");
+    let module = validate("sphere_light", &source);
+    let wgsl = function_names(&module);
+    // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
+    #[allow(unused_imports)]
+    use ltc_lab::ltc::{
+        disk::{ltc_disk, negative_eigenvalue, transformed_cone},
+        sphere::{Cap, illuminance_sphere},
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::sphere_light::{
+        fd_toward, sphere_ltc_disk, sphere_radiance, sphere_representative_point,
+    };
+    let _ = (
+        Cap::of_sphere,
+        Cap::encloses,
+        Cap::below_horizon,
+        Cap::illuminance,
+    );
+    for f in [
+        "cap_of_sphere",
+        "cap_encloses",
+        "cap_below_horizon",
+        "cap_illuminance",
+        "illuminance_sphere",
+        "negative_eigenvalue",
+        "transformed_cone",
+        "ltc_disk",
+        "sphere_radiance",
+        "sphere_ltc_disk",
+        "sphere_representative_point",
+        "fd_toward",
     ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
     }

@@ -17,6 +17,7 @@ pub mod plane_render;
 pub mod renderer;
 pub mod scene;
 pub mod selfcheck;
+pub mod sphere_light;
 pub mod target;
 pub mod timing;
 

@@ -10,6 +10,7 @@ use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::parity::{Parity, RADIANCE_TOLERANCE};
 use ltc_lab::render::Frame;
+use wgpu::util::DeviceExt;
 
 /// Says loudly that a check was skipped: straight to the process's stderr, which the test
 /// harness does not capture (its `eprintln!` capture would hide the line of a passing test).
@@ -81,4 +82,89 @@ pub fn diff_tolerance(r: f64) -> f64 {
 /// Whether the tests must fail rather than skip when there is no adapter.
 fn required_by_environment() -> bool {
     std::env::var_os("LTC_LAB_REQUIRE_GPU").is_some_and(|v| !v.is_empty() && v != "0")
+}
+
+/// Runs the compute entry point `probe` of `source` on the tests' device: `input` at binding
+/// 0, `outputs` vec4s out at binding 1, `more` at bindings 2…, with the override `constants`;
+/// the vec4s come back. How the tests measure a WGSL function directly.
+pub fn run_probe(
+    source: &str,
+    constants: &[(&str, f64)],
+    input: &[u8],
+    more: &[&[u8]],
+    outputs: usize,
+) -> Vec<[f32; 4]> {
+    let g = gpu().expect("a probe runs where there is an adapter");
+    let (device, queue) = (&g.ctx.device, &g.ctx.queue);
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("probe"),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: None,
+        layout: None,
+        module: &module,
+        entry_point: Some("probe"),
+        compilation_options: wgpu::PipelineCompilationOptions {
+            constants,
+            ..Default::default()
+        },
+        cache: None,
+    });
+    let storage = |contents: &[u8]| {
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: None,
+            contents,
+            usage: wgpu::BufferUsages::STORAGE,
+        })
+    };
+    let out_size = (outputs * 16) as u64;
+    let buffer = |usage| {
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: out_size,
+            usage,
+            mapped_at_creation: false,
+        })
+    };
+    let out = buffer(wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
+    let read = buffer(wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+    let inputs: Vec<wgpu::Buffer> = std::iter::once(input)
+        .chain(more.iter().copied())
+        .map(storage)
+        .collect();
+    let mut entries = vec![
+        wgpu::BindGroupEntry {
+            binding: 0,
+            resource: inputs[0].as_entire_binding(),
+        },
+        wgpu::BindGroupEntry {
+            binding: 1,
+            resource: out.as_entire_binding(),
+        },
+    ];
+    for (k, b) in inputs.iter().enumerate().skip(1) {
+        entries.push(wgpu::BindGroupEntry {
+            binding: k as u32 + 1,
+            resource: b.as_entire_binding(),
+        });
+    }
+    let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &entries,
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_compute_pass(&Default::default());
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind, &[]);
+        pass.dispatch_workgroups((outputs as u32).div_ceil(64), 1, 1);
+    }
+    encoder.copy_buffer_to_buffer(&out, 0, &read, 0, out_size);
+    queue.submit([encoder.finish()]);
+    read.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+    let _ = device.poll(wgpu::PollType::wait_indefinitely());
+    let data = read.slice(..).get_mapped_range().unwrap();
+    bytemuck::cast_slice(&data).to_vec()
 }

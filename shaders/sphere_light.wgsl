@@ -1,0 +1,279 @@
+// Lights with a size (docs/design.md §1.10), mirroring src/ltc/sphere.rs (Cap and the
+// illuminance of a cap), src/ltc/disk.rs and src/sphere_light.rs by name. Composed after brdf.wgsl and
+// ltc.wgsl (uses PI, Ltc, LtcPair, ltc_eval's constants and the BRDF terms).
+
+// Cap: the directions a sphere covers seen from the shading point; cos_sigma = −1 where the
+// point is inside the sphere (every direction sees it).
+struct Cap {
+    axis: vec3<f32>,
+    sin_sigma: f32,
+    cos_sigma: f32,
+}
+
+// Cap::of_sphere for r > 0: √((d − r)(d + r)) keeps cos σ accurate for a small light.
+fn cap_of_sphere(u: vec3<f32>, r: f32) -> Cap {
+    let d = length(u);
+    var axis = vec3<f32>(0.0, 0.0, 1.0);
+    if d > 0.0 {
+        axis = u / d;
+    }
+    if d <= r {
+        return Cap(axis, 1.0, -1.0);
+    }
+    return Cap(axis, r / d, sqrt((d - r) * (d + r)) / d);
+}
+
+fn cap_encloses(cap: Cap) -> bool {
+    return cap.cos_sigma <= -1.0;
+}
+
+// Cap::below_horizon: no direction of the cap is above the surface.
+fn cap_below_horizon(cap: Cap) -> bool {
+    return !cap_encloses(cap) && cap.axis.z <= -cap.sin_sigma;
+}
+
+// Cap::illuminance: ∫ max(ω.z, 0) dω over the cap.
+fn cap_illuminance(cap: Cap) -> f32 {
+    if cap_encloses(cap) {
+        return PI;
+    }
+    return illuminance_sphere(cap.axis.z, cap.sin_sigma * cap.sin_sigma);
+}
+
+// illuminance_sphere: ∫ max(ω.z, 0) dω over a cap of sin²σ whose axis has cos θ with the
+// normal, cut by the horizon (Snyder's integral as Lagarde & de Rousiers 2014 write it;
+// src/ltc/sphere.rs). Its terms cancel from O(σ) for a small cap straddling the horizon, so
+// its arccosine and arctangent are the precise ones below, not WGSL's.
+fn illuminance_sphere(cos_theta: f32, sin2_sigma: f32) -> f32 {
+    if cos_theta * cos_theta >= sin2_sigma {
+        return PI * sin2_sigma * max(cos_theta, 0.0);
+    }
+    let sin_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0));
+    let x = sqrt(max(1.0 / sin2_sigma - 1.0, 0.0));
+    let y = clamp(-x * cos_theta / sin_theta, -1.0, 1.0);
+    let z = sin_theta * sqrt(1.0 - y * y);
+    var beside = PI / 2.0;
+    if x > 0.0 {
+        beside = atan_precise(z / x);
+    }
+    return max((cos_theta * acos_precise(y) - x * z) * sin2_sigma + beside, 0.0);
+}
+
+// An arctangent of x ≥ 0 within a few f32 ulps (WGSL allows its atan 4096 ulps, and its acos
+// inherits that). Reduced by tan π/8 and tan 3π/8 to |t| ≤ tan π/8, then t + t³ p(t²): p is
+// the least-squares fit of (atan t − t)/t³ in t² on [0, tan π/8] made for this file (relative
+// error 2.1e-8 before rounding; tests/gpu_sphere_light.rs measures the f32 function).
+fn atan_precise(x: f32) -> f32 {
+    var base = 0.0;
+    var t = x;
+    if x > 2.4142135 {
+        base = PI / 2.0;
+        t = -1.0 / x;
+    } else if x > 0.41421357 {
+        base = PI / 4.0;
+        t = (x - 1.0) / (x + 1.0);
+    }
+    let z = t * t;
+    let p = -3.333296723e-1 + z * (1.997827404e-1 + z * (-1.388290811e-1 + z * 8.068712687e-2));
+    return base + t + t * z * p;
+}
+
+// An arccosine within a few f32 ulps: 2 atan √((1 − y)/(1 + y)).
+fn acos_precise(y: f32) -> f32 {
+    if y <= -1.0 {
+        return PI;
+    }
+    return 2.0 * atan_precise(sqrt(max(1.0 - y, 0.0) / (1.0 + y)));
+}
+
+// negative_eigenvalue: the root of f(e) = det(q − eI) = det − c₁e + tr·e² − e³ in
+// [−‖q‖, 0], by Newton's method from det/c₁ with bisection where a step would leave the
+// bracket (src/ltc/disk.rs; no trigonometry, whose WGSL error bounds are too loose here).
+fn negative_eigenvalue(q: mat3x3<f32>, det: f32) -> f32 {
+    let trace = q[0][0] + q[1][1] + q[2][2];
+    let c1 = q[0][0] * q[1][1] - q[1][0] * q[0][1] + q[0][0] * q[2][2] - q[2][0] * q[0][2]
+        + q[1][1] * q[2][2] - q[2][1] * q[1][2];
+    let norm = sqrt(dot(q[0], q[0]) + dot(q[1], q[1]) + dot(q[2], q[2]));
+    var lo = -norm;
+    var hi = 0.0;
+    var x = 0.5 * lo;
+    if c1 > 0.0 && det / c1 > lo && det / c1 < hi {
+        x = det / c1;
+    }
+    // From det/c₁ Newton settles in a few steps; 24 bound a bisection in f32.
+    for (var k = 0; k < 24; k++) {
+        let fx = det - x * (c1 - x * (trace - x));
+        if fx > 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let step = x - fx / (-c1 + x * (2.0 * trace - 3.0 * x));
+        var next = 0.5 * (lo + hi);
+        if step > lo && step < hi {
+            next = step;
+        }
+        if next == x {
+            break;
+        }
+        x = next;
+    }
+    return x;
+}
+
+// The adjugate of m (m⁻¹ · det m): M up to a positive or negative scale, which the cone's
+// quadratic form does not see (src/ltc/disk.rs takes M itself; the table holds M⁻¹ only).
+fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
+    // The rows of m are the columns of its transpose; adj's columns are their cross products.
+    let r = transpose(m);
+    return mat3x3<f32>(cross(r[1], r[2]), cross(r[2], r[0]), cross(r[0], r[1]));
+}
+
+// transformed_cone: the axis (xyz) and form factor (w) of the cap's image under M⁻¹: the cone
+// over the ellipse of B = M⁻¹ [sin σ t₁, sin σ t₂, cos σ a], Q = B⁻ᵀ diag(1, 1, −1) B⁻¹,
+// det Q = −1/det(B)², and (e₁ − e₃)(e₂ − e₃) = det/e₃ − e₃(tr − e₃) + e₃² (src/ltc/disk.rs).
+// M⁻¹ is first scaled to entries of at most 1 (the cone does not see its scale).
+fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
+    let m_inv = ltc.cos_from_brdf;
+    let big = max(max(max(abs(m_inv[0].x), abs(m_inv[0].z)), max(abs(m_inv[2].x), abs(m_inv[2].z))), abs(m_inv[1].y));
+    let a = cap.axis;
+    let frame = orthonormal_pair(a);
+    let s = cap.sin_sigma;
+    let b = (m_inv * (1.0 / big)) * mat3x3<f32>(frame[0] * s, frame[1] * s, a * cap.cos_sigma);
+    let det_b = determinant(b);
+    let b_inv = adjugate(b) * (1.0 / det_b);
+    let q = transpose(b_inv) * mat3x3<f32>(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0) * b_inv;
+    let det = -1.0 / (det_b * det_b);
+    let e3 = negative_eigenvalue(q, det);
+    let trace = q[0][0] + q[1][1] + q[2][2];
+    let spread = det / e3 - e3 * (trace - e3) + e3 * e3;
+    let r = transpose(q - mat3x3<f32>(e3, 0.0, 0.0, 0.0, e3, 0.0, 0.0, 0.0, e3));
+    let c01 = cross(r[0], r[1]);
+    let c02 = cross(r[0], r[2]);
+    let c12 = cross(r[1], r[2]);
+    var axis = c01;
+    if dot(c02, c02) > dot(axis, axis) {
+        axis = c02;
+    }
+    if dot(c12, c12) > dot(axis, axis) {
+        axis = c12;
+    }
+    axis = normalize(axis);
+    if dot(axis, m_inv * a) < 0.0 {
+        axis = -axis;
+    }
+    return vec4<f32>(axis, -e3 / sqrt(spread));
+}
+
+// Two unit vectors completing unit n to an orthonormal frame (Duff et al. 2017, "Building an
+// orthonormal basis, revisited"); any pair serves, the cap being round about n.
+fn orthonormal_pair(n: vec3<f32>) -> mat2x3<f32> {
+    let sign = select(-1.0, 1.0, n.z >= 0.0);
+    let a = -1.0 / (sign + n.z);
+    let b = n.x * n.y * a;
+    return mat2x3<f32>(
+        vec3<f32>(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x),
+        vec3<f32>(b, sign + n.y * n.y * a, -n.y),
+    );
+}
+
+// ltc_disk: ∫ D(ω) dω over the cap (Heitz & Hill 2017), case 2 through the sphere of the same
+// vector form factor; the hemisphere about Mᵀz inside the sphere or where the cone is
+// degenerate.
+fn ltc_disk(ltc: Ltc, cap: Cap, case2: bool, normalization: u32) -> f32 {
+    // The hemisphere about p maps to the one about Mᵀp; adj(M⁻¹) = det(M⁻¹) M, and the sign of
+    // the determinant restores Mᵀp's direction. The upper hemisphere inside the sphere, the
+    // one about the axis where the cone opened too far for its algebra.
+    let m_t = transpose(adjugate(ltc.cos_from_brdf)) * sign(determinant(ltc.cos_from_brdf));
+    var cone = vec4<f32>(normalize(m_t[2]), 1.0);
+    if !cap_encloses(cap) {
+        cone = transformed_cone(ltc, cap);
+        let ok = all(abs(cone) < vec4<f32>(3.4e38)) && cone.w == cone.w;
+        if !ok {
+            cone = vec4<f32>(normalize(m_t * cap.axis), 1.0);
+        }
+    }
+    var integral = cone.w * cone.z;
+    if case2 {
+        integral = illuminance_sphere(cone.z, clamp(cone.w, 0.0, 1.0)) / PI;
+    }
+    if normalization == NORMALIZATION_PAPER_LITERAL {
+        return integral * PI;
+    }
+    return integral;
+}
+
+// sphere_radiance: L = I / (π r²).
+fn sphere_radiance(intensity: f32, r: f32) -> f32 {
+    return intensity / (PI * r * r);
+}
+
+// One sphere light at one shading point (src/sphere_light.rs SphereShading; range ≤ 0 is
+// an infinite range, as for point lights).
+struct SphereShading {
+    v: vec3<f32>,
+    u: vec3<f32>,
+    intensity: f32,
+    range: f32,
+    radius: f32,
+    alpha: f32,
+    f0: f32,
+    clip: u32,
+    normalization: u32,
+}
+
+// sphere_ltc_disk: both lobes (specular, diffuse) by the LTC disk.
+fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
+    if (s.clip & CLIP_HORIZON) != 0u && cap_below_horizon(cap) {
+        return vec2<f32>(0.0);
+    }
+    let d2 = dot(s.u, s.u);
+    let scale = window_falloff_d2(d2, s.range) * sphere_radiance(s.intensity, s.radius);
+    var weights = vec2<f32>(1.0);
+    if s.normalization != NORMALIZATION_PAPER_LITERAL {
+        weights = vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
+    }
+    let case2 = (s.clip & CLIP_TRANSFORMED) != 0u;
+    let lobes = vec2<f32>(
+        ltc_disk(pair.spec, cap, case2, s.normalization),
+        ltc_disk(pair.diff, cap, case2, s.normalization),
+    );
+    return scale * weights * lobes;
+}
+
+// sphere_representative_point: Karis 2013 in Unreal's form (src/sphere_light.rs).
+fn sphere_representative_point(s: SphereShading, cap: Cap) -> vec2<f32> {
+    let d = length(s.u);
+    let w = window_falloff_d2(d * d, s.range);
+    let reflected = vec3<f32>(-s.v.x, -s.v.y, s.v.z);
+    let centre_to_ray = reflected * dot(s.u, reflected) - s.u;
+    let reach = length(centre_to_ray);
+    var closest = s.u + centre_to_ray;
+    if reach > s.radius {
+        closest = s.u + centre_to_ray * (s.radius / reach);
+    }
+    var l = reflected;
+    if dot(closest, closest) > 0.0 {
+        l = normalize(closest);
+    }
+    let alpha_wide = min(s.alpha + 0.5 * min(s.radius / max(d, MIN_LIGHT_DISTANCE), 1.0), 1.0);
+    let energy = (s.alpha / alpha_wide) * (s.alpha / alpha_wide);
+    let dr = max(d, s.radius);
+    var specular = 0.0;
+    if l.z > 0.0 {
+        specular = specular_cos(dots_new(s.v, l), s.alpha, s.f0);
+    }
+    let diffuse = fd_toward(s.v, cap.axis, s.alpha) * sphere_radiance(s.intensity, s.radius)
+        * cap_illuminance(cap);
+    return vec2<f32>(w * s.intensity / (dr * dr) * energy * specular, w * diffuse);
+}
+
+// fd_toward: Burley's diffuse toward a direction that may lie below the horizon (n·l at 0).
+fn fd_toward(v: vec3<f32>, l: vec3<f32>, alpha: f32) -> f32 {
+    let sum = v + l;
+    if dot(sum, sum) <= 0.0 {
+        return 0.0;
+    }
+    let h = normalize(sum);
+    return fd_burley(v.z, max(l.z, 0.0), dot(l, h), alpha);
+}

@@ -1,0 +1,242 @@
+//! Lights with a size on the GPU (shaders/sphere_light.wgsl) against the f64 CPU methods
+//! (src/sphere_light.rs), measured directly on random spheres: cut by the horizon, below it,
+//! enclosing the point, from a tenth of a degree to 60°.
+
+mod gpu_common;
+
+use glam::{DMat3, DVec3};
+use gpu_common::{gpu, run_probe};
+use ltc_lab::brdf::view_from_theta;
+use ltc_lab::gpu::{brdf, ltc, sphere_light};
+use ltc_lab::ltc::lut::Lut;
+use ltc_lab::ltc::sphere::Cap;
+use ltc_lab::ltc::{Clipping, Ltc, LtcPair, Normalization};
+use ltc_lab::parity::RADIANCE_TOLERANCE;
+use ltc_lab::scene::SplitMix64;
+use ltc_lab::sphere_light::{SphereShading, sphere_ltc_disk, sphere_representative_point};
+
+const PROBE: &str = "
+@group(0) @binding(0) var<storage, read> probe_in: array<vec4<f32>>;
+@group(0) @binding(1) var<storage, read_write> probe_out: array<vec4<f32>>;
+const PER_CASE: u32 = 11u;
+fn probe_ltc(k: u32) -> Ltc {
+    let m = mat3x3<f32>(probe_in[k].xyz, probe_in[k + 1u].xyz, probe_in[k + 2u].xyz);
+    let c = probe_in[k + 3u];
+    return Ltc(m, c.x, c.y, c.z, c.w);
+}
+@compute @workgroup_size(64)
+fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
+    let i = id.x;
+    if i >= arrayLength(&probe_in) / PER_CASE {
+        return;
+    }
+    let k = PER_CASE * i;
+    let a = probe_in[k];
+    let b = probe_in[k + 1u];
+    let c = probe_in[k + 2u];
+    let pair = LtcPair(probe_ltc(k + 3u), probe_ltc(k + 7u));
+    let s = SphereShading(a.xyz, b.xyz, 1.0, -1.0, a.w, b.w, c.x, CLIP_HORIZON | CLIP_TRANSFORMED,
+        NORMALIZATION_CORRECTED);
+    let cap = cap_of_sphere(s.u, s.radius);
+    probe_out[i] = vec4<f32>(sphere_ltc_disk(s, pair, cap), sphere_representative_point(s, cap));
+}
+";
+
+/// One case: the view, the centre's offset, the radius, α, F0 and the LTCs at (θo, α).
+struct Case {
+    v: DVec3,
+    u: DVec3,
+    radius: f64,
+    alpha: f64,
+    f0: f64,
+    pair: LtcPair,
+}
+
+fn draw(rng: &mut SplitMix64, lut: &Lut) -> Case {
+    let theta_o = rng.uniform([0.0, 85.0_f64.to_radians()]);
+    let alpha = rng.uniform([0.02, 1.0]);
+    let v = DVec3::from(view_from_theta(theta_o));
+    let elevation = rng.uniform([-30.0_f64.to_radians(), std::f64::consts::FRAC_PI_2]);
+    let azimuth = rng.uniform([0.0, std::f64::consts::TAU]);
+    let d = rng.uniform([0.3, 3.0]);
+    let dir = DVec3::new(
+        elevation.cos() * azimuth.cos(),
+        elevation.cos() * azimuth.sin(),
+        elevation.sin(),
+    );
+    // From a tenth of a degree to 60°, and one case in ten enclosing the point.
+    let sigma = rng.uniform([0.1_f64.to_radians(), 60.0_f64.to_radians()]);
+    let radius = if rng.uniform([0.0, 1.0]) < 0.1 {
+        1.5 * d
+    } else {
+        d * sigma.sin()
+    };
+    Case {
+        v,
+        u: dir * d,
+        radius,
+        alpha,
+        f0: rng.uniform([0.0, 1.0]),
+        pair: lut.ltc_pair(alpha, v),
+    }
+}
+
+/// The case as the probe reads it: 11 vec4s.
+fn pack(c: &Case) -> Vec<[f32; 4]> {
+    let f = |x: f64| x as f32;
+    let lobe = |l: &Ltc| {
+        let m: DMat3 = l.cos_from_brdf;
+        let col = |v: DVec3| [f(v.x), f(v.y), f(v.z), 0.0];
+        [
+            col(m.x_axis),
+            col(m.y_axis),
+            col(m.z_axis),
+            [f(l.det_cos_from_brdf), f(l.norm), f(l.fresnel), f(l.scale)],
+        ]
+    };
+    let mut out = vec![
+        [f(c.v.x), f(c.v.y), f(c.v.z), f(c.radius)],
+        [f(c.u.x), f(c.u.y), f(c.u.z), f(c.alpha)],
+        [f(c.f0), 0.0, 0.0, 0.0],
+    ];
+    out.extend(lobe(&c.pair.spec));
+    out.extend(lobe(&c.pair.diff));
+    out
+}
+
+/// The probe `tail` composed after the sphere lights' shaders, run over `input`.
+fn probe(tail: &str, input: &[[f32; 4]], outputs: usize) -> Vec<[f32; 4]> {
+    let source = [brdf::SOURCE, ltc::SOURCE, sphere_light::SOURCE, tail].join("\n");
+    run_probe(&source, &[], bytemuck::cast_slice(input), &[], outputs)
+}
+
+#[test]
+fn gpu_sphere_lights_match_the_cpu_methods() {
+    if gpu().is_none() {
+        return;
+    }
+    let lut = Lut::embedded();
+    let mut rng = SplitMix64(32);
+    let cases: Vec<Case> = (0..4096).map(|_| draw(&mut rng, lut)).collect();
+    let input: Vec<[f32; 4]> = cases.iter().flat_map(pack).collect();
+    let got = probe(PROBE, &input, cases.len());
+    let want: Vec<[f64; 4]> = cases
+        .iter()
+        .map(|c| {
+            let s = SphereShading {
+                v: c.v,
+                u: c.u,
+                intensity: 1.0,
+                range: f64::INFINITY,
+                radius: c.radius,
+                alpha: c.alpha,
+                f0: c.f0,
+                ltc: &c.pair,
+                clip: Clipping::BOTH,
+                normalization: Normalization::Corrected,
+            };
+            let cap = Cap::of_sphere(c.u, c.radius).unwrap();
+            let (disk, rep) = (
+                sphere_ltc_disk(&s, &cap),
+                sphere_representative_point(&s, &cap),
+            );
+            [disk.specular, disk.diffuse, rep.specular, rep.diffuse]
+        })
+        .collect();
+    let names = [
+        "ltc-disk specular",
+        "ltc-disk diffuse",
+        "representative specular",
+        "representative diffuse",
+    ];
+    for (k, name) in names.iter().enumerate() {
+        // §4.2's floor: 1% of the column's mean, so that a near-black case is judged on the
+        // scale of the light it is part of.
+        let floor = 0.01 * want.iter().map(|w| w[k].abs()).sum::<f64>() / want.len() as f64;
+        let mut worst = (0.0f64, 0usize);
+        for (i, (w, g)) in want.iter().zip(&got).enumerate() {
+            let g = f64::from(g[k]);
+            assert!(g.is_finite() && g >= 0.0, "{name} case {i}: {g}");
+            let err = (g - w[k]).abs() / w[k].abs().max(floor);
+            let c = &cases[i];
+            let lobe = if k % 2 == 0 {
+                &c.pair.spec
+            } else {
+                &c.pair.diff
+            };
+            // The render's parity tolerance (`parity::RADIANCE_TOLERANCE`), plus what f32
+            // does to a cap: a direction rounded by ε moves a cap's cut by ε/sin σ of its
+            // width, and M⁻¹ stretches it by up to its condition number κ (bounded here by
+            // ‖M⁻¹‖·‖M‖ in Frobenius norms). The chain has some sixteen roundings (B, its
+            // adjugate, Q's two products, the root, the null vector, the clipped integral);
+            // 64 is four times that. Lavapipe needs 15.
+            let sin_sigma = (c.radius / c.u.length()).min(1.0);
+            let bound =
+                RADIANCE_TOLERANCE + 64.0 * condition(lobe) * f64::from(f32::EPSILON) / sin_sigma;
+            assert!(
+                err <= bound,
+                "{name} case {i}: gpu {g} cpu {} ({err:.2e} > {bound:.2e})",
+                w[k]
+            );
+            if err > worst.0 {
+                worst = (err, i);
+            }
+        }
+        eprintln!("{name}: worst {:.2e} (case {})", worst.0, worst.1);
+    }
+}
+
+/// An upper bound on the condition number of `M⁻¹`: `‖M⁻¹‖·‖M‖` in Frobenius norms.
+fn condition(lobe: &Ltc) -> f64 {
+    let norm = |m: DMat3| m.to_cols_array().iter().map(|x| x * x).sum::<f64>().sqrt();
+    norm(lobe.cos_from_brdf) * norm(lobe.brdf_from_cos)
+}
+
+const ARC_PROBE: &str = "
+@group(0) @binding(0) var<storage, read> probe_in: array<vec4<f32>>;
+@group(0) @binding(1) var<storage, read_write> probe_out: array<vec4<f32>>;
+@compute @workgroup_size(64)
+fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
+    let i = id.x;
+    if i >= arrayLength(&probe_in) {
+        return;
+    }
+    let x = probe_in[i];
+    probe_out[i] = vec4<f32>(atan_precise(x.x), acos_precise(x.y), 0.0, 0.0);
+}
+";
+
+/// The shaders' own arctangent and arccosine, which the clipped integral leans on, within a
+/// few ulps of f64's: the fit's 2.1e-8 (a third of an ulp) and some four roundings. Checked
+/// over [0, 1e4] and [−1, 1], where WGSL's own are allowed 4096 ulps.
+#[test]
+fn gpu_precise_arctangents_are_within_a_few_ulps() {
+    if gpu().is_none() {
+        return;
+    }
+    let input: Vec<[f32; 4]> = (0..8192)
+        .map(|k| {
+            let t = k as f32 / 8191.0;
+            [1e4 * t * t * t, 2.0 * t - 1.0, 0.0, 0.0]
+        })
+        .collect();
+    let got = probe(ARC_PROBE, &input, input.len());
+    let ulp = f64::from(f32::EPSILON);
+    for (x, g) in input.iter().zip(&got) {
+        let atan = f64::from(x[0]).atan();
+        let acos = f64::from(x[1]).acos();
+        assert!(
+            (f64::from(g[0]) - atan).abs() <= 8.0 * ulp * atan.max(1e-30),
+            "atan {}: {} vs {atan}",
+            x[0],
+            g[0]
+        );
+        // acos near 1 is √(2(1 − y)) and inherits the rounding of 1 − y, half an ulp of 1.
+        assert!(
+            (f64::from(g[1]) - acos).abs() <= 8.0 * ulp * acos.max(1e-3),
+            "acos {}: {} vs {acos}",
+            x[1],
+            g[1]
+        );
+    }
+}
