@@ -277,3 +277,150 @@ fn fd_toward(v: vec3<f32>, l: vec3<f32>, alpha: f32) -> f32 {
     let h = normalize(sum);
     return fd_burley(v.z, max(l.z, 0.0), dot(l, h), alpha);
 }
+
+// The 8-point Gauss–Legendre rule on [−1, 1], as src/quadrature.rs gauss_legendre(8) computes
+// it (nodes and weights of the positive half; the rule is symmetric). tests/gpu_sphere_light.rs
+// checks sphere_exact against the Rust rule with the same nodes.
+const GL8_NODES: array<f32, 4> = array<f32, 4>(0.18343464249564980, 0.52553240991632899, 0.79666647741362684, 0.96028985649753629);
+const GL8_WEIGHTS: array<f32, 4> = array<f32, 4>(0.36268378337836199, 0.31370664587788738, 0.22238103445337445, 0.10122853629037679);
+
+// The rule's i-th node (0…7) and weight.
+fn gl8(i: u32) -> vec2<f32> {
+    if i < 4u {
+        return vec2<f32>(-GL8_NODES[3u - i], GL8_WEIGHTS[3u - i]);
+    }
+    return vec2<f32>(GL8_NODES[i - 4u], GL8_WEIGHTS[i - 4u]);
+}
+
+// Node i of the rule on [lo, hi], crowded to both ends by x ↦ x(3 − x²)/2 (src/quadrature.rs
+// crowded): the point and its weight.
+fn gl8_crowded(i: u32, lo: f32, hi: f32) -> vec2<f32> {
+    let r = gl8(i);
+    let mid = 0.5 * (lo + hi);
+    let half = 0.5 * (hi - lo);
+    return vec2<f32>(mid + half * 0.5 * r.x * (3.0 - r.x * r.x), r.y * half * 1.5 * (1.0 - r.x * r.x));
+}
+
+// sin and cos of φ in [−π, π] within a few ulps (WGSL allows 2⁻¹¹ absolute, which would move a
+// sharp lobe's sample directions): reduced by π/2 in two parts (Cody & Waite), then Taylor
+// polynomials to degree 9 and 10 on |r| ≤ π/4 (truncation below 2e-9).
+fn sincos_precise(phi: f32) -> vec2<f32> {
+    let k = round(phi / (PI / 2.0));
+    let r = (phi - k * 1.5707963705062866) + k * 4.371139e-8;
+    let z = r * r;
+    let s = r * (1.0 + z * (-1.0 / 6.0 + z * (1.0 / 120.0 + z * (-1.0 / 5040.0 + z / 362880.0))));
+    let c = 1.0 + z * (-0.5 + z * (1.0 / 24.0 + z * (-1.0 / 720.0 + z * (1.0 / 40320.0 - z / 3628800.0))));
+    // k is in −2…2; the remainder of a negative integer is undefined in GLSL, so it is taken
+    // of k + 4.
+    let q = u32(k + 4.0) % 4u;
+    if q == 0u {
+        return vec2<f32>(s, c);
+    }
+    if q == 1u {
+        return vec2<f32>(c, -s);
+    }
+    if q == 2u {
+        return vec2<f32>(-s, -c);
+    }
+    return vec2<f32>(-c, s);
+}
+
+// visible_half_azimuth: the half-width of the azimuths where c + k cos φ > 0 (k ≥ 0), −1
+// where there are none (src/quadrature.rs).
+fn visible_half_azimuth(c: f32, k: f32) -> f32 {
+    if c >= k {
+        return PI;
+    }
+    if c <= -k {
+        return -1.0;
+    }
+    return acos_precise(clamp(-c / k, -1.0, 1.0));
+}
+
+// Both lobes integrated over one ring of the cap at ν = 1 − μ (src/quadrature.rs
+// cap_integral_by's ring), the ring split at the mirror direction's azimuth where it holds it.
+fn exact_ring(s: SphereShading, axis: vec3<f32>, t: vec3<f32>, b: vec3<f32>, nu: f32, focus_phi: f32) -> vec2<f32> {
+    let mu = 1.0 - nu;
+    let sin_theta = sqrt(max(nu * (2.0 - nu), 0.0));
+    let half = visible_half_azimuth(mu * axis.z, sin_theta * t.z);
+    if half < 0.0 {
+        return vec2<f32>(0.0);
+    }
+    var sum = vec2<f32>(0.0);
+    let split = abs(focus_phi) < half;
+    var pieces = 1u;
+    if split {
+        pieces = 2u;
+    }
+    for (var p = 0u; p < pieces; p++) {
+        for (var i = 0u; i < 8u; i++) {
+            var node = vec2<f32>(half * gl8(i).x, half * gl8(i).y);
+            if split {
+                let lo = select(focus_phi, -half, p == 0u);
+                let hi = select(half, focus_phi, p == 0u);
+                node = gl8_crowded(i, lo, hi);
+            }
+            let sc = sincos_precise(node.x);
+            let l = axis * mu + (t * sc.y + b * sc.x) * sin_theta;
+            if l.z > 0.0 {
+                let d = dots_new(s.v, l);
+                sum += node.y * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
+            }
+        }
+    }
+    return sum;
+}
+
+// sphere_exact: w(d) · L · ∫ f cos dω over the cap's directions above the surface, by the
+// rule of src/quadrature.rs with 8 nodes per dimension and piece (src/sphere_light.rs
+// GPU_EXACT_NODES): rings placed by ν = 1 − μ (f32 keeps a small cap's rings apart that way),
+// the ν range split where rings start to be cut (1 ∓ t_z) and at the mirror direction, each
+// piece's nodes crowded to its ends.
+fn sphere_exact(s: SphereShading, cap: Cap) -> vec2<f32> {
+    let axis = cap.axis;
+    var t = vec3<f32>(1.0, 0.0, 0.0);
+    let up = vec3<f32>(0.0, 0.0, 1.0) - axis * axis.z;
+    if dot(up, up) > 0.0 {
+        t = normalize(up);
+    }
+    let b = cross(axis, t);
+    let mirror = vec3<f32>(-s.v.x, -s.v.y, s.v.z);
+    let focus_phi = atan2(dot(mirror, b), dot(mirror, t));
+    // 1 − cos σ = sin²σ/(1 + cos σ), without the cancellation; 2 for the whole sphere.
+    var widest = 2.0;
+    if !cap_encloses(cap) {
+        widest = cap.sin_sigma * cap.sin_sigma / (1.0 + cap.cos_sigma);
+    }
+    // The cuts, sorted: the pole, 1 ∓ t_z and the mirror's ν where inside, the rim.
+    var cuts = array<f32, 5>(0.0, 3.0, 3.0, 3.0, 3.0);
+    var count = 1u;
+    let inner = array<f32, 3>(1.0 + t.z, 1.0 - t.z, 1.0 - dot(mirror, axis));
+    for (var j = 0u; j < 3u; j++) {
+        let k = inner[j];
+        if k > 0.0 && k < widest {
+            var at = count;
+            // No index below 0, even one a condition would not read.
+            while at > 0u {
+                if cuts[at - 1u] <= k {
+                    break;
+                }
+                cuts[at] = cuts[at - 1u];
+                at -= 1u;
+            }
+            cuts[at] = k;
+            count += 1u;
+        }
+    }
+    cuts[count] = widest;
+    var sum = vec2<f32>(0.0);
+    for (var p = 0u; p < count; p++) {
+        if cuts[p + 1u] > cuts[p] {
+            for (var i = 0u; i < 8u; i++) {
+                let node = gl8_crowded(i, cuts[p], cuts[p + 1u]);
+                sum += node.y * exact_ring(s, axis, t, b, node.x, focus_phi);
+            }
+        }
+    }
+    let d2 = dot(s.u, s.u);
+    return window_falloff_d2(d2, s.range) * sphere_radiance(s.intensity, s.radius) * sum;
+}

@@ -67,14 +67,28 @@ pub fn cap_integral_about<const K: usize>(
     focus: Option<DVec3>,
     g: impl Fn(DVec3) -> [f64; K],
 ) -> [f64; K] {
-    let rule = gauss_legendre(n);
+    cap_integral_by(&gauss_legendre(n), axis, cos_sigma, focus, g)
+}
+
+/// The cap integral with a rule of nodes and weights on `[-1, 1]`.
+fn cap_integral_by<const K: usize>(
+    rule: &[(f64, f64)],
+    axis: DVec3,
+    cos_sigma: f64,
+    focus: Option<DVec3>,
+    g: impl Fn(DVec3) -> [f64; K],
+) -> [f64; K] {
     // A frame whose `t` lies in the plane of the axis and the normal, so that a ring's height
     // is `μ a_z + sin θ cos φ t_z` with `t_z ≥ 0`: its part above the horizon is one interval
     // of φ about 0.
     let (t, b) = ring_frame(axis);
     let focus_phi = focus.map(|f| f.dot(b).atan2(f.dot(t)));
-    let ring = |mu: f64| -> [f64; K] {
-        let s = (1.0 - mu * mu).max(0.0).sqrt();
+    // Rings are placed by `ν = 1 − μ`, not `μ`: near the pole `μ` would keep a small cap's
+    // rings to f32's resolution of 1 (6e-8 against a cap of 1 − cos σ = 3e-5 at σ = 0.44°);
+    // the shaders share this rule.
+    let ring = |nu: f64| -> [f64; K] {
+        let mu = 1.0 - nu;
+        let s = (nu * (2.0 - nu)).max(0.0).sqrt();
         let mut sum = [0.0; K];
         let Some(half) = visible_half_azimuth(mu * axis.z, s * t.z) else {
             return sum;
@@ -89,12 +103,12 @@ pub fn cap_integral_about<const K: usize>(
         // leaves the surface), so the plain rule serves unless the arc holds the peak.
         match focus_phi.filter(|p| p.abs() < half) {
             Some(peak) => {
-                for (phi, w) in crowded(&rule, -half, peak).chain(crowded(&rule, peak, half)) {
+                for (phi, w) in crowded(rule, -half, peak).chain(crowded(rule, peak, half)) {
                     add(phi, w);
                 }
             }
             None => {
-                for &(x, w) in &rule {
+                for &(x, w) in rule {
                     add(half * x, half * w);
                 }
             }
@@ -102,23 +116,23 @@ pub fn cap_integral_about<const K: usize>(
         sum
     };
     // A ring turns from wholly visible (or wholly hidden) to cut where |μ a_z| = s t_z, that
-    // is at μ = ±t_z (a_z² + t_z² = 1): the φ-integral has a square-root kink there.
-    let lowest = cos_sigma.clamp(-1.0, 1.0);
-    let mut cuts = vec![lowest];
-    let focus_mu = focus.map(|f| f.dot(axis));
+    // is at μ = ±t_z, ν = 1 ∓ t_z (a_z² + t_z² = 1): the φ-integral has a square-root kink
+    // there.
+    let widest = 1.0 - cos_sigma.clamp(-1.0, 1.0);
+    let mut cuts = vec![0.0, widest];
+    let focus_nu = focus.map(|f| 1.0 - f.dot(axis));
     cuts.extend(
-        [Some(-t.z), Some(t.z), focus_mu]
+        [Some(1.0 + t.z), Some(1.0 - t.z), focus_nu]
             .into_iter()
             .flatten()
-            .filter(|&k| k > lowest && k < 1.0),
+            .filter(|&k| k > 0.0 && k < widest),
     );
-    cuts.push(1.0);
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
     let mut total = [0.0; K];
     for piece in cuts.windows(2) {
-        for (mu, w) in crowded(&rule, piece[0], piece[1]) {
-            for (acc, v) in total.iter_mut().zip(ring(mu)) {
+        for (nu, w) in crowded(rule, piece[0], piece[1]) {
+            for (acc, v) in total.iter_mut().zip(ring(nu)) {
                 *acc += w * v;
             }
         }
@@ -152,7 +166,7 @@ fn ring_frame(axis: DVec3) -> (DVec3, DVec3) {
 
 /// The half-width `φmax ∈ (0, π]` of the azimuths where `c + k cos φ > 0` (`k ≥ 0`: a
 /// ring's height above the surface), `None` where there are none.
-fn visible_half_azimuth(c: f64, k: f64) -> Option<f64> {
+pub fn visible_half_azimuth(c: f64, k: f64) -> Option<f64> {
     if c >= k {
         return Some(std::f64::consts::PI);
     }

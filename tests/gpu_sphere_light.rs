@@ -1,5 +1,6 @@
 //! Lights with a size on the GPU (shaders/sphere_light.wgsl) against the f64 CPU methods
-//! (src/sphere_light.rs), measured directly on random spheres: cut by the horizon, below it,
+//! (src/sphere_light.rs) — the exact integral with the GPU's rule, the LTC disk and the
+//! representative point — measured directly on random spheres: cut by the horizon, below it,
 //! enclosing the point, from a tenth of a degree to 60°.
 
 mod gpu_common;
@@ -13,7 +14,9 @@ use ltc_lab::ltc::sphere::Cap;
 use ltc_lab::ltc::{Clipping, Ltc, LtcPair, Normalization};
 use ltc_lab::parity::RADIANCE_TOLERANCE;
 use ltc_lab::scene::SplitMix64;
-use ltc_lab::sphere_light::{SphereShading, sphere_ltc_disk, sphere_representative_point};
+use ltc_lab::sphere_light::{
+    GPU_EXACT_NODES, SphereShading, sphere_exact, sphere_ltc_disk, sphere_representative_point,
+};
 
 const PROBE: &str = "
 @group(0) @binding(0) var<storage, read> probe_in: array<vec4<f32>>;
@@ -38,7 +41,8 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let s = SphereShading(a.xyz, b.xyz, 1.0, -1.0, a.w, b.w, c.x, CLIP_HORIZON | CLIP_TRANSFORMED,
         NORMALIZATION_CORRECTED);
     let cap = cap_of_sphere(s.u, s.radius);
-    probe_out[i] = vec4<f32>(sphere_ltc_disk(s, pair, cap), sphere_representative_point(s, cap));
+    probe_out[2u * i] = vec4<f32>(sphere_ltc_disk(s, pair, cap), sphere_representative_point(s, cap));
+    probe_out[2u * i + 1u] = vec4<f32>(sphere_exact(s, cap), 0.0, 0.0);
 }
 ";
 
@@ -119,8 +123,8 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
     let mut rng = SplitMix64(32);
     let cases: Vec<Case> = (0..4096).map(|_| draw(&mut rng, lut)).collect();
     let input: Vec<[f32; 4]> = cases.iter().flat_map(pack).collect();
-    let got = probe(PROBE, &input, cases.len());
-    let want: Vec<[f64; 4]> = cases
+    let got = probe(PROBE, &input, 2 * cases.len());
+    let want: Vec<[f64; 6]> = cases
         .iter()
         .map(|c| {
             let s = SphereShading {
@@ -140,7 +144,15 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
                 sphere_ltc_disk(&s, &cap),
                 sphere_representative_point(&s, &cap),
             );
-            [disk.specular, disk.diffuse, rep.specular, rep.diffuse]
+            let exact = sphere_exact(&s, &cap, GPU_EXACT_NODES);
+            [
+                disk.specular,
+                disk.diffuse,
+                rep.specular,
+                rep.diffuse,
+                exact.specular,
+                exact.diffuse,
+            ]
         })
         .collect();
     let names = [
@@ -148,7 +160,13 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
         "ltc-disk diffuse",
         "representative specular",
         "representative diffuse",
+        "exact specular",
+        "exact diffuse",
     ];
+    let got: Vec<[f32; 6]> = got
+        .chunks(2)
+        .map(|p| [p[0][0], p[0][1], p[0][2], p[0][3], p[1][0], p[1][1]])
+        .collect();
     for (k, name) in names.iter().enumerate() {
         // §4.2's floor: 1% of the column's mean, so that a near-black case is judged on the
         // scale of the light it is part of.
@@ -164,18 +182,27 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
             } else {
                 &c.pair.diff
             };
-            // The render's parity tolerance (`parity::RADIANCE_TOLERANCE`), plus what f32
-            // does to a cap: a direction rounded by ε moves a cap's cut by ε/sin σ of its
-            // width, and M⁻¹ stretches it by up to its condition number κ (bounded here by
-            // ‖M⁻¹‖·‖M‖ in Frobenius norms). The chain has some sixteen roundings (B, its
-            // adjugate, Q's two products, the root, the null vector, the clipped integral);
-            // 64 is four times that. Lavapipe needs 15.
             let sin_sigma = (c.radius / c.u.length()).min(1.0);
-            let bound =
-                RADIANCE_TOLERANCE + 64.0 * condition(lobe) * f64::from(f32::EPSILON) / sin_sigma;
+            // The render's parity tolerance (`parity::RADIANCE_TOLERANCE`), plus what f32
+            // rounding is amplified by here. For a cap: a direction rounded by ε moves its cut
+            // by ε/sin σ of its width, and the LTC disk's M⁻¹ stretches directions by up to
+            // its condition number κ (bounded by ‖M⁻¹‖·‖M‖ in Frobenius norms). For the
+            // representative point's specular lobe, evaluated at one direction: at the peak,
+            // D's denominator is α² + (1 − n·h)(1 + n·h), and n·h carries a rounding of a few
+            // ε, so 1/α². Each chain has some sixteen roundings (B, its adjugate, Q's
+            // products, the root, the null vector, the clipped integral; or the half vector
+            // and D, G, F); 64 is four times that. Lavapipe needs 15 of the cap's factor.
+            let amplification = match k {
+                0 | 1 => condition(lobe) / sin_sigma,
+                2 => 1.0 / (c.alpha * c.alpha),
+                _ => 1.0 / sin_sigma,
+            };
+            let bound = RADIANCE_TOLERANCE + 64.0 * f64::from(f32::EPSILON) * amplification;
             assert!(
                 err <= bound,
-                "{name} case {i}: gpu {g} cpu {} ({err:.2e} > {bound:.2e})",
+                "{name} case {i} (α {}, σ {:.1}°): gpu {g} cpu {} ({err:.2e} > {bound:.2e})",
+                c.alpha,
+                sin_sigma.asin().to_degrees(),
                 w[k]
             );
             if err > worst.0 {

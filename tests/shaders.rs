@@ -192,8 +192,10 @@ fn sphere_light_functions_have_the_rust_names() {
         sphere::{Cap, illuminance_sphere},
     };
     #[allow(unused_imports)]
+    use ltc_lab::quadrature::visible_half_azimuth;
+    #[allow(unused_imports)]
     use ltc_lab::sphere_light::{
-        fd_toward, sphere_ltc_disk, sphere_radiance, sphere_representative_point,
+        fd_toward, sphere_exact, sphere_ltc_disk, sphere_radiance, sphere_representative_point,
     };
     let _ = (
         Cap::of_sphere,
@@ -214,6 +216,8 @@ fn sphere_light_functions_have_the_rust_names() {
         "sphere_ltc_disk",
         "sphere_representative_point",
         "fd_toward",
+        "sphere_exact",
+        "visible_half_azimuth",
     ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
     }
