@@ -1,6 +1,7 @@
 // Lights with a size (docs/design.md §1.10), mirroring src/ltc/sphere.rs (Cap and the
-// illuminance of a cap), src/ltc/disk.rs and src/sphere_light.rs by name. Composed after brdf.wgsl and
-// ltc.wgsl (uses PI, Ltc, LtcPair, ltc_eval's constants and the BRDF terms).
+// illuminance of a cap), src/ltc/disk.rs, src/quadrature.rs and src/sphere_light.rs by name.
+// Composed after brdf.wgsl and ltc.wgsl (uses PI, Ltc, LtcPair, ltc_eval's constants and the
+// BRDF terms).
 
 // Cap: the directions a sphere covers seen from the shading point; cos_sigma = −1 where the
 // point is inside the sphere (every direction sees it).
@@ -135,7 +136,8 @@ fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
 // M⁻¹ is first scaled to entries of at most 1 (the cone does not see its scale).
 fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
     let m_inv = ltc.cos_from_brdf;
-    let big = max(max(max(abs(m_inv[0].x), abs(m_inv[0].z)), max(abs(m_inv[2].x), abs(m_inv[2].z))), abs(m_inv[1].y));
+    let corners = max(abs(vec4<f32>(m_inv[0].x, m_inv[0].z, m_inv[2].x, m_inv[2].z)), vec4<f32>(0.0));
+    let big = max(max(max(corners.x, corners.y), max(corners.z, corners.w)), abs(m_inv[1].y));
     let a = cap.axis;
     let frame = orthonormal_pair(a);
     let s = cap.sin_sigma;
@@ -281,8 +283,12 @@ fn fd_toward(v: vec3<f32>, l: vec3<f32>, alpha: f32) -> f32 {
 // The 8-point Gauss–Legendre rule on [−1, 1], as src/quadrature.rs gauss_legendre(8) computes
 // it (nodes and weights of the positive half; the rule is symmetric). tests/gpu_sphere_light.rs
 // checks sphere_exact against the Rust rule with the same nodes.
-const GL8_NODES: array<f32, 4> = array<f32, 4>(0.18343464249564980, 0.52553240991632899, 0.79666647741362684, 0.96028985649753629);
-const GL8_WEIGHTS: array<f32, 4> = array<f32, 4>(0.36268378337836199, 0.31370664587788738, 0.22238103445337445, 0.10122853629037679);
+const GL8_NODES: array<f32, 4> = array<f32, 4>(
+    0.18343464249564980, 0.52553240991632899, 0.79666647741362684, 0.96028985649753629,
+);
+const GL8_WEIGHTS: array<f32, 4> = array<f32, 4>(
+    0.36268378337836199, 0.31370664587788738, 0.22238103445337445, 0.10122853629037679,
+);
 
 // The rule's i-th node (0…7) and weight.
 fn gl8(i: u32) -> vec2<f32> {
@@ -298,7 +304,8 @@ fn gl8_crowded(i: u32, lo: f32, hi: f32) -> vec2<f32> {
     let r = gl8(i);
     let mid = 0.5 * (lo + hi);
     let half = 0.5 * (hi - lo);
-    return vec2<f32>(mid + half * 0.5 * r.x * (3.0 - r.x * r.x), r.y * half * 1.5 * (1.0 - r.x * r.x));
+    let x = r.x;
+    return vec2<f32>(mid + half * 0.5 * x * (3.0 - x * x), r.y * half * 1.5 * (1.0 - x * x));
 }
 
 // sin and cos of φ in [−π, π] within a few ulps (WGSL allows 2⁻¹¹ absolute, which would move a
@@ -309,7 +316,8 @@ fn sincos_precise(phi: f32) -> vec2<f32> {
     let r = (phi - k * 1.5707963705062866) + k * 4.371139e-8;
     let z = r * r;
     let s = r * (1.0 + z * (-1.0 / 6.0 + z * (1.0 / 120.0 + z * (-1.0 / 5040.0 + z / 362880.0))));
-    let c = 1.0 + z * (-0.5 + z * (1.0 / 24.0 + z * (-1.0 / 720.0 + z * (1.0 / 40320.0 - z / 3628800.0))));
+    let c = 1.0
+        + z * (-0.5 + z * (1.0 / 24.0 + z * (-1.0 / 720.0 + z * (1.0 / 40320.0 - z / 3628800.0))));
     // k is in −2…2; the remainder of a negative integer is undefined in GLSL, so it is taken
     // of k + 4.
     let q = u32(k + 4.0) % 4u;
@@ -339,7 +347,14 @@ fn visible_half_azimuth(c: f32, k: f32) -> f32 {
 
 // Both lobes integrated over one ring of the cap at ν = 1 − μ (src/quadrature.rs
 // cap_integral_by's ring), the ring split at the mirror direction's azimuth where it holds it.
-fn exact_ring(s: SphereShading, axis: vec3<f32>, t: vec3<f32>, b: vec3<f32>, nu: f32, focus_phi: f32) -> vec2<f32> {
+fn exact_ring(
+    s: SphereShading,
+    axis: vec3<f32>,
+    t: vec3<f32>,
+    b: vec3<f32>,
+    nu: f32,
+    focus_phi: f32,
+) -> vec2<f32> {
     let mu = 1.0 - nu;
     let sin_theta = sqrt(max(nu * (2.0 - nu), 0.0));
     let half = visible_half_azimuth(mu * axis.z, sin_theta * t.z);

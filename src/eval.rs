@@ -24,7 +24,10 @@ pub const SPHERE_HEADER: &str = "theta_o,alpha,lx,ly,lz,f0,sigma";
 
 /// The columns `evaluate` adds for a sphere: both lobes by each method of
 /// `sphere_light::SphereMethod::ALL`, in its order.
-pub const SPHERE_OUTPUT_COLUMNS: &str = "exact_spec,exact_diffuse,ltc_point_spec,ltc_point_diffuse,ltc_disk_spec,ltc_disk_diffuse,representative_point_spec,representative_point_diffuse";
+pub const SPHERE_OUTPUT_COLUMNS: &str = concat!(
+    "exact_spec,exact_diffuse,ltc_point_spec,ltc_point_diffuse,",
+    "ltc_disk_spec,ltc_disk_diffuse,representative_point_spec,representative_point_diffuse"
+);
 
 /// The output's header for input whose rows are spheres or not.
 pub fn output_header(spheres: bool) -> String {

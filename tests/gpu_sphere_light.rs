@@ -41,7 +41,8 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let s = SphereShading(a.xyz, b.xyz, 1.0, -1.0, a.w, b.w, c.x, CLIP_HORIZON | CLIP_TRANSFORMED,
         NORMALIZATION_CORRECTED);
     let cap = cap_of_sphere(s.u, s.radius);
-    probe_out[2u * i] = vec4<f32>(sphere_ltc_disk(s, pair, cap), sphere_representative_point(s, cap));
+    let disk = sphere_ltc_disk(s, pair, cap);
+    probe_out[2u * i] = vec4<f32>(disk, sphere_representative_point(s, cap));
     probe_out[2u * i + 1u] = vec4<f32>(sphere_exact(s, cap), 0.0, 0.0);
 }
 ";
