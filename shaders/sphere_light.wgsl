@@ -136,7 +136,7 @@ fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
 // M⁻¹ is first scaled to entries of at most 1 (the cone does not see its scale).
 fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
     let m_inv = ltc.cos_from_brdf;
-    let corners = max(abs(vec4<f32>(m_inv[0].x, m_inv[0].z, m_inv[2].x, m_inv[2].z)), vec4<f32>(0.0));
+    let corners = abs(vec4<f32>(m_inv[0].x, m_inv[0].z, m_inv[2].x, m_inv[2].z));
     let big = max(max(max(corners.x, corners.y), max(corners.z, corners.w)), abs(m_inv[1].y));
     let a = cap.axis;
     let frame = orthonormal_pair(a);
@@ -149,22 +149,28 @@ fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
     let e3 = negative_eigenvalue(q, det);
     let trace = q[0][0] + q[1][1] + q[2][2];
     let spread = det / e3 - e3 * (trace - e3) + e3 * e3;
-    let r = transpose(q - mat3x3<f32>(e3, 0.0, 0.0, 0.0, e3, 0.0, 0.0, 0.0, e3));
-    let c01 = cross(r[0], r[1]);
-    let c02 = cross(r[0], r[2]);
-    let c12 = cross(r[1], r[2]);
-    var axis = c01;
-    if dot(c02, c02) > dot(axis, axis) {
-        axis = c02;
-    }
-    if dot(c12, c12) > dot(axis, axis) {
-        axis = c12;
-    }
-    axis = normalize(axis);
+    var axis = null_vector(q - mat3x3<f32>(e3, 0.0, 0.0, 0.0, e3, 0.0, 0.0, 0.0, e3));
     if dot(axis, m_inv * a) < 0.0 {
         axis = -axis;
     }
     return vec4<f32>(axis, -e3 / sqrt(spread));
+}
+
+// null_vector: a unit vector in the null space of a rank-2 symmetric matrix, the longest cross
+// product of two of its rows (src/ltc/disk.rs).
+fn null_vector(m: mat3x3<f32>) -> vec3<f32> {
+    let r = transpose(m);
+    let c01 = cross(r[0], r[1]);
+    let c02 = cross(r[0], r[2]);
+    let c12 = cross(r[1], r[2]);
+    var v = c01;
+    if dot(c02, c02) > dot(v, v) {
+        v = c02;
+    }
+    if dot(c12, c12) > dot(v, v) {
+        v = c12;
+    }
+    return normalize(v);
 }
 
 // Two unit vectors completing unit n to an orthonormal frame (Duff et al. 2017, "Building an
@@ -183,17 +189,20 @@ fn orthonormal_pair(n: vec3<f32>) -> mat2x3<f32> {
 // vector form factor; the hemisphere about Mᵀz inside the sphere or where the cone is
 // degenerate.
 fn ltc_disk(ltc: Ltc, cap: Cap, case2: bool, normalization: u32) -> f32 {
-    // The hemisphere about p maps to the one about Mᵀp; adj(M⁻¹) = det(M⁻¹) M, and the sign of
-    // the determinant restores Mᵀp's direction. The upper hemisphere inside the sphere, the
-    // one about the axis where the cone opened too far for its algebra.
-    let m_t = transpose(adjugate(ltc.cos_from_brdf)) * sign(determinant(ltc.cos_from_brdf));
-    var cone = vec4<f32>(normalize(m_t[2]), 1.0);
+    // The hemisphere about p maps to the one about Mᵀp, of form factor 1: the upper hemisphere
+    // inside the sphere, the one about the axis where the cone opened too far for its algebra.
+    var cone = vec4<f32>(0.0);
+    var pole = vec3<f32>(0.0, 0.0, 1.0);
+    var ok = false;
     if !cap_encloses(cap) {
         cone = transformed_cone(ltc, cap);
-        let ok = all(abs(cone) < vec4<f32>(3.4e38)) && cone.w == cone.w;
-        if !ok {
-            cone = vec4<f32>(normalize(m_t * cap.axis), 1.0);
-        }
+        pole = cap.axis;
+        ok = all(abs(cone) < vec4<f32>(3.4e38)) && cone.w == cone.w;
+    }
+    if !ok {
+        // adj(M⁻¹) = det(M⁻¹) M: the sign of the determinant restores Mᵀp's direction.
+        let m_t = transpose(adjugate(ltc.cos_from_brdf)) * sign(determinant(ltc.cos_from_brdf));
+        cone = vec4<f32>(normalize(m_t * pole), 1.0);
     }
     var integral = cone.w * cone.z;
     if case2 {
@@ -247,7 +256,7 @@ fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
 fn sphere_representative_point(s: SphereShading, cap: Cap) -> vec2<f32> {
     let d = length(s.u);
     let w = window_falloff_d2(d * d, s.range);
-    let reflected = vec3<f32>(-s.v.x, -s.v.y, s.v.z);
+    let reflected = mirror(s.v);
     let centre_to_ray = reflected * dot(s.u, reflected) - s.u;
     let reach = length(centre_to_ray);
     var closest = s.u + centre_to_ray;
@@ -268,6 +277,11 @@ fn sphere_representative_point(s: SphereShading, cap: Cap) -> vec2<f32> {
     let diffuse = fd_toward(s.v, cap.axis, s.alpha) * sphere_radiance(s.intensity, s.radius)
         * cap_illuminance(cap);
     return vec2<f32>(w * s.intensity / (dr * dr) * energy * specular, w * diffuse);
+}
+
+// mirror: the mirror direction of v about the normal, where a glossy lobe peaks.
+fn mirror(v: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(-v.x, -v.y, v.z);
 }
 
 // fd_toward: Burley's diffuse toward a direction that may lie below the horizon (n·l at 0).
@@ -298,9 +312,9 @@ fn gl8(i: u32) -> vec2<f32> {
     return vec2<f32>(GL8_NODES[i - 4u], GL8_WEIGHTS[i - 4u]);
 }
 
-// Node i of the rule on [lo, hi], crowded to both ends by x ↦ x(3 − x²)/2 (src/quadrature.rs
-// crowded): the point and its weight.
-fn gl8_crowded(i: u32, lo: f32, hi: f32) -> vec2<f32> {
+// crowded: node i of the rule on [lo, hi], crowded to both ends by x ↦ x(3 − x²)/2
+// (src/quadrature.rs): the point and its weight.
+fn crowded(i: u32, lo: f32, hi: f32) -> vec2<f32> {
     let r = gl8(i);
     let mid = 0.5 * (lo + hi);
     let half = 0.5 * (hi - lo);
@@ -346,7 +360,7 @@ fn visible_half_azimuth(c: f32, k: f32) -> f32 {
 }
 
 // Both lobes integrated over one ring of the cap at ν = 1 − μ (src/quadrature.rs
-// cap_integral_by's ring), the ring split at the mirror direction's azimuth where it holds it.
+// cap_integral_about's ring), the ring split at the mirror direction's azimuth where it holds it.
 fn exact_ring(
     s: SphereShading,
     axis: vec3<f32>,
@@ -369,11 +383,11 @@ fn exact_ring(
     }
     for (var p = 0u; p < pieces; p++) {
         for (var i = 0u; i < 8u; i++) {
-            var node = vec2<f32>(half * gl8(i).x, half * gl8(i).y);
+            var node = half * gl8(i);
             if split {
                 let lo = select(focus_phi, -half, p == 0u);
                 let hi = select(half, focus_phi, p == 0u);
-                node = gl8_crowded(i, lo, hi);
+                node = crowded(i, lo, hi);
             }
             let sc = sincos_precise(node.x);
             let l = axis * mu + (t * sc.y + b * sc.x) * sin_theta;
@@ -386,6 +400,17 @@ fn exact_ring(
     return sum;
 }
 
+// ring_frame: t in the plane of the axis and +z with t.z ≥ 0 (+x where the axis is ±z), and
+// b = axis × t (src/quadrature.rs).
+fn ring_frame(axis: vec3<f32>) -> mat2x3<f32> {
+    var t = vec3<f32>(1.0, 0.0, 0.0);
+    let up = vec3<f32>(0.0, 0.0, 1.0) - axis * axis.z;
+    if dot(up, up) > 0.0 {
+        t = normalize(up);
+    }
+    return mat2x3<f32>(t, cross(axis, t));
+}
+
 // sphere_exact: w(d) · L · ∫ f cos dω over the cap's directions above the surface, by the
 // rule of src/quadrature.rs with 8 nodes per dimension and piece (src/sphere_light.rs
 // GPU_EXACT_NODES): rings placed by ν = 1 − μ (f32 keeps a small cap's rings apart that way),
@@ -393,14 +418,11 @@ fn exact_ring(
 // piece's nodes crowded to its ends.
 fn sphere_exact(s: SphereShading, cap: Cap) -> vec2<f32> {
     let axis = cap.axis;
-    var t = vec3<f32>(1.0, 0.0, 0.0);
-    let up = vec3<f32>(0.0, 0.0, 1.0) - axis * axis.z;
-    if dot(up, up) > 0.0 {
-        t = normalize(up);
-    }
-    let b = cross(axis, t);
-    let mirror = vec3<f32>(-s.v.x, -s.v.y, s.v.z);
-    let focus_phi = atan2(dot(mirror, b), dot(mirror, t));
+    let frame = ring_frame(axis);
+    let t = frame[0];
+    let b = frame[1];
+    let peak = mirror(s.v);
+    let focus_phi = atan2(dot(peak, b), dot(peak, t));
     // 1 − cos σ = sin²σ/(1 + cos σ), without the cancellation; 2 for the whole sphere.
     var widest = 2.0;
     if !cap_encloses(cap) {
@@ -409,7 +431,7 @@ fn sphere_exact(s: SphereShading, cap: Cap) -> vec2<f32> {
     // The cuts, sorted: the pole, 1 ∓ t_z and the mirror's ν where inside, the rim.
     var cuts = array<f32, 5>(0.0, 3.0, 3.0, 3.0, 3.0);
     var count = 1u;
-    let inner = array<f32, 3>(1.0 + t.z, 1.0 - t.z, 1.0 - dot(mirror, axis));
+    let inner = array<f32, 3>(1.0 + t.z, 1.0 - t.z, 1.0 - dot(peak, axis));
     for (var j = 0u; j < 3u; j++) {
         let k = inner[j];
         if k > 0.0 && k < widest {
@@ -431,7 +453,7 @@ fn sphere_exact(s: SphereShading, cap: Cap) -> vec2<f32> {
     for (var p = 0u; p < count; p++) {
         if cuts[p + 1u] > cuts[p] {
             for (var i = 0u; i < 8u; i++) {
-                let node = gl8_crowded(i, cuts[p], cuts[p + 1u]);
+                let node = crowded(i, cuts[p], cuts[p + 1u]);
                 sum += node.y * exact_ring(s, axis, t, b, node.x, focus_phi);
             }
         }

@@ -23,16 +23,20 @@ pub const OUTPUT_COLUMNS: &str = "brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse";
 pub const SPHERE_HEADER: &str = "theta_o,alpha,lx,ly,lz,f0,sigma";
 
 /// The columns `evaluate` adds for a sphere: both lobes by each method of
-/// `sphere_light::SphereMethod::ALL`, in its order.
-pub const SPHERE_OUTPUT_COLUMNS: &str = concat!(
-    "exact_spec,exact_diffuse,ltc_point_spec,ltc_point_diffuse,",
-    "ltc_disk_spec,ltc_disk_diffuse,representative_point_spec,representative_point_diffuse"
-);
+/// `SphereMethod::ALL`, in its order, named after it (`exact_spec,exact_diffuse,ltc_point_spec,…`).
+pub fn sphere_output_columns() -> String {
+    SphereMethod::ALL
+        .map(|m| {
+            let name = m.name().replace('-', "_");
+            format!("{name}_spec,{name}_diffuse")
+        })
+        .join(",")
+}
 
 /// The output's header for input whose rows are spheres or not.
 pub fn output_header(spheres: bool) -> String {
     match spheres {
-        true => format!("{SPHERE_HEADER},{SPHERE_OUTPUT_COLUMNS}"),
+        true => format!("{SPHERE_HEADER},{}", sphere_output_columns()),
         false => format!("{HEADER},{OUTPUT_COLUMNS}"),
     }
 }
@@ -192,18 +196,7 @@ pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
 /// columns' unit-irradiance light), both lobes by each method with both clipping rules.
 fn evaluate_sphere(c: &Case, lut: &Lut, v: DVec3, sigma_degrees: f64) -> String {
     let pair = lut.ltc_pair(c.alpha, v);
-    let s = SphereShading {
-        v,
-        u: c.l,
-        intensity: 1.0,
-        range: f64::INFINITY,
-        radius: sigma_degrees.to_radians().sin(),
-        alpha: c.alpha,
-        f0: c.f0,
-        ltc: &pair,
-        clip: crate::ltc::Clipping::BOTH,
-        normalization: crate::ltc::Normalization::Corrected,
-    };
+    let s = SphereShading::unit(v, c.l, sigma_degrees, c.alpha, c.f0, &pair);
     let mut row = c.text.clone();
     for method in SphereMethod::ALL {
         let lobes = sphere_light(method, &s);

@@ -67,17 +67,8 @@ pub fn cap_integral_about<const K: usize>(
     focus: Option<DVec3>,
     g: impl Fn(DVec3) -> [f64; K],
 ) -> [f64; K] {
-    cap_integral_by(&gauss_legendre(n), axis, cos_sigma, focus, g)
-}
-
-/// The cap integral with a rule of nodes and weights on `[-1, 1]`.
-fn cap_integral_by<const K: usize>(
-    rule: &[(f64, f64)],
-    axis: DVec3,
-    cos_sigma: f64,
-    focus: Option<DVec3>,
-    g: impl Fn(DVec3) -> [f64; K],
-) -> [f64; K] {
+    let rule = gauss_legendre(n);
+    let rule = rule.as_slice();
     // A frame whose `t` lies in the plane of the axis and the normal, so that a ring's height
     // is `μ a_z + sin θ cos φ t_z` with `t_z ≥ 0`: its part above the horizon is one interval
     // of φ about 0.

@@ -10,7 +10,6 @@ use crate::brdf::{Lobes, view_from_theta};
 use crate::horizon::{BANDS, F0, draw};
 use crate::ltc::lut::{Lut, THETA_MAX};
 use crate::ltc::sphere::Cap;
-use crate::ltc::{Clipping, Normalization};
 use crate::scene::SplitMix64;
 use crate::sphere_light::{SphereMethod, SphereShading, sphere_exact, sphere_light};
 
@@ -95,18 +94,7 @@ pub fn one_sphere(
 ) -> (Lobes<f64>, [Lobes<f64>; 3]) {
     let v = DVec3::from(view_from_theta(theta_o.to_radians().min(THETA_MAX)));
     let pair = lut.ltc_pair(alpha, v);
-    let s = SphereShading {
-        v,
-        u: l,
-        intensity: 1.0,
-        range: f64::INFINITY,
-        radius: radius_deg.to_radians().sin(),
-        alpha,
-        f0: F0,
-        ltc: &pair,
-        clip: Clipping::BOTH,
-        normalization: Normalization::Corrected,
-    };
+    let s = SphereShading::unit(v, l, radius_deg, alpha, F0, &pair);
     let want = match Cap::of_sphere(s.u, s.radius) {
         Some(cap) => sphere_exact(&s, &cap, nodes),
         None => sphere_light(SphereMethod::Exact, &s),

@@ -74,6 +74,32 @@ pub struct SphereShading<'a> {
 /// (tests/sphere_light.rs compares it with 128 nodes).
 pub const EXACT_NODES: usize = 64;
 
+/// Gauss–Legendre nodes per dimension and piece of the GPU's exact method
+/// (`shaders/sphere_light.wgsl` `sphere_exact`, the same rule): within 2% of `EXACT_NODES`'s
+/// specular lobe for α ≥ 0.2 and 1e-3 of its diffuse lobe (tests/sphere_light.rs), at up to
+/// 512 BRDF evaluations per light where 64 nodes would take 32 768.
+pub const GPU_EXACT_NODES: usize = 8;
+
+impl<'a> SphereShading<'a> {
+    /// A sphere of unit intensity at unit distance toward unit `l`, with angular radius
+    /// `sigma_deg`, no window and eq. 30's corrected rules: the case `eval` and
+    /// `sphere_error` measure, whose σ = 0 is a unit-irradiance point light.
+    pub fn unit(v: DVec3, l: DVec3, sigma_deg: f64, alpha: f64, f0: f64, ltc: &'a LtcPair) -> Self {
+        Self {
+            v,
+            u: l,
+            intensity: 1.0,
+            range: f64::INFINITY,
+            radius: sigma_deg.to_radians().sin(),
+            alpha,
+            f0,
+            ltc,
+            clip: Clipping::BOTH,
+            normalization: Normalization::Corrected,
+        }
+    }
+}
+
 /// The radiance toward `v`, per lobe (base colour 1): `specular + c · diffuse`.
 pub fn sphere_light(method: SphereMethod, s: &SphereShading<'_>) -> Lobes<f64> {
     let Some(cap) = Cap::of_sphere(s.u, s.radius) else {
@@ -111,10 +137,9 @@ fn window(s: &SphereShading<'_>) -> f64 {
 /// with `nodes` Gauss–Legendre nodes per dimension.
 pub fn sphere_exact(s: &SphereShading<'_>, cap: &Cap, nodes: usize) -> Lobes<f64> {
     let scale = window(s) * sphere_radiance(s.intensity, s.radius);
-    let cos_sigma = if cap.encloses() { -1.0 } else { cap.cos_sigma };
     // The specular lobe peaks about the mirror direction: the rule crowds its nodes there.
-    let mirror = DVec3::new(-s.v.x, -s.v.y, s.v.z);
-    let [specular, diffuse] = cap_integral_about(cap.axis, cos_sigma, nodes, Some(mirror), |l| {
+    let focus = Some(mirror(s.v));
+    let [specular, diffuse] = cap_integral_about(cap.axis, cap.cos_sigma, nodes, focus, |l| {
         let lobes = brdf::brdf_cos(s.v.to_array(), l.to_array(), s.alpha, s.f0);
         [lobes.specular, lobes.diffuse]
     });
@@ -123,12 +148,6 @@ pub fn sphere_exact(s: &SphereShading<'_>, cap: &Cap, nodes: usize) -> Lobes<f64
         diffuse: scale * diffuse,
     }
 }
-
-/// Gauss–Legendre nodes per dimension and piece of the GPU's exact method
-/// (`shaders/sphere_light.wgsl` `sphere_exact`, the same rule): within 2% of `EXACT_NODES`'s
-/// specular lobe for α ≥ 0.2 and 1e-3 of its diffuse lobe (tests/sphere_light.rs), at up to
-/// 512 BRDF evaluations per light where 64 nodes would take 32 768.
-pub const GPU_EXACT_NODES: usize = 8;
 
 /// The paper's point formula with the sphere's centre as the light (eq. 30 corrected).
 pub fn sphere_ltc_point(s: &SphereShading<'_>) -> Lobes<f64> {
@@ -172,7 +191,7 @@ pub fn sphere_ltc_disk(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
 pub fn sphere_representative_point(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
     let d = s.u.length();
     let w = window(s);
-    let reflected = DVec3::new(-s.v.x, -s.v.y, s.v.z);
+    let reflected = mirror(s.v);
     let centre_to_ray = reflected * s.u.dot(reflected) - s.u;
     let reach = centre_to_ray.length();
     let closest = if reach > s.radius {
@@ -192,6 +211,11 @@ pub fn sphere_representative_point(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f6
         specular: w * s.intensity / d2 * energy * specular,
         diffuse: w * diffuse,
     }
+}
+
+/// The mirror direction of `v` about the normal `+z`: where a glossy lobe peaks.
+pub fn mirror(v: DVec3) -> DVec3 {
+    DVec3::new(-v.x, -v.y, v.z)
 }
 
 /// Burley's diffuse BRDF (base colour 1) toward a light direction that may lie below the

@@ -195,7 +195,8 @@ fn sphere_light_functions_have_the_rust_names() {
     use ltc_lab::quadrature::visible_half_azimuth;
     #[allow(unused_imports)]
     use ltc_lab::sphere_light::{
-        fd_toward, sphere_exact, sphere_ltc_disk, sphere_radiance, sphere_representative_point,
+        fd_toward, mirror, sphere_exact, sphere_ltc_disk, sphere_radiance,
+        sphere_representative_point,
     };
     let _ = (
         Cap::of_sphere,
@@ -218,6 +219,7 @@ fn sphere_light_functions_have_the_rust_names() {
         "fd_toward",
         "sphere_exact",
         "visible_half_azimuth",
+        "mirror",
     ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
     }
