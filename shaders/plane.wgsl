@@ -2,7 +2,7 @@
 // tile, lights read in workgroup-shared loads of 256 (docs/design.md §4). A render is summed in chunks
 // of each pixel's light list (all lights, or the tile's list when culling), the sums kept per
 // pixel between chunks, so that the lab can spread a render over frames; `resolve` turns the
-// sums into the image. Composed after brdf.wgsl, ltc.wgsl and scene.wgsl. The CPU reference is
+// sums into the image. Composed after brdf.wgsl, ltc.wgsl, sphere_light.wgsl and scene.wgsl. The CPU reference is
 // src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
 
 // Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
@@ -12,6 +12,13 @@ const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻�
 const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnormalized u, eq. 27
 const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
 const METHOD_LTC_F16_PAIRS: u32 = 5u; // the same, two lights per vec2<f16> (ltc_f16.wgsl)
+
+// How a side shades a light with a size (src/sphere_light.rs SphereMethod; src/gpu/plane.rs
+// sphere_constant).
+const SPHERE_EXACT: u32 = 0u;                // the BRDF over the cap (sphere_light.wgsl)
+const SPHERE_LTC_POINT: u32 = 1u;            // the paper's point formula at the centre
+const SPHERE_LTC_DISK: u32 = 2u;             // Heitz & Hill 2017's LTC disk
+const SPHERE_REPRESENTATIVE_POINT: u32 = 3u; // Karis 2013
 
 // What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
@@ -27,6 +34,12 @@ override VIEW: u32 = VIEW_SINGLE;
 override TABLE_B: bool = false;
 // What the LTC methods do for lights near the horizon (HORIZON_* of ltc.wgsl).
 override HORIZON: u32 = HORIZON_EQ30;
+// Some light has a size: without one, the light loop has no test of the radius at all.
+override SIZED: bool = false;
+// How A and B shade the lights with a size: constants too, so that a pipeline holds only the
+// sphere methods it uses (the exact one's loops would weigh on every other's registers).
+override SPHERE_A: u32 = SPHERE_LTC_DISK;
+override SPHERE_B: u32 = SPHERE_EXACT;
 
 @group(0) @binding(3) var output: texture_storage_2d<rgba32float, write>;
 // Per pixel, the sums so far, kept between chunks: A's specular rgb and diffuse r; A's diffuse
@@ -243,7 +256,61 @@ fn add_brdf_factored(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: G
     (*s).diff += exact.diff / ltc.diff_factor;
 }
 
-fn add_light(method: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {
+// Whether a method sums ltc-fast's factored terms, which `finish` multiplies by the pixel's factors.
+fn is_factored(method: u32) -> bool {
+    return method == METHOD_LTC_FAST || method == METHOD_LTC_F16 || method == METHOD_LTC_F16_PAIRS;
+}
+
+// A light with a size by the side's sphere method (src/cpu.rs sphere_term), in the shading
+// frame; into factored sums divided by the factors, as add_brdf_factored does.
+fn add_sphere(
+    method: u32,
+    sphere: u32,
+    s: ptr<function, Sums>,
+    p: Pixel,
+    ltc: LtcShading,
+    light: GpuLight,
+) {
+    let tangent_from_world = transpose(mat3x3<f32>(p.t1, p.t2, vec3<f32>(0.0, 0.0, 1.0)));
+    let shading = SphereShading(
+        tangent_from_world * p.v,
+        tangent_from_world * (light.position_range.xyz - p.x),
+        1.0,
+        light.position_range.w,
+        light.intensity.w,
+        params.alpha,
+        params.f0,
+        params.clip,
+        params.normalization,
+    );
+    let cap = cap_of_sphere(shading.u, shading.radius);
+    var lobes: vec2<f32>;
+    switch sphere {
+        case SPHERE_EXACT: { lobes = sphere_exact(shading, cap); }
+        case SPHERE_LTC_DISK: { lobes = sphere_ltc_disk(shading, ltc.pair, cap); }
+        case SPHERE_REPRESENTATIVE_POINT: { lobes = sphere_representative_point(shading, cap); }
+        default: { lobes = sphere_ltc_point(shading, ltc.pair); }
+    }
+    if is_factored(method) {
+        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
+    }
+    (*s).spec += light.intensity.rgb * lobes.x;
+    (*s).diff += light.intensity.rgb * lobes.y;
+}
+
+// One light by one side: a point by its method, a light with a size by its sphere method.
+fn add_light(
+    method: u32,
+    sphere: u32,
+    s: ptr<function, Sums>,
+    p: Pixel,
+    ltc: LtcShading,
+    light: GpuLight,
+) {
+    if SIZED && light.intensity.w > 0.0 {
+        add_sphere(method, sphere, s, p, ltc, light);
+        return;
+    }
     switch method {
         case METHOD_BRDF: { add_brdf(s, p, light); }
         case METHOD_BRDF_FAST: { add_brdf_fast(s, p, light); }
@@ -267,7 +334,7 @@ fn saturate_finite(x: vec3<f32>) -> vec3<f32> {
 // Radiance from the sums: the ltc-fast forms apply the factors pulled out of their sum here.
 fn finish(method: u32, sums: Sums, ltc: LtcShading) -> vec3<f32> {
     let s = Sums(saturate_finite(sums.spec), saturate_finite(sums.diff));
-    if method == METHOD_LTC_FAST || method == METHOD_LTC_F16 || method == METHOD_LTC_F16_PAIRS {
+    if is_factored(method) {
         return saturate_finite(ltc.spec_factor * s.spec + params.base_color.rgb * (ltc.diff_factor * s.diff));
     }
     return saturate_finite(s.spec + params.base_color.rgb * s.diff);
@@ -377,7 +444,7 @@ fn shade(
         // Seen from below (v.z ≤ 0) the one-sided plane is black, as on the CPU.
         if p.on_plane && p.v.z > 0.0 {
             var j = 0u;
-            if METHOD_A == METHOD_LTC_F16_PAIRS && use_a && !use_b {
+            if METHOD_A == METHOD_LTC_F16_PAIRS && use_a && !use_b && !SIZED {
                 // Every light in a lane of a pair, the last one of an odd load beside a dead
                 // lane: a light's arithmetic never depends on its partner, so culling (which
                 // changes the pairs) gives the unculled image to the bit.
@@ -387,10 +454,10 @@ fn shade(
             }
             for (; j < n; j++) {
                 if use_a {
-                    add_light(METHOD_A, &a, p, p.ltc_a, shared_lights[j]);
+                    add_light(METHOD_A, SPHERE_A, &a, p, p.ltc_a, shared_lights[j]);
                 }
                 if use_b {
-                    add_light(METHOD_B, &b, p, p.ltc_b, shared_lights[j]);
+                    add_light(METHOD_B, SPHERE_B, &b, p, p.ltc_b, shared_lights[j]);
                 }
             }
         }

@@ -35,7 +35,8 @@ struct Params {
     bin_row: u32,          // the first tile row a binning dispatch works on
 }
 
-// Must match src/gpu/scene.rs GpuLight: position and range (≤ 0: infinite), colour × intensity.
+// Must match src/gpu/scene.rs GpuLight: position and range (≤ 0: infinite), colour × intensity
+// and the radius (0: a point light).
 struct GpuLight {
     position_range: vec4<f32>,
     intensity: vec4<f32>,

@@ -233,6 +233,25 @@ struct SphereShading {
     normalization: u32,
 }
 
+// sphere_ltc_point: the paper's point formula at the centre (eq. 30 corrected), both lobes.
+fn sphere_ltc_point(s: SphereShading, pair: LtcPair) -> vec2<f32> {
+    let d = length(s.u);
+    let e = irradiance_scale(s.intensity, d, s.range);
+    if e <= 0.0 {
+        return vec2<f32>(0.0);
+    }
+    var weights = vec2<f32>(1.0);
+    if s.normalization != NORMALIZATION_PAPER_LITERAL {
+        weights = vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
+    }
+    let l = s.u / d;
+    let lobes = vec2<f32>(
+        ltc_eval(pair.spec, l, s.clip, s.normalization),
+        ltc_eval(pair.diff, l, s.clip, s.normalization),
+    );
+    return e * weights * lobes;
+}
+
 // sphere_ltc_disk: both lobes (specular, diffuse) by the LTC disk.
 fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
     if (s.clip & CLIP_HORIZON) != 0u && cap_below_horizon(cap) {

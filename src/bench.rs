@@ -13,6 +13,7 @@ use crate::ltc::lut::Lut;
 use crate::ltc::remedy::Horizon;
 use crate::render::{LtcRules, Method, RenderSettings};
 use crate::scene::{RandomLights, Scene, generate_lights, preset};
+use crate::sphere_light::SphereMethod;
 
 /// The paper's Table 1 (GTX 1060, its resolution unstated): fps at 100, 500, 1000, 5000
 /// lights.
@@ -27,6 +28,10 @@ pub const DEFAULT_RANGE: f64 = crate::scene::PAPER_RANGE;
 #[derive(Clone, Debug, PartialEq)]
 pub struct BenchRow {
     pub method: Method,
+    /// How every light, a sphere of `radius`, was shaded (`None`: as points, by `method`).
+    pub sphere: Option<SphereMethod>,
+    /// The lights' radius (0: points).
+    pub radius: f64,
     /// The horizon remedy the LTC methods shaded with (eq30 for the BRDF forms).
     pub horizon: Horizon,
     pub lights: usize,
@@ -57,11 +62,11 @@ impl BenchRow {
         (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
     }
 
-    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s";
+    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,sphere,radius";
 
     pub fn csv(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3}",
+            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3},{},{}",
             self.method.name(),
             self.horizon.name(),
             self.lights,
@@ -77,8 +82,20 @@ impl BenchRow {
             self.bin_ms_median
                 .map_or(String::new(), |b| format!("{b:.6}")),
             self.fps(),
-            self.glightpx_per_s()
+            self.glightpx_per_s(),
+            self.sphere.map_or("point", SphereMethod::name),
+            self.radius
         )
+    }
+
+    /// The method as the table names it: the sphere method and radius, or the point method
+    /// with its remedy.
+    pub fn label(&self) -> String {
+        match (self.sphere, self.horizon) {
+            (Some(m), _) => format!("{} (r = {})", m.name(), self.radius),
+            (None, Horizon::Eq30) => self.method.name().to_string(),
+            (None, h) => format!("{} ({})", self.method.name(), h.name()),
+        }
     }
 }
 
@@ -111,6 +128,7 @@ pub fn bench_scene_at(lights: usize, range: Option<f64>, height: [f64; 2]) -> Sc
             height,
             intensity: [0.02, 0.08],
             range,
+            radius: 0.0,
         },
         spread,
     );
@@ -187,6 +205,8 @@ pub struct BenchSettings {
     pub range: Option<f64>,
     /// The horizon remedies each LTC method is measured with (the f16 forms: eq30 only).
     pub horizons: Vec<Horizon>,
+    /// Also every light as a sphere of this radius, by each sphere method.
+    pub sphere_radius: Option<f64>,
 }
 
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
@@ -213,6 +233,23 @@ pub fn runs(ctx: &GpuContext, horizons: &[Horizon]) -> Vec<(Method, Horizon)> {
     runs
 }
 
+/// What one timed run shades: a point method with its remedy, and the sphere method of
+/// lights with a size (`None`: points).
+type Run = (Method, Horizon, Option<SphereMethod>);
+
+/// `runs`, then each sphere method where the lights have a size (on ltc-fast's sums, the
+/// form an engine ships; a sized light's cost does not depend on the point method).
+fn all_runs(ctx: &GpuContext, s: &BenchSettings) -> Vec<Run> {
+    let points = runs(ctx, &s.horizons)
+        .into_iter()
+        .map(|(m, h)| (m, h, None));
+    let spheres = s
+        .sphere_radius
+        .iter()
+        .flat_map(|_| SphereMethod::ALL.map(|sm| (Method::LtcFast, Horizon::Eq30, Some(sm))));
+    points.chain(spheres).collect()
+}
+
 /// Measures every method (and remedy) at every light count and culling: `frames` timed
 /// frames after warm-up each.
 pub fn run(
@@ -227,10 +264,15 @@ pub fn run(
     let mut rows = Vec::new();
     let mut kept = None;
     for &lights in &s.lights {
-        let scene = bench_scene(lights, s.range);
-        let fraction = in_range_fraction(&scene, width, height);
+        let points = bench_scene(lights, s.range);
+        let fraction = in_range_fraction(&points, width, height);
+        let mut spheres = points.clone();
+        for l in &mut spheres.lights {
+            l.radius = s.sphere_radius.unwrap_or(0.0);
+        }
         for &cull in &s.culls {
-            for (method, horizon) in runs(ctx, &s.horizons) {
+            for (method, horizon, sphere) in all_runs(ctx, s) {
+                let scene = if sphere.is_some() { &spheres } else { &points };
                 let table = horizon.table().map_or(lut, |t| Lut::shipped(t));
                 renderer.set_tables(ctx, table, None)?;
                 let settings = RenderSettings {
@@ -239,9 +281,10 @@ pub fn run(
                         horizon: horizon.rule(),
                         ..LtcRules::default()
                     },
+                    sphere_a: sphere.unwrap_or(SphereMethod::LtcPoint),
                     ..RenderSettings::single(width, height, method)
                 };
-                let mut render = renderer.begin(ctx, &scene, &settings, kept.take())?;
+                let mut render = renderer.begin(ctx, scene, &settings, kept.take())?;
                 for _ in 0..WARM_UP_FRAMES {
                     render.run(ctx);
                 }
@@ -251,6 +294,12 @@ pub fn run(
                 let mut bins: Vec<f64> = times.iter().filter_map(|t| t.bin_ms).collect();
                 let row = BenchRow {
                     method,
+                    sphere,
+                    radius: if sphere.is_some() {
+                        s.sphere_radius.unwrap_or(0.0)
+                    } else {
+                        0.0
+                    },
                     horizon,
                     lights,
                     width,
@@ -279,10 +328,7 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
         "GPU: {device}\n\n| method | lights | size | cull | range | in range | ms (median) | ms (min–max) | bin ms | fps | G light-px/s |\n|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n"
     );
     for r in rows {
-        let method = match r.horizon {
-            Horizon::Eq30 => r.method.name().to_string(),
-            h => format!("{} ({})", r.method.name(), h.name()),
-        };
+        let method = r.label();
         out.push_str(&format!(
             "| {method} | {} | {}×{} | {} | {} | {:.1}% | {:.3} | {:.3}–{:.3} | {} | {:.1} | {:.2} |\n",
             r.lights,
@@ -301,7 +347,13 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
     }
     let ms_with = |n: usize, cull: bool, m: Method, h: Horizon| {
         rows.iter()
-            .find(|r| r.lights == n && r.cull == cull && r.method == m && r.horizon == h)
+            .find(|r| {
+                r.lights == n
+                    && r.cull == cull
+                    && r.method == m
+                    && r.horizon == h
+                    && r.sphere.is_none()
+            })
             .map(|r| r.ms_median)
     };
     let ms = |n: usize, cull: bool, m: Method| ms_with(n, cull, m, Horizon::Eq30);
@@ -367,6 +419,9 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
             }
         }
     }
+    if let Some(r) = rows.iter().find(|r| r.sphere.is_some()) {
+        out.push_str(&spheres_markdown(rows, &keys, r.radius));
+    }
     out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");
     for k in 0..PAPER_LIGHTS.len() {
         out.push_str(&format!(
@@ -375,6 +430,44 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
             PAPER_BRDF_FPS[k],
             PAPER_LTC_FPS[k],
             PAPER_LTC_FPS[k] / PAPER_BRDF_FPS[k]
+        ));
+    }
+    out
+}
+
+/// Lights with a size: each sphere method's ms per frame and its cost over the point
+/// formula's (ltc and ltc-fast on points, same run, same lights).
+fn spheres_markdown(rows: &[BenchRow], keys: &[(usize, bool)], radius: f64) -> String {
+    let names: Vec<&str> = SphereMethod::ALL.iter().map(|m| m.name()).collect();
+    let mut out = format!(
+        "\nLights with a size (every light a sphere of radius {radius}; ms, and × the point formula's ltc-fast / ltc, same run):\n\n| lights | cull | {} |\n|---:|---|{}\n",
+        names.join(" | "),
+        "---:|".repeat(names.len())
+    );
+    for &(n, cull) in keys {
+        let find = |f: &dyn Fn(&BenchRow) -> bool| {
+            rows.iter()
+                .find(|r| r.lights == n && r.cull == cull && f(r))
+                .map(|r| r.ms_median)
+        };
+        let point = |m: Method| {
+            find(&|r| r.sphere.is_none() && r.method == m && r.horizon == Horizon::Eq30)
+        };
+        let (fast, paper) = (point(Method::LtcFast), point(Method::Ltc));
+        let cells: Vec<String> = SphereMethod::ALL
+            .iter()
+            .map(|&sm| match (find(&|r| r.sphere == Some(sm)), fast, paper) {
+                (Some(ms), Some(f), Some(p)) => {
+                    format!("{ms:.3} ({:.2}× / {:.2}×)", ms / f, ms / p)
+                }
+                (Some(ms), _, _) => format!("{ms:.3}"),
+                _ => "–".into(),
+            })
+            .collect();
+        out.push_str(&format!(
+            "| {n} | {} | {} |\n",
+            if cull { "on" } else { "off" },
+            cells.join(" | ")
         ));
     }
     out

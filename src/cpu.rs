@@ -18,6 +18,7 @@ use crate::render::{
     Tables, View,
 };
 use crate::scene::{Light, Scene};
+use crate::sphere_light::{GPU_EXACT_NODES, SphereMethod, SphereShading, sphere_light_with};
 
 /// The per-pixel state of LTC shading: the frame, the two looked-up lobes and the horizon
 /// rule with its correction read at the same place of the table.
@@ -76,7 +77,7 @@ impl LtcPixel {
     }
 }
 
-/// The exact radiance toward the camera at `p` (eq. 28), summed over `lights`.
+/// The exact radiance toward the camera at `p` (eq. 28), summed over `lights` as points.
 pub fn shade_exact(scene: &Scene, p: &SurfacePoint, lights: &[Light]) -> DVec3 {
     if p.view.z <= 0.0 {
         return DVec3::ZERO;
@@ -102,7 +103,8 @@ pub fn exact_term(scene: &Scene, frame: &ShadingFrame, p: &SurfacePoint, light: 
     light.radiant_intensity() * combine(lobes, m.base_color)
 }
 
-/// The LTC radiance toward the camera at `p` (eq. 30, corrected or paper-literal).
+/// The LTC radiance toward the camera at `p` (eq. 30, corrected or paper-literal), summed over
+/// `lights` as points.
 pub fn shade_ltc(
     scene: &Scene,
     lut: &Lut,
@@ -145,6 +147,84 @@ pub fn ltc_term(
     light.radiant_intensity() * (e * combine(lobes, m.base_color))
 }
 
+/// One light with a size's radiance toward the camera by `method` (docs/design.md §1.10),
+/// with the pixel's LTC lobes for the LTC methods (eq. 30's clipping and normalization; the
+/// horizon rules are the point formula's) and the renderers' rule for the exact one.
+pub fn sphere_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    light: &Light,
+    rules: &LtcRules,
+    method: SphereMethod,
+) -> DVec3 {
+    let m = &scene.material;
+    let shading = SphereShading {
+        v: px.frame.tangent_from_world(p.view),
+        u: px
+            .frame
+            .tangent_from_world(DVec3::from(light.position) - p.position),
+        intensity: 1.0,
+        range: light.range_or_infinity(),
+        radius: light.radius,
+        alpha: m.alpha,
+        f0: m.f0,
+        ltc: &px.pair,
+        clip: rules.clipping,
+        normalization: rules.normalization,
+    };
+    let lobes = sphere_light_with(method, &shading, GPU_EXACT_NODES);
+    light.radiant_intensity() * combine(lobes, m.base_color)
+}
+
+/// One side of a render: how it shades point lights, how it shades lights with a size, and
+/// the table its LTC methods read.
+#[derive(Clone, Copy, Debug)]
+pub struct Side<'a> {
+    pub method: Method,
+    pub sphere: SphereMethod,
+    pub lut: &'a Lut,
+}
+
+impl<'a> Side<'a> {
+    /// Method A's side of `s`.
+    pub fn a(s: &RenderSettings, tables: Tables<'a>) -> Self {
+        Self {
+            method: s.method_a,
+            sphere: s.sphere_a,
+            lut: tables.a,
+        }
+    }
+
+    /// Method B's side of `s`.
+    pub fn b(s: &RenderSettings, tables: Tables<'a>) -> Self {
+        Self {
+            method: s.method_b,
+            sphere: s.sphere_b,
+            lut: tables.for_b(s),
+        }
+    }
+}
+
+/// One light's radiance toward the camera by one side: a point by the side's method (the
+/// CPU's literal form of it), a light with a size by its sphere method.
+pub fn light_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    light: &Light,
+    rules: &LtcRules,
+    side: &Side<'_>,
+) -> DVec3 {
+    if light.is_sized() {
+        sphere_term(scene, px, p, light, rules, side.sphere)
+    } else if side.method.is_ltc() {
+        ltc_term(scene, px, p, light, rules)
+    } else {
+        exact_term(scene, &px.frame, p, light)
+    }
+}
+
 /// `specular + c · diffuse`, per channel.
 fn combine(lobes: Lobes<f64>, base_color: [f64; 3]) -> DVec3 {
     DVec3::splat(lobes.specular) + lobes.diffuse * DVec3::from(base_color)
@@ -178,7 +258,7 @@ fn render_rows<'a>(
     rows: Range<usize>,
 ) -> Frame {
     let tables = tables.into();
-    let (a, b) = ((s.method_a, tables.a), (s.method_b, tables.for_b(s)));
+    let (a, b) = (Side::a(s, tables), Side::b(s, tables));
     let divider = s.divider_column();
     let shade = |pick: &Pick<'_>| render_radiance(scene, s, pick, rows.clone());
     match (s.view, pass) {
@@ -256,22 +336,18 @@ fn stack(bands: Vec<Frame>) -> Frame {
     whole
 }
 
-/// The method, and its table, that shades a pixel column.
-type Pick<'a> = dyn Fn(usize) -> (Method, &'a Lut) + Sync + 'a;
+/// The side that shades a pixel column.
+type Pick<'a> = dyn Fn(usize) -> Side<'a> + Sync + 'a;
 
-/// The radiance at one surface point by `method` (its literal form: the CPU has one of each).
-pub fn shade(
-    scene: &Scene,
-    lut: &Lut,
-    p: &SurfacePoint,
-    s: &RenderSettings,
-    method: Method,
-) -> DVec3 {
-    if method.is_ltc() {
-        shade_ltc(scene, lut, p, &scene.lights, &s.rules)
-    } else {
-        shade_exact(scene, p, &scene.lights)
+/// The radiance at one surface point by one side, its lights summed in order.
+pub fn shade(scene: &Scene, p: &SurfacePoint, rules: &LtcRules, side: &Side<'_>) -> DVec3 {
+    if p.view.z <= 0.0 {
+        return DVec3::ZERO;
     }
+    let px = LtcPixel::new(side.lut, scene.material.alpha, p.view, rules);
+    scene.lights.iter().fold(DVec3::ZERO, |sum, light| {
+        sum + light_term(scene, &px, p, light, rules, side)
+    })
 }
 
 /// Radiance over rows `rows` with the method (and table) `pick` gives for each pixel column.
@@ -288,10 +364,7 @@ fn render_radiance(
             (0..s.width)
                 .map(|x| match scene.surface_point(x, y, s.width, s.height) {
                     None => (DVec3::ZERO, false),
-                    Some(p) => {
-                        let (method, lut) = pick(x);
-                        (shade(scene, lut, &p, s, method), true)
-                    }
+                    Some(p) => (shade(scene, &p, &s.rules, &pick(x)), true),
                 })
                 .unzip()
         })

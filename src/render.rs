@@ -7,6 +7,7 @@ use glam::DVec3;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::HorizonRule;
 use crate::ltc::{Clipping, Normalization};
+use crate::sphere_light::SphereMethod;
 
 /// How one pixel's lights are summed. The CPU reference has one form of each: the fast
 /// forms are the same math as their literal twins there.
@@ -107,6 +108,10 @@ pub struct RenderSettings {
     pub method_a: Method,
     /// The reference (right of a split, the denominator of a difference).
     pub method_b: Method,
+    /// How A and B shade the lights with a size (`Light::radius > 0`); a point light is
+    /// shaded by `method_a` / `method_b` alone, as if these did not exist.
+    pub sphere_a: SphereMethod,
+    pub sphere_b: SphereMethod,
     pub view: View,
     /// What the LTC methods shade by beyond their table.
     pub rules: LtcRules,
@@ -141,6 +146,9 @@ impl RenderSettings {
             height,
             method_a: method,
             method_b: Method::Brdf,
+            // What engines ship (EEVEE, Bevy's pull request) against the reference.
+            sphere_a: SphereMethod::LtcDisk,
+            sphere_b: SphereMethod::Exact,
             view: View::A,
             rules: LtcRules::default(),
             divider: 0.5,

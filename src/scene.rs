@@ -27,10 +27,33 @@ pub const PRESETS: [(&str, &str); 4] = [
     ),
 ];
 
-/// A shipped preset by name (`paper-100`, `figure2-normal`, `figure2-case1`, `figure2-case2`).
+/// The failure cases of lights with a size (docs/design.md §1.10), shipped beside the
+/// clipping panel's: a sphere cut by the horizon, one touching the plane, discs seen edge-on,
+/// and ltc_code's black spots.
+pub const SPHERE_PRESETS: [(&str, &str); 4] = [
+    (
+        "sphere-horizon",
+        include_str!("../assets/scenes/sphere-horizon.toml"),
+    ),
+    (
+        "sphere-touching",
+        include_str!("../assets/scenes/sphere-touching.toml"),
+    ),
+    (
+        "sphere-edge-on",
+        include_str!("../assets/scenes/sphere-edge-on.toml"),
+    ),
+    (
+        "sphere-black-spots",
+        include_str!("../assets/scenes/sphere-black-spots.toml"),
+    ),
+];
+
+/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`).
 pub fn preset(name: &str) -> Scene {
     let (_, text) = PRESETS
         .iter()
+        .chain(&SPHERE_PRESETS)
         .find(|(n, _)| *n == name)
         .expect("a shipped preset");
     Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")
@@ -100,7 +123,9 @@ pub struct Camera {
     pub fov_y_degrees: f64,
 }
 
-/// A point light: RGB `color × intensity` (W/sr-like units: irradiance `I/d²` at distance d).
+/// A light: RGB `color × intensity` (W/sr-like units: irradiance `I/d²` at distance d), a
+/// point, or a sphere of radius `radius` whose radiance `I/(π r²)` lights a distant point as
+/// the point light does (docs/design.md §1.10).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Light {
@@ -112,6 +137,13 @@ pub struct Light {
     /// Range `R` of the windowed falloff; absent means infinite.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub range: Option<f64>,
+    /// The sphere's radius in scene units (metres); 0 (or absent): the paper's point light.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub radius: f64,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 fn white() -> [f64; 3] {
@@ -127,7 +159,17 @@ impl Light {
     pub fn range_or_infinity(&self) -> f64 {
         self.range.unwrap_or(f64::INFINITY)
     }
+
+    /// A light with a size, shaded by the sphere methods; radius 0 is a point.
+    pub fn is_sized(&self) -> bool {
+        self.radius > 0.0
+    }
 }
+
+/// The smallest radius of a light with a size: a tenth of a millimetre in metres, the
+/// precision a scene is saved to (`Scene::rounded_for_saving`). Its radiance `I/(π r²)` stays
+/// within f32 (≤ 1e6/(π·1e-8) ≈ 3e13) for every intensity `validate` allows.
+pub const MIN_RADIUS: f64 = 1e-4;
 
 /// Lights made by `generate_lights`, added to the listed ones when the scene loads.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -144,6 +186,9 @@ pub struct RandomLights {
     /// Range of every generated light; absent means infinite.
     #[serde(default)]
     pub range: Option<f64>,
+    /// Radius of every generated light; absent or 0: point lights.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub radius: f64,
 }
 
 /// The range of paper-100's lights (assets/scenes/paper-100.toml), which the benchmark's and
@@ -197,9 +242,9 @@ impl Scene {
     }
 
     /// The scene as a person would write it: light positions to 1e-4 scene units (a tenth of
-    /// a millimetre in metres), colours to 1e-3 (finer than 8-bit steps), intensities and
-    /// ranges to 4 significant digits. Dragged lights and generated ones otherwise save with
-    /// 16 decimals; every rounded value stays within the limits `validate` checks.
+    /// a millimetre in metres), colours to 1e-3 (finer than 8-bit steps), intensities, ranges
+    /// and radii to 4 significant digits. Dragged lights and generated ones otherwise save
+    /// with 16 decimals; every rounded value stays within the limits `validate` checks.
     pub fn rounded_for_saving(&self) -> Scene {
         let decimals = |x: f64, d: i32| (x * 10f64.powi(d)).round() / 10f64.powi(d);
         let significant = |x: f64| {
@@ -215,6 +260,7 @@ impl Scene {
             l.color = l.color.map(|x| decimals(x, 3));
             l.intensity = significant(l.intensity);
             l.range = l.range.map(significant);
+            l.radius = significant(l.radius);
         }
         out
     }
@@ -298,6 +344,7 @@ impl Scene {
                 return Err("random_lights: each [min, max] must have min ≤ max".into());
             }
             check_range("random_lights.range", r.range)?;
+            check_radius("random_lights.radius", r.radius)?;
         }
         let total = self.lights.len() + self.random_lights.map_or(0, |r| r.count);
         if total > MAX_LIGHTS {
@@ -467,7 +514,22 @@ fn check_light(what: &str, l: &Light) -> std::result::Result<(), String> {
             "{what}: color × intensity must be ≤ {MAX_INTENSITY:e} per channel, got {peak:e} (beyond it f32 radiance overflows on the GPU)"
         ));
     }
-    check_range(&format!("{what}.range"), l.range)
+    check_range(&format!("{what}.range"), l.range)?;
+    check_radius(&format!("{what}.radius"), l.radius)
+}
+
+/// A radius is 0 (a point) or in `[MIN_RADIUS, MAX_COORDINATE]`.
+fn check_radius(what: &str, radius: f64) -> std::result::Result<(), String> {
+    finite(what, &[radius])?;
+    if radius == 0.0 || (MIN_RADIUS..=MAX_COORDINATE).contains(&radius) {
+        return Ok(());
+    }
+    Err(format!(
+        "{what} must be 0 (a point light) or in [{}, {}], got {}",
+        number(MIN_RADIUS),
+        number(MAX_COORDINATE),
+        number(radius)
+    ))
 }
 
 /// SplitMix64 (Steele et al. 2014): a tiny, well-mixed, seedable generator, so the same
@@ -509,6 +571,7 @@ pub fn generate_lights(r: &RandomLights, half_size: f64) -> Vec<Light> {
                 color: hue_color(hue, 0.6),
                 intensity: rng.uniform(r.intensity),
                 range: r.range,
+                radius: r.radius,
             }
         })
         .collect()

@@ -19,7 +19,7 @@ pub fn sphere_radiance(intensity: f64, r: f64) -> f64 {
 }
 
 /// The ways a sphere light is shaded (docs/design.md §1.10).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub enum SphereMethod {
     /// The BRDF integrated over the visible cap, by `quadrature::cap_integral`.
     Exact,
@@ -47,6 +47,10 @@ impl SphereMethod {
             Self::LtcDisk => "ltc-disk",
             Self::RepresentativePoint => "representative-point",
         }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|m| m.name() == name)
     }
 }
 
@@ -102,11 +106,21 @@ impl<'a> SphereShading<'a> {
 
 /// The radiance toward `v`, per lobe (base colour 1): `specular + c · diffuse`.
 pub fn sphere_light(method: SphereMethod, s: &SphereShading<'_>) -> Lobes<f64> {
+    sphere_light_with(method, s, EXACT_NODES)
+}
+
+/// `sphere_light` with `exact_nodes` nodes per dimension for the exact method: the renders
+/// take `GPU_EXACT_NODES` on the CPU too, so that the two renderers integrate by one rule.
+pub fn sphere_light_with(
+    method: SphereMethod,
+    s: &SphereShading<'_>,
+    exact_nodes: usize,
+) -> Lobes<f64> {
     let Some(cap) = Cap::of_sphere(s.u, s.radius) else {
         return point(method, s);
     };
     match method {
-        SphereMethod::Exact => sphere_exact(s, &cap, EXACT_NODES),
+        SphereMethod::Exact => sphere_exact(s, &cap, exact_nodes),
         SphereMethod::LtcPoint => sphere_ltc_point(s),
         SphereMethod::LtcDisk => sphere_ltc_disk(s, &cap),
         SphereMethod::RepresentativePoint => sphere_representative_point(s, &cap),

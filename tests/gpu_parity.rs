@@ -43,6 +43,7 @@ fn scenes() -> Vec<(String, Scene)> {
             height: [0.02, 1.0],
             intensity: [0.001, 0.01],
             range: Some(1.5),
+            radius: 0.0,
         },
         random.plane.half_size,
     );
@@ -250,6 +251,7 @@ fn no_nan_reaches_the_image() {
         color: [1.0, 0.0, 0.5],
         intensity,
         range,
+        radius: 0.0,
     };
     let lights = vec![
         light([0.5, 0.5, 0.0], 1.0, None),

@@ -42,6 +42,7 @@ fn binning_scene(range: f64, count: usize) -> Scene {
             height: [0.02, 0.8],
             intensity: [0.02, 0.2],
             range: Some(range),
+            radius: 0.0,
         },
         scene.plane.half_size,
     );
@@ -50,6 +51,7 @@ fn binning_scene(range: f64, count: usize) -> Scene {
         color: [1.0, 0.8, 0.6],
         intensity: 0.1,
         range,
+        radius: 0.0,
     };
     for ty in 0..=H / 16 {
         for tx in 0..=W / 16 {

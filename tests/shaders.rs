@@ -238,18 +238,19 @@ fn constant(module: &naga::Module, name: &str) -> u32 {
     }
 }
 
-/// The pipelines' override constants name the methods, views and horizon rules by the
-/// values plane.wgsl and ltc.wgsl give them: a constant renumbered on one side only would
-/// shade every pixel with another method.
+/// The pipelines' override constants and uniforms name the methods, sphere methods, views and
+/// horizon rules by the values plane.wgsl and ltc.wgsl give them: a constant renumbered on one
+/// side only would shade every pixel with another method.
 #[test]
 fn the_constants_rust_passes_are_the_wgsl_ones() {
     use ltc_lab::gpu::ltc::horizon_constant;
-    use ltc_lab::gpu::plane::{ViewConstant, method_constant};
+    use ltc_lab::gpu::plane::{ViewConstant, method_constant, sphere_constant};
     use ltc_lab::ltc::remedy::HorizonRule;
     use ltc_lab::render::Method;
     let module = validate("plane", &plane_module_source(true));
     let mut checked = Vec::new();
     let methods = Method::ALL.map(method_constant);
+    let spheres = ltc_lab::sphere_light::SphereMethod::ALL.map(sphere_constant);
     let views = ViewConstant::ALL.map(ViewConstant::constant);
     let rules = [
         HorizonRule::Eq30,
@@ -257,14 +258,14 @@ fn the_constants_rust_passes_are_the_wgsl_ones() {
         HorizonRule::ExactBand,
     ]
     .map(horizon_constant);
-    for (value, name) in methods.into_iter().chain(views).chain(rules) {
+    for (value, name) in methods.into_iter().chain(spheres).chain(views).chain(rules) {
         assert_eq!(constant(&module, name), value, "{name}");
         checked.push(name);
     }
     // Every such constant of the WGSL has its Rust twin.
     for (_, c) in module.constants.iter() {
         let name = c.name.as_deref().unwrap_or_default();
-        let family = ["METHOD_", "VIEW_", "HORIZON_"];
+        let family = ["METHOD_", "SPHERE_", "VIEW_", "HORIZON_"];
         if family.iter().any(|f| name.starts_with(f)) {
             assert!(checked.contains(&name), "{name} has no Rust twin");
         }

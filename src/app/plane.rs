@@ -287,6 +287,7 @@ impl PlanePanel {
                     color: [1.0; 3],
                     intensity: 0.2,
                     range: None,
+                    radius: 0.0,
                 });
             });
             let added = lab.lights().list.len().checked_sub(1);

@@ -37,10 +37,17 @@ pub struct Args {
     /// docs/design.md §4.7.
     #[arg(long, value_delimiter = ',', value_parser = horizon_parser(), default_value = "eq30")]
     horizon: Vec<Horizon>,
+    /// Also time every light as a sphere of this radius (scene units, ≥ 1e-4), by each sphere
+    /// method, in the same run (docs/design.md §1.10).
+    #[arg(long)]
+    sphere_radius: Option<f64>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
     check_frames_and_lights(a.frames, &a.lights)?;
+    if let Some(r) = a.sphere_radius {
+        check_sphere_radius(r)?;
+    }
     if let Some(p) = &a.csv {
         // Refuse a bad path before minutes of measuring.
         check_writable(p)?;
@@ -68,12 +75,12 @@ pub fn run(a: &Args) -> Result<()> {
         culls: a.culling.cull.clone(),
         range: Range::or_default(a.culling.range),
         horizons: a.horizon.clone(),
+        sphere_radius: a.sphere_radius,
     };
     let rows = ltc_lab::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(
-            "  {:>13} {:>15} {:>6} lights, cull {:>3}: {:.3} ms",
-            r.method.name(),
-            r.horizon.name(),
+            "  {:>28} {:>6} lights, cull {:>3}: {:.3} ms",
+            r.label(),
             r.lights,
             if r.cull { "on" } else { "off" },
             r.ms_median
@@ -88,4 +95,16 @@ pub fn run(a: &Args) -> Result<()> {
         write_atomically(p, text.as_bytes())?;
     }
     print(&ltc_lab::bench::markdown(&rows, &device))
+}
+
+/// `--sphere-radius`: a radius a scene's light may have, and not 0 (that is the point rows).
+fn check_sphere_radius(r: f64) -> Result<()> {
+    let (lo, hi) = (ltc_lab::scene::MIN_RADIUS, ltc_lab::scene::MAX_COORDINATE);
+    if (lo..=hi).contains(&r) {
+        return Ok(());
+    }
+    Err(ltc_lab::error::Error::input(
+        "--sphere-radius",
+        format!("must be in [{lo}, {hi}] scene units, got {r}"),
+    ))
 }

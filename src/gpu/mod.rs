@@ -36,6 +36,7 @@ pub fn plane_module_source(f16: bool) -> String {
         enable,
         brdf::SOURCE,
         ltc::SOURCE,
+        sphere_light::SOURCE,
         scene::SOURCE,
         plane::SOURCE,
         last,

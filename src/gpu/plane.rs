@@ -1,6 +1,6 @@
 //! `shaders/plane.wgsl`: the compute shader that shades the plane. Here its constants and
 //! bindings as Rust names them (`tests/shaders.rs` checks both against the WGSL), and its
-//! pipelines: one per combination of methods, view, table filter, table B and horizon rule
+//! pipelines: one per combination of methods, view, table filter, table B, horizon rule and sphere methods
 //! (override constants), compiled on first use and kept. What a render keeps between its
 //! chunks is `gpu::plane_render`; what is kept between renders, `gpu::renderer`.
 
@@ -12,6 +12,8 @@ use crate::gpu::ltc::horizon_constant;
 use crate::gpu::target::OUTPUT_FORMAT;
 use crate::ltc::remedy::HorizonRule;
 use crate::render::{LutFilter, Method, RenderSettings, View};
+use crate::scene::{Light, Scene};
+use crate::sphere_light::SphereMethod;
 
 /// The shader text (composed after `scene::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/plane.wgsl");
@@ -25,6 +27,16 @@ pub fn method_constant(m: Method) -> (u32, &'static str) {
         Method::LtcFast => (3, "METHOD_LTC_FAST"),
         Method::LtcF16 => (4, "METHOD_LTC_F16"),
         Method::LtcF16Pairs => (5, "METHOD_LTC_F16_PAIRS"),
+    }
+}
+
+/// `SPHERE_*` of plane.wgsl: its value and its name there.
+pub fn sphere_constant(m: SphereMethod) -> (u32, &'static str) {
+    match m {
+        SphereMethod::Exact => (0, "SPHERE_EXACT"),
+        SphereMethod::LtcPoint => (1, "SPHERE_LTC_POINT"),
+        SphereMethod::LtcDisk => (2, "SPHERE_LTC_DISK"),
+        SphereMethod::RepresentativePoint => (3, "SPHERE_REPRESENTATIVE_POINT"),
     }
 }
 
@@ -74,12 +86,21 @@ pub const BINDINGS: [Binding; 10] = [
 ];
 
 /// What a pipeline is specialized for (its override constants): methods A and B, the view,
-/// the LUT filter, whether B reads table B, and the horizon rule.
-pub type PipelineKey = (Method, Method, ViewConstant, LutFilter, bool, HorizonRule);
+/// the LUT filter, whether B reads table B, the horizon rule, and where some light has a
+/// size, A's and B's sphere methods (`None`: point lights only, the pipelines of before).
+pub type PipelineKey = (
+    Method,
+    Method,
+    ViewConstant,
+    LutFilter,
+    bool,
+    HorizonRule,
+    Option<(SphereMethod, SphereMethod)>,
+);
 
 /// The pipeline's methods and view: `View::B` is B shaded as the single A (with B's table,
 /// which the render puts in A's place).
-pub fn pipeline_key(s: &RenderSettings) -> PipelineKey {
+pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
     let (a, b, view, table_b) = match s.view {
         View::A => (s.method_a, s.method_b, ViewConstant::Single, false),
         View::B => (s.method_b, s.method_b, ViewConstant::Single, false),
@@ -96,7 +117,12 @@ pub fn pipeline_key(s: &RenderSettings) -> PipelineKey {
             s.b_reads_table_b,
         ),
     };
-    (a, b, view, s.rules.filter, table_b, s.rules.horizon)
+    let spheres = match s.view {
+        View::B => (s.sphere_b, s.sphere_b),
+        _ => (s.sphere_a, s.sphere_b),
+    };
+    let sized = scene.lights.iter().any(Light::is_sized).then_some(spheres);
+    (a, b, view, s.rules.filter, table_b, s.rules.horizon, sized)
 }
 
 /// Whether wgpu wraps the shader in its runtime bounds checks.
@@ -176,7 +202,8 @@ fn compile(
     layout: &wgpu::PipelineLayout,
     key: PipelineKey,
 ) -> Pipelines {
-    let (a, b, view, filter, table_b, horizon) = key;
+    let (a, b, view, filter, table_b, horizon, sized) = key;
+    let spheres = sized.unwrap_or((SphereMethod::LtcDisk, SphereMethod::Exact));
     let constants = [
         ("METHOD_A", f64::from(method_constant(a).0)),
         ("METHOD_B", f64::from(method_constant(b).0)),
@@ -187,6 +214,9 @@ fn compile(
         ),
         ("TABLE_B", f64::from(u8::from(table_b))),
         ("HORIZON", f64::from(horizon_constant(horizon).0)),
+        ("SIZED", f64::from(u8::from(sized.is_some()))),
+        ("SPHERE_A", f64::from(sphere_constant(spheres.0).0)),
+        ("SPHERE_B", f64::from(sphere_constant(spheres.1).0)),
     ];
     let pipeline = |entry_point| {
         ctx.device

@@ -103,7 +103,7 @@ impl PlaneRenderer {
             self.tables.ensure_nl(ctx)?;
         }
         let begun = Begun {
-            pipelines: self.pipelines.get(ctx, pipeline_key(settings)),
+            pipelines: self.pipelines.get(ctx, pipeline_key(settings, scene)),
             layout: &self.pipelines.layout,
             binning: &self.binning,
             tables: &self.tables,

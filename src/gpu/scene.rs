@@ -58,7 +58,7 @@ pub struct Params {
 pub struct GpuLight {
     /// xyz position, w the range (≤ 0: infinite).
     pub position_range: [f32; 4],
-    /// rgb colour × intensity.
+    /// rgb colour × intensity, w the radius (0: a point light).
     pub intensity: [f32; 4],
 }
 
@@ -71,7 +71,7 @@ impl From<&Light> for GpuLight {
         let range = l.range.map_or(0.0, |r| (r as f32).max(f32::MIN_POSITIVE));
         Self {
             position_range: [p[0], p[1], p[2], range],
-            intensity: [i.x, i.y, i.z, 0.0],
+            intensity: [i.x, i.y, i.z, l.radius as f32],
         }
     }
 }

@@ -26,6 +26,8 @@ fn bench_prints_the_table_and_writes_the_csv() {
         csv.to_str().unwrap(),
         "--horizon",
         "exact-band",
+        "--sphere-radius",
+        "0.05",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = String::from_utf8(o.stdout).unwrap();
@@ -48,16 +50,32 @@ fn bench_prints_the_table_and_writes_the_csv() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s"
+        "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,sphere,radius"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    // Every method with eq30, and ltc and ltc-fast with exact-band too.
-    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 } + 2;
+    // Every method with eq30, ltc and ltc-fast with exact-band too, and the four sphere
+    // methods on lights of radius 0.05.
+    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 } + 2 + 4;
     assert_eq!(rows.len(), 2 * methods, "every method × 2 light counts");
+    let spheres: Vec<(&str, &str)> = rows
+        .iter()
+        .filter(|r| r[15] != "point")
+        .map(|r| (r[15], r[16]))
+        .collect();
+    assert_eq!(spheres.len(), 8, "{spheres:?}");
+    assert!(spheres.iter().all(|&(_, r)| r == "0.05"), "{spheres:?}");
+    assert!(
+        table.contains("| ltc-disk (r = 0.05) | 20 | 32×16 | on | 2 |"),
+        "{table}"
+    );
+    assert!(
+        table.contains("| lights | cull | exact | ltc-point | ltc-disk | representative-point |"),
+        "{table}"
+    );
     let remedies = rows.iter().filter(|r| r[1] == "exact-band").count();
     assert_eq!(remedies, 4, "ltc and ltc-fast × 2 light counts");
     for r in &rows {
-        assert_eq!(r.len(), 15);
+        assert_eq!(r.len(), 17);
         assert_eq!((r[6], r[7]), ("on", "2"), "{r:?}");
         let fraction: f64 = r[8].parse().unwrap();
         assert!(fraction > 0.0 && fraction <= 1.0, "{r:?}");
@@ -77,6 +95,10 @@ fn bench_prints_the_table_and_writes_the_csv() {
 fn bench_refuses_bad_arguments() {
     assert_refused(&ltc_lab(&["bench", "--frames", "0"]), "--frames");
     assert_refused(&ltc_lab(&["bench", "--lights", "0"]), "--lights");
+    for r in ["0", "-1", "1e-5", "nan", "1e7"] {
+        let flag = format!("--sphere-radius={r}");
+        assert_refused(&ltc_lab(&["bench", &flag]), "--sphere-radius");
+    }
     assert_refused(
         &ltc_lab(&["bench", "--csv", "/nonexistent-dir/b.csv"]),
         "/nonexistent-dir/b.csv",

@@ -138,6 +138,7 @@ impl Shared {
                 height: [0.05, 0.6],
                 intensity: [0.02 * dim, 0.08 * dim],
                 range: Some(crate::scene::PAPER_RANGE),
+                radius: 0.0,
             },
             self.stage.plane.half_size,
         )
