@@ -1,6 +1,7 @@
 //! The error atlas: where the LTC fails for point lights. Heat maps of the table's `err`
 //! channels over (r, θo), and the error of one light orbiting a shading point as a function
-//! of its elevation and azimuth, for chosen (θo, α); with CSVs of both.
+//! of its elevation and azimuth, for chosen (θo, α); with CSVs of both. And for lights with a
+//! size, each method's error by angular radius and elevation band (docs/design.md §4.9).
 
 use std::path::Path;
 
@@ -105,6 +106,8 @@ pub fn atlas_files() -> Vec<String> {
         "cells.csv",
         "orbits.csv",
         "horizon.csv",
+        "spheres.csv",
+        "spheres.png",
     ]
     .map(String::from)
     .into();
@@ -116,9 +119,15 @@ fn orbit_file(theta: f64, alpha: f64) -> String {
     format!("orbit_{theta:.0}_{alpha}.png")
 }
 
+/// Cases per (angular radius, band) of the atlas's sphere measure: 2 000 put each figure within
+/// a few percent of itself (its seeds' spread, docs/design.md §4.9) in seconds; the design's
+/// table takes 40 000.
+pub const SPHERE_CASES: usize = 2_000;
+
 /// Writes `spec_err.png`, `diff_err.png`, `cells.csv`, per orbit `orbit_T_A.png` plus
-/// `orbits.csv`, and the error by light elevation `horizon.csv` into `dir` (made if missing),
-/// all of them or none.
+/// `orbits.csv`, the error by light elevation `horizon.csv`, and the sphere lights' errors by
+/// angular radius and band `spheres.csv` and `spheres.png` into `dir` (made if missing), all of
+/// them or none.
 pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
     let names = atlas_files();
     let mut out = Outputs::new(dir, &names.iter().map(String::as_str).collect::<Vec<_>>())?;
@@ -231,6 +240,66 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
         table.push_str(&horizon::csv_rows(&format!("{},", remedy.name()), &bands));
     }
     out.stage("horizon.csv", table.as_bytes())?;
+    let (csv, png, sphere_lines) = spheres(lut)?;
+    out.stage("spheres.csv", csv.as_bytes())?;
+    out.stage("spheres.png", &png)?;
+    lines.extend(sphere_lines);
     out.commit()?;
     Ok(AtlasSummary { lines })
+}
+
+/// The sphere lights' errors (`sphere_error`): the CSV, a chart of the specular error against
+/// the angular radius per band with a line per method, and the summary's lines (where the
+/// point formula stops holding).
+fn spheres(lut: &Lut) -> Result<(String, Vec<u8>, Vec<String>)> {
+    use crate::sphere_error::{APPROXIMATIONS, MEASURE_NODES, RADII_DEG, csv_rows, sphere_errors};
+    let errors = sphere_errors(lut, &RADII_DEG, SPHERE_CASES, horizon::SEED, MEASURE_NODES);
+    let csv = format!(
+        "radius_deg,band,cases,method,specular,diffuse\n{}",
+        csv_rows(&errors)
+    );
+    let panels: Vec<(String, Vec<crate::plot::Series>)> = horizon::BANDS
+        .iter()
+        .map(|band| {
+            let series = APPROXIMATIONS
+                .iter()
+                .enumerate()
+                .map(|(m, method)| crate::plot::Series {
+                    label: method.name().to_string(),
+                    points: errors
+                        .iter()
+                        .filter(|e| e.band == *band)
+                        .map(|e| (e.radius_deg, 100.0 * e.specular[m]))
+                        .collect(),
+                })
+                .collect();
+            (
+                format!("centre {}–{}° above the surface", band[0], band[1]),
+                series,
+            )
+        })
+        .collect();
+    let png = crate::plot::line_panels_png(
+        "spheres.png",
+        &format!(
+            "sphere lights: specular Σ|method − exact| / Σ exact ({SPHERE_CASES} cases a point)"
+        ),
+        ("angular radius σ (degrees)", "specular error (%)"),
+        &panels,
+    )?;
+    let lines = errors
+        .iter()
+        .filter(|e| e.radius_deg == 10.0)
+        .map(|e| {
+            format!(
+                "  spheres σ = 10°, centre {:>2}–{:<2}° up: specular ltc-point {:5.1}%, ltc-disk {:5.1}%, representative-point {:5.1}%",
+                e.band[0],
+                e.band[1],
+                100.0 * e.specular[0],
+                100.0 * e.specular[1],
+                100.0 * e.specular[2]
+            )
+        })
+        .collect();
+    Ok((csv, png, lines))
 }

@@ -1,18 +1,20 @@
 //! One surface point opened into its lights: for each, where it is in the shading frame and
 //! after `M⁻¹`, its clipping case, the factors of eq. 30 (D, the Jacobian, the magnitudes)
 //! and of eq. 28 (Fresnel), its irradiance, and its LTC and exact radiance — the terms whose
-//! sums are the pixel (`cpu::shade_ltc`, `cpu::shade_exact`). Where two tables are compared,
-//! also its LTC radiance with table B, whose sum is the pixel of side B.
+//! sums are the pixel (`cpu::shade`). Where two tables are compared, also its LTC radiance
+//! with table B, whose sum is the pixel of side B. A light with a size is shaded by each side's
+//! sphere method, and has every sphere method's radiance beside (docs/design.md §1.10).
 
 use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
-use crate::cpu::{LtcPixel, exact_term, ltc_term};
+use crate::cpu::{LtcPixel, exact_term, ltc_term, sphere_term};
 use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
 use crate::metrics::luminance;
 use crate::render::{LtcRules, SurfacePoint};
 use crate::scene::{Light, Scene};
+use crate::sphere_light::SphereMethod;
 
 /// One light's share of a pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -42,6 +44,8 @@ pub struct LightTerm {
     pub exact: DVec3,
     /// Its LTC radiance with table B, where two tables are compared.
     pub ltc_b: Option<DVec3>,
+    /// A light with a size: its radiance by each of `SphereMethod::ALL` (table A).
+    pub spheres: Option<[DVec3; 4]>,
 }
 
 impl LightTerm {
@@ -128,13 +132,15 @@ pub fn elevation_azimuth(w: DVec3) -> (f64, f64) {
 }
 
 /// Every light of `scene` at `p`, LTC with table A and the given rules against the exact
-/// BRDF, and with table B too where there is one (`tables.1`); `None` where the camera sees
-/// the plane from below.
+/// BRDF, and with table B too where there is one (`tables.1`); lights with a size by
+/// `spheres` (the LTC side's sphere method, then the exact side's); `None` where the camera
+/// sees the plane from below.
 pub fn pixel_terms(
     scene: &Scene,
     (lut, lut_b): (&Lut, Option<&Lut>),
     p: &SurfacePoint,
     rules: &LtcRules,
+    spheres: [SphereMethod; 2],
 ) -> Option<PixelTerms> {
     if p.view.z <= 0.0 {
         return None;
@@ -149,6 +155,14 @@ pub fn pixel_terms(
         .map(|(index, light)| {
             let mut term = light_term(scene, &px, p, (index, light), rules);
             term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, rules));
+            if light.is_sized() {
+                let by = |m, px: &LtcPixel| sphere_term(scene, px, p, light, rules, m);
+                let all = SphereMethod::ALL.map(|m| by(m, &px));
+                term.ltc = by(spheres[0], &px);
+                term.exact = by(spheres[1], &px);
+                term.ltc_b = px_b.map(|b| by(spheres[0], &b));
+                term.spheres = Some(all);
+            }
             term
         })
         .collect();
@@ -201,5 +215,6 @@ fn light_term(
         ltc: ltc_term(scene, px, p, light, rules),
         exact: exact_term(scene, &px.frame, p, light),
         ltc_b: None,
+        spheres: None,
     }
 }

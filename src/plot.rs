@@ -1,4 +1,5 @@
-//! Charts written to PNG with plotters: the study's Pareto chart and the atlas's heat maps.
+//! Charts written to PNG with plotters: the study's Pareto chart, the atlas's heat maps and
+//! its lines of the sphere lights' errors.
 //! Text uses egui's bundled Ubuntu-Light (nothing is read from the system's fonts).
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -191,6 +192,84 @@ pub fn heat_map_png(
             let x = (f64::from(bw) * k as f64 / 3.0) as i32 - 12;
             bar.draw(&Text::new(*label, (x, 20), ("sans-serif", 14)))
                 .map_err(|e| plot_error(name, e))?;
+        }
+        root.present().map_err(|e| plot_error(name, e))?;
+    }
+    encode_png(name, w, h, buffer)
+}
+
+/// A line of a panel: its label and its points.
+pub struct Series {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// Panels side by side sharing their axes' ranges, each with its lines (the k-th series of
+/// every panel in the k-th colour, labelled in the first panel's legend).
+pub fn line_panels_png(
+    name: &str,
+    title: &str,
+    (x_desc, y_desc): (&str, &str),
+    panels: &[(String, Vec<Series>)],
+) -> Result<Vec<u8>> {
+    register_font();
+    let (w, h) = (360 * panels.len().max(1) as u32, 480u32);
+    let mut buffer = vec![0u8; (w * h * 3) as usize];
+    let all = || panels.iter().flat_map(|p| &p.1).flat_map(|s| &s.points);
+    let x1 = all().map(|p| p.0).fold(1e-9, f64::max);
+    let y1 = all().map(|p| p.1).fold(1e-9, f64::max) * 1.1;
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| plot_error(name, e))?;
+        let root = root
+            .titled(title, ("sans-serif", 18))
+            .map_err(|e| plot_error(name, e))?;
+        let areas = root.split_evenly((1, panels.len().max(1)));
+        for (k, ((panel_title, series), area)) in panels.iter().zip(&areas).enumerate() {
+            let mut chart = ChartBuilder::on(area)
+                .caption(panel_title, ("sans-serif", 15))
+                .margin(10)
+                .x_label_area_size(40)
+                .y_label_area_size(if k == 0 { 56 } else { 36 })
+                .build_cartesian_2d(0.0..x1, 0.0..y1)
+                .map_err(|e| plot_error(name, e))?;
+            chart
+                .configure_mesh()
+                .x_desc(x_desc)
+                .y_desc(if k == 0 { y_desc } else { "" })
+                .x_label_formatter(&|v| format!("{v:.0}"))
+                .y_label_formatter(&|v| format!("{v:.0}"))
+                .light_line_style(WHITE)
+                .label_style(("sans-serif", 13))
+                .draw()
+                .map_err(|e| plot_error(name, e))?;
+            for (j, s) in series.iter().enumerate() {
+                let colour = Palette99::pick(j).to_rgba();
+                chart
+                    .draw_series(s.points.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+                    .map_err(|e| plot_error(name, e))?;
+                let drawn = chart
+                    .draw_series(LineSeries::new(
+                        s.points.iter().copied(),
+                        colour.stroke_width(2),
+                    ))
+                    .map_err(|e| plot_error(name, e))?;
+                if k == 0 {
+                    drawn.label(s.label.clone()).legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 16, y)], colour.stroke_width(2))
+                    });
+                }
+            }
+            if k == 0 {
+                chart
+                    .configure_series_labels()
+                    .position(SeriesLabelPosition::UpperLeft)
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .label_font(("sans-serif", 13))
+                    .draw()
+                    .map_err(|e| plot_error(name, e))?;
+            }
         }
         root.present().map_err(|e| plot_error(name, e))?;
     }

@@ -52,6 +52,31 @@ pub fn sphere_errors(
     seed: u64,
     nodes: usize,
 ) -> Vec<SphereError> {
+    errors_by_cell(lut, radii_deg, (cases, seed, nodes), None)
+}
+
+/// The same at one view and roughness (θo in degrees, α): the lights alone are drawn, as
+/// `horizon::band_errors_at` draws them.
+pub fn sphere_errors_at(
+    lut: &Lut,
+    (theta_o_deg, alpha): (f64, f64),
+    radius_deg: f64,
+    (cases, seed, nodes): (usize, u64, usize),
+) -> Vec<SphereError> {
+    errors_by_cell(
+        lut,
+        &[radius_deg],
+        (cases, seed, nodes),
+        Some((theta_o_deg, alpha)),
+    )
+}
+
+fn errors_by_cell(
+    lut: &Lut,
+    radii_deg: &[f64],
+    (cases, seed, nodes): (usize, u64, usize),
+    at: Option<(f64, f64)>,
+) -> Vec<SphereError> {
     let cells: Vec<(f64, usize)> = radii_deg
         .iter()
         .flat_map(|&r| (0..BANDS.len()).map(move |k| (r, k)))
@@ -62,8 +87,9 @@ pub fn sphere_errors(
             let mut rng = SplitMix64(seed.wrapping_add(k as u64));
             let mut sums = [0.0f64; 8];
             for _ in 0..cases {
-                let (theta_o, alpha, l) = draw(&mut rng, BANDS[k]);
-                let (want, got) = one_sphere(lut, (theta_o, alpha), l, radius_deg, nodes);
+                let (drawn_theta, drawn_alpha, l) = draw(&mut rng, BANDS[k]);
+                let view = at.unwrap_or((drawn_theta, drawn_alpha));
+                let (want, got) = one_sphere(lut, view, l, radius_deg, nodes);
                 sums[0] += want.specular;
                 sums[1] += want.diffuse;
                 for (m, lobes) in got.iter().enumerate() {

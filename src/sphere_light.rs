@@ -52,6 +52,22 @@ impl SphereMethod {
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.name() == name)
     }
+
+    /// One line for a reader of the lab or the command line.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::Exact => {
+                "The BRDF integrated over the visible cap (8 Gauss–Legendre nodes per dimension and piece in renders): the reference"
+            }
+            Self::LtcPoint => "The paper's point formula at the sphere's centre: good to σ ≈ 2°",
+            Self::LtcDisk => {
+                "The cap as an LTC disk of the same solid angle (Heitz & Hill 2017; EEVEE, Bevy's pull request)"
+            }
+            Self::RepresentativePoint => {
+                "Karis 2013's closest point to the mirror ray with its energy normalization (Unreal)"
+            }
+        }
+    }
 }
 
 /// One sphere light at one shading point: everything the methods read.

@@ -11,7 +11,11 @@ use ltc_lab::ltc::{ClipCase, Clipping, Normalization};
 use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
 use ltc_lab::render::{LtcRules, Method, RenderSettings, Tables, View};
-use ltc_lab::scene::preset;
+use ltc_lab::scene::{SPHERE_PRESETS, preset};
+use ltc_lab::sphere_light::SphereMethod;
+
+/// The lab's sphere methods (the LTC side's, the exact side's): point scenes never read them.
+const SPHERES: [SphereMethod; 2] = [SphereMethod::LtcDisk, SphereMethod::Exact];
 
 #[test]
 fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
@@ -29,7 +33,7 @@ fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
                 continue;
             };
             let n = Normalization::Corrected;
-            let t = pixel_terms(&scene, (lut, None), &p, &rules(clip, n)).unwrap();
+            let t = pixel_terms(&scene, (lut, None), &p, &rules(clip, n), SPHERES).unwrap();
             let ltc = shade_ltc(&scene, lut, &p, &scene.lights, &rules(clip, n));
             let exact = shade_exact(&scene, &p, &scene.lights);
             let sum_ltc = t.terms.iter().fold(glam::DVec3::ZERO, |a, l| a + l.ltc);
@@ -107,7 +111,7 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
             let Some(p) = scene.surface_point(x, y, w, h) else {
                 continue;
             };
-            let t = pixel_terms(&scene, (a, Some(b)), &p, &rules(clip, n)).unwrap();
+            let t = pixel_terms(&scene, (a, Some(b)), &p, &rules(clip, n), SPHERES).unwrap();
             let k = y * w + x;
             let sum_b = t
                 .terms
@@ -182,6 +186,7 @@ fn without_table_b_side_b_is_the_exact_brdf() {
         (Lut::embedded(), None),
         &p,
         &rules(Clipping::BOTH, n),
+        SPHERES,
     )
     .unwrap();
     assert!(t.ltc_b.is_none() && t.terms.iter().all(|l| l.ltc_b.is_none()));
@@ -236,4 +241,70 @@ fn a_render_in_bands_is_the_whole_render() {
         };
         assert!(bits(&banded) == bits(&whole), "{view:?}");
     }
+}
+
+/// Lights with a size: each side's terms sum to that side's render with its sphere method,
+/// whichever pair of methods the sides use, and each light's row of sphere methods holds the
+/// value its side shades it with.
+#[test]
+fn sized_lights_sum_to_each_sides_render_by_its_sphere_method() {
+    let lut = Lut::embedded();
+    let (w, h) = (40, 24);
+    let mut pixels = 0;
+    for (name, _) in SPHERE_PRESETS {
+        let scene = preset(name);
+        for spheres in [
+            SPHERES,
+            [SphereMethod::RepresentativePoint, SphereMethod::LtcPoint],
+        ] {
+            let settings = |method| RenderSettings {
+                sphere_a: spheres[0],
+                sphere_b: spheres[1],
+                view: View::B,
+                method_b: method,
+                ..RenderSettings::single(w, h, Method::Ltc)
+            };
+            let a = render(
+                &scene,
+                lut,
+                &RenderSettings {
+                    view: View::A,
+                    ..settings(Method::Brdf)
+                },
+            );
+            let b = render(&scene, lut, &settings(Method::Brdf));
+            for (x, y) in [(5, 20), (20, 12), (33, 6), (12, 16)] {
+                let Some(p) = scene.surface_point(x, y, w, h) else {
+                    continue;
+                };
+                let rules = LtcRules::default();
+                let t = pixel_terms(&scene, (lut, None), &p, &rules, spheres).unwrap();
+                let k = y * w + x;
+                // A handful of terms in f64: 1e-13 relative.
+                let close = |u: DVec3, v: DVec3| {
+                    (u - v).abs().max_element() <= 1e-13 * v.abs().max_element().max(1e-300)
+                };
+                assert!(
+                    close(t.ltc, a.pixels[k]),
+                    "{name} ({x}, {y}): A {} vs {}",
+                    t.ltc,
+                    a.pixels[k]
+                );
+                assert!(
+                    close(t.exact, b.pixels[k]),
+                    "{name} ({x}, {y}): B {} vs {}",
+                    t.exact,
+                    b.pixels[k]
+                );
+                for l in &t.terms {
+                    let all = l.spheres.expect("every light of these presets has a size");
+                    let of = |m| all[SphereMethod::ALL.iter().position(|&x| x == m).unwrap()];
+                    assert_eq!(of(spheres[0]), l.ltc);
+                    assert_eq!(of(spheres[1]), l.exact);
+                }
+                pixels += 1;
+            }
+        }
+    }
+    assert!(pixels >= 16, "only {pixels} pixels on the plane");
 }

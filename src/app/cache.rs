@@ -55,6 +55,7 @@ tuple_inputs!(A, B, C, D, E);
 tuple_inputs!(A, B, C, D, E, F);
 tuple_inputs!(A, B, C, D, E, F, G);
 tuple_inputs!(A, B, C, D, E, F, G, H);
+tuple_inputs!(A, B, C, D, E, F, G, H, I);
 
 /// A value made from inputs, and how many times it was made.
 pub struct Cached<V> {

@@ -60,7 +60,8 @@ impl Panel for ClippingPanel {
     }
 
     fn caches(&self) -> Vec<(&'static str, u64)> {
-        vec![self.started.count(), self.elevation.count()]
+        let [bands, spheres] = self.elevation.counts();
+        vec![self.started.count(), bands, spheres]
     }
 }
 

@@ -7,15 +7,16 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 
 use crate::app::files::Purpose;
-use crate::app::lab::parts::{BRDF_FORMS, LTC_FORMS, RANGE_RANGE};
-use crate::app::lab::{Forms, Lab, LobeView, Overrides, Request};
+use crate::app::lab::parts::{BRDF_FORMS, LTC_FORMS, RADIUS_RANGE, RANGE_RANGE};
+use crate::app::lab::{Forms, Lab, LobeView, Overrides, Request, SphereForms};
 use crate::app::panel::Panel;
 use crate::app::widgets::{clipping_rules, explain, name};
 use crate::ltc::Normalization;
 use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::ltc::remedy::Horizon;
 use crate::render::LtcRules;
-use crate::scene::{Light, Material, PRESETS, preset};
+use crate::scene::{Light, Material, PRESETS, SPHERE_PRESETS, preset};
+use crate::sphere_light::SphereMethod;
 use crate::tables::Source;
 
 /// The light counts the slider offers, at most (and at most what the adapter shades).
@@ -173,6 +174,67 @@ fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
         ui.checkbox(&mut f.cull, "cull by range")
             .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. The image is the same to the bit; with short ranges it is much faster")
     });
+    egui::CollapsingHeader::new("lights with a size")
+        .id_salt("sized lights")
+        .show(ui, |ui| sized_lights(ui, lab));
+}
+
+/// Every light's radius, how each side shades a light with one, and the failure presets
+/// (docs/design.md §1.10).
+fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
+    lab.edit(|o: &mut Overrides| {
+        ui.add(
+            egui::Slider::new(&mut o.radius, 0.0..=RADIUS_RANGE[1])
+                .logarithmic(true)
+                .smallest_positive(RADIUS_RANGE[0])
+                .text("radius r"),
+        )
+        .on_hover_text("Every light a sphere of radius r, lighting a distant point as its point light does (radiance I/(π r²)); 0 keeps each light's own radius (absent = a point)");
+        explain(
+            ui,
+            if o.radius > 0.0 {
+                "every light a sphere of radius r"
+            } else {
+                "0: each light's own radius from the scene"
+            },
+        );
+    });
+    lab.edit(|f: &mut SphereForms| {
+        for (label, method, hover) in [
+            (
+                "LTC side",
+                &mut f.ltc,
+                "How the LTC side (and table B) shades a light with a size",
+            ),
+            (
+                "reference side",
+                &mut f.brdf,
+                "How the BRDF side shades a light with a size",
+            ),
+        ] {
+            egui::ComboBox::from_label(label)
+                .selected_text(method.name())
+                .show_ui(ui, |ui| {
+                    for m in SphereMethod::ALL {
+                        ui.selectable_value(method, m, m.name())
+                            .on_hover_text(m.describe());
+                    }
+                })
+                .response
+                .on_hover_text(hover);
+        }
+    });
+    ui.horizontal_wrapped(|ui| {
+        for (name, _) in SPHERE_PRESETS {
+            if ui
+                .small_button(name)
+                .on_hover_text("Load this failure case of lights with a size")
+                .clicked()
+            {
+                lab.use_scene(preset(name));
+            }
+        }
+    });
 }
 
 fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
@@ -268,6 +330,10 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
                 .labelled_by(label.id)
                 .on_hover_text(hover);
         }
+        let label = ui.label("r");
+        ui.add(egui::DragValue::new(&mut light.radius).speed(0.001).range(0.0..=RADIUS_RANGE[1]).max_decimals(4))
+            .labelled_by(label.id)
+            .on_hover_text("Radius: 0 is the paper's point light; from 0.0001 a sphere, shaded by each side's method for lights with a size");
     });
 }
 

@@ -214,17 +214,22 @@ impl LabApp {
         }
         self.layout(ui);
         self.carry_out(ui.ctx());
-        self.count_caches();
+        self.count_caches(ui.ctx().current_pass_index() == 0);
     }
 
-    /// The caches made again this frame, from their counts.
-    fn count_caches(&mut self) {
+    /// The caches made again this frame, from their counts: over all of its passes (egui runs
+    /// a frame again where a widget's size changed, and the pass that made a cache is then not
+    /// the last).
+    fn count_caches(&mut self, first_pass: bool) {
         let counts = self.panels.caches();
-        self.remade = counts
-            .iter()
-            .filter(|c| !self.counts.contains(c))
-            .map(|c| c.0)
-            .collect();
+        if first_pass {
+            self.remade.clear();
+        }
+        for c in counts.iter().filter(|c| !self.counts.contains(c)) {
+            if !self.remade.contains(&c.0) {
+                self.remade.push(c.0);
+            }
+        }
         self.counts = counts;
     }
 

@@ -5,6 +5,8 @@
 //! exact BRDF, or (two tables compared) LTC with table A and with table B. A row's click
 //! shows that light on the lobe panel.
 
+use glam::DVec3;
+
 use serde::{Deserialize, Serialize};
 
 use crate::app::cache::{Cached, Own};
@@ -13,6 +15,7 @@ use crate::colormap::short_number;
 use crate::ltc::ClipCase;
 use crate::metrics::luminance;
 use crate::pixel::{LightTerm, PixelTerms, elevation_azimuth, pixel_terms};
+use crate::sphere_light::SphereMethod;
 
 /// At most this many rows (the largest contributions first when sorted so): a table of
 /// 20 000 lights is unreadable, and the sums above it cover every light.
@@ -62,6 +65,7 @@ impl PinnedLights {
             lab.side_b(),
             lab.rules(),
             lab.tables(),
+            lab.spheres(),
             Own((pinned, size)),
         );
         self.terms.get(
@@ -74,6 +78,7 @@ impl PinnedLights {
                 side_b,
                 rules,
                 tables,
+                spheres,
                 Own((pinned, (width, height))),
             )| {
                 let [u, v] = pinned?;
@@ -82,7 +87,8 @@ impl PinnedLights {
                 let p =
                     scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
                 let b = (**side_b == SideB::TableB).then_some(&tables.b().lut);
-                pixel_terms(&scene, (&tables.a().lut, b), &p, rules)
+                let spheres = [spheres.ltc, spheres.brdf];
+                pixel_terms(&scene, (&tables.a().lut, b), &p, rules, spheres)
             },
         );
     }
@@ -254,6 +260,7 @@ pub fn show(
                     rows.len() - MAX_ROWS
                 ));
             }
+            sized_rows(ui, &rows);
         });
 }
 
@@ -303,6 +310,48 @@ fn readout(ui: &mut egui::Ui, (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab), 
             lab.edit(|v: &mut LobeView| v.light = None);
         }
     });
+}
+
+/// Each light with a size by every sphere method, against the exact integral (the renders'
+/// rule), in the table's order: what each engine's choice gives at this pixel.
+fn sized_rows(ui: &mut egui::Ui, rows: &[&LightTerm]) {
+    let sized: Vec<(usize, [DVec3; 4])> = rows
+        .iter()
+        .filter_map(|l| l.spheres.map(|s| (l.index, s)))
+        .take(MAX_ROWS)
+        .collect();
+    if sized.is_empty() {
+        return;
+    }
+    let exact_at = SphereMethod::ALL
+        .iter()
+        .position(|&m| m == SphereMethod::Exact)
+        .expect("ALL lists the exact method");
+    ui.small("lights with a size, by each method (luminance; error against exact):");
+    egui::Grid::new("pixel sized lights")
+        .striped(true)
+        .spacing([10.0, 2.0])
+        .show(ui, |ui| {
+            ui.small("light");
+            for m in SphereMethod::ALL {
+                ui.small(m.name()).on_hover_text(m.describe());
+            }
+            ui.end_row();
+            for (index, values) in sized {
+                ui.monospace(index.to_string());
+                let exact = luminance(values[exact_at]);
+                for (k, v) in values.into_iter().enumerate() {
+                    let l = luminance(v);
+                    if k == exact_at {
+                        ui.monospace(short_number(l));
+                    } else {
+                        let error = 100.0 * (l - exact) / exact.abs().max(1e-300);
+                        ui.monospace(format!("{} ({error:+.1}%)", short_number(l)));
+                    }
+                }
+                ui.end_row();
+            }
+        });
 }
 
 /// A column's header: a button that sorts by it (again: the other way round).

@@ -430,9 +430,12 @@ pub fn render_settings(
     (width, height): (usize, usize),
 ) -> RenderSettings {
     let forms = **lab.forms();
+    let spheres = **lab.spheres();
     let tables = **lab.side_b() == SideB::TableB;
     RenderSettings {
         method_b: if tables { forms.ltc } else { forms.brdf },
+        sphere_a: spheres.ltc,
+        sphere_b: if tables { spheres.ltc } else { spheres.brdf },
         b_reads_table_b: tables,
         view: state.view,
         rules: **lab.rules(),

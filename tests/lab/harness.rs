@@ -162,6 +162,10 @@ pub fn press(h: &mut Harness<'static, LabApp>, label: &str) {
 
 /// Types `text` into the field named `name` (a screen reader's way: its value set).
 pub fn type_into(h: &mut Harness<'static, LabApp>, name: &str, text: &str) {
+    // Scrolled to first, as a user would: a field scrolled out of the side panel takes no
+    // text.
+    h.get_by_label(name).scroll_to_me();
+    h.run_steps(2);
     h.get_by_label(name).set_text_value_accesskit(text);
     h.run_steps(1);
 }
@@ -186,7 +190,7 @@ pub fn plane_image(h: &mut Harness<'static, LabApp>) -> Frame {
     while !path.exists() {
         assert!(
             start.elapsed() < Duration::from_secs(60),
-            "the plane's image was never saved: {:?}",
+            "the plane's image was never saved to {path:?}: {:?}",
             h.state().report()
         );
         h.step();

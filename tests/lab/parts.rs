@@ -164,6 +164,17 @@ fn every_side_panel_edit_invalidates_exactly_the_caches_that_read_it() {
         ),
         ("range R", |h| set(h, "range R", 1.5), lights.to_vec()),
         (
+            "radius r",
+            |h| {
+                h.get_by_label("lights with a size").click();
+                h.run_steps(2);
+                set(h, "radius r", 0.05);
+            },
+            lights.to_vec(),
+        ),
+        // Back to points: the sized lights' exact side is slow on a software GPU.
+        ("radius r to 0", |h| set(h, "radius r", 0.0), lights.to_vec()),
+        (
             "cull by range",
             |h| h.get_by_label("cull by range").click(),
             vec!["plane.render"],
@@ -220,6 +231,21 @@ fn every_side_panel_edit_invalidates_exactly_the_caches_that_read_it() {
             .click();
         let made = remade(&mut h);
         assert_eq!(made, BTreeSet::from(["plane.render"]), "{combo}");
+    }
+    // How each side shades lights with a size: the plane and its pinned pixel read it.
+    for (combo, method) in [("LTC side", "representative-point"), ("reference side", "ltc-point")] {
+        h.get_by_role_and_label(Role::ComboBox, combo).click();
+        h.run_steps(2);
+        h.query_all_by_label(method)
+            .find(|n| n.accesskit_node().role() != Role::Label)
+            .unwrap()
+            .click();
+        let made = remade(&mut h);
+        assert_eq!(
+            made,
+            BTreeSet::from(["plane.render", "plane.pinned"]),
+            "{combo}"
+        );
     }
     // The plane's exposure is shown, not summed: nothing is made again.
     let exposure = h.state().lab().exposure().0;

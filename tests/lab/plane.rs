@@ -248,7 +248,8 @@ fn pinned_terms(
         .unwrap();
     let tables = lab.tables();
     let b = (**lab.side_b() == ltc_lab::app::lab::SideB::TableB).then_some(&tables.b().lut);
-    let terms = pixel_terms(&scene, (&tables.a().lut, b), &p, lab.rules()).unwrap();
+    let spheres = [lab.spheres().ltc, lab.spheres().brdf];
+    let terms = pixel_terms(&scene, (&tables.a().lut, b), &p, lab.rules(), spheres).unwrap();
     (terms, [u, v], p)
 }
 

@@ -13,8 +13,8 @@ use serde::{Deserialize, Serialize};
 
 pub use part::{Checked, Part, Stamp};
 pub use parts::{
-    Exposure, Forms, LastRefit, Lights, LobeView, Overrides, Selection, SideB, Stage, TableId,
-    TableSources, Tables,
+    Exposure, Forms, LastRefit, Lights, LobeView, Overrides, Selection, SideB, SphereForms, Stage,
+    TableId, TableSources, Tables,
 };
 
 use crate::gpu::GpuContext;
@@ -80,6 +80,7 @@ pub struct Shared {
     pub exposure: Part<Exposure>,
     pub lobe_view: Part<LobeView>,
     pub forms: Part<Forms>,
+    pub spheres: Part<SphereForms>,
     pub side_b: Part<SideB>,
     pub overrides: Part<Overrides>,
     pub rules: Part<LtcRules>,
@@ -102,6 +103,7 @@ impl Shared {
             exposure,
             lobe_view,
             forms,
+            spheres,
             side_b,
             overrides,
             rules,
@@ -116,6 +118,7 @@ impl Shared {
         one(exposure, &mut notes);
         one(lobe_view, &mut notes);
         one(forms, &mut notes);
+        one(spheres, &mut notes);
         one(side_b, &mut notes);
         one(overrides, &mut notes);
         one(rules, &mut notes);
@@ -184,6 +187,7 @@ parts! {
     exposure: Exposure;
     lobe_view: LobeView;
     forms: Forms;
+    spheres: SphereForms;
     side_b: SideB;
     overrides: Overrides;
     rules: LtcRules;

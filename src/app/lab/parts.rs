@@ -1,7 +1,7 @@
 //! The parts the panels share, each a value of its own type with the checks it passes where
 //! it enters the lab: the scene as four parts (its lights, its material, the stage — plane and
 //! camera — and the exposure it is shown with), the view of the lobe and matrix panels, the
-//! shading forms, side B, the lights' overrides, the LTC rules, the tables, the selection and
+//! shading forms, how each side shades lights with a size, side B, the lights' overrides, the LTC rules, the tables, the selection and
 //! the last refit. The lab holds each in a `Part` (`app::lab`).
 
 use serde::{Deserialize, Serialize};
@@ -12,8 +12,9 @@ use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::render::{LtcRules, Method};
 use crate::scene::{
-    Camera, Light, MAX_COORDINATE, MAX_INTENSITY, MAX_LIGHTS, Material, Plane, Scene,
+    Camera, Light, MAX_COORDINATE, MAX_INTENSITY, MAX_LIGHTS, MIN_RADIUS, Material, Plane, Scene,
 };
+use crate::sphere_light::SphereMethod;
 use crate::tables::{NamedTable, NamedTables, Source};
 
 /// The scene the parts make.
@@ -28,13 +29,16 @@ pub fn scene(stage: &Stage, material: &Material, lights: &Lights, exposure: &Exp
     }
 }
 
-/// `scene` as shaded: every light's intensity multiplied, its range replaced where the
-/// overrides say.
+/// `scene` as shaded: every light's intensity multiplied, its range and radius replaced
+/// where the overrides say.
 pub fn shaded(mut scene: Scene, o: &Overrides) -> Scene {
     for l in &mut scene.lights {
         l.intensity *= o.intensity_scale;
         if o.range > 0.0 {
             l.range = Some(o.range);
+        }
+        if o.radius > 0.0 {
+            l.radius = o.radius;
         }
     }
     scene
@@ -90,7 +94,7 @@ impl Checked for Lights {
 /// it to take the value from.
 fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -> bool {
     let values = l.position.into_iter().chain(l.color).chain([l.intensity]);
-    let finite = values.chain(l.range).all(f64::is_finite);
+    let finite = values.chain(l.range).chain([l.radius]).all(f64::is_finite);
     let before = match (before, finite) {
         (Some(b), _) => *b,
         (None, true) => *l,
@@ -121,6 +125,10 @@ fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -
         // a light lights nothing anyway.
         let previous = before.range.unwrap_or(*r);
         n.number(&name("range"), r, previous, [1e-6, 2.0 * MAX_COORDINATE]);
+    }
+    // 0 is a point light; a size is at least `MIN_RADIUS` (docs/design.md §3).
+    if l.radius != 0.0 {
+        n.number(&name("radius"), &mut l.radius, before.radius, RADIUS_RANGE);
     }
     true
 }
@@ -310,6 +318,33 @@ impl Checked for Forms {
     }
 }
 
+/// How each side of the plane shades the lights with a size (docs/design.md §1.10).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SphereForms {
+    /// The LTC side's (and table B's, where two tables are compared).
+    pub ltc: SphereMethod,
+    /// The reference side's.
+    pub brdf: SphereMethod,
+}
+
+impl Default for SphereForms {
+    /// What engines ship (EEVEE, Bevy's pull request) against the reference.
+    fn default() -> Self {
+        Self {
+            ltc: SphereMethod::LtcDisk,
+            brdf: SphereMethod::Exact,
+        }
+    }
+}
+
+/// A choice among the sphere methods holds no number.
+impl Checked for SphereForms {
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
 /// What the plane's side B is: the exact BRDF, or LTC with table B (two tables compared).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum SideB {
@@ -324,15 +359,21 @@ impl Checked for SideB {
     }
 }
 
-/// What the lab does to every light as it shades: its intensity multiplied, its range
-/// replaced.
+/// What the lab does to every light as it shades: its intensity multiplied, its range and
+/// radius replaced.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Overrides {
     pub intensity_scale: f64,
     /// Every light's range where > 0; 0 keeps each light's own.
     pub range: f64,
+    /// Every light's radius where > 0; 0 keeps each light's own.
+    pub radius: f64,
 }
+
+/// A light's radius in the lab, where it has one: the scene's smallest (a tenth of a
+/// millimetre) to 1 (half the default plane's half-size; larger spheres swallow the view).
+pub const RADIUS_RANGE: [f64; 2] = [MIN_RADIUS, 1.0];
 
 /// The intensity slider's range: four decades about the scene's own.
 pub const INTENSITY_RANGE: [f64; 2] = [0.01, 100.0];
@@ -345,6 +386,7 @@ impl Default for Overrides {
         Self {
             intensity_scale: 1.0,
             range: 0.0,
+            radius: 0.0,
         }
     }
 }
@@ -361,6 +403,9 @@ impl Checked for Overrides {
             );
             if self.range != 0.0 {
                 n.number("range R", &mut self.range, p.range, RANGE_RANGE);
+            }
+            if self.radius != 0.0 {
+                n.number("radius r", &mut self.radius, p.radius, RADIUS_RANGE);
             }
         })
     }
