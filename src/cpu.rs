@@ -11,6 +11,7 @@ use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact};
 use crate::ltc::lut::Lut;
 use crate::ltc::nl_fit::{self, NlTerms};
 use crate::ltc::remedy::HorizonRule;
+use crate::ltc::sphere::{Cap, SphereCase};
 use crate::ltc::{ClipCase, LtcPair};
 use crate::metrics::relative_difference;
 use crate::render::{
@@ -384,6 +385,39 @@ fn render_radiance(
         on_plane,
         divider: None,
     }
+}
+
+/// The most telling sphere case (`SphereCase::ALL`'s order) of the lights with a size that
+/// reach `p`; `None` where none does.
+pub fn sphere_case(scene: &Scene, p: &SurfacePoint) -> Option<SphereCase> {
+    let frame = ShadingFrame::new(p.view);
+    scene
+        .lights
+        .iter()
+        .filter(|l| l.is_sized())
+        .filter_map(|l| {
+            let u = frame.tangent_from_world(DVec3::from(l.position) - p.position);
+            let lit = irradiance_scale(1.0, u.length(), l.range_or_infinity()) > 0.0;
+            let cap = Cap::of_sphere(u, l.radius)?;
+            // Inside the sphere the window's distance is 0 or less: it reaches the point.
+            (lit || cap.encloses()).then(|| cap.case())
+        })
+        .max_by_key(|c| c.rank())
+}
+
+/// Each pixel's `sphere_case` for a `width × height` view (`None` off the plane or where no
+/// light with a size reaches), rows in parallel.
+pub fn sphere_case_map(scene: &Scene, width: usize, height: usize) -> Vec<Option<SphereCase>> {
+    (0..height)
+        .into_par_iter()
+        .flat_map_iter(|y| {
+            (0..width).map(move |x| {
+                scene
+                    .surface_point(x, y, width, height)
+                    .and_then(|p| sphere_case(scene, &p))
+            })
+        })
+        .collect()
 }
 
 /// How many lights fall in each clipping case at a surface point (the paper's §2.5, in the

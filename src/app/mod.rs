@@ -35,6 +35,7 @@ pub mod refit;
 pub mod report;
 pub mod screenshot;
 pub mod shading;
+pub mod sphere_cases;
 pub mod state;
 pub mod widgets;
 

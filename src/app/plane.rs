@@ -15,14 +15,15 @@ use crate::app::lab::{Checked, Exposure, Lab, Lights, LobeView, Selection, SideB
 use crate::app::panel::Panel;
 use crate::app::pixel_table::{self, LightColumn, PinnedLights};
 use crate::app::plane_paint::{
-    PixelReading, Placed, markers, paint_divider, paint_image, paint_markers, paint_pin,
-    preview_label, progress_line, reading_line,
+    PixelReading, Placed, markers, paint_divider, paint_image, paint_markers, paint_outlines,
+    paint_pin, preview_label, progress_line, reading_line,
 };
 use crate::app::shading::Shading;
-use crate::cpu::{clip_counts, shade_exact, shade_ltc};
+use crate::app::sphere_cases::SphereCases;
+use crate::cpu::{Side, clip_counts, shade};
 use crate::gpu::GpuContext;
 use crate::metrics::luminance;
-use crate::render::{Frame, FrameKind, RenderSettings, View};
+use crate::render::{Frame, FrameKind, Method, RenderSettings, View};
 use crate::scene::{Light, Scene};
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
@@ -47,6 +48,8 @@ pub struct PlaneState {
     /// The live GPU times in the progress line (off for a slide or a screenshot that must
     /// not change run to run).
     pub show_gpu_times: bool,
+    /// The map of sphere cases over the plane (offered where a light has a size).
+    pub sphere_cases: bool,
 }
 
 impl Default for PlaneState {
@@ -57,6 +60,7 @@ impl Default for PlaneState {
             pinned: None,
             light_sort: (LightColumn::ErrorShare, true),
             show_gpu_times: true,
+            sphere_cases: false,
         }
     }
 }
@@ -98,6 +102,8 @@ pub struct PlanePanel {
     pinned: PinnedLights,
     /// *worst pixel* was pressed: the pixel is pinned when the difference view is done.
     worst_pending: bool,
+    /// The map of sphere cases, where it is shown.
+    cases: SphereCases,
 }
 
 impl Panel for PlanePanel {
@@ -108,6 +114,10 @@ impl Panel for PlanePanel {
             exposure_slider(ui, lab);
             ui.checkbox(&mut self.state.show_gpu_times, "GPU times")
                 .on_hover_text("The GPU milliseconds in the progress line; off for a slide or a screenshot that should not change from run to run");
+            if sized(lab) {
+                ui.checkbox(&mut self.state.sphere_cases, "sphere cases")
+                    .on_hover_text("Colour each pixel by where its lights with a size are: above the surface, below it, cut by its horizon, or around the point (the failure cases of lights with a size)");
+            }
         });
         progress_line(ui, self.shading.progress(), !self.state.show_gpu_times);
         below_plane_note(ui, lab);
@@ -129,6 +139,10 @@ impl Panel for PlanePanel {
         let settings = self.settings(lab, placed.size);
         let shown = self.shading.update(ui.ctx(), lab, &settings);
         self.shown = Some(shown);
+        let show_cases = self.state.sphere_cases && sized(lab);
+        if show_cases {
+            self.cases.update(ui.ctx(), lab, placed.size);
+        }
         self.pin_worst(lab);
         if self.worst_pending {
             ui.ctx().request_repaint();
@@ -139,6 +153,9 @@ impl Panel for PlanePanel {
         self.pinned.update(lab, self.state.pinned, placed.size);
         if self.state.view == View::Diff {
             colour_bar(ui, &difference_scale(a, b), 220.0);
+        }
+        if show_cases {
+            self.cases.legend(ui);
         }
         // No tooltip on the image: it would cover the reading below it while one hovers.
         // Read afresh every frame, so that it follows every change; none off the image.
@@ -158,6 +175,7 @@ impl Panel for PlanePanel {
     fn caches(&self) -> Vec<(&'static str, u64)> {
         let mut caches = self.shading.caches().to_vec();
         caches.push(self.pinned.count());
+        caches.push(self.cases.count());
         caches
     }
 }
@@ -177,6 +195,7 @@ impl PlanePanel {
             drag: None,
             pinned: PinnedLights::default(),
             worst_pending: false,
+            cases: SphereCases::default(),
         };
         (panel, why)
     }
@@ -216,11 +235,16 @@ impl PlanePanel {
         let rect = placed.rect;
         let painter = ui.painter_at(rect);
         paint_image(&painter, rect, shown, self.shading.error());
+        if self.state.sphere_cases && sized(lab) {
+            self.cases.paint(&painter, rect);
+        }
         preview_label(ui, rect, self.shading.progress());
         if self.state.view == View::Split {
             paint_divider(&painter, rect, self.divider_x(rect), sides);
         }
-        paint_markers(&painter, lab, &markers(lab, placed));
+        let markers = markers(lab, placed);
+        paint_outlines(&painter, lab, placed, &markers);
+        paint_markers(&painter, lab, &markers);
         if let Some([u, v]) = self.state.pinned {
             paint_pin(
                 &painter,
@@ -534,12 +558,23 @@ fn inspect(lab: &Lab, placed: Placed, pos: Pos2) -> Option<PixelReading> {
     let scene = lab.shaded_scene();
     let (x, y) = placed.pixel(pos);
     let p = scene.surface_point_at(x, y, placed.size.0, placed.size.1)?;
-    let ltc = |table| shade_ltc(&scene, table, &p, &scene.lights, lab.rules());
-    let a = ltc(&tables.a().lut);
+    let spheres = **lab.spheres();
+    // The literal forms: the CPU's fast ones are the same math.
+    let ltc = |lut| Side {
+        method: Method::Ltc,
+        sphere: spheres.ltc,
+        lut,
+    };
     let b = match **lab.side_b() {
         SideB::TableB => ltc(&tables.b().lut),
-        SideB::Brdf => shade_exact(&scene, &p, &scene.lights),
+        SideB::Brdf => Side {
+            method: Method::Brdf,
+            sphere: spheres.brdf,
+            lut: &tables.a().lut,
+        },
     };
+    let a = shade(&scene, &p, lab.rules(), &ltc(&tables.a().lut));
+    let b = shade(&scene, &p, lab.rules(), &b);
     let counts = clip_counts(&scene, &tables.a().lut, &p, &scene.lights);
     let lb = luminance(b);
     Some(PixelReading {
@@ -617,4 +652,9 @@ pub fn free_spot(scene: &Scene, divider: f64, (width, height): (usize, usize)) -
         }
     }
     best.map_or([0.0, 0.0, z], |(_, p)| p)
+}
+
+/// Whether some light of the lab's scene, as shaded, has a size.
+fn sized(lab: &Lab) -> bool {
+    lab.overrides().radius > 0.0 || lab.lights().list.iter().any(Light::is_sized)
 }

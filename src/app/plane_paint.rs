@@ -166,6 +166,41 @@ pub fn markers(lab: &Lab, placed: Placed) -> Vec<(usize, Pos2)> {
         .collect()
 }
 
+/// The outline of each light with a size as the camera sees it (the sphere's silhouette,
+/// about its marker): where its size is on the plane.
+pub fn paint_outlines(
+    painter: &egui::Painter,
+    lab: &Lab,
+    placed: Placed,
+    markers: &[(usize, Pos2)],
+) {
+    let scene = lab.shaded_scene();
+    let (width, height) = placed.size;
+    let (_, _, _, up) = scene.camera_basis();
+    let scale = placed.rect.width() / width as f32;
+    for (k, p) in markers {
+        let Some(l) = scene.lights.get(*k).filter(|l| l.is_sized()) else {
+            continue;
+        };
+        let centre = DVec3::from(l.position);
+        // The silhouette's radius, from the projection of a point one radius above the
+        // centre across the view (exact for a sphere on the axis, within a few percent over
+        // the lab's field of view).
+        let (Some(a), Some(b)) = (
+            scene.project(centre, width, height),
+            scene.project(centre + up * l.radius, width, height),
+        ) else {
+            continue;
+        };
+        let r = ((a.0 - b.0).hypot(a.1 - b.1) as f32 * scale).min(placed.rect.width());
+        painter.circle_stroke(
+            *p,
+            r,
+            egui::Stroke::new(1.0, Color32::from_white_alpha(160)),
+        );
+    }
+}
+
 /// The lights' markers in their colours, the selected one larger.
 pub fn paint_markers(painter: &egui::Painter, lab: &Lab, markers: &[(usize, Pos2)]) {
     for (k, p) in markers {

@@ -97,6 +97,19 @@ impl Cap {
         !self.encloses() && self.axis.z <= -self.sin_sigma
     }
 
+    /// Where the cap is against the surface (`SphereCase`).
+    pub fn case(&self) -> SphereCase {
+        if self.encloses() {
+            SphereCase::Inside
+        } else if self.below_horizon() {
+            SphereCase::Below
+        } else if self.axis.z < self.sin_sigma {
+            SphereCase::Cut
+        } else {
+            SphereCase::Above
+        }
+    }
+
     /// `∫ max(ω.z, 0) dω` over the cap: the irradiance of unit radiance.
     pub fn illuminance(&self) -> f64 {
         if self.encloses() {
@@ -122,4 +135,38 @@ pub fn illuminance_sphere(cos_theta: f64, sin2_sigma: f64) -> f64 {
     let y = (-x * cos_theta / sin_theta).clamp(-1.0, 1.0);
     let z = sin_theta * (1.0 - y * y).sqrt();
     ((cos_theta * y.acos() - x * z) * sin2_sigma + z.atan2(x)).max(0.0)
+}
+
+/// Where a sphere light is against the surface, seen from a shading point: the failure cases
+/// of docs/design.md §1.10 (the plane panel's map of sphere cases).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum SphereCase {
+    /// The whole cap above the horizon: every method shades it as it was made to.
+    Above,
+    /// Cut by the horizon: part of the sphere below the surface (the disk clips it as a disc
+    /// facing the point; the representative point does not see the cut).
+    Cut,
+    /// Below the horizon: it lights nothing.
+    Below,
+    /// The point is inside the sphere (or on it): the cap is the whole upper hemisphere.
+    Inside,
+}
+
+impl SphereCase {
+    /// From the least to the most telling: a map shows a pixel's last case among its lights.
+    pub const ALL: [Self; 4] = [Self::Above, Self::Below, Self::Cut, Self::Inside];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Above => "above",
+            Self::Cut => "cut by the horizon",
+            Self::Below => "below",
+            Self::Inside => "inside the sphere",
+        }
+    }
+
+    /// Its rank in `ALL`.
+    pub fn rank(self) -> usize {
+        Self::ALL.iter().position(|&c| c == self).unwrap_or(0)
+    }
 }

@@ -13,4 +13,5 @@ mod lobe;
 mod matrix;
 mod parts;
 mod plane;
+mod spheres;
 mod window;

@@ -173,7 +173,11 @@ fn every_side_panel_edit_invalidates_exactly_the_caches_that_read_it() {
             lights.to_vec(),
         ),
         // Back to points: the sized lights' exact side is slow on a software GPU.
-        ("radius r to 0", |h| set(h, "radius r", 0.0), lights.to_vec()),
+        (
+            "radius r to 0",
+            |h| set(h, "radius r", 0.0),
+            lights.to_vec(),
+        ),
         (
             "cull by range",
             |h| h.get_by_label("cull by range").click(),
@@ -233,7 +237,10 @@ fn every_side_panel_edit_invalidates_exactly_the_caches_that_read_it() {
         assert_eq!(made, BTreeSet::from(["plane.render"]), "{combo}");
     }
     // How each side shades lights with a size: the plane and its pinned pixel read it.
-    for (combo, method) in [("LTC side", "representative-point"), ("reference side", "ltc-point")] {
+    for (combo, method) in [
+        ("LTC side", "representative-point"),
+        ("reference side", "ltc-point"),
+    ] {
         h.get_by_role_and_label(Role::ComboBox, combo).click();
         h.run_steps(2);
         h.query_all_by_label(method)
