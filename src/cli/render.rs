@@ -16,6 +16,7 @@ use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::output::{ImageFormat, frame_bytes};
 use ltc_lab::render::{Frame, Method, RenderSettings, View};
 use ltc_lab::scene::Scene;
+use ltc_lab::sphere_light::SphereMethod;
 use ltc_lab::tables::{NamedTable, NamedTables, Source};
 
 use super::{HORIZON_HELP, LutArgs, horizon_parser, one_of, parse_cull, parse_size};
@@ -103,6 +104,14 @@ pub struct Args {
     /// The same, with a shipped table: classic or point.
     #[arg(long, value_parser = one_of(&Table::ALL, Table::name), conflicts_with = "lut_b")]
     table_b: Option<Table>,
+    /// How the lights with a size (a `radius` in the scene) are shaded by the method alone,
+    /// or left of a split (docs/design.md §1.10): exact, ltc-point, ltc-disk or
+    /// representative-point.
+    #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name), default_value = "ltc-disk")]
+    sphere_a: SphereMethod,
+    /// The same, right of a split (the reference).
+    #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name), default_value = "exact")]
+    sphere_b: SphereMethod,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -118,6 +127,8 @@ pub fn run(a: &Args) -> Result<()> {
     settings.divider = a.divider;
     settings.cull = a.cull;
     settings.rules.horizon = a.horizon.rule();
+    settings.sphere_a = a.sphere_a;
+    settings.sphere_b = a.sphere_b;
     a.lut.check_horizon(a.horizon)?;
     let out = a
         .out

@@ -766,3 +766,63 @@ fn a_horizon_remedy_names_its_render_and_changes_it() {
     );
     assert_refused(&o, "--horizon");
 }
+
+/// Lights with a size from the command line: each sphere method renders a failure preset,
+/// the EXR is the CPU reference's own frame, and a method it does not know is refused.
+#[test]
+fn render_shades_lights_with_a_size_by_the_method_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = preset("sphere-horizon.toml");
+    let mut images = Vec::new();
+    for sphere in ["exact", "ltc-point", "ltc-disk", "representative-point"] {
+        let out = dir.path().join(format!("{sphere}.exr"));
+        let o = ltc_lab(&[
+            "render",
+            "--cpu",
+            "--scene",
+            &scene,
+            "--method",
+            "ltc",
+            "--size",
+            "24x16",
+            "--sphere-a",
+            sphere,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{sphere}: {}", stderr(&o));
+        let pixels = exr_pixels(&out);
+        let settings = ltc_lab::render::RenderSettings {
+            sphere_a: ltc_lab::sphere_light::SphereMethod::from_name(sphere).unwrap(),
+            ..ltc_lab::render::RenderSettings::single(24, 16, ltc_lab::render::Method::Ltc)
+        };
+        let scene = ltc_lab::scene::preset("sphere-horizon");
+        let want = ltc_lab::cpu::render(&scene, ltc_lab::ltc::lut::Lut::embedded(), &settings);
+        // The EXR holds f32: the f64 frame rounded, 2⁻²⁴ relative.
+        for (got, want) in pixels.iter().zip(&want.pixels) {
+            let got = glam::DVec3::from(got.map(f64::from));
+            let close = (got - *want).abs().max_element() <= 1e-6 * want.abs().max_element();
+            assert!(close, "{sphere}: {got} vs {want}");
+        }
+        images.push(pixels);
+    }
+    // The methods differ on these spheres.
+    assert!(images.windows(2).all(|w| w[0] != w[1]));
+    // clap's own refusal, which lists the methods it knows.
+    let o = ltc_lab(&[
+        "render",
+        "--cpu",
+        "--scene",
+        &scene,
+        "--method",
+        "ltc",
+        "--sphere-a",
+        "disk",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("representative-point"),
+        "{}",
+        stderr(&o)
+    );
+}
