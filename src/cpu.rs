@@ -408,13 +408,24 @@ pub fn sphere_case(scene: &Scene, p: &SurfacePoint) -> Option<SphereCase> {
 /// Each pixel's `sphere_case` for a `width × height` view (`None` off the plane or where no
 /// light with a size reaches), rows in parallel.
 pub fn sphere_case_map(scene: &Scene, width: usize, height: usize) -> Vec<Option<SphereCase>> {
+    per_pixel(scene, (width, height), |p| sphere_case(scene, p))
+}
+
+/// `at` of each pixel's surface point of a `width × height` view (`None` off the plane), rows
+/// in parallel.
+fn per_pixel<T: Send>(
+    scene: &Scene,
+    (width, height): (usize, usize),
+    at: impl Fn(&SurfacePoint) -> Option<T> + Sync,
+) -> Vec<Option<T>> {
     (0..height)
         .into_par_iter()
         .flat_map_iter(|y| {
+            let at = &at;
             (0..width).map(move |x| {
                 scene
                     .surface_point(x, y, width, height)
-                    .and_then(|p| sphere_case(scene, &p))
+                    .and_then(|p| at(&p))
             })
         })
         .collect()
@@ -503,16 +514,9 @@ pub fn clip_counts_map(
     width: usize,
     height: usize,
 ) -> Vec<Option<ClipCounts>> {
-    (0..height)
-        .into_par_iter()
-        .flat_map_iter(|y| {
-            (0..width).map(move |x| {
-                scene
-                    .surface_point(x, y, width, height)
-                    .map(|p| clip_counts(scene, lut, &p, &scene.lights))
-            })
-        })
-        .collect()
+    per_pixel(scene, (width, height), |p| {
+        Some(clip_counts(scene, lut, p, &scene.lights))
+    })
 }
 
 /// Clipping counts summed over every pixel of a `width × height` view.

@@ -299,7 +299,6 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
         light([0.8, -0.2, 0.25], 0.02),
         light([-1.2, -1.0, 0.3], 0.25),
     ];
-    let g = gpu().unwrap();
     let (w, h) = (48, 40);
     for method in [Method::Brdf, Method::Ltc, Method::LtcFast] {
         for sphere in SphereMethod::ALL {
@@ -308,27 +307,29 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
                 ..RenderSettings::single(w, h, method)
             };
             let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
-            let gpu = g
-                .renderer
-                .lock()
-                .unwrap()
-                .render(&g.ctx, &scene, &s)
-                .unwrap()
-                .0;
+            let gpu = gpu_frame(&scene, &s);
             gpu_common::assert_close(&format!("{} {}", method.name(), sphere.name()), &gpu, &cpu);
         }
     }
     // The split the lab opens with: LTC disks against the exact integral.
     let s = RenderSettings::compare(w, h, View::Split);
     let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
-    let gpu = g
-        .renderer
+    let gpu = gpu_frame(&scene, &s);
+    gpu_common::assert_close("split", &gpu, &cpu);
+}
+
+/// `s` rendered on the tests' device.
+fn gpu_frame(
+    scene: &ltc_lab::scene::Scene,
+    s: &ltc_lab::render::RenderSettings,
+) -> ltc_lab::render::Frame {
+    let g = gpu().expect("an adapter");
+    g.renderer
         .lock()
         .unwrap()
-        .render(&g.ctx, &scene, &s)
+        .render(&g.ctx, scene, s)
         .unwrap()
-        .0;
-    gpu_common::assert_close("split", &gpu, &cpu);
+        .0
 }
 
 /// The failure presets (a sphere cut by the horizon, one touching the plane, discs seen
@@ -342,7 +343,6 @@ fn gpu_failure_presets_are_finite_and_match_the_cpu() {
     if gpu().is_none() {
         return;
     }
-    let g = gpu().unwrap();
     for (name, _) in SPHERE_PRESETS {
         let scene = preset(name);
         for sphere in SphereMethod::ALL {
@@ -350,13 +350,7 @@ fn gpu_failure_presets_are_finite_and_match_the_cpu() {
                 sphere_a: sphere,
                 ..RenderSettings::single(48, 40, Method::LtcFast)
             };
-            let gpu = g
-                .renderer
-                .lock()
-                .unwrap()
-                .render(&g.ctx, &scene, &s)
-                .unwrap()
-                .0;
+            let gpu = gpu_frame(&scene, &s);
             let what = format!("{name} {}", sphere.name());
             assert_eq!(gpu.first_invalid(s.rules.clipping), None, "{what}");
             let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);

@@ -15,15 +15,13 @@ use crate::app::lab::{Checked, Exposure, Lab, Lights, LobeView, Selection, SideB
 use crate::app::panel::Panel;
 use crate::app::pixel_table::{self, LightColumn, PinnedLights};
 use crate::app::plane_paint::{
-    PixelReading, Placed, markers, paint_divider, paint_image, paint_markers, paint_outlines,
-    paint_pin, preview_label, progress_line, reading_line,
+    Placed, inspect, markers, paint_divider, paint_image, paint_markers, paint_outlines, paint_pin,
+    preview_label, progress_line, reading_line,
 };
 use crate::app::shading::Shading;
 use crate::app::sphere_cases::SphereCases;
-use crate::cpu::{Side, clip_counts, shade};
 use crate::gpu::GpuContext;
-use crate::metrics::luminance;
-use crate::render::{Frame, FrameKind, Method, RenderSettings, View};
+use crate::render::{Frame, FrameKind, RenderSettings, View};
 use crate::scene::{Light, Scene};
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
@@ -549,41 +547,6 @@ fn exposure_slider(ui: &mut egui::Ui, lab: &mut Lab) {
             .text("exposure"),
     )
     .on_hover_text("Display only: each pixel shows L · exposure through the tone map x/(1+x) and sRGB; it does not restart the render. Saved PNGs use it, EXRs keep L. The difference view has its own fixed scale"));
-}
-
-/// Side A's and side B's radiance at screen position `pos`, in f64 on the CPU: LTC with
-/// table A, against the exact BRDF or (two tables compared) LTC with table B.
-fn inspect(lab: &Lab, placed: Placed, pos: Pos2) -> Option<PixelReading> {
-    let tables = lab.tables();
-    let scene = lab.shaded_scene();
-    let (x, y) = placed.pixel(pos);
-    let p = scene.surface_point_at(x, y, placed.size.0, placed.size.1)?;
-    let spheres = **lab.spheres();
-    // The literal forms: the CPU's fast ones are the same math.
-    let ltc = |lut| Side {
-        method: Method::Ltc,
-        sphere: spheres.ltc,
-        lut,
-    };
-    let b = match **lab.side_b() {
-        SideB::TableB => ltc(&tables.b().lut),
-        SideB::Brdf => Side {
-            method: Method::Brdf,
-            sphere: spheres.brdf,
-            lut: &tables.a().lut,
-        },
-    };
-    let a = shade(&scene, &p, lab.rules(), &ltc(&tables.a().lut));
-    let b = shade(&scene, &p, lab.rules(), &b);
-    let counts = clip_counts(&scene, &tables.a().lut, &p, &scene.lights);
-    let lb = luminance(b);
-    Some(PixelReading {
-        a,
-        b,
-        relative_error: (luminance(a) - lb).abs() / lb.max(1e-12),
-        case1: counts.lifted,
-        case2: counts.pushed_below,
-    })
 }
 
 /// What sides A and B of the plane are called.

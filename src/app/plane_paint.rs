@@ -1,14 +1,16 @@
 //! What is drawn on and around the plane's image: the image with its error, the split's
 //! divider, the lights' markers, the pinned pixel's marker, the progress line, the preview
-//! note of a render in flight, and the hovered pixel's reading.
+//! note of a render in flight, and the hovered pixel's reading (and its numbers).
 
 use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use crate::app::display::ShownImage;
-use crate::app::lab::Lab;
+use crate::app::lab::{Lab, SideB};
 use crate::app::shading::{FRAME_BUDGET_MS, Progress};
+use crate::cpu::{Side, clip_counts, shade};
 use crate::metrics::luminance;
+use crate::render::Method;
 
 /// The pixel inspector's numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -230,6 +232,41 @@ pub fn paint_pin(painter: &egui::Painter, p: Pos2) {
     painter.hline(p.x + 4.0..=p.x + 10.0, p.y, stroke);
     painter.vline(p.x, p.y - 10.0..=p.y - 4.0, stroke);
     painter.vline(p.x, p.y + 4.0..=p.y + 10.0, stroke);
+}
+
+/// Side A's and side B's radiance at screen position `pos`, in f64 on the CPU: LTC with
+/// table A, against the exact BRDF or (two tables compared) LTC with table B.
+pub fn inspect(lab: &Lab, placed: Placed, pos: Pos2) -> Option<PixelReading> {
+    let tables = lab.tables();
+    let scene = lab.shaded_scene();
+    let (x, y) = placed.pixel(pos);
+    let p = scene.surface_point_at(x, y, placed.size.0, placed.size.1)?;
+    let spheres = **lab.spheres();
+    // The literal forms: the CPU's fast ones are the same math.
+    let ltc = |lut| Side {
+        method: Method::Ltc,
+        sphere: spheres.ltc,
+        lut,
+    };
+    let b = match **lab.side_b() {
+        SideB::TableB => ltc(&tables.b().lut),
+        SideB::Brdf => Side {
+            method: Method::Brdf,
+            sphere: spheres.brdf,
+            lut: &tables.a().lut,
+        },
+    };
+    let a = shade(&scene, &p, lab.rules(), &ltc(&tables.a().lut));
+    let b = shade(&scene, &p, lab.rules(), &b);
+    let counts = clip_counts(&scene, &tables.a().lut, &p, &scene.lights);
+    let lb = luminance(b);
+    Some(PixelReading {
+        a,
+        b,
+        relative_error: (luminance(a) - lb).abs() / lb.max(1e-12),
+        case1: counts.lifted,
+        case2: counts.pushed_below,
+    })
 }
 
 /// The hovered pixel's reading, or what the image answers to.
