@@ -15,6 +15,7 @@ use crate::app::panel::Panel;
 use crate::app::shading::FRAME_BUDGET_MS;
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
 use crate::colormap::{round_sig, short_number};
+use crate::gpu::work::{Work, work_per_light};
 use crate::render::Method;
 use crate::study::StudyRow;
 
@@ -47,6 +48,8 @@ pub struct ChartPanel {
     job: Option<MeasureJob>,
     /// A `study.csv` to read instead of measuring.
     study_path: String,
+    /// Each method's work per light, counted from the shaders once shown.
+    work: Option<Result<Vec<(Method, Work)>, String>>,
 }
 
 impl Panel for ChartPanel {
@@ -69,6 +72,12 @@ impl Panel for ChartPanel {
         let Some(m) = &self.state.measurement else {
             return;
         };
+        egui::CollapsingHeader::new("work per light, from the shaders")
+            .id_salt("chart work")
+            .show(ui, |ui| {
+                let work = self.work.get_or_insert_with(work_per_light);
+                work_table(ui, work, m);
+            });
         let half = (ui.available_width() / 2.0 - 6.0).max(80.0);
         let height = ui.available_height().max(80.0);
         ui.horizontal(|ui| {
@@ -527,4 +536,58 @@ pub fn reference_study() -> Option<Measurement> {
     let mut m = Measurement::from_study(&rows, "reference study");
     m.device = format!("reference study ({device}) — press measure for this machine");
     Some(m)
+}
+
+/// Each method's work per light (docs/design.md §4.10) beside its measured time per light at
+/// the measurement's largest light count, and the time's ratio to `brdf`'s.
+fn work_table(ui: &mut egui::Ui, work: &Result<Vec<(Method, Work)>, String>, m: &Measurement) {
+    let work = match work {
+        Ok(w) => w,
+        Err(e) => {
+            ui.colored_label(Color32::LIGHT_RED, format!("cannot count: {e}"));
+            return;
+        }
+    };
+    // ns per light per pixel is the fps curve's last point: ms per frame over lights × pixels.
+    let per_light = |method: Method| {
+        let (_, curve) = m.scaling.iter().find(|(x, _)| *x == method)?;
+        let &[lights, fps] = curve.last()?;
+        Some((lights, 1e3 / fps / lights))
+    };
+    let brdf = per_light(Method::Brdf).map(|p| p.1);
+    egui::Grid::new("chart work grid")
+        .striped(true)
+        .spacing([12.0, 2.0])
+        .show(ui, |ui| {
+            for (head, hover) in [
+                ("method", "The method's function that adds one light"),
+                ("arith.", "Additions, multiplications and the like per light (vectors per component)"),
+                ("div.", "Divisions per light (about 9 arithmetic operations' issue slots on a GPU)"),
+                ("special", "Roots and transcendental functions per light (about 8 arithmetic operations' issue slots on a GPU)"),
+                ("reads", "Loads of memory outside the function per light"),
+                ("ms / light", "Measured: ms per frame over lights, at the largest light count measured"),
+                ("× brdf", "That time over brdf's"),
+            ] {
+                ui.small(head).on_hover_text(hover);
+            }
+            ui.end_row();
+            for (method, w) in work {
+                ui.monospace(method.name());
+                for x in [w.arithmetic, w.divisions, w.special, w.reads] {
+                    ui.monospace(x.to_string());
+                }
+                match per_light(*method) {
+                    Some((lights, ms)) => {
+                        ui.monospace(format!("{} ({lights:.0} lights)", short_number(ms)));
+                        let ratio = brdf.map_or("–".into(), |b| format!("{:.2}", ms / b));
+                        ui.monospace(ratio);
+                    }
+                    None => {
+                        ui.monospace("–");
+                        ui.monospace("–");
+                    }
+                }
+                ui.end_row();
+            }
+        });
 }

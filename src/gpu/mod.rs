@@ -20,6 +20,7 @@ pub mod selfcheck;
 pub mod sphere_light;
 pub mod target;
 pub mod timing;
+pub mod work;
 
 #[cfg(not(target_arch = "wasm32"))]
 use crate::error::Error;

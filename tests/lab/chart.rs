@@ -166,3 +166,29 @@ fn the_chart_keeps_its_legends_outside_and_gives_the_speed_ratio() {
     assert!(shows(&h, said), "no '{said}'");
     h.snapshot_options("chart_ranges", &options(900 * 560));
 }
+
+/// The chart's table of work per light: every method's counts as the shaders give them
+/// (`gpu::work`), beside its measured time per light and its ratio to brdf's.
+#[test]
+fn the_chart_gives_each_methods_work_per_light_beside_its_time() {
+    let Some(mut h) = lab((1200.0, 800.0), maximised(PanelId::Chart)) else {
+        return;
+    };
+    h.get_by_label("work per light, from the shaders").click();
+    h.run_steps(3);
+    let work = ltc_lab::gpu::work::work_per_light().unwrap();
+    for (m, w) in &work {
+        for count in [w.arithmetic, w.divisions, w.special, w.reads] {
+            assert!(
+                h.query_all_by_label(&count.to_string()).count() > 0,
+                "{}: no cell {count}",
+                m.name()
+            );
+        }
+    }
+    // brdf's time over its own is 1.
+    assert!(h.query_all_by_label("1.00").count() > 0);
+    // Each method measured: its time per light at the largest count.
+    assert!(h.query_all_by_label_contains("lights)").count() >= 4);
+    h.snapshot_options("chart_work_per_light", &options(1200 * 800));
+}
