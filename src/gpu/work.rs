@@ -7,7 +7,10 @@
 
 use std::collections::HashMap;
 
-use naga::{BinaryOperator, Expression, Handle, MathFunction, Statement, TypeInner};
+// wgpu's own naga (the one that compiles the shaders), with its WGSL front end, on the
+// desktop and in the browser alike.
+use wgpu::naga;
+use wgpu::naga::{BinaryOperator, Expression, Handle, MathFunction, Statement, TypeInner};
 
 use crate::render::Method;
 
