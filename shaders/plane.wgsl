@@ -80,6 +80,8 @@ struct Pixel {
     v: vec3<f32>,          // unit, toward the camera (world; n = +z)
     t1: vec3<f32>,         // shading frame (src/render.rs ShadingFrame)
     t2: vec3<f32>,
+    tangent_from_world: mat3x3<f32>, // rows t1, t2, n
+    v_tangent: vec3<f32>,  // v in the shading frame (the sphere methods')
     ltc_a: LtcShading,     // table A
     ltc_b: LtcShading,     // table B where TABLE_B, else table A
     // brdf-fast: α² and the per-pixel factor of V_SmithGGXCorrelated.
@@ -110,6 +112,9 @@ fn surface_point(px: vec2<u32>) -> Pixel {
     // At normal view any tangent will do (src/render.rs ShadingFrame::new).
     p.t1 = select(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(tangential / len, 0.0), len > 0.0);
     p.t2 = cross(vec3<f32>(0.0, 0.0, 1.0), p.t1);
+    // WGSL builds a matrix from columns, hence the transpose.
+    p.tangent_from_world = transpose(mat3x3<f32>(p.t1, p.t2, vec3<f32>(0.0, 0.0, 1.0)));
+    p.v_tangent = p.tangent_from_world * p.v;
     return p;
 }
 
@@ -117,10 +122,8 @@ fn surface_point(px: vec2<u32>) -> Pixel {
 fn ltc_shading(p: Pixel, size: u32, base: u32) -> LtcShading {
     var s: LtcShading;
     s.pair = lut_ltc_pair(params.alpha, p.v.z, size, base);
-    // tangent_from_world has rows t1, t2, n; WGSL builds from columns, hence the transpose.
-    let tangent_from_world = transpose(mat3x3<f32>(p.t1, p.t2, vec3<f32>(0.0, 0.0, 1.0)));
-    s.spec_from_world = s.pair.spec.cos_from_brdf * tangent_from_world;
-    s.diff_from_world = s.pair.diff.cos_from_brdf * tangent_from_world;
+    s.spec_from_world = s.pair.spec.cos_from_brdf * p.tangent_from_world;
+    s.diff_from_world = s.pair.diff.cos_from_brdf * p.tangent_from_world;
     if params.normalization == NORMALIZATION_PAPER_LITERAL {
         s.spec_factor = s.pair.spec.det_cos_from_brdf;
         s.diff_factor = s.pair.diff.det_cos_from_brdf;
@@ -271,10 +274,9 @@ fn add_sphere(
     ltc: LtcShading,
     light: GpuLight,
 ) {
-    let tangent_from_world = transpose(mat3x3<f32>(p.t1, p.t2, vec3<f32>(0.0, 0.0, 1.0)));
     let shading = SphereShading(
-        tangent_from_world * p.v,
-        tangent_from_world * (light.position_range.xyz - p.x),
+        p.v_tangent,
+        p.tangent_from_world * (light.position_range.xyz - p.x),
         1.0,
         light.position_range.w,
         light.intensity.w,

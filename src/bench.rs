@@ -420,7 +420,7 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
         }
     }
     if let Some(r) = rows.iter().find(|r| r.sphere.is_some()) {
-        out.push_str(&spheres_markdown(rows, &keys, r.radius));
+        out.push_str(&spheres_markdown(rows, &keys, r.radius, &ms));
     }
     out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");
     for k in 0..PAPER_LIGHTS.len() {
@@ -437,7 +437,12 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
 
 /// Lights with a size: each sphere method's ms per frame and its cost over the point
 /// formula's (ltc and ltc-fast on points, same run, same lights).
-fn spheres_markdown(rows: &[BenchRow], keys: &[(usize, bool)], radius: f64) -> String {
+fn spheres_markdown(
+    rows: &[BenchRow],
+    keys: &[(usize, bool)],
+    radius: f64,
+    point_ms: &dyn Fn(usize, bool, Method) -> Option<f64>,
+) -> String {
     let names: Vec<&str> = SphereMethod::ALL.iter().map(|m| m.name()).collect();
     let mut out = format!(
         "\nLights with a size (every light a sphere of radius {radius}; ms, and × the point formula's ltc-fast / ltc, same run):\n\n| lights | cull | {} |\n|---:|---|{}\n",
@@ -445,18 +450,16 @@ fn spheres_markdown(rows: &[BenchRow], keys: &[(usize, bool)], radius: f64) -> S
         "---:|".repeat(names.len())
     );
     for &(n, cull) in keys {
-        let find = |f: &dyn Fn(&BenchRow) -> bool| {
+        let sphere_ms = |sm| {
             rows.iter()
-                .find(|r| r.lights == n && r.cull == cull && f(r))
+                .find(|r| r.lights == n && r.cull == cull && r.sphere == Some(sm))
                 .map(|r| r.ms_median)
         };
-        let point = |m: Method| {
-            find(&|r| r.sphere.is_none() && r.method == m && r.horizon == Horizon::Eq30)
-        };
+        let point = |m| point_ms(n, cull, m);
         let (fast, paper) = (point(Method::LtcFast), point(Method::Ltc));
         let cells: Vec<String> = SphereMethod::ALL
             .iter()
-            .map(|&sm| match (find(&|r| r.sphere == Some(sm)), fast, paper) {
+            .map(|&sm| match (sphere_ms(sm), fast, paper) {
                 (Some(ms), Some(f), Some(p)) => {
                     format!("{ms:.3} ({:.2}× / {:.2}×)", ms / f, ms / p)
                 }

@@ -402,7 +402,7 @@ pub fn sphere_case(scene: &Scene, p: &SurfacePoint) -> Option<SphereCase> {
             // Inside the sphere the window's distance is 0 or less: it reaches the point.
             (lit || cap.encloses()).then(|| cap.case())
         })
-        .max_by_key(|c| c.rank())
+        .max()
 }
 
 /// Each pixel's `sphere_case` for a `width × height` view (`None` off the plane or where no

@@ -154,14 +154,15 @@ pub fn pixel_terms(
         .enumerate()
         .map(|(index, light)| {
             let mut term = light_term(scene, &px, p, (index, light), rules);
-            term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, rules));
             if light.is_sized() {
-                let by = |m, px: &LtcPixel| sphere_term(scene, px, p, light, rules, m);
-                let all = SphereMethod::ALL.map(|m| by(m, &px));
-                term.ltc = by(spheres[0], &px);
-                term.exact = by(spheres[1], &px);
-                term.ltc_b = px_b.map(|b| by(spheres[0], &b));
+                // Each side's value is its sphere method's, made once among all four.
+                let all = SphereMethod::ALL.map(|m| sphere_term(scene, &px, p, light, rules, m));
+                term.ltc = all[spheres[0].index()];
+                term.exact = all[spheres[1].index()];
+                term.ltc_b = px_b.map(|b| sphere_term(scene, &b, p, light, rules, spheres[0]));
                 term.spheres = Some(all);
+            } else {
+                term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, rules));
             }
             term
         })

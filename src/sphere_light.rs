@@ -53,6 +53,11 @@ impl SphereMethod {
         Self::ALL.into_iter().find(|m| m.name() == name)
     }
 
+    /// Its place in `ALL` (the declaration's order).
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
     /// One line for a reader of the lab or the command line.
     pub fn describe(self) -> &'static str {
         match self {

@@ -224,17 +224,12 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
                 .on_hover_text(hover);
         }
     });
-    ui.horizontal_wrapped(|ui| {
-        for (name, _) in SPHERE_PRESETS {
-            if ui
-                .small_button(name)
-                .on_hover_text("Load this failure case of lights with a size")
-                .clicked()
-            {
-                lab.use_scene(preset(name));
-            }
-        }
-    });
+    preset_buttons(
+        ui,
+        lab,
+        &SPHERE_PRESETS,
+        "Load this failure case of lights with a size",
+    );
 }
 
 fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
@@ -337,19 +332,20 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
     });
 }
 
-/// The presets, and a scene file to load or save (only the file named is written).
-fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
+/// A button per preset of `presets`, each loading its scene.
+fn preset_buttons(ui: &mut egui::Ui, lab: &mut Lab, presets: &[(&str, &str)], hover: &str) {
     ui.horizontal_wrapped(|ui| {
-        for (name, _) in PRESETS {
-            if ui
-                .small_button(name)
-                .on_hover_text("Load this shipped preset")
-                .clicked()
-            {
+        for (name, _) in presets {
+            if ui.small_button(*name).on_hover_text(hover).clicked() {
                 lab.use_scene(preset(name));
             }
         }
     });
+}
+
+/// The presets, and a scene file to load or save (only the file named is written).
+fn scene_files(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
+    preset_buttons(ui, lab, &PRESETS, "Load this shipped preset");
     ui.horizontal(|ui| {
         let field = ui
             .add(egui::TextEdit::singleline(&mut files.scene_path).desired_width(120.0))

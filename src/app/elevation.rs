@@ -33,7 +33,9 @@ pub const MAX_SIGMA_DEG: f64 = 30.0;
 /// The band errors as last measured, and the light's angular radius (0: a point).
 pub struct ElevationView {
     bands: Cached<Vec<BandError>>,
-    spheres: Cached<Vec<SphereError>>,
+    /// The sphere's band errors and its lobe over its centre's elevation (each an exact cap
+    /// integral: made when its inputs change, not every frame).
+    spheres: Cached<(Vec<SphereError>, Vec<SphereSample>)>,
     sigma_deg: f64,
 }
 
@@ -99,13 +101,17 @@ impl ElevationView {
             lab.tables(),
             Own((which, sigma.to_bits())),
         );
-        let errors = self
-            .spheres
-            .get(inputs, |(material, view, tables, Own((which, _)))| {
-                let at = (view.theta_o_deg, material.alpha);
-                let lut = &tables.get(which).lut;
-                sphere_errors_at(lut, at, sigma, (SPHERE_CASES, horizon::SEED, MEASURE_NODES))
-            });
+        let (errors, samples) =
+            self.spheres
+                .get(inputs, |(material, view, tables, Own((which, _)))| {
+                    let at = (view.theta_o_deg, material.alpha);
+                    let lut = &tables.get(which).lut;
+                    let cases = (SPHERE_CASES, horizon::SEED, MEASURE_NODES);
+                    (
+                        sphere_errors_at(lut, at, sigma, cases),
+                        sphere_samples(lut, at, sigma),
+                    )
+                });
         let (theta_o, alpha) = (lab.lobe_view().theta_o_deg, lab.alpha());
         ui.small(format!(
             "a sphere of σ = {sigma:.1}° over its centre's elevation at θo = {theta_o:.1}°, α = {alpha:.4}, specular lobe, table {which:?} (eq. 30's rules); error Σ|method − exact| / Σ exact per band:"
@@ -124,8 +130,25 @@ impl ElevationView {
             ))
             .on_hover_text("Over spheres whose centres are uniform in this band at every azimuth");
         }
-        let lut = &lab.tables().get(which).lut;
-        sphere_plot(ui, lut, (theta_o, alpha), sigma);
+        let names = ["exact"]
+            .into_iter()
+            .chain(APPROXIMATIONS.map(SphereMethod::name));
+        let curves: Vec<(&str, Color32, Vec<[f64; 2]>)> = names
+            .zip(COLOURS)
+            .enumerate()
+            .map(|(k, (name, colour))| {
+                (
+                    name,
+                    colour,
+                    samples.iter().map(|s| [s.0, s.1[k]]).collect(),
+                )
+            })
+            .collect();
+        let labels = (
+            "the sphere's centre above the surface (degrees)",
+            "f·cos over the cap (symlog)",
+        );
+        profile_plot(ui, "sphere elevation profile", labels, &curves);
     }
 
     pub fn counts(&self) -> [(&'static str, u64); 2] {
@@ -133,99 +156,86 @@ impl ElevationView {
     }
 }
 
+/// The curves' colours: the exact lobe's orange, then one per approximation.
+const COLOURS: [Color32; 4] = [
+    Color32::from_rgb(240, 150, 60),
+    Color32::from_rgb(90, 210, 120),
+    Color32::from_rgb(90, 150, 240),
+    Color32::from_rgb(220, 90, 200),
+];
+
+/// The centre's elevation (degrees), and there the exact specular lobe and each of
+/// `APPROXIMATIONS`'.
+type SphereSample = (f64, [f64; 4]);
+
 /// A sphere of angular radius `sigma` on the mirror side of the plane of incidence, its centre
-/// from σ + 10° below the horizon to the zenith: the exact specular lobe and each method's.
-fn sphere_plot(ui: &mut egui::Ui, lut: &Lut, at: (f64, f64), sigma: f64) {
+/// from σ + 10° below the horizon to the zenith.
+fn sphere_samples(lut: &Lut, at: (f64, f64), sigma: f64) -> Vec<SphereSample> {
     let low = -sigma - 10.0;
-    let samples: Vec<(f64, [f64; 4])> = (0..=100)
+    (0..=100)
         .map(|k| {
             let e = low + (90.0 - low) * f64::from(k) / 100.0;
             let r = e.to_radians();
             let l = glam::DVec3::new(-r.cos(), 0.0, r.sin());
             let (exact, got) = one_sphere(lut, at, l, sigma, MEASURE_NODES);
-            (
-                e,
-                [
-                    exact.specular,
-                    got[0].specular,
-                    got[1].specular,
-                    got[2].specular,
-                ],
-            )
+            let [a, b, c] = got.map(|g| g.specular);
+            (e, [exact.specular, a, b, c])
         })
-        .collect();
-    let peak = samples
-        .iter()
-        .flat_map(|s| s.1)
-        .fold(1e-30f64, |m, x| m.max(x.abs()));
-    let c = peak * 1e-4;
-    let curve = |k: usize| -> Vec<[f64; 2]> {
-        samples
-            .iter()
-            .map(|s| [s.0, crate::colormap::symlog(s.1[k], c)])
-            .collect()
-    };
-    let plot = egui_plot::Plot::new("sphere elevation profile")
-        .legend(egui_plot::Legend::default())
-        .x_axis_label("the sphere's centre above the surface (degrees)")
-        .y_axis_label("f·cos over the cap (symlog)")
-        .x_grid_spacer(egui_plot::uniform_grid_spacer(|_| [5.0, 15.0, 30.0]))
-        .min_size(Vec2::new(80.0, 120.0))
-        .height(ui.available_height().max(120.0))
-        .allow_scroll(false);
-    let colours = [
-        Color32::from_rgb(240, 150, 60),
-        Color32::from_rgb(90, 210, 120),
-        Color32::from_rgb(90, 150, 240),
-        Color32::from_rgb(220, 90, 200),
-    ];
-    let names = ["exact"]
-        .into_iter()
-        .chain(APPROXIMATIONS.map(SphereMethod::name));
-    symlog_y(plot, c).show(ui, |p| {
-        for (k, (name, colour)) in names.zip(colours).enumerate() {
-            p.line(egui_plot::Line::new(name, curve(k)).color(colour));
-        }
-    });
+        .collect()
 }
 
 /// The exact lobe and the LTC (the lab's rules) of one light on the mirror side of the plane of
 /// incidence, over its elevation from −10° to 90°, on a symmetric log axis.
 fn plot(ui: &mut egui::Ui, lut: &Lut, rules: &crate::render::LtcRules, at: (f64, f64)) {
-    let samples: Vec<(f64, f64, f64)> = (0..=200)
-        .map(|k| {
-            let e = -10.0 + 100.0 * f64::from(k) / 200.0;
-            let r = e.to_radians();
-            let l = glam::DVec3::new(-r.cos(), 0.0, r.sin());
-            let (exact, ltc) = horizon::lobes(lut, rules, at, l);
-            (e, exact.specular, ltc.specular)
-        })
-        .collect();
-    let peak = samples
+    let (mut exact, mut ltc) = (Vec::new(), Vec::new());
+    for k in 0..=200 {
+        let e = -10.0 + 100.0 * f64::from(k) / 200.0;
+        let r = e.to_radians();
+        let l = glam::DVec3::new(-r.cos(), 0.0, r.sin());
+        let (want, got) = horizon::lobes(lut, rules, at, l);
+        exact.push([e, want.specular]);
+        ltc.push([e, got.specular]);
+    }
+    let curves = [
+        ("BRDF", COLOURS[0], exact),
+        ("LTC, the lab's rules", COLOURS[1], ltc),
+    ];
+    let labels = (
+        "light elevation above the surface (degrees)",
+        "f·cos (symlog)",
+    );
+    profile_plot(ui, "elevation profile", labels, &curves);
+}
+
+/// Curves over an elevation on a symmetric log axis four decades under their peak (the
+/// horizon's error is a fraction of the peak's), grid lines every 5°, 15° and 30° (the bands'
+/// edges fall on them).
+fn profile_plot(
+    ui: &mut egui::Ui,
+    id: &str,
+    (x_label, y_label): (&str, &str),
+    curves: &[(&str, Color32, Vec<[f64; 2]>)],
+) {
+    let peak = curves
         .iter()
-        .fold(1e-30f64, |m, s| m.max(s.1.abs()).max(s.2.abs()));
-    // Four decades under the peak: the horizon's error is a fraction of the peak's.
+        .flat_map(|c| &c.2)
+        .fold(1e-30f64, |m, p| m.max(p[1].abs()));
     let c = peak * 1e-4;
-    let curve = |pick: fn(&(f64, f64, f64)) -> f64| -> Vec<[f64; 2]> {
-        samples
-            .iter()
-            .map(|s| [s.0, crate::colormap::symlog(pick(s), c)])
-            .collect()
-    };
-    let plot = egui_plot::Plot::new("elevation profile")
+    let plot = egui_plot::Plot::new(id)
         .legend(egui_plot::Legend::default())
-        .x_axis_label("light elevation above the surface (degrees)")
-        .y_axis_label("f·cos (symlog)")
-        // Grid lines every 5°, 15° and 30°: the bands' edges fall on them.
+        .x_axis_label(x_label)
+        .y_axis_label(y_label)
         .x_grid_spacer(egui_plot::uniform_grid_spacer(|_| [5.0, 15.0, 30.0]))
         .min_size(Vec2::new(80.0, 120.0))
         .height(ui.available_height().max(120.0))
         .allow_scroll(false);
     symlog_y(plot, c).show(ui, |p| {
-        p.line(egui_plot::Line::new("BRDF", curve(|s| s.1)).color(Color32::from_rgb(240, 150, 60)));
-        p.line(
-            egui_plot::Line::new("LTC, the lab's rules", curve(|s| s.2))
-                .color(Color32::from_rgb(90, 210, 120)),
-        );
+        for (name, colour, points) in curves {
+            let symlog = points
+                .iter()
+                .map(|&[x, y]| [x, crate::colormap::symlog(y, c)])
+                .collect::<Vec<_>>();
+            p.line(egui_plot::Line::new(*name, symlog).color(*colour));
+        }
     });
 }

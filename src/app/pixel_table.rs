@@ -323,10 +323,7 @@ fn sized_rows(ui: &mut egui::Ui, rows: &[&LightTerm]) {
     if sized.is_empty() {
         return;
     }
-    let exact_at = SphereMethod::ALL
-        .iter()
-        .position(|&m| m == SphereMethod::Exact)
-        .expect("ALL lists the exact method");
+    let exact_at = SphereMethod::Exact.index();
     ui.small("lights with a size, by each method (luminance; error against exact):");
     egui::Grid::new("pixel sized lights")
         .striped(true)

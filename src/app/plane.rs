@@ -137,7 +137,7 @@ impl Panel for PlanePanel {
         let settings = self.settings(lab, placed.size);
         let shown = self.shading.update(ui.ctx(), lab, &settings);
         self.shown = Some(shown);
-        let show_cases = self.state.sphere_cases && sized(lab);
+        let show_cases = self.cases_shown(lab);
         if show_cases {
             self.cases.update(ui.ctx(), lab, placed.size);
         }
@@ -159,7 +159,7 @@ impl Panel for PlanePanel {
         // Read afresh every frame, so that it follows every change; none off the image.
         let inspected = response
             .hover_pos()
-            .and_then(|pos| inspect(lab, placed, pos));
+            .and_then(|pos| inspect(lab, placed, pos, &settings));
         reading_line(ui, inspected.as_ref(), (a, b));
         let table = (&mut self.state.pinned, &mut self.state.light_sort);
         pixel_table::show(ui, table, lab, self.pinned.terms(), table_h);
@@ -233,7 +233,7 @@ impl PlanePanel {
         let rect = placed.rect;
         let painter = ui.painter_at(rect);
         paint_image(&painter, rect, shown, self.shading.error());
-        if self.state.sphere_cases && sized(lab) {
+        if self.cases_shown(lab) {
             self.cases.paint(&painter, rect);
         }
         preview_label(ui, rect, self.shading.progress());
@@ -249,6 +249,11 @@ impl PlanePanel {
                 rect.min + Vec2::new(u as f32 * rect.width(), v as f32 * rect.height()),
             );
         }
+    }
+
+    /// Whether the map of sphere cases is over the image: asked for, and a light has a size.
+    fn cases_shown(&self, lab: &Lab) -> bool {
+        self.state.sphere_cases && sized(lab)
     }
 
     fn divider_x(&self, rect: egui::Rect) -> f32 {
@@ -619,5 +624,6 @@ pub fn free_spot(scene: &Scene, divider: f64, (width, height): (usize, usize)) -
 
 /// Whether some light of the lab's scene, as shaded, has a size.
 fn sized(lab: &Lab) -> bool {
-    lab.overrides().radius > 0.0 || lab.lights().list.iter().any(Light::is_sized)
+    let o = lab.overrides();
+    lab.lights().list.iter().any(|l| o.shaded_radius(l) > 0.0)
 }

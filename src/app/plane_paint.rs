@@ -6,11 +6,11 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use crate::app::display::ShownImage;
-use crate::app::lab::{Lab, SideB};
+use crate::app::lab::Lab;
 use crate::app::shading::{FRAME_BUDGET_MS, Progress};
 use crate::cpu::{Side, clip_counts, shade};
 use crate::metrics::luminance;
-use crate::render::Method;
+use crate::render::{RenderSettings, Tables};
 
 /// The pixel inspector's numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -176,21 +176,26 @@ pub fn paint_outlines(
     placed: Placed,
     markers: &[(usize, Pos2)],
 ) {
-    let scene = lab.shaded_scene();
+    // The lights' own list and the stage alone: no copy of every light each frame.
+    let scene = lab.stage_scene();
     let (width, height) = placed.size;
     let (_, _, _, up) = scene.camera_basis();
     let scale = placed.rect.width() / width as f32;
     for (k, p) in markers {
-        let Some(l) = scene.lights.get(*k).filter(|l| l.is_sized()) else {
+        let Some(l) = lab.lights().list.get(*k) else {
             continue;
         };
+        let radius = lab.overrides().shaded_radius(l);
+        if radius <= 0.0 {
+            continue;
+        }
         let centre = DVec3::from(l.position);
         // The silhouette's radius, from the projection of a point one radius above the
         // centre across the view (exact for a sphere on the axis, within a few percent over
         // the lab's field of view).
         let (Some(a), Some(b)) = (
             scene.project(centre, width, height),
-            scene.project(centre + up * l.radius, width, height),
+            scene.project(centre + up * radius, width, height),
         ) else {
             continue;
         };
@@ -234,30 +239,25 @@ pub fn paint_pin(painter: &egui::Painter, p: Pos2) {
     painter.vline(p.x, p.y + 4.0..=p.y + 10.0, stroke);
 }
 
-/// Side A's and side B's radiance at screen position `pos`, in f64 on the CPU: LTC with
-/// table A, against the exact BRDF or (two tables compared) LTC with table B.
-pub fn inspect(lab: &Lab, placed: Placed, pos: Pos2) -> Option<PixelReading> {
+/// Side A's and side B's radiance at screen position `pos` of the render `settings` describes,
+/// in f64 on the CPU: LTC with table A, against the exact BRDF or (two tables compared) LTC
+/// with table B.
+pub fn inspect(
+    lab: &Lab,
+    placed: Placed,
+    pos: Pos2,
+    settings: &RenderSettings,
+) -> Option<PixelReading> {
     let tables = lab.tables();
     let scene = lab.shaded_scene();
     let (x, y) = placed.pixel(pos);
     let p = scene.surface_point_at(x, y, placed.size.0, placed.size.1)?;
-    let spheres = **lab.spheres();
-    // The literal forms: the CPU's fast ones are the same math.
-    let ltc = |lut| Side {
-        method: Method::Ltc,
-        sphere: spheres.ltc,
-        lut,
+    let pair = Tables {
+        a: &tables.a().lut,
+        b: &tables.b().lut,
     };
-    let b = match **lab.side_b() {
-        SideB::TableB => ltc(&tables.b().lut),
-        SideB::Brdf => Side {
-            method: Method::Brdf,
-            sphere: spheres.brdf,
-            lut: &tables.a().lut,
-        },
-    };
-    let a = shade(&scene, &p, lab.rules(), &ltc(&tables.a().lut));
-    let b = shade(&scene, &p, lab.rules(), &b);
+    let a = shade(&scene, &p, lab.rules(), &Side::a(settings, pair));
+    let b = shade(&scene, &p, lab.rules(), &Side::b(settings, pair));
     let counts = clip_counts(&scene, &tables.a().lut, &p, &scene.lights);
     let lb = luminance(b);
     Some(PixelReading {

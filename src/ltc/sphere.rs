@@ -138,22 +138,22 @@ pub fn illuminance_sphere(cos_theta: f64, sin2_sigma: f64) -> f64 {
 }
 
 /// Where a sphere light is against the surface, seen from a shading point: the failure cases
-/// of docs/design.md §1.10 (the plane panel's map of sphere cases).
+/// of docs/design.md §1.10 (the plane panel's map of sphere cases), from the least to the most
+/// telling — the order a map takes the largest of a pixel's cases in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum SphereCase {
     /// The whole cap above the horizon: every method shades it as it was made to.
     Above,
+    /// Below the horizon: it lights nothing.
+    Below,
     /// Cut by the horizon: part of the sphere below the surface (the disk clips it as a disc
     /// facing the point; the representative point does not see the cut).
     Cut,
-    /// Below the horizon: it lights nothing.
-    Below,
     /// The point is inside the sphere (or on it): the cap is the whole upper hemisphere.
     Inside,
 }
 
 impl SphereCase {
-    /// From the least to the most telling: a map shows a pixel's last case among its lights.
     pub const ALL: [Self; 4] = [Self::Above, Self::Below, Self::Cut, Self::Inside];
 
     pub fn name(self) -> &'static str {
@@ -165,8 +165,8 @@ impl SphereCase {
         }
     }
 
-    /// Its rank in `ALL`.
+    /// Its place in `ALL` (the declaration's order).
     pub fn rank(self) -> usize {
-        Self::ALL.iter().position(|&c| c == self).unwrap_or(0)
+        self as usize
     }
 }

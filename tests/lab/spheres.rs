@@ -8,8 +8,11 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use ltc_lab::app::lab::Selection;
 use ltc_lab::app::{LabApp, PanelId};
+use ltc_lab::colormap::short_number;
 use ltc_lab::cpu::sphere_case_map;
 use ltc_lab::ltc::sphere::SphereCase;
+use ltc_lab::metrics::luminance;
+use ltc_lab::pixel::pixel_terms;
 use ltc_lab::scene::MIN_RADIUS;
 use ltc_lab::sphere_light::SphereMethod;
 
@@ -71,6 +74,31 @@ fn the_pinned_pixel_gives_each_sized_light_by_every_method() {
     for m in SphereMethod::ALL {
         let columns = h.query_all_by_label(m.name()).count();
         assert!(columns > 0, "no column {}", m.name());
+    }
+    // Each light's LTC disk cell: its value and its error against the exact integral, as
+    // `pixel_terms` has them at the pinned pixel.
+    let lab_ = h.state().lab();
+    let [u, v] = h.state().state().plane.pinned.expect("a pixel pinned");
+    let [w, hgt] = h.state().report().plane_size.expect("a render");
+    let scene = lab_.shaded_scene();
+    let p = scene
+        .surface_point_at(u * w as f64, v * hgt as f64, w, hgt)
+        .unwrap();
+    let spheres = [lab_.spheres().ltc, lab_.spheres().brdf];
+    let lut = &lab_.tables().a().lut;
+    let t = pixel_terms(&scene, (lut, None), &p, lab_.rules(), spheres).unwrap();
+    for l in &t.terms {
+        let all = l.spheres.expect("every light of the preset has a size");
+        let (disk, exact) = (
+            luminance(all[SphereMethod::LtcDisk.index()]),
+            luminance(all[SphereMethod::Exact.index()]),
+        );
+        let cell = format!(
+            "{} ({:+.1}%)",
+            short_number(disk),
+            100.0 * (disk - exact) / exact.abs().max(1e-300)
+        );
+        assert!(h.query_all_by_label(&cell).count() > 0, "no cell '{cell}'");
     }
 }
 

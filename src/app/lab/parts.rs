@@ -37,9 +37,7 @@ pub fn shaded(mut scene: Scene, o: &Overrides) -> Scene {
         if o.range > 0.0 {
             l.range = Some(o.range);
         }
-        if o.radius > 0.0 {
-            l.radius = o.radius;
-        }
+        l.radius = o.shaded_radius(l);
     }
     scene
 }
@@ -380,6 +378,17 @@ pub const INTENSITY_RANGE: [f64; 2] = [0.01, 100.0];
 /// The range slider's: 0 (each light's own), or 0.01 (its smallest step, the first value it
 /// shows as other than 0) to 10 (five times the plane's side).
 pub const RANGE_RANGE: [f64; 2] = [0.01, 10.0];
+
+impl Overrides {
+    /// The radius `l` is shaded with: every light's where set, else its own.
+    pub fn shaded_radius(&self, l: &Light) -> f64 {
+        if self.radius > 0.0 {
+            self.radius
+        } else {
+            l.radius
+        }
+    }
+}
 
 impl Default for Overrides {
     fn default() -> Self {
