@@ -82,6 +82,11 @@ impl ClippingPanel {
         &self.state
     }
 
+    /// Its settings from a view (a lesson's step), checked by the caller.
+    pub fn set_state(&mut self, state: ClippingState) {
+        self.state = state;
+    }
+
     /// The lab's two rules, the table, and a reset.
     fn toolbar(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         clipping_rules(

@@ -62,6 +62,10 @@ impl LabApp {
                 let rows = crate::study::read_csv(Path::new(path));
                 self.panels.chart().use_study(rows, path)
             }
+            (Purpose::Lesson, _) => match std::fs::read_to_string(path) {
+                Ok(text) => self.take_lesson(&text, path),
+                Err(e) => Message::error(format!("{path}: cannot read the lesson ({e})")),
+            },
         }
     }
 
@@ -173,6 +177,7 @@ impl LabApp {
                 .panels
                 .chart()
                 .use_study(crate::study::parse_csv(&text(), name), name),
+            Purpose::Lesson => self.take_lesson(&text(), name),
         };
         self.lab.say(message);
     }

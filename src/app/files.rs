@@ -5,6 +5,9 @@
 
 use std::path::Path;
 
+/// What a lesson file's name ends with (a dropped `.toml` without it is a scene).
+pub const LESSON_EXTENSION: &str = ".lesson.toml";
+
 /// What a given file is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Purpose {
@@ -15,11 +18,17 @@ pub enum Purpose {
     TableB,
     /// A `study.csv` for the chart.
     Study,
+    /// A lesson (`*.lesson.toml`).
+    Lesson,
 }
 
 impl Purpose {
-    /// What a dropped file is for, by its extension: a scene, a table (A) or a study.
+    /// What a dropped file is for, by its extension: a lesson, a scene, a table (A) or a
+    /// study.
     pub fn of_name(name: &str) -> Option<Self> {
+        if name.to_ascii_lowercase().ends_with(LESSON_EXTENSION) {
+            return Some(Self::Lesson);
+        }
         let ext = Path::new(name)
             .extension()?
             .to_string_lossy()
@@ -35,7 +44,8 @@ impl Purpose {
     /// The browser file picker's filter.
     pub fn accept(self) -> &'static str {
         match self {
-            Self::Scene => ".toml",
+            // A lesson's name ends in .lesson.toml, which a picker cannot filter by.
+            Self::Scene | Self::Lesson => ".toml",
             Self::Table | Self::TableB => ".exr,.js,.dds,.txt",
             Self::Study => ".csv",
         }
@@ -62,7 +72,7 @@ pub fn group(files: Vec<Given>) -> (Vec<(Purpose, Vec<Given>)>, Vec<String>) {
                 sidecars.push((name, bytes));
             } else {
                 refused.push(format!(
-                    "{name}: not a file the lab reads (a scene .toml, a table .exr/.js/.dds, a study .csv)"
+                    "{name}: not a file the lab reads (a scene .toml, a table .exr/.js/.dds, a study .csv, a lesson .lesson.toml)"
                 ));
             }
             continue;

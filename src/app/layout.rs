@@ -24,6 +24,7 @@ const GRID_ROWS: [&[(PanelId, f32)]; 2] = [
 impl LabApp {
     /// The side panel and the central area.
     pub(super) fn layout(&mut self, ui: &mut egui::Ui) {
+        self.lesson_panel(ui);
         if !self.window.controls_hidden {
             egui::Panel::left("controls")
                 .resizable(true)
@@ -37,6 +38,9 @@ impl LabApp {
             let size = ui.available_size();
             let tabs = size.x < GRID_MIN.x || size.y < GRID_MIN.y;
             ui.horizontal(|ui| self.top_bar(ui, tabs));
+            if self.lesson().is_some() {
+                return self.lesson_panels(ui);
+            }
             match (self.window.maximised, tabs) {
                 (Some(id), _) => self.panel_frame(ui, id),
                 (None, true) => {
@@ -62,7 +66,18 @@ impl LabApp {
         {
             self.window.controls_hidden = !self.window.controls_hidden;
         }
-        if tabs && self.window.maximised.is_none() {
+        let asked = self.lesson().is_none()
+            && ui
+                .small_button("lesson")
+                .on_hover_text("Walk the paper's derivation step by step (the shipped lesson): each step opens its view, outlines its panel and says what to try")
+                .clicked();
+        if let Some(lesson) = asked
+            .then(|| crate::app::lesson::Lesson::shipped("paper"))
+            .flatten()
+        {
+            self.open_lesson(lesson, "paper", 0);
+        }
+        if tabs && self.window.maximised.is_none() && self.lesson().is_none() {
             for id in PanelId::GRID {
                 let title = id.title(&self.lab);
                 ui.selectable_value(&mut self.window.tab, id, title);
@@ -96,7 +111,7 @@ impl LabApp {
     }
 
     /// One panel in a frame with its title and a maximise/restore button.
-    fn panel_frame(&mut self, ui: &mut egui::Ui, id: PanelId) {
+    pub(super) fn panel_frame(&mut self, ui: &mut egui::Ui, id: PanelId) {
         egui::Frame::group(ui.style()).show(ui, |ui| {
             ui.set_min_size(ui.available_size());
             ui.horizontal(|ui| {

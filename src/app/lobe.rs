@@ -142,6 +142,11 @@ impl LobePanel {
         &self.state
     }
 
+    /// Its settings from a view (a lesson's step), checked by the caller.
+    pub fn set_state(&mut self, state: LobeState) {
+        self.state = state;
+    }
+
     /// The parameters on the panel's face, so that a picture of it (a slide made with the
     /// controls folded) carries what it shows; then the lobe, overlay and morph controls.
     fn header(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {

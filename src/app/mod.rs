@@ -20,6 +20,9 @@ pub mod file_io;
 pub mod files;
 pub mod lab;
 pub mod layout;
+pub mod lesson;
+pub mod lesson_app;
+pub mod lesson_bar;
 pub mod link;
 pub mod lobe;
 pub mod lobe_sphere;
@@ -69,6 +72,8 @@ pub struct LabApp {
     /// The panels' caches' counts after the last frame, and the caches it made again.
     counts: Vec<(&'static str, u64)>,
     remade: Vec<&'static str>,
+    /// The lesson being walked, with its bar.
+    lesson: Option<lesson_bar::LessonBar>,
     /// Files the browser is reading: picked for a purpose, or dropped (`None`: each for what
     /// its name says).
     #[cfg(target_arch = "wasm32")]
@@ -84,6 +89,8 @@ pub struct Startup {
     pub panel: Option<PanelId>,
     /// Fill the chart, as its *measure* button does.
     pub measure: bool,
+    /// A lesson to walk, where it came from, and the step (from 0) to open it at.
+    pub lesson: Option<(lesson::Lesson, String, usize)>,
 }
 
 /// The key eframe keeps the lab's state under.
@@ -121,6 +128,7 @@ impl LabApp {
             shown: Vec::new(),
             counts: Vec::new(),
             remade: Vec::new(),
+            lesson: None,
             #[cfg(target_arch = "wasm32")]
             picking: None,
         }
@@ -170,6 +178,9 @@ impl LabApp {
         if s.measure {
             self.panels.chart().start(&self.lab);
         }
+        if let Some((lesson, source, step)) = s.lesson {
+            self.open_lesson(lesson, &source, step);
+        }
     }
 
     /// The lab, read-only.
@@ -209,6 +220,7 @@ impl LabApp {
         self.part_ms = [0.0; PanelId::ALL.len()];
         self.shown.clear();
         self.take_dropped(ui.ctx());
+        self.lesson_keys(ui.ctx());
         // The browser's share of the work that runs on threads on the desktop.
         if background::run_for(shading::FRAME_BUDGET_MS) {
             ui.ctx().request_repaint();

@@ -6,6 +6,8 @@
 use crate::app::chart::ChartPanel;
 use crate::app::clipping::ClippingPanel;
 use crate::app::controls::ControlsPanel;
+use crate::app::lab::Lab;
+use crate::app::lesson::Now;
 use crate::app::lobe::LobePanel;
 use crate::app::matrix::MatrixPanel;
 use crate::app::panel::{Panel, PanelId};
@@ -90,6 +92,25 @@ impl Panels {
         state.plane = self.plane.state().clone();
         state.clipping = self.clipping.state().clone();
         state.chart = self.chart.state().clone();
+    }
+
+    /// The panels' settings of a view (a lesson's step): the lobe's, the plane's and the
+    /// clipping panel's, which a view carries.
+    pub fn use_view(&mut self, state: &LabState) {
+        self.lobe.set_state(state.lobe.clone());
+        self.plane.set_state(state.plane.clone());
+        self.clipping.set_state(state.clipping.clone());
+    }
+
+    /// What the lab shows now, as a lesson reads it.
+    pub fn now<'a>(&'a self, lab: &'a Lab) -> Now<'a> {
+        Now {
+            lab,
+            lobe: self.lobe.state(),
+            plane: self.plane.state(),
+            pinned: self.plane.pinned_terms(),
+            measurement: self.chart.state().measurement.as_ref(),
+        }
     }
 
     /// The plane panel (the app saves its image and reports its progress).

@@ -202,6 +202,16 @@ impl PlanePanel {
         &self.state
     }
 
+    /// The pinned pixel opened into its lights, as last shown.
+    pub fn pinned_terms(&self) -> Option<&crate::pixel::PixelTerms> {
+        self.pinned.terms()
+    }
+
+    /// Its settings from a view (a lesson's step), checked by the caller.
+    pub fn set_state(&mut self, state: PlaneState) {
+        self.state = state;
+    }
+
     /// Whether its image's read-back is on its way (`save_exr` will have it).
     pub fn read_pending(&self) -> bool {
         self.shading.read_pending()

@@ -28,6 +28,21 @@ pub struct Report {
     pub part_ms: Vec<f64>,
     /// The caches the last frame made again (`app::cache`), by name.
     pub remade: Vec<&'static str>,
+    /// The lesson being walked, if any.
+    pub lesson: Option<LessonReport>,
+}
+
+/// Where a lesson is.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LessonReport {
+    /// A shipped lesson's name, or its file's.
+    pub source: String,
+    /// The step shown, from 1, of `steps`.
+    pub step: usize,
+    pub steps: usize,
+    pub title: String,
+    /// Its *try this* done.
+    pub done: bool,
 }
 
 impl LabApp {
@@ -54,6 +69,13 @@ impl LabApp {
             message: self.lab.message().map(|m| m.text.clone()),
             part_ms: self.part_ms.to_vec(),
             remade: self.remade.clone(),
+            lesson: self.lesson().map(|bar| LessonReport {
+                source: bar.source().to_string(),
+                step: bar.step() + 1,
+                steps: bar.lesson().steps.len(),
+                title: bar.current().title.clone(),
+                done: bar.done(bar.step()),
+            }),
         }
     }
 }

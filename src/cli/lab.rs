@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
+use ltc_lab::app::lesson::Lesson;
 use ltc_lab::app::link;
 use ltc_lab::app::screenshot::frame_log_csv;
 use ltc_lab::app::{LabApp, LabState, PanelId, ScreenshotApp, Startup};
@@ -56,6 +57,12 @@ pub struct Args {
     /// `#view=…` part).
     #[arg(long)]
     view: Option<String>,
+    /// Walk a lesson: a shipped one's name (paper) or a lesson file (.lesson.toml).
+    #[arg(long, conflicts_with = "view")]
+    lesson: Option<String>,
+    /// With --lesson: the step to open it at, from 1.
+    #[arg(long, requires = "lesson")]
+    step: Option<usize>,
     /// With --screenshot: write one row per UI frame to this CSV
     /// (frame,ms,render_in_flight,lights_done,lights_total).
     #[arg(long, requires = "screenshot")]
@@ -73,6 +80,8 @@ impl Default for Args {
             measure: false,
             lights: None,
             view: None,
+            lesson: None,
+            step: None,
             frame_log: None,
         }
     }
@@ -104,6 +113,11 @@ pub fn run(a: Args) -> Result<()> {
         link::decode(v, &LabState::default()).map_err(|why| Error::input("--view", why))?;
     }
     let view = a.view.clone();
+    let lesson = a
+        .lesson
+        .as_deref()
+        .map(|l| open_lesson(l, a.step))
+        .transpose()?;
     let (w, h) = a.size.unwrap_or(DEFAULT_SIZE);
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
@@ -128,6 +142,7 @@ pub fn run(a: Args) -> Result<()> {
         lights: a.lights,
         panel: a.panel.0,
         measure: a.measure,
+        lesson,
     };
     // Drivers print while eframe opens the window's adapter (gpu::driver_output says what):
     // held back until the app is made, then dropped; handed to the error if the window
@@ -199,6 +214,19 @@ fn keep_driver_loaded(cc: &eframe::CreationContext<'_>) {
     if let Some(rs) = &cc.wgpu_render_state {
         ltc_lab::gpu::keep_driver::keep_driver_loaded(&rs.device);
     }
+}
+
+/// The lesson `--lesson` names, and the step `--step` asks for (from 1), as the lab opens
+/// them: a lesson that does not read, or a step it lacks, is refused before a window opens.
+fn open_lesson(name: &str, step: Option<usize>) -> Result<(Lesson, String, usize)> {
+    let lesson = Lesson::open(name).map_err(|why| Error::input("--lesson", why))?;
+    let step = match step {
+        None => 0,
+        Some(k) => lesson
+            .step_index(k)
+            .map_err(|why| Error::input("--step", why))?,
+    };
+    Ok((lesson, name.to_string(), step))
 }
 
 /// A screenshot is a PNG in an existing directory.

@@ -268,3 +268,25 @@ pub fn notice(h: &Harness<'static, LabApp>) -> Option<ltc_lab::app::Message> {
 pub fn shows(h: &Harness<'static, LabApp>, text: &str) -> bool {
     h.query_by_label_contains(text).is_some()
 }
+
+/// A file from the disk, as eframe hands a dropped one to the app.
+#[derive(Debug)]
+struct DroppedFromDisk(std::path::PathBuf);
+
+impl egui::DroppedFile for DroppedFromDisk {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+/// `path` dropped on the window.
+pub fn drop_file(h: &mut Harness<'static, LabApp>, path: &std::path::Path) {
+    h.input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(DroppedFromDisk(path.to_path_buf())));
+    h.run_steps(2);
+}

@@ -9,6 +9,7 @@ mod gpu_common;
 mod chart;
 mod clipping;
 mod harness;
+mod lesson;
 mod lobe;
 mod matrix;
 mod parts;

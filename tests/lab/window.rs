@@ -13,7 +13,7 @@ use ltc_lab::render::View;
 
 use crate::gpu_common;
 use crate::harness::{
-    lab, maximised, notice, options, settle, shows, type_into, unsettled, with_lights,
+    drop_file, lab, maximised, notice, options, settle, shows, type_into, unsettled, with_lights,
 };
 
 #[test]
@@ -352,27 +352,6 @@ fn the_layout_scales_with_the_window() {
     uhd.snapshot_options("layout_3840x2160", &options(3840 * 2160));
     results.extend_harness(&mut uhd);
     results.unwrap();
-}
-
-/// A file from the disk, as eframe hands a dropped one to the app.
-#[derive(Debug)]
-struct DroppedFromDisk(std::path::PathBuf);
-
-impl egui::DroppedFile for DroppedFromDisk {
-    fn path(&self) -> &std::path::Path {
-        &self.0
-    }
-
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        std::fs::read(&self.0).map_err(|e| e.to_string())
-    }
-}
-
-fn drop_file(h: &mut Harness<'static, LabApp>, path: &std::path::Path) {
-    h.input_mut()
-        .dropped_files
-        .push(std::sync::Arc::new(DroppedFromDisk(path.to_path_buf())));
-    h.run_steps(2);
 }
 
 /// A file dropped on the window is taken for what its name says (app/file_io.rs): a scene

@@ -42,7 +42,8 @@ impl PageLab {
         if crate::texts::requested() {
             cc.egui_ctx.add_plugin(crate::texts::TextMap::default());
         }
-        let app = LabApp::from_creation_context(cc, fragment.strip_prefix(FRAGMENT_KEY));
+        let mut app = LabApp::from_creation_context(cc, fragment.strip_prefix(FRAGMENT_KEY));
+        app.open_lesson_link(&fragment);
         Self {
             app,
             first_frame_ms: None,

@@ -263,6 +263,52 @@ impl Lab {
         self.said_after_edit(&notes);
     }
 
+    /// Replaces the part of type `T` with `value` where it differs (checked as `set` checks):
+    /// the parts a view leaves as they were keep their stamps, so their work is not made again.
+    fn replace<T>(&mut self, value: T)
+    where
+        Self: HasPart<T>,
+        T: Checked + PartialEq,
+    {
+        if **self.part() != value {
+            self.set(value);
+        }
+    }
+
+    /// The parts of `shared` in place of the lab's (a view opened: a lesson's step), each
+    /// checked where it enters; the lights cut to what the device shades.
+    pub fn use_shared(&mut self, shared: Shared) {
+        let Shared {
+            lights,
+            material,
+            stage,
+            exposure,
+            lobe_view,
+            forms,
+            spheres,
+            side_b,
+            overrides,
+            rules,
+            tables,
+            selection,
+            refit,
+        } = shared;
+        self.replace(lights.into_value());
+        self.replace(material.into_value());
+        self.replace(stage.into_value());
+        self.replace(exposure.into_value());
+        self.replace(lobe_view.into_value());
+        self.replace(forms.into_value());
+        self.replace(spheres.into_value());
+        self.replace(side_b.into_value());
+        self.replace(overrides.into_value());
+        self.replace(rules.into_value());
+        self.replace(tables.into_value());
+        self.replace(selection.into_value());
+        self.replace(refit.into_value());
+        self.keep_lights();
+    }
+
     /// Edits light `k` through `f` (without copying the others: a drag edits one light a
     /// frame among up to 100 000); `None` where there is no light `k`.
     pub fn edit_light<R>(&mut self, k: usize, f: impl FnOnce(&mut Light) -> R) -> Option<R> {

@@ -38,6 +38,11 @@ impl<T> Part<T> {
         self.stamp
     }
 
+    /// Its value, the part given up.
+    pub fn into_value(self) -> T {
+        self.value
+    }
+
     /// The value, writable: for the lab's doors only, which stamp it afterwards.
     pub(super) fn value_mut(&mut self) -> &mut T {
         &mut self.value

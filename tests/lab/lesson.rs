@@ -1,0 +1,263 @@
+//! The lesson (docs/design.md §5.11), walked as a student walks it: *lesson* pressed, *next*
+//! pressed by its label through every step, each step's view, outlined panels and *try this*
+//! checked, and each task done with the control the step names; snapshots of every step at a
+//! projector's two sizes; a teacher's step added, saved and loaded; a broken lesson refused.
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use ltc_lab::app::lesson::Lesson;
+use ltc_lab::app::lesson_bar::LessonBar;
+use ltc_lab::app::{LabApp, LabState, link};
+
+use crate::harness::{drop_file, lab, notice, options, press, settle, shows, slide, type_into};
+
+fn paper() -> Lesson {
+    Lesson::shipped("paper").expect("the shipped lesson")
+}
+
+/// The state a view's string opens, as the lab's own state compares (the parts a link
+/// carries).
+fn opened(view: &str) -> LabState {
+    link::decode(view, &LabState::default()).expect("a view")
+}
+
+/// Where the lesson is: (step from 1, its *try this* done).
+fn at(h: &Harness<'static, LabApp>) -> (usize, bool) {
+    let r = h.state().report().lesson.expect("a lesson is open");
+    (r.step, r.done)
+}
+
+/// The step's view is the lab's, its panels are the ones drawn (with the side panel where the
+/// view shows it), and its task is not yet done.
+fn check_arrival(h: &Harness<'static, LabApp>, lesson: &Lesson, k: usize) {
+    let step = &lesson.steps[k];
+    assert_eq!(at(h), (k + 1, false), "step {}: {}", k + 1, step.title);
+    let now = opened(&link::encode(&h.state().state()));
+    let want = opened(&step.view);
+    assert_eq!(now.lab, want.lab, "step {}: the lab's parts", k + 1);
+    assert_eq!(
+        (&now.lobe, &now.plane, &now.clipping, &now.window),
+        (&want.lobe, &want.plane, &want.clipping, &want.window),
+        "step {}: the panels' settings",
+        k + 1
+    );
+    let mut drawn: Vec<&str> = h.state().report().panels;
+    drawn.retain(|p| *p != "controls");
+    let panels: Vec<&str> = step.panels.iter().map(|p| p.name()).collect();
+    assert_eq!(drawn, panels, "step {}: the panels shown", k + 1);
+    assert!(shows(h, &step.title), "step {}: its title", k + 1);
+}
+
+/// Does step `k`'s task with the control it names, as a student would.
+fn do_task(h: &mut Harness<'static, LabApp>, k: usize) {
+    let click = |h: &mut Harness<'static, LabApp>, label: &str| {
+        h.get_by_role_and_label(Role::CheckBox, label).click();
+        h.run_steps(2);
+    };
+    match k + 1 {
+        1 => slide(h, "α", 0.6),
+        2 => slide(h, "M: I -> fitted", 0.0),
+        3 => slide(h, "θo (°)", 82.0),
+        4 => click_a_low_light(h),
+        5 => click(h, "paper-literal normalization"),
+        6 => slide(h, "lights", 1000.0),
+        7 => click(h, "case 1 rule (n·l ≤ 0 -> 0)"),
+        8 => {
+            click(h, "case 1 rule (n·l ≤ 0 -> 0)");
+            click(h, "case 2 rule ((M^-1 l).z ≤ 0 -> 0)");
+        }
+        9 => slide(h, "θo (°)", 86.0),
+        _ => unreachable!("step 10's task is a measurement, left to the chart's own tests"),
+    }
+    h.run_steps(2);
+}
+
+/// In the pinned pixel's table, the number of a light less than 15° above the surface: the
+/// table sorted by ω's elevation, lowest first (its header pressed twice), and its top row's
+/// number clicked.
+fn click_a_low_light(h: &mut Harness<'static, LabApp>) {
+    for _ in 0..2 {
+        h.get_by_label_contains("ω elev, az").click();
+        h.run_steps(2);
+    }
+    let header = h.get_by_label("#").rect();
+    // Each row's angles, "elevation°, azimuth°": ω's first, then ω''s; the top row's.
+    let top = h
+        .query_all_by_label_contains("°, ")
+        .filter_map(|n| {
+            // A label's text is its node's value.
+            let text = n.value()?;
+            let elevation: f64 = text.split('°').next()?.trim().parse().ok()?;
+            Some((n.rect().center().y, n.rect().left(), elevation))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)))
+        .expect("the pinned pixel's table has rows");
+    assert!(
+        top.2 < 15.0,
+        "no light under 15° at the pinned pixel: {top:?}"
+    );
+    crate::harness::click_at(h, egui::pos2(header.center().x, top.0));
+}
+
+#[test]
+fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
+    let Some(mut h) = lab((1280.0, 720.0), LabState::default()) else {
+        return;
+    };
+    let lesson = paper();
+    press(&mut h, "lesson");
+    let mut snapshots = egui_kittest::SnapshotResults::new();
+    for k in 0..lesson.steps.len() {
+        settle(&mut h);
+        check_arrival(&h, &lesson, k);
+        snapshots.add(h.try_snapshot_options(
+            format!("lesson_1280x720_step{:02}", k + 1),
+            &options(1280 * 720),
+        ));
+        if k + 1 < lesson.steps.len() {
+            do_task(&mut h, k);
+            assert_eq!(at(&h), (k + 1, true), "step {}: its task was done", k + 1);
+            press(&mut h, "next");
+        } else {
+            // The speed step reads each method's work per light from the shaders.
+            let work = ltc_lab::gpu::work::work_per_light().expect("counted");
+            for (m, w) in work
+                .iter()
+                .filter(|(m, _)| ["brdf", "ltc-fast"].contains(&m.name()))
+            {
+                let said = format!("{} arithmetic operations", w.arithmetic);
+                assert!(
+                    shows(&h, &said),
+                    "{}'s work per light: '{said}' not shown",
+                    m.name()
+                );
+            }
+        }
+    }
+    // Leaving the lesson keeps the view: the last step's, laid out as its view says.
+    let last = opened(&lesson.steps.last().unwrap().view);
+    press(&mut h, "close lesson");
+    h.run_steps(2);
+    assert!(h.state().lesson().is_none());
+    assert_eq!(opened(&link::encode(&h.state().state())).lab, last.lab);
+    settle(&mut h);
+}
+
+/// At 1920×1080, stepped by a presenter's clicker (Page Down, →) and back (Page Up, ←).
+#[test]
+fn the_paper_lesson_at_1920x1080_steps_by_the_keyboard() {
+    let lesson = paper();
+    let n = lesson.steps.len();
+    let mut state = LabState::default();
+    state.plane.show_gpu_times = false;
+    let Some(mut h) = lab((1920.0, 1080.0), state) else {
+        return;
+    };
+    h.state_mut().open_lesson(lesson.clone(), "paper", 0);
+    let mut snapshots = egui_kittest::SnapshotResults::new();
+    for k in 0..n {
+        settle(&mut h);
+        check_arrival(&h, &lesson, k);
+        snapshots.add(h.try_snapshot_options(
+            format!("lesson_1920x1080_step{:02}", k + 1),
+            &options(1920 * 1080),
+        ));
+        let key = if k % 2 == 0 {
+            egui::Key::PageDown
+        } else {
+            egui::Key::ArrowRight
+        };
+        h.key_press(key);
+        h.run_steps(2);
+    }
+    // Past the last step, the keys stay; back goes back.
+    assert_eq!(at(&h).0, n);
+    h.key_press(egui::Key::PageUp);
+    h.run_steps(2);
+    h.key_press(egui::Key::ArrowLeft);
+    h.run_steps(2);
+    assert_eq!(at(&h).0, n - 2);
+    settle(&mut h);
+}
+
+/// A teacher adds a step of the current view, saves the lesson, and opens it again by a drop;
+/// a broken lesson dropped is refused naming its step and field, and nothing else changes; a
+/// step whose view is broken shows its text with why.
+#[test]
+fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
+    let Some(mut h) = lab((1280.0, 720.0), LabState::default()) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    h.state_mut().open_lesson(paper(), "paper", 0);
+    settle(&mut h);
+    press(&mut h, "write a lesson");
+    h.run_steps(10);
+    type_into(&mut h, "new step's title", "My own step");
+    type_into(&mut h, "new step's text", "Look here. Then there.");
+    let view = link::encode(&h.state().state());
+    press(&mut h, "add step");
+    h.run_steps(2);
+    let written = h.state().lesson().unwrap().lesson().clone();
+    assert_eq!(written.steps.len(), paper().steps.len() + 1);
+    assert_eq!(at(&h).0, 2);
+    let added = &written.steps[1];
+    assert_eq!(
+        (added.title.as_str(), added.text.as_str()),
+        ("My own step", "Look here. Then there.")
+    );
+    assert_eq!(opened(&added.view), opened(&view));
+
+    // A name without .lesson.toml is refused (a drop would read it as a scene).
+    let file = dir.path().join("mine.lesson.toml");
+    type_into(
+        &mut h,
+        "lesson file",
+        &dir.path().join("mine.toml").display().to_string(),
+    );
+    press(&mut h, "save lesson");
+    h.run_steps(2);
+    let said = notice(&h).unwrap();
+    assert!(said.is_error && said.text.contains("mine.toml"), "{said:?}");
+    assert!(!dir.path().join("mine.toml").exists());
+    type_into(&mut h, "lesson file", &file.display().to_string());
+    press(&mut h, "save lesson");
+    h.run_steps(2);
+    let saved = Lesson::from_toml(&std::fs::read_to_string(&file).unwrap(), "saved").unwrap();
+    assert_eq!(saved, written);
+
+    press(&mut h, "close lesson");
+    h.run_steps(2);
+    drop_file(&mut h, &file);
+    assert_eq!(h.state().lesson().map(LessonBar::lesson), Some(&written));
+    assert_eq!(at(&h).0, 1);
+
+    // Broken: step 1's panel is not one; refused by step and field, the lab unchanged.
+    let before = h.state().state();
+    let broken_file = dir.path().join("broken.lesson.toml");
+    let text = written
+        .to_toml()
+        .replacen("panels = [\"lobe\"]", "panels = [\"teapot\"]", 1);
+    std::fs::write(&broken_file, text).unwrap();
+    drop_file(&mut h, &broken_file);
+    let said = notice(&h).unwrap();
+    assert!(
+        said.is_error
+            && said
+                .text
+                .contains("broken.lesson.toml: step 1: field `panels`"),
+        "{said:?}"
+    );
+    assert_eq!(h.state().state(), before);
+    assert_eq!(h.state().lesson().map(LessonBar::lesson), Some(&written));
+
+    // A step whose view does not open shows its text, and why.
+    let mut lesson = written.clone();
+    lesson.steps[1].view = "v1.cut-short".into();
+    h.state_mut().open_lesson(lesson, "cut.lesson.toml", 1);
+    h.run_steps(2);
+    assert!(shows(&h, "Look here. Then there."));
+    assert!(shows(&h, "This step's view could not be opened"));
+    settle(&mut h);
+}
