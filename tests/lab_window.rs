@@ -33,18 +33,22 @@ fn lab_screenshot_is_the_requested_size_and_not_blank() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    for (panel, size) in [("all", (960u32, 540u32)), ("plane", (800, 450))] {
+    // The lesson's step opens in the window as a link opens it (`--lesson`, `--step`).
+    for (panel, size, shown) in [
+        ("all", (960u32, 540u32), ["--panel", "all"]),
+        ("plane", (800, 450), ["--panel", "plane"]),
+        ("lesson", (1280, 720), ["--lesson", "paper"]),
+    ] {
         let out = dir.path().join(format!("{panel}.png"));
         let o = Command::new(env!("CARGO_BIN_EXE_ltc-lab"))
-            .args([
-                "lab",
-                "--screenshot",
-                out.to_str().unwrap(),
-                "--panel",
-                panel,
-                "--size",
-                &format!("{}x{}", size.0, size.1),
-            ])
+            .args(["lab", "--screenshot", out.to_str().unwrap()])
+            .args(shown)
+            .args(["--size", &format!("{}x{}", size.0, size.1)])
+            .args(if panel == "lesson" {
+                &["--step", "7"][..]
+            } else {
+                &[]
+            })
             .output()
             .unwrap();
         assert!(

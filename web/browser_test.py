@@ -14,7 +14,9 @@
    *screenshot* downloads the window as a PNG.
 7. A refit runs in steps over the frames and ends with its result shown (its frames' gaps
    are printed, not asserted: speed is for benchmarks).
-8. No console errors in any run.
+8. The lesson: #lesson=paper&step=7 opens that step (its title, its panel) on WebGL2 and on
+   WebGPU, and *next*, clicked by its label, walks on to the last step.
+9. No console errors in any run.
 
     browser_test.py URL OUTDIR     prints one line per check; exit 1 on the first failure
 """
@@ -181,6 +183,9 @@ def main():
     print("web/browser_test.py: ok: hostile #view= links (NaN divider, NaN intensity, range "
           "1e-300) opened drawn, each field named")
 
+    # 8. The lesson, from a link.
+    lessons(url, out)
+
     # 5. Files dropped on the window.
     drops(url, out)
 
@@ -227,6 +232,47 @@ def drops(url, out):
 
 
 TEXTS = "document.getElementById('lab-texts').textContent"
+
+
+def lessons(url, out):
+    """Opens #lesson=paper&step=7 on WebGL2 and WebGPU: the page reports that step, its title
+    and its panel; then *next*, clicked where the lab drew it, walks to the last step."""
+    lesson = f"JSON.parse({STATE}).lesson"
+    for name, flags in [("lesson-webgl2", WEBGL2), ("lesson-webgpu", WEBGPU)]:
+        walked = {}
+
+        def act(page):
+            first = json.loads(page.evaluate(f"JSON.stringify({lesson})"))
+            walked["first"] = first
+            for step in range(first["step"] + 1, first["steps"] + 1):
+                try:
+                    click_text(page, "next")
+                except RuntimeError as e:
+                    walked["why"] = f"step {step - 1}: {e}"
+                    return False
+                if not wait_for(page, f"{lesson}.step === {step}", 60):
+                    walked["why"] = f"next did not reach step {step}: {page.evaluate(STATE)}"
+                    return False
+            walked["last"] = json.loads(page.evaluate(f"JSON.stringify({lesson})"))
+            return True
+
+        shown, console, done = open_page(url + "?texts#lesson=paper&step=7", SETTLED, STATE,
+                                         "1920,1080", flags, 240,
+                                         os.path.join(out, f"{name}.png"), act=act)
+        check_console(name, console, out)
+        if not done:
+            fail(f"{name}: {walked.get('why', shown)}")
+        state = json.loads(shown)
+        first = walked.get("first") or {}
+        if first.get("step") != 7 or not first.get("title", "").startswith("Case 1"):
+            fail(f"{name}: #lesson=paper&step=7 opened {first!r}")
+        if "why" in walked or walked["last"]["step"] != first["steps"]:
+            fail(f"{name}: {walked.get('why', walked)}")
+        if grid(state) != ["chart"]:
+            fail(f"{name}: the last step's panel is not the one shown: {grid(state)}")
+        print(f"web/browser_test.py: ok: #lesson=paper&step=7 opened step 7 ({first['title']}) "
+              f"on {state['shading'].upper()} shading, and next walked to step "
+              f"{walked['last']['step']} of {first['steps']}")
 
 
 def picks_downloads_and_refit(url, out):

@@ -37,7 +37,8 @@ impl LabApp {
         egui::CentralPanel::default().show(ui, |ui| {
             let size = ui.available_size();
             let tabs = size.x < GRID_MIN.x || size.y < GRID_MIN.y;
-            ui.horizontal(|ui| self.top_bar(ui, tabs));
+            // Wrapped: the tabs and the bar's buttons overflow a small window in one row.
+            ui.horizontal_wrapped(|ui| self.top_bar(ui, tabs));
             if self.lesson().is_some() {
                 return self.lesson_panels(ui);
             }

@@ -17,8 +17,8 @@ use crate::render::Method;
 
 /// Type sizes in points: at 1280×720 (zoom 1) a point is a pixel, and the issue's
 /// projector asks for text of at least 18 px to read from the back of a room.
-pub const TEXT_SIZE: f32 = 20.0;
-const TITLE_SIZE: f32 = 28.0;
+pub const TEXT_SIZE: f32 = 19.0;
+const TITLE_SIZE: f32 = 26.0;
 const SMALL_SIZE: f32 = 18.0;
 
 /// The bar's width: a third of the window, within what a line of text at `TEXT_SIZE` reads

@@ -372,7 +372,12 @@ fn header(
 }
 
 fn row(ui: &mut egui::Ui, lab: &mut Lab, t: &PixelTerms, l: &LightTerm) {
-    let shown = lab.lobe_view().light == Some(l.omega.to_array());
+    // Within 1e-3 (0.06°): a view saved from a render of another size pins the same place
+    // on the image, whose ω differs in the last digits.
+    let shown = lab
+        .lobe_view()
+        .light
+        .is_some_and(|w| glam::DVec3::from(w).distance(l.omega) < 1e-3);
     if ui
         .selectable_label(shown, format!("{}", l.index))
         .on_hover_text("Show this light's ω and M^-1 ω on the lobe panel, at this pixel's θo")

@@ -56,3 +56,38 @@ fn lab_refuses_a_broken_view() {
         assert_refused(&ltc_lab(&["lab", "--view", view]), "--view");
     }
 }
+
+/// A lesson that does not open, or a step it lacks, is refused by name before a window opens:
+/// a shipped name that is not one, a missing file, a malformed file (its step and field named),
+/// a step out of range; `--step` needs `--lesson`, which a view excludes.
+#[test]
+fn lab_refuses_a_lesson_that_does_not_open() {
+    let dir = tempfile::tempdir().unwrap();
+    let broken = dir.path().join("broken.lesson.toml");
+    std::fs::write(
+        &broken,
+        "title = \"t\"\n[[step]]\ntitle = \"a\"\ntext = \"b\"\npanels = [\"teapot\"]\nview = \"v1.\"\n",
+    )
+    .unwrap();
+    let broken = broken.to_str().unwrap();
+    for (args, says) in [
+        (&["--lesson", "teapot"][..], "--lesson"),
+        (
+            &["--lesson", "/nonexistent.lesson.toml"],
+            "/nonexistent.lesson.toml",
+        ),
+        (&["--lesson", broken], "step 1: field `panels`"),
+        (&["--lesson", "paper", "--step", "0"], "--step"),
+        (&["--lesson", "paper", "--step", "99"], "--step"),
+    ] {
+        let o = ltc_lab(&[&["lab"][..], args].concat());
+        assert_refused(&o, says);
+    }
+    for args in [
+        &["--step", "2"][..],
+        &["--lesson", "paper", "--view", "v1.x"],
+    ] {
+        let o = ltc_lab(&[&["lab"][..], args].concat());
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+    }
+}

@@ -21,8 +21,8 @@ pub struct PageLab {
     /// pictures made).
     settled_ms: Option<f64>,
     reported_at: f64,
-    /// Whether the lab was busy at the last report, and its message.
-    reported_busy: Option<(bool, Option<String>)>,
+    /// Whether the lab was busy at the last report, its message, and its lesson's step.
+    reported_busy: Option<(bool, Option<String>, Option<(usize, bool)>)>,
 }
 
 /// What `#lab-state` holds.
@@ -77,11 +77,15 @@ impl eframe::App for PageLab {
         if self.settled_ms.is_none() && !self.app.busy() {
             self.settled_ms = Some(now);
         }
-        // Also at once when the lab's work starts or ends, or its message changes: a finished
-        // lab draws no more frames, and a report left from before would say it is still busy.
+        // Also at once when the lab's work starts or ends, its message changes or a lesson
+        // moves to another step: a finished lab draws no more frames, and a report left from
+        // before would say it is still busy, or at the step before.
         let busy = (
             self.app.busy(),
             self.app.lab().message().map(|m| m.text.clone()),
+            self.app
+                .lesson()
+                .map(|bar| (bar.step(), bar.done(bar.step()))),
         );
         if now - self.reported_at >= REPORT_EVERY_MS || self.reported_busy.as_ref() != Some(&busy) {
             self.reported_at = now;

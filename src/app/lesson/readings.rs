@@ -178,7 +178,11 @@ fn reading(name: &str, now: &Now<'_>, work: &Result<Vec<(Method, Work)>, String>
             (Some(b), Some(f)) => format!("{:.2}×", b / f),
             _ => none(),
         },
-        "measured_on" => now.measurement.map_or_else(none, |m| m.device.clone()),
+        // The reference study's name without its invitation to measure.
+        "measured_on" => now.measurement.map_or_else(none, |m| {
+            let device = m.device.as_str();
+            device.split(" — ").next().unwrap_or(device).to_string()
+        }),
         "work_brdf" => work_of(Method::Brdf),
         "work_ltc" => work_of(Method::Ltc),
         "work_ltc_fast" => work_of(Method::LtcFast),
