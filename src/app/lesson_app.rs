@@ -134,15 +134,23 @@ impl LabApp {
                         .say(Message::error("a lesson keeps at least one step"));
                 }
             }
-            Action::Save(path) => self.save_lesson(&path),
+            Action::Save(path, named) => self.save_lesson(&path, named),
             Action::Load(path) => self.lab.request(Request::Open(Purpose::Lesson, path)),
         }
     }
 
     /// Writes the lesson to the file the user named, which must end in `.lesson.toml` (so
-    /// that a drop opens it as a lesson, not a scene).
-    fn save_lesson(&mut self, path: &std::path::Path) {
+    /// that a drop opens it as a lesson, not a scene). The field's default name never replaces
+    /// a file (on the desktop: a browser's download never replaces one).
+    fn save_lesson(&mut self, path: &std::path::Path, typed: bool) {
         let Some(bar) = &self.lesson else { return };
+        if !typed && !cfg!(target_arch = "wasm32") && path.exists() {
+            self.lab.say(Message::error(format!(
+                "save lesson: {} exists and is not a name you typed: name the file to write",
+                path.display()
+            )));
+            return;
+        }
         let named = path.to_string_lossy();
         if !named.ends_with(crate::app::lesson::EXTENSION) {
             self.lab.say(Message::error(format!(

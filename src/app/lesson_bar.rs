@@ -38,8 +38,9 @@ pub enum Action {
     AddStep,
     /// This step removed.
     RemoveStep,
-    /// The lesson to the file named (a download in the browser).
-    Save(PathBuf),
+    /// The lesson to the file named (a download in the browser); whether the user named it
+    /// (typed into the field) rather than left the field's default.
+    Save(PathBuf, bool),
     /// A lesson from the file named (the browser's picker on the web).
     Load(String),
 }
@@ -50,6 +51,8 @@ struct Writing {
     title: String,
     text: String,
     path: String,
+    /// The file's field was typed into: its name is the user's, not the default.
+    named: bool,
 }
 
 /// A lesson being walked.
@@ -85,6 +88,7 @@ impl LessonBar {
                 title: String::new(),
                 text: String::new(),
                 path: "my.lesson.toml".into(),
+                named: false,
             },
         }
     }
@@ -322,8 +326,9 @@ impl LessonBar {
                     let field = ui.add(egui::TextEdit::singleline(&mut w.path).desired_width(160.0))
                         .on_hover_text("The lesson's file (a name ending in .lesson.toml): saved to, or loaded from; only the file named here is written");
                     name(ui, &field, "lesson file");
+                    w.named |= field.changed();
                     if ui.button("save lesson").on_hover_text("Write the lesson to the file named on the left (a download in a browser)").clicked() {
-                        action = Some(Action::Save(PathBuf::from(w.path.trim())));
+                        action = Some(Action::Save(PathBuf::from(w.path.trim()), w.named));
                     }
                     if ui.button("load lesson").on_hover_text("Open the lesson in the file named on the left (a browser picks one; or drop a .lesson.toml on the window)").clicked() {
                         action = Some(Action::Load(w.path.trim().to_string()));
