@@ -77,7 +77,7 @@ fn do_task(h: &mut Harness<'static, LabApp>, k: usize) {
             click(h, "case 2 rule ((M^-1 l).z ≤ 0 -> 0)");
         }
         9 => slide(h, "θo (°)", 86.0),
-        _ => unreachable!("step 10's task is a measurement, left to the chart's own tests"),
+        k => unreachable!("step {k} asks nothing the walk does"),
     }
     h.run_steps(2);
 }
@@ -124,24 +124,30 @@ fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
             format!("lesson_1280x720_step{:02}", k + 1),
             &options(1280 * 720),
         ));
-        if k + 1 < lesson.steps.len() {
-            do_task(&mut h, k);
-            assert_eq!(at(&h), (k + 1, true), "step {}: its task was done", k + 1);
-            press(&mut h, "next");
-        } else {
-            // The speed step reads each method's work per light from the shaders.
-            let work = ltc_lab::gpu::work::work_per_light().expect("counted");
-            for (m, w) in work
-                .iter()
-                .filter(|(m, _)| ["brdf", "ltc-fast"].contains(&m.name()))
-            {
-                let said = format!("{} arithmetic operations", w.arithmetic);
-                assert!(
-                    shows(&h, &said),
-                    "{}'s work per light: '{said}' not shown",
-                    m.name()
-                );
+        let last = k + 1 == lesson.steps.len();
+        match &lesson.steps[k].try_this {
+            // The last step's task is a measurement, left to the chart's own tests.
+            Some(_) if !last => {
+                do_task(&mut h, k);
+                assert_eq!(at(&h), (k + 1, true), "step {}: its task was done", k + 1);
             }
+            Some(_) => {}
+            // The step that only shows: each method's work per light, read from the shaders.
+            None => {
+                let work = ltc_lab::gpu::work::work_per_light().expect("counted");
+                let shown = ["brdf", "ltc-fast"];
+                for (m, w) in work.iter().filter(|(m, _)| shown.contains(&m.name())) {
+                    let said = format!("{} arithmetic operations", w.arithmetic);
+                    assert!(
+                        shows(&h, &said),
+                        "{}'s work per light: '{said}' not shown",
+                        m.name()
+                    );
+                }
+            }
+        }
+        if !last {
+            press(&mut h, "next");
         }
     }
     // Leaving the lesson keeps the view: the last step's, laid out as its view says.
