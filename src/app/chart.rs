@@ -50,6 +50,8 @@ pub struct ChartPanel {
     study_path: String,
     /// Each method's work per light, counted from the shaders once shown.
     work: Option<Result<Vec<(Method, Work)>, String>>,
+    /// Measurements finished since the lab started (a lesson's step asks for one).
+    finished: u64,
 }
 
 impl Panel for ChartPanel {
@@ -58,6 +60,7 @@ impl Panel for ChartPanel {
             if let Some(m) = job.step(FRAME_BUDGET_MS) {
                 self.state.measurement = Some(m);
                 self.job = None;
+                self.finished += 1;
             } else {
                 ui.ctx().request_repaint();
             }
@@ -108,6 +111,11 @@ impl ChartPanel {
         &self.state
     }
 
+    /// Measurements finished since the lab started.
+    pub fn finished(&self) -> u64 {
+        self.finished
+    }
+
     /// *measure* (or its progress and cancel), and a study to read instead.
     fn toolbar(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         match &self.job {
@@ -149,6 +157,20 @@ impl ChartPanel {
             .clicked()
         {
             lab.request(Request::Open(Purpose::Study, self.study_path.clone()));
+        }
+        for (name, path, text) in SHIPPED_STUDIES {
+            let hover = format!(
+                "Plot the study shipped with the lab ({path}), measured on {}",
+                study_device(text)
+            );
+            if ui
+                .small_button(format!("{name} study"))
+                .on_hover_text(hover)
+                .clicked()
+            {
+                self.state.measurement = shipped_study(name);
+                self.error = None;
+            }
         }
         if let Some(m) = &self.state.measurement {
             ui.small(&m.device);
@@ -524,18 +546,50 @@ fn log_reading(pos: &egui_plot::HoverPosition<'_>, x: &str, y: &str) -> Option<S
     }
 }
 
-/// The bundled reference study (assets/study/reference.csv: its device and size are in its
-/// comment lines), shown until the user measures or loads one.
-pub fn reference_study() -> Option<Measurement> {
-    let text = include_str!("../../assets/study/reference.csv");
-    let rows = crate::study::parse_csv(text, "assets/study/reference.csv").ok()?;
-    let device = text
-        .lines()
+/// The studies the lab ships, each made by `ltc-lab study` (its `# made with:` line says
+/// how): on this project's CPU driver (lavapipe, the chart's default), and on a lent NVIDIA
+/// H100, so that a machine without a GPU can still show what a GPU measures. Name, file,
+/// text.
+pub const SHIPPED_STUDIES: [(&str, &str, &str); 2] = [
+    (
+        "lavapipe",
+        "assets/study/reference.csv",
+        include_str!("../../assets/study/reference.csv"),
+    ),
+    (
+        "H100",
+        "assets/study/h100.csv",
+        include_str!("../../assets/study/h100.csv"),
+    ),
+];
+
+/// The device a shipped study's `# device:` line names.
+pub fn study_device(text: &str) -> &str {
+    text.lines()
         .find_map(|l| l.strip_prefix("# device: "))
-        .unwrap_or("unknown device");
-    let mut m = Measurement::from_study(&rows, "reference study");
-    m.device = format!("reference study ({device}) — press measure for this machine");
+        .unwrap_or("unknown device")
+}
+
+/// The shipped study `name`, as the chart plots it.
+pub fn shipped_study(name: &str) -> Option<Measurement> {
+    let (name, path, text) = SHIPPED_STUDIES.iter().find(|(n, ..)| *n == name)?;
+    let rows = crate::study::parse_csv(text, path).ok()?;
+    let mut m = Measurement::from_study(&rows, path);
+    let label = if *name == "lavapipe" {
+        "reference"
+    } else {
+        name
+    };
+    m.device = format!(
+        "{label} study ({}) — press measure for this machine",
+        study_device(text)
+    );
     Some(m)
+}
+
+/// The chart's default: the study on this project's CPU driver.
+pub fn reference_study() -> Option<Measurement> {
+    shipped_study("lavapipe")
 }
 
 /// Each method's work per light (docs/design.md §4.10) beside its measured time per light at

@@ -62,9 +62,9 @@ impl LabApp {
                 let rows = crate::study::read_csv(Path::new(path));
                 self.panels.chart().use_study(rows, path)
             }
-            (Purpose::Lesson, _) => match std::fs::read_to_string(path) {
+            (Purpose::Lesson, _) => match crate::files::read_text(Path::new(path)) {
                 Ok(text) => self.take_lesson(&text, path),
-                Err(e) => Message::error(format!("{path}: cannot read the lesson ({e})")),
+                Err(e) => Message::error(format!("load lesson: {e}")),
             },
         }
     }

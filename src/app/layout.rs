@@ -117,7 +117,12 @@ impl LabApp {
             ui.set_min_size(ui.available_size());
             ui.horizontal(|ui| {
                 ui.strong(id.title(&self.lab));
+                // In a lesson the step lays the panels out.
+                let lesson = self.lesson().is_some();
                 ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                    if lesson {
+                        return;
+                    }
                     let maximised = self.window.maximised == Some(id);
                     let label = if maximised { "restore" } else { "maximise" };
                     if ui

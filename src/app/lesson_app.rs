@@ -16,6 +16,11 @@ const SIDE_BY_SIDE: f32 = 1.6;
 impl LabApp {
     /// Walks `lesson` (from `source`: a shipped name or a file) from step `step` (from 0).
     pub fn open_lesson(&mut self, lesson: Lesson, source: &str, step: usize) {
+        if lesson.steps.is_empty() {
+            self.lab
+                .say(Message::error(format!("the lesson {source} has no step")));
+            return;
+        }
         self.lesson = Some(LessonBar::new(lesson, source));
         self.go_to(step);
     }
@@ -66,7 +71,7 @@ impl LabApp {
     /// keyboard (a focused slider takes the arrows).
     pub(super) fn lesson_keys(&mut self, ctx: &egui::Context) {
         let Some(bar) = &self.lesson else { return };
-        if ctx.egui_wants_keyboard_input() {
+        if ctx.text_edit_focused() {
             return;
         }
         let focused = ctx.memory(|m| m.focused().is_some());
@@ -116,12 +121,14 @@ impl LabApp {
                     (None, None) => vec![PanelId::Plane],
                 };
                 if let Some(bar) = &mut self.lesson {
-                    bar.add_step(view, panels);
-                    let n = bar.lesson().steps.len();
-                    self.lab.say(Message::note(format!(
-                        "added step {} of {n}, of this view",
-                        bar.step() + 1
-                    )));
+                    let n = bar.lesson().steps.len() + 1;
+                    self.lab.say(match bar.add_step(view, panels) {
+                        Ok(()) => Message::note(format!(
+                            "added step {} of {n}, of this view",
+                            bar.step() + 1
+                        )),
+                        Err(e) => Message::error(format!("add step: {e}: nothing added")),
+                    });
                 }
             }
             Action::RemoveStep => {
@@ -152,19 +159,29 @@ impl LabApp {
             return;
         }
         let named = path.to_string_lossy();
-        if !named.ends_with(crate::app::lesson::EXTENSION) {
+        if !named
+            .to_ascii_lowercase()
+            .ends_with(crate::app::lesson::EXTENSION)
+        {
             self.lab.say(Message::error(format!(
                 "save lesson: '{named}' does not end in {}: nothing written",
                 crate::app::lesson::EXTENSION
             )));
             return;
         }
-        let text = bar.lesson().to_toml();
-        self.lab
-            .say(match save(path, text.as_bytes(), "application/toml") {
-                Ok(done) => Message::note(done),
-                Err(e) => Message::error(e),
-            });
+        let saved = bar
+            .lesson()
+            .to_toml()
+            .and_then(|text| save(path, text.as_bytes(), "application/toml"));
+        if saved.is_ok()
+            && let Some(bar) = &mut self.lesson
+        {
+            bar.saved();
+        }
+        self.lab.say(match saved {
+            Ok(done) => Message::note(done),
+            Err(e) => Message::error(format!("save lesson: {e}: nothing written")),
+        });
     }
 
     /// A lesson read from `name`'s text: opened at its first step, or refused with why (the
@@ -173,6 +190,7 @@ impl LabApp {
         match Lesson::from_toml(text, name) {
             Ok(lesson) => {
                 let n = lesson.steps.len();
+                self.lab.dismiss();
                 self.open_lesson(lesson, name, 0);
                 match self.lab.message() {
                     Some(m) if m.is_error => m.clone(),

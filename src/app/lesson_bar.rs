@@ -66,6 +66,11 @@ pub struct LessonBar {
     done: Vec<bool>,
     /// Why the step's view could not be opened, where it could not.
     view_error: Option<String>,
+    /// The step's condition was seen not to hold: only then can it tick (a view that already
+    /// satisfies it, or a value left from before, ticks nothing the student did).
+    armed: bool,
+    /// The chart's finished measurements when the step was opened.
+    measurements_before: Option<u64>,
     /// The step's text with its readings.
     text: Cached<String>,
     /// Each method's work per light, counted from the shaders once a text asks for it.
@@ -82,6 +87,8 @@ impl LessonBar {
             step: 0,
             done: vec![false; n],
             view_error: None,
+            armed: false,
+            measurements_before: None,
             text: Cached::new("lesson.text"),
             work: None,
             writing: Writing {
@@ -117,23 +124,34 @@ impl LessonBar {
 
     /// Step `k` is shown (within the lesson), its view opened or why not.
     pub fn show_step(&mut self, k: usize, view_error: Option<String>) {
-        self.step = k.min(self.lesson.steps.len() - 1);
+        self.step = k.min(self.lesson.steps.len().saturating_sub(1));
         self.view_error = view_error;
+        self.armed = false;
+        self.measurements_before = None;
     }
 
     /// A step of the lab's view, `view`, after the shown one (which it becomes), with the
-    /// title and text written (or a placeholder title).
-    pub fn add_step(&mut self, view: String, panels: Vec<PanelId>) {
+    /// title and text written (or a placeholder title); or why not, the lesson unchanged.
+    pub fn add_step(&mut self, view: String, panels: Vec<PanelId>) -> Result<(), String> {
+        if !self.lesson.has_room() {
+            return Err("the lesson is full".into());
+        }
         let title = match self.writing.title.trim() {
             "" => format!("Step {}", self.step + 2),
             t => t.to_string(),
         };
-        let step = Step::captured(&title, &self.writing.text, panels, view);
-        self.step += 1;
-        self.lesson.steps.insert(self.step, step);
-        self.done.insert(self.step, false);
+        let step = Step::captured(&title, &self.writing.text, panels, view)?;
+        self.lesson.steps.insert(self.step + 1, step);
+        self.done.insert(self.step + 1, false);
+        self.show_step(self.step + 1, None);
         self.writing.title.clear();
         self.writing.text.clear();
+        Ok(())
+    }
+
+    /// The lesson's file was written under the field's name: the next save replaces it.
+    pub fn saved(&mut self) {
+        self.writing.named = true;
     }
 
     /// The shown step removed (a lesson keeps one); the step before it shown.
@@ -147,12 +165,21 @@ impl LessonBar {
         true
     }
 
-    /// Ticks the step's *try this* once its condition holds.
+    /// Ticks the step's *try this* once its condition holds, having not held on this step
+    /// (measurements counted from the step's opening).
     pub fn check(&mut self, now: &Now<'_>) {
         let step = self.step;
-        if let Some(t) = &self.lesson.steps[step].try_this
-            && t.when.holds(now)
-        {
+        let before = *self.measurements_before.get_or_insert(now.measurements);
+        let now = Now {
+            measurements: now.measurements.saturating_sub(before),
+            ..*now
+        };
+        let Some(t) = &self.lesson.steps[step].try_this else {
+            return;
+        };
+        if !t.when.holds(&now) {
+            self.armed = true;
+        } else if self.armed {
             self.done[step] = true;
         }
     }
@@ -230,7 +257,10 @@ impl LessonBar {
         let pinned = now
             .pinned
             .map(|p| (p.terms.len(), p.relative_error().to_bits()));
-        let measured = now.measurement.map(|m| (m.device.clone(), m.points.len()));
+        let measured = now.measurement.map(|m| {
+            let times: Vec<u64> = m.points.iter().map(|p| p.ms.to_bits()).collect();
+            (m.device.clone(), times)
+        });
         let lab = now.lab;
         let text = self.text.get(
             (

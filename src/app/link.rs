@@ -23,7 +23,7 @@ pub const FRAGMENT_KEY: &str = "view=";
 
 /// The longest string `decode` reads: a generated scene of any size fits in under 1 kB; a
 /// scene of dragged lights takes ~40 bytes a light. More is not a link a person sent.
-const MAX_LEN: usize = 1 << 20;
+pub const MAX_LEN: usize = 1 << 20;
 
 /// The parts of the lab's state a link carries.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]

@@ -110,6 +110,7 @@ impl Panels {
             plane: self.plane.state(),
             pinned: self.plane.pinned_terms(),
             measurement: self.chart.state().measurement.as_ref(),
+            measurements: self.chart.finished(),
         }
     }
 

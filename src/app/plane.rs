@@ -210,6 +210,8 @@ impl PlanePanel {
     /// Its settings from a view (a lesson's step), checked by the caller.
     pub fn set_state(&mut self, state: PlaneState) {
         self.state = state;
+        // A *worst pixel* asked for before would pin over the view's pixel.
+        self.worst_pending = false;
     }
 
     /// Whether its image's read-back is on its way (`save_exr` will have it).

@@ -58,7 +58,7 @@ pub struct Args {
     #[arg(long)]
     view: Option<String>,
     /// Walk a lesson: a shipped one's name (paper) or a lesson file (.lesson.toml).
-    #[arg(long, conflicts_with = "view")]
+    #[arg(long, conflicts_with_all = ["view", "scene", "lights", "panel"])]
     lesson: Option<String>,
     /// With --lesson: the step to open it at, from 1.
     #[arg(long, requires = "lesson")]

@@ -131,7 +131,23 @@ fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
                 do_task(&mut h, k);
                 assert_eq!(at(&h), (k + 1, true), "step {}: its task was done", k + 1);
             }
-            Some(_) => {}
+            // The speed step quotes the shipped studies' ratios, read from their files here;
+            // the chart plots the H100's on request.
+            Some(_) => {
+                for (_, path, text) in ltc_lab::app::chart::SHIPPED_STUDIES {
+                    let rows = ltc_lab::study::parse_csv(text, path).expect("a study");
+                    let ms = |v: &str| {
+                        let r = rows.iter().find(|r| r.variant == v && r.lights == 1000);
+                        r.expect("1000 lights").ms_median
+                    };
+                    let said = format!("{:.2}× at 1000", ms("brdf") / ms("ltc-fast"));
+                    assert!(shows(&h, &said), "{path}: '{said}' not shown");
+                }
+                press(&mut h, "H100 study");
+                h.run_steps(2);
+                let shown = h.query_all_by_label_contains("H100 study (NVIDIA H100");
+                assert!(shown.count() >= 1, "the H100 study is not plotted");
+            }
             // The step that only shows: each method's work per light, read from the shaders.
             None => {
                 let work = ltc_lab::gpu::work::work_per_light().expect("counted");
@@ -256,9 +272,11 @@ fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
     // Broken: step 1's panel is not one; refused by step and field, the lab unchanged.
     let before = h.state().state();
     let broken_file = dir.path().join("broken.lesson.toml");
-    let text = written
-        .to_toml()
-        .replacen("panels = [\"lobe\"]", "panels = [\"teapot\"]", 1);
+    let text =
+        written
+            .to_toml()
+            .unwrap()
+            .replacen("panels = [\"lobe\"]", "panels = [\"teapot\"]", 1);
     std::fs::write(&broken_file, text).unwrap();
     drop_file(&mut h, &broken_file);
     let said = notice(&h).unwrap();
@@ -279,5 +297,34 @@ fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
     h.run_steps(2);
     assert!(shows(&h, "Look here. Then there."));
     assert!(shows(&h, "This step's view could not be opened"));
+    settle(&mut h);
+}
+
+/// A *try this* ticks for what the student did on the step, not for a view that already
+/// satisfies it: the condition must first be seen not to hold.
+#[test]
+fn a_try_this_ticks_only_for_what_the_student_did() {
+    let Some(mut h) = lab((1280.0, 720.0), LabState::default()) else {
+        return;
+    };
+    let mut rough = LabState::default();
+    let material = ltc_lab::scene::Material {
+        alpha: 0.6,
+        ..*rough.lab.material
+    };
+    rough.lab.material = ltc_lab::app::lab::Part::new(material);
+    let mut lesson = paper();
+    lesson.steps.truncate(1);
+    lesson.steps[0].view = link::encode(&rough);
+    h.state_mut().open_lesson(lesson, "rough.lesson.toml", 0);
+    settle(&mut h);
+    // α = 0.6 ≥ 0.5 from the view: nothing done yet.
+    assert_eq!(at(&h), (1, false));
+    slide(&mut h, "α", 0.3);
+    h.run_steps(2);
+    assert_eq!(at(&h), (1, false));
+    slide(&mut h, "α", 0.7);
+    h.run_steps(2);
+    assert_eq!(at(&h), (1, true));
     settle(&mut h);
 }

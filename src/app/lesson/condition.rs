@@ -14,6 +14,7 @@ use crate::pixel::PixelTerms;
 use crate::render::View;
 
 /// What the lab shows now: its parts, and the panels' own settings and results a lesson reads.
+#[derive(Clone, Copy)]
 pub struct Now<'a> {
     pub lab: &'a Lab,
     pub lobe: &'a LobeState,
@@ -22,6 +23,9 @@ pub struct Now<'a> {
     pub pinned: Option<&'a PixelTerms>,
     /// The chart's measurement (or the reference study it starts with).
     pub measurement: Option<&'a Measurement>,
+    /// Measurements the chart finished: since the lab started, or, as a step's condition
+    /// reads it, since the step was opened.
+    pub measurements: u64,
 }
 
 /// What a condition reads, each a number (a switch is 1 on, 0 off).
@@ -112,7 +116,7 @@ impl Quantity {
             Self::PinnedCase2 => count(ClipCase::PushedBelow),
             Self::Difference => switch(now.plane.view == View::Diff),
             Self::Divider => Some(now.plane.divider),
-            Self::Measured => switch(now.measurement.is_some_and(Measurement::is_measured)),
+            Self::Measured => switch(now.measurements > 0),
         }
     }
 }

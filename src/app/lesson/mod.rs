@@ -27,9 +27,8 @@ pub use crate::app::files::LESSON_EXTENSION as EXTENSION;
 const MAX_STEPS: usize = 200;
 
 /// The longest text a field holds, in characters (a step's text is 2–6 sentences; a view of
-/// moved lights is longer, up to the link's own limit).
+/// moved lights is longer, up to the link's own limit, `link::MAX_LEN`).
 const MAX_TEXT: usize = 4000;
-const MAX_VIEW: usize = 1 << 20;
 
 /// The most panels a step shows at once: beyond two, each is too small to read on a
 /// projector.
@@ -138,10 +137,20 @@ impl Lesson {
         })())
     }
 
-    /// The lesson as its file holds it.
-    pub fn to_toml(&self) -> String {
-        let body = toml::to_string_pretty(self).unwrap_or_else(|e| format!("# {e}\n"));
-        format!("# An LTC Lab lesson (docs/design.md §5.11): `ltc-lab lab --lesson FILE`.\n{body}")
+    /// The lesson as its file holds it, read back as any lesson is: what the lab writes, it
+    /// opens again (a step it cannot, named).
+    pub fn to_toml(&self) -> Result<String, String> {
+        let body =
+            toml::to_string_pretty(self).map_err(|e| format!("the lesson does not write: {e}"))?;
+        let text = format!(
+            "# An LTC Lab lesson (docs/design.md §5.11): `ltc-lab lab --lesson FILE`.\n{body}"
+        );
+        Self::from_toml(&text, "the lesson").map(|_| text)
+    }
+
+    /// Whether a step can be added (a lesson holds at most `MAX_STEPS`).
+    pub fn has_room(&self) -> bool {
+        self.steps.len() < MAX_STEPS
     }
 
     /// The lesson `arg` names: a shipped one's name, or a file.
@@ -150,12 +159,9 @@ impl Lesson {
         if let Some(lesson) = Self::shipped(arg) {
             return Ok(lesson);
         }
-        let text = std::fs::read_to_string(arg).map_err(|e| {
+        let text = crate::files::read_text(std::path::Path::new(arg)).map_err(|e| {
             let names: Vec<&str> = SHIPPED.iter().map(|(n, _)| *n).collect();
-            format!(
-                "{arg}: not a shipped lesson ({}) and not a file that reads ({e})",
-                names.join(", ")
-            )
+            format!("not a shipped lesson ({}), and {e}", names.join(", "))
         })?;
         Self::from_toml(&text, arg)
     }
@@ -219,7 +225,7 @@ fn read_step(value: &toml::Value) -> Result<Step, String> {
     readings::check_placeholders(&text).map_err(|e| format!("field `text`: {e}"))?;
     let control = field("control", false)?;
     let view = field("view", true)?;
-    if view.len() > MAX_VIEW {
+    if view.len() > crate::app::link::MAX_LEN {
         return Err(format!("field `view`: {} bytes, not a view", view.len()));
     }
     let equations = match t.get("equations") {
@@ -319,16 +325,28 @@ fn read_try(v: &toml::Value) -> Result<TryThis, String> {
 }
 
 impl Step {
-    /// A step of the lab's `view` as it is now, for a teacher's *add step*.
-    pub fn captured(title: &str, text: &str, panels: Vec<PanelId>, view: String) -> Self {
-        Self {
-            title: title.trim().to_string(),
-            text: text.trim().to_string(),
+    /// A step of the lab's `view` as it is now, for a teacher's *add step*; or why its title
+    /// or text would not read back (the same rules as a file's).
+    pub fn captured(
+        title: &str,
+        text: &str,
+        panels: Vec<PanelId>,
+        view: String,
+    ) -> Result<Self, String> {
+        let mut t = toml::Table::new();
+        t.insert("title".into(), toml::Value::String(title.into()));
+        t.insert("text".into(), toml::Value::String(text.into()));
+        let field = |name: &str| text_field(&t, name, true).map_err(|e| format!("its {name}: {e}"));
+        let (title, text) = (field("title")?, field("text")?);
+        readings::check_placeholders(&text).map_err(|e| format!("its text: {e}"))?;
+        Ok(Self {
+            title,
+            text,
             equations: Vec::new(),
             panels,
             control: String::new(),
             view,
             try_this: None,
-        }
+        })
     }
 }

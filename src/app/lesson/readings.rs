@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use crate::app::chart::{SHIPPED_STUDIES, study_device};
 use crate::app::lesson::Now;
 use crate::gpu::work::Work;
 use crate::ltc::fit::pointwise_error;
@@ -13,7 +14,7 @@ use crate::pixel::elevation_azimuth;
 use crate::render::Method;
 
 /// Every reading: its name in a text, and what it is (for the lesson's authors).
-pub const READINGS: [(&str, &str); 19] = [
+pub const READINGS: [(&str, &str); 21] = [
     ("alpha", "the material's GGX α"),
     ("theta_o", "θo, degrees"),
     ("f0", "Schlick's F0"),
@@ -51,6 +52,11 @@ pub const READINGS: [(&str, &str); 19] = [
     ("pinned_lights", "the pinned pixel's light count"),
     ("speedup", "the chart's brdf time over its ltc-fast time"),
     ("measured_on", "where the chart's times come from"),
+    (
+        "gpu_study",
+        "brdf's time over ltc-fast's per light count, in the H100 study the lab ships",
+    ),
+    ("cpu_study", "the same in the lavapipe study the lab ships"),
     (
         "work_brdf",
         "brdf's work per light, counted from its shader",
@@ -183,11 +189,46 @@ fn reading(name: &str, now: &Now<'_>, work: &Result<Vec<(Method, Work)>, String>
             let device = m.device.as_str();
             device.split(" — ").next().unwrap_or(device).to_string()
         }),
+        "gpu_study" => shipped_speedups("H100"),
+        "cpu_study" => shipped_speedups("lavapipe"),
         "work_brdf" => work_of(Method::Brdf),
         "work_ltc" => work_of(Method::Ltc),
         "work_ltc_fast" => work_of(Method::LtcFast),
         other => format!("{{{other}}}"),
     }
+}
+
+/// brdf's time over ltc-fast's at each light count of the shipped study `name`, with its
+/// device: "1.43× at 100 lights, 3.13× at 1000, … on NVIDIA H100 80GB HBM3".
+fn shipped_speedups(name: &str) -> String {
+    let Some((_, path, text)) = SHIPPED_STUDIES.iter().find(|(n, ..)| *n == name) else {
+        return "—".into();
+    };
+    let Ok(rows) = crate::study::parse_csv(text, path) else {
+        return "—".into();
+    };
+    let ms = |variant: &str, lights: usize| {
+        rows.iter()
+            .find(|r| r.variant == variant && r.lights == lights)
+            .map(|r| r.ms_median)
+    };
+    let mut counts: Vec<usize> = rows.iter().map(|r| r.lights).collect();
+    counts.dedup();
+    let ratios: Vec<String> = counts
+        .iter()
+        .enumerate()
+        .filter_map(|(k, &n)| {
+            let unit = if k == 0 { " lights" } else { "" };
+            Some(format!(
+                "{:.2}× at {n}{unit}",
+                ms("brdf", n)? / ms("ltc-fast", n)?
+            ))
+        })
+        .collect();
+    // The device's name without its details (the chart's label has them).
+    let device = study_device(text);
+    let device = device.split(" (").next().unwrap_or(device);
+    format!("{} on {device}", ratios.join(", "))
 }
 
 /// A method's work per light in words.
