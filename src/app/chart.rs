@@ -13,6 +13,7 @@ use crate::app::lab::{Checked, Forms, Lab, Message, Request};
 use crate::app::measure::{MEASURE_SIZE, MeasureJob, Measurement, Point, REPEATS};
 use crate::app::panel::Panel;
 use crate::app::shading::FRAME_BUDGET_MS;
+use crate::app::studies::{SHIPPED_STUDIES, reference_study, shipped_study, study_device};
 use crate::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
 use crate::colormap::{round_sig, short_number};
 use crate::gpu::work::{Work, work_per_light};
@@ -349,9 +350,12 @@ fn fps_plot(ui: &mut egui::Ui, m: &Measurement, forms: &Forms, height: f32) {
     legend(ui, &entries);
 }
 
-/// LTC's fps over the BRDF's at each light count both were measured at, for the lab's LTC
-/// and BRDF forms (or the first of each measured): the paper's Table 1 comparison.
-pub fn speed_ratio(m: &Measurement, forms: &Forms) -> Option<String> {
+/// The LTC and BRDF forms compared, and (lights, LTC's fps over the BRDF's) at each count.
+pub type FpsRatios = (Method, Method, Vec<(f64, f64)>);
+
+/// LTC's fps over the BRDF's at each light count both were measured at, for the forms `ltc`
+/// and `brdf` (or the first of each kind measured).
+pub fn fps_ratios(m: &Measurement, ltc: Method, brdf: Method) -> Option<FpsRatios> {
     let pick = |chosen: Method| {
         m.scaling.iter().find(|(x, _)| *x == chosen).or_else(|| {
             m.scaling
@@ -359,15 +363,25 @@ pub fn speed_ratio(m: &Measurement, forms: &Forms) -> Option<String> {
                 .find(|(x, _)| x.is_ltc() == chosen.is_ltc())
         })
     };
-    let (ltc, ltc_fps) = pick(forms.ltc)?;
-    let (brdf, brdf_fps) = pick(forms.brdf)?;
-    let ratios: Vec<String> = ltc_fps
+    let (ltc, ltc_fps) = pick(ltc)?;
+    let (brdf, brdf_fps) = pick(brdf)?;
+    let ratios = ltc_fps
         .iter()
         .filter_map(|[n, f]| {
             let b = brdf_fps.iter().find(|q| q[0] == *n)?;
-            // Plain counts: a thin space between thousands is where a line would break.
-            Some(format!("×{:.2} at {n} lights", f / b[1]))
+            Some((*n, f / b[1]))
         })
+        .collect();
+    Some((*ltc, *brdf, ratios))
+}
+
+/// The lab's LTC and BRDF forms' `fps_ratios`, in words: the paper's Table 1 comparison.
+pub fn speed_ratio(m: &Measurement, forms: &Forms) -> Option<String> {
+    let (ltc, brdf, ratios) = fps_ratios(m, forms.ltc, forms.brdf)?;
+    let ratios: Vec<String> = ratios
+        .iter()
+        // Plain counts: a thin space between thousands is where a line would break.
+        .map(|(n, r)| format!("×{r:.2} at {n} lights"))
         .collect();
     (!ratios.is_empty()).then(|| {
         format!(
@@ -544,52 +558,6 @@ fn log_reading(pos: &egui_plot::HoverPosition<'_>, x: &str, y: &str) -> Option<S
         )),
         egui_plot::HoverPosition::Elsewhere { .. } => None,
     }
-}
-
-/// The studies the lab ships, each made by `ltc-lab study` (its `# made with:` line says
-/// how): on this project's CPU driver (lavapipe, the chart's default), and on a lent NVIDIA
-/// H100, so that a machine without a GPU can still show what a GPU measures. Name, file,
-/// text.
-pub const SHIPPED_STUDIES: [(&str, &str, &str); 2] = [
-    (
-        "lavapipe",
-        "assets/study/reference.csv",
-        include_str!("../../assets/study/reference.csv"),
-    ),
-    (
-        "H100",
-        "assets/study/h100.csv",
-        include_str!("../../assets/study/h100.csv"),
-    ),
-];
-
-/// The device a shipped study's `# device:` line names.
-pub fn study_device(text: &str) -> &str {
-    text.lines()
-        .find_map(|l| l.strip_prefix("# device: "))
-        .unwrap_or("unknown device")
-}
-
-/// The shipped study `name`, as the chart plots it.
-pub fn shipped_study(name: &str) -> Option<Measurement> {
-    let (name, path, text) = SHIPPED_STUDIES.iter().find(|(n, ..)| *n == name)?;
-    let rows = crate::study::parse_csv(text, path).ok()?;
-    let mut m = Measurement::from_study(&rows, path);
-    let label = if *name == "lavapipe" {
-        "reference"
-    } else {
-        name
-    };
-    m.device = format!(
-        "{label} study ({}) — press measure for this machine",
-        study_device(text)
-    );
-    Some(m)
-}
-
-/// The chart's default: the study on this project's CPU driver.
-pub fn reference_study() -> Option<Measurement> {
-    shipped_study("lavapipe")
 }
 
 /// Each method's work per light (docs/design.md §4.10) beside its measured time per light at

@@ -75,12 +75,6 @@ impl Measurement {
         }
     }
 
-    /// Whether it was measured by the lab (a study's rows have only their medians, no
-    /// range of timed renders).
-    pub fn is_measured(&self) -> bool {
-        self.points.iter().any(|p| p.ms_range.is_some())
-    }
-
     /// The median milliseconds of the point labelled `label`.
     pub fn ms_of(&self, label: &str) -> Option<f64> {
         self.points.iter().find(|p| p.label == label).map(|p| p.ms)

@@ -40,6 +40,7 @@ pub mod screenshot;
 pub mod shading;
 pub mod sphere_cases;
 pub mod state;
+pub mod studies;
 pub mod widgets;
 
 pub use lab::{Lab, Message};

@@ -107,6 +107,18 @@ enum Value {
     U32(u32),
 }
 
+/// `a && b` (`decides` false) or `a || b` (`decides` true) where each side may be unknown: a
+/// side equal to `decides` settles it whatever the other; two known sides give the other value.
+fn short_circuit(a: Option<Value>, b: Option<Value>, decides: bool) -> Option<Value> {
+    match (a, b) {
+        (Some(Value::Bool(x)), _) | (_, Some(Value::Bool(x))) if x == decides => {
+            Some(Value::Bool(decides))
+        }
+        (Some(Value::Bool(_)), Some(Value::Bool(_))) => Some(Value::Bool(!decides)),
+        _ => None,
+    }
+}
+
 struct Counter<'a> {
     module: &'a naga::Module,
     info: &'a naga::valid::ModuleInfo,
@@ -302,25 +314,8 @@ impl Counter<'_> {
                 match op {
                     BinaryOperator::Equal => Some(Value::Bool(a? == b?)),
                     BinaryOperator::NotEqual => Some(Value::Bool(a? != b?)),
-                    // A false side decides either way, whatever the other.
-                    BinaryOperator::LogicalAnd => match (a, b) {
-                        (Some(Value::Bool(false)), _) | (_, Some(Value::Bool(false))) => {
-                            Some(Value::Bool(false))
-                        }
-                        (Some(Value::Bool(true)), Some(Value::Bool(true))) => {
-                            Some(Value::Bool(true))
-                        }
-                        _ => None,
-                    },
-                    BinaryOperator::LogicalOr => match (a, b) {
-                        (Some(Value::Bool(true)), _) | (_, Some(Value::Bool(true))) => {
-                            Some(Value::Bool(true))
-                        }
-                        (Some(Value::Bool(false)), Some(Value::Bool(false))) => {
-                            Some(Value::Bool(false))
-                        }
-                        _ => None,
-                    },
+                    BinaryOperator::LogicalAnd => short_circuit(a, b, false),
+                    BinaryOperator::LogicalOr => short_circuit(a, b, true),
                     _ => None,
                 }
             }

@@ -775,26 +775,12 @@ fn render_shades_lights_with_a_size_by_the_method_asked() {
     let scene = preset("sphere-horizon.toml");
     let mut images = Vec::new();
     for sphere in ["exact", "ltc-point", "ltc-disk", "representative-point"] {
-        let out = dir.path().join(format!("{sphere}.exr"));
-        let o = ltc_lab(&[
-            "render",
-            "--cpu",
-            "--scene",
-            &scene,
-            "--method",
-            "ltc",
-            "--size",
-            "24x16",
-            "--sphere-a",
-            sphere,
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        assert!(o.status.success(), "{sphere}: {}", stderr(&o));
-        let pixels = exr_pixels(&out);
+        let args = ["--method", "ltc", "--sphere-a", sphere];
+        let pixels = render_exr(dir.path(), &scene, &args, true);
+        // render_exr's size.
         let settings = ltc_lab::render::RenderSettings {
             sphere_a: ltc_lab::sphere_light::SphereMethod::from_name(sphere).unwrap(),
-            ..ltc_lab::render::RenderSettings::single(24, 16, ltc_lab::render::Method::Ltc)
+            ..ltc_lab::render::RenderSettings::single(48, 32, ltc_lab::render::Method::Ltc)
         };
         let scene = ltc_lab::scene::preset("sphere-horizon");
         let want = ltc_lab::cpu::render(&scene, ltc_lab::ltc::lut::Lut::embedded(), &settings);

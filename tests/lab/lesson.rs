@@ -134,7 +134,7 @@ fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
             // The speed step quotes the shipped studies' ratios, read from their files here;
             // the chart plots the H100's on request.
             Some(_) => {
-                for (_, path, text) in ltc_lab::app::chart::SHIPPED_STUDIES {
+                for (_, path, text) in ltc_lab::app::studies::SHIPPED_STUDIES {
                     let rows = ltc_lab::study::parse_csv(text, path).expect("a study");
                     let ms = |v: &str| {
                         let r = rows.iter().find(|r| r.variant == v && r.lights == 1000);

@@ -225,14 +225,18 @@ fn every_side_panel_edit_invalidates_exactly_the_caches_that_read_it() {
         assert_eq!(made, expected, "{what}");
     }
     // The forms, in their combo boxes: what the plane shades with, alone.
-    for (combo, form) in [("LTC form", "ltc"), ("BRDF form", "brdf-fast")] {
+    // An entry of the combo box `combo`, as a user picks it: the box opened, then the open
+    // list's entry (the chart's legend names the forms too, as labels).
+    let pick = |h: &mut Harness<'static, LabApp>, combo: &str, entry: &str| {
         h.get_by_role_and_label(Role::ComboBox, combo).click();
         h.run_steps(2);
-        // The open list's entry (the chart's legend names the forms too, as labels).
-        h.query_all_by_label(form)
+        h.query_all_by_label(entry)
             .find(|n| n.accesskit_node().role() != Role::Label)
             .unwrap()
             .click();
+    };
+    for (combo, form) in [("LTC form", "ltc"), ("BRDF form", "brdf-fast")] {
+        pick(&mut h, combo, form);
         let made = remade(&mut h);
         assert_eq!(made, BTreeSet::from(["plane.render"]), "{combo}");
     }
@@ -241,12 +245,7 @@ fn every_side_panel_edit_invalidates_exactly_the_caches_that_read_it() {
         ("LTC side", "representative-point"),
         ("reference side", "ltc-point"),
     ] {
-        h.get_by_role_and_label(Role::ComboBox, combo).click();
-        h.run_steps(2);
-        h.query_all_by_label(method)
-            .find(|n| n.accesskit_node().role() != Role::Label)
-            .unwrap()
-            .click();
+        pick(&mut h, combo, method);
         let made = remade(&mut h);
         assert_eq!(
             made,

@@ -176,6 +176,16 @@ macro_rules! parts {
                     &self.shared.$name
                 }
             )*
+
+            /// The parts of `shared` in place of the lab's (a view opened: a lesson's step),
+            /// each checked where it enters; the lights cut to what the device shades. The
+            /// pattern names every part: a part added to `Shared` and not here does not
+            /// compile.
+            pub fn use_shared(&mut self, shared: Shared) {
+                let Shared { $($name,)* } = shared;
+                $(self.replace($name.into_value());)*
+                self.keep_lights();
+            }
         }
     };
 }
@@ -273,40 +283,6 @@ impl Lab {
         if **self.part() != value {
             self.set(value);
         }
-    }
-
-    /// The parts of `shared` in place of the lab's (a view opened: a lesson's step), each
-    /// checked where it enters; the lights cut to what the device shades.
-    pub fn use_shared(&mut self, shared: Shared) {
-        let Shared {
-            lights,
-            material,
-            stage,
-            exposure,
-            lobe_view,
-            forms,
-            spheres,
-            side_b,
-            overrides,
-            rules,
-            tables,
-            selection,
-            refit,
-        } = shared;
-        self.replace(lights.into_value());
-        self.replace(material.into_value());
-        self.replace(stage.into_value());
-        self.replace(exposure.into_value());
-        self.replace(lobe_view.into_value());
-        self.replace(forms.into_value());
-        self.replace(spheres.into_value());
-        self.replace(side_b.into_value());
-        self.replace(overrides.into_value());
-        self.replace(rules.into_value());
-        self.replace(tables.into_value());
-        self.replace(selection.into_value());
-        self.replace(refit.into_value());
-        self.keep_lights();
     }
 
     /// Edits light `k` through `f` (without copying the others: a drag edits one light a

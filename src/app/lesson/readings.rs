@@ -4,8 +4,9 @@
 
 use glam::DVec3;
 
-use crate::app::chart::{SHIPPED_STUDIES, study_device};
+use crate::app::chart::fps_ratios;
 use crate::app::lesson::Now;
+use crate::app::studies::{SHIPPED_STUDIES, shipped_study, study_device};
 use crate::gpu::work::Work;
 use crate::ltc::fit::pointwise_error;
 use crate::ltc::lobe::Lobe;
@@ -201,28 +202,17 @@ fn reading(name: &str, now: &Now<'_>, work: &Result<Vec<(Method, Work)>, String>
 /// brdf's time over ltc-fast's at each light count of the shipped study `name`, with its
 /// device: "1.43× at 100 lights, 3.13× at 1000, … on NVIDIA H100 80GB HBM3".
 fn shipped_speedups(name: &str) -> String {
-    let Some((_, path, text)) = SHIPPED_STUDIES.iter().find(|(n, ..)| *n == name) else {
+    let study = SHIPPED_STUDIES.iter().find(|(n, ..)| *n == name);
+    let ratios = shipped_study(name).and_then(|m| fps_ratios(&m, Method::LtcFast, Method::Brdf));
+    let (Some((_, _, text)), Some((_, _, ratios))) = (study, ratios) else {
         return "—".into();
     };
-    let Ok(rows) = crate::study::parse_csv(text, path) else {
-        return "—".into();
-    };
-    let ms = |variant: &str, lights: usize| {
-        rows.iter()
-            .find(|r| r.variant == variant && r.lights == lights)
-            .map(|r| r.ms_median)
-    };
-    let mut counts: Vec<usize> = rows.iter().map(|r| r.lights).collect();
-    counts.dedup();
-    let ratios: Vec<String> = counts
+    let ratios: Vec<String> = ratios
         .iter()
         .enumerate()
-        .filter_map(|(k, &n)| {
+        .map(|(k, (n, r))| {
             let unit = if k == 0 { " lights" } else { "" };
-            Some(format!(
-                "{:.2}× at {n}{unit}",
-                ms("brdf", n)? / ms("ltc-fast", n)?
-            ))
+            format!("{r:.2}× at {n}{unit}")
         })
         .collect();
     // The device's name without its details (the chart's label has them).
