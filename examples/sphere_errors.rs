@@ -6,9 +6,11 @@
 //! `horizon::SEED`): a minute or two on two cores. Radius 0 is the point light, with
 //! §4.7's cases.
 
-use ltc_lab::horizon::{BANDS, SEED};
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::sphere_error::{APPROXIMATIONS, MEASURE_NODES, RADII_DEG, SphereError, sphere_errors};
+use ltc_lab::measure::horizon::{BANDS, SEED};
+use ltc_lab::measure::sphere_error::{
+    APPROXIMATIONS, MEASURE_NODES, RADII_DEG, SphereError, sphere_errors,
+};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);

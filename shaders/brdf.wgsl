@@ -84,7 +84,7 @@ fn diffuse_cos(d: Dots, alpha: f32) -> f32 {
 }
 
 // Windowed falloff clamp(1 − (d/R)⁴, 0, 1)² (Karis 2013 eq. 9), from d² to spare the root.
-// range ≤ 0 encodes an infinite range (GpuLight in src/gpu/plane.rs).
+// range ≤ 0 encodes an infinite range (GpuLight in src/gpu/scene.rs).
 fn window_falloff_d2(d2: f32, range: f32) -> f32 {
     if range <= 0.0 {
         return 1.0;

@@ -1,5 +1,5 @@
 // LTC evaluation, the LUT sampler and the horizon rules, mirroring src/ltc/mod.rs,
-// src/ltc/lut.rs, src/ltc/nl_fit.rs and src/ltc/remedy.rs (same names). Composed after
+// src/ltc/lut/sample.rs, src/ltc/nl_fit.rs and src/ltc/remedy.rs (same names). Composed after
 // brdf.wgsl (uses PI).
 
 // Clipping rule bits (src/ltc/mod.rs Clipping).

@@ -13,7 +13,7 @@ const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnor
 const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
 const METHOD_LTC_F16_PAIRS: u32 = 5u; // the same, two lights per vec2<f16> (ltc_f16.wgsl)
 
-// How a side shades a light with a size (src/sphere_light.rs SphereMethod; src/gpu/plane.rs
+// How a side shades a light with a size (src/light/sphere.rs SphereMethod; src/gpu/plane.rs
 // sphere_constant).
 const SPHERE_EXACT: u32 = 0u;                // the BRDF over the cap (sphere_light.wgsl)
 const SPHERE_LTC_POINT: u32 = 1u;            // the paper's point formula at the centre
@@ -287,11 +287,16 @@ fn add_sphere(
     );
     let cap = cap_of_sphere(shading.u, shading.radius);
     var lobes: vec2<f32>;
-    switch sphere {
-        case SPHERE_EXACT: { lobes = sphere_exact(shading, cap); }
-        case SPHERE_LTC_DISK: { lobes = sphere_ltc_disk(shading, ltc.pair, cap); }
-        case SPHERE_REPRESENTATIVE_POINT: { lobes = sphere_representative_point(shading, cap); }
-        default: { lobes = sphere_ltc_point(shading, ltc.pair); }
+    if cap.sin_sigma < POINT_LIMIT_SIN_SIGMA {
+        let exact = sphere == SPHERE_EXACT || sphere == SPHERE_REPRESENTATIVE_POINT;
+        lobes = sphere_point(shading, ltc.pair, exact);
+    } else {
+        switch sphere {
+            case SPHERE_EXACT: { lobes = sphere_exact(shading, cap); }
+            case SPHERE_LTC_DISK: { lobes = sphere_ltc_disk(shading, ltc.pair, cap); }
+            case SPHERE_REPRESENTATIVE_POINT: { lobes = sphere_representative_point(shading, cap); }
+            default: { lobes = sphere_ltc_point(shading, ltc.pair); }
+        }
     }
     if is_factored(method) {
         lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);

@@ -1,5 +1,5 @@
 // Lights with a size (docs/design.md §1.10), mirroring src/ltc/sphere.rs (Cap and the
-// illuminance of a cap), src/ltc/disk.rs, src/quadrature.rs and src/sphere_light.rs by name.
+// illuminance of a cap), src/ltc/disk.rs, src/light/quadrature.rs and src/light/sphere.rs by name.
 // Composed after brdf.wgsl and ltc.wgsl (uses PI, Ltc, LtcPair, ltc_eval's constants and the
 // BRDF terms).
 
@@ -63,7 +63,7 @@ fn illuminance_sphere(cos_theta: f32, sin2_sigma: f32) -> f32 {
 // An arctangent of x ≥ 0 within a few f32 ulps (WGSL allows its atan 4096 ulps, and its acos
 // inherits that). Reduced by tan π/8 and tan 3π/8 to |t| ≤ tan π/8, then t + t³ p(t²): p is
 // the least-squares fit of (atan t − t)/t³ in t² on [0, tan π/8] made for this file (relative
-// error 2.1e-8 before rounding; tests/gpu_sphere_light.rs measures the f32 function).
+// error 2.1e-8 before rounding; tests/gpu/sphere_light.rs measures the f32 function).
 fn atan_precise(x: f32) -> f32 {
     var base = 0.0;
     var t = x;
@@ -219,7 +219,7 @@ fn sphere_radiance(intensity: f32, r: f32) -> f32 {
     return intensity / (PI * r * r);
 }
 
-// One sphere light at one shading point (src/sphere_light.rs SphereShading; range ≤ 0 is
+// One sphere light at one shading point (src/light/sphere.rs SphereShading; range ≤ 0 is
 // an infinite range, as for point lights).
 struct SphereShading {
     v: vec3<f32>,
@@ -252,6 +252,26 @@ fn sphere_ltc_point(s: SphereShading, pair: LtcPair) -> vec2<f32> {
     return e * weights * lobes;
 }
 
+// POINT_LIMIT_SIN_SIGMA: below this sin σ a sphere is shaded as its point light (src/light/sphere.rs).
+const POINT_LIMIT_SIN_SIGMA: f32 = 1e-7;
+
+// sphere_point: a sphere below POINT_LIMIT_SIN_SIGMA as its point light — the exact point light
+// for the exact methods (`exact`: the exact integral and the representative point), the
+// paper's formula at the centre for the LTC ones.
+fn sphere_point(s: SphereShading, pair: LtcPair, exact: bool) -> vec2<f32> {
+    if !exact {
+        return sphere_ltc_point(s, pair);
+    }
+    let d = length(s.u);
+    let e = irradiance_scale(s.intensity, d, s.range);
+    let l = s.u / d;
+    if e <= 0.0 || l.z <= 0.0 {
+        return vec2<f32>(0.0);
+    }
+    let dots = dots_new(s.v, l);
+    return e * vec2<f32>(specular_cos(dots, s.alpha, s.f0), diffuse_cos(dots, s.alpha));
+}
+
 // sphere_ltc_disk: both lobes (specular, diffuse) by the LTC disk.
 fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
     if (s.clip & CLIP_HORIZON) != 0u && cap_below_horizon(cap) {
@@ -271,7 +291,7 @@ fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
     return scale * weights * lobes;
 }
 
-// sphere_representative_point: Karis 2013 in Unreal's form (src/sphere_light.rs).
+// sphere_representative_point: Karis 2013 in Unreal's form (src/light/sphere.rs).
 fn sphere_representative_point(s: SphereShading, cap: Cap) -> vec2<f32> {
     let d = length(s.u);
     let w = window_falloff_d2(d * d, s.range);
@@ -313,8 +333,8 @@ fn fd_toward(v: vec3<f32>, l: vec3<f32>, alpha: f32) -> f32 {
     return fd_burley(v.z, max(l.z, 0.0), dot(l, h), alpha);
 }
 
-// The 8-point Gauss–Legendre rule on [−1, 1], as src/quadrature.rs gauss_legendre(8) computes
-// it (nodes and weights of the positive half; the rule is symmetric). tests/gpu_sphere_light.rs
+// The 8-point Gauss–Legendre rule on [−1, 1], as src/light/quadrature.rs gauss_legendre(8) computes
+// it (nodes and weights of the positive half; the rule is symmetric). tests/gpu/sphere_light.rs
 // checks sphere_exact against the Rust rule with the same nodes.
 const GL8_NODES: array<f32, 4> = array<f32, 4>(
     0.18343464249564980, 0.52553240991632899, 0.79666647741362684, 0.96028985649753629,
@@ -332,7 +352,7 @@ fn gl8(i: u32) -> vec2<f32> {
 }
 
 // crowded: node i of the rule on [lo, hi], crowded to both ends by x ↦ x(3 − x²)/2
-// (src/quadrature.rs): the point and its weight.
+// (src/light/quadrature.rs): the point and its weight.
 fn crowded(i: u32, lo: f32, hi: f32) -> vec2<f32> {
     let r = gl8(i);
     let mid = 0.5 * (lo + hi);
@@ -367,7 +387,7 @@ fn sincos_precise(phi: f32) -> vec2<f32> {
 }
 
 // visible_half_azimuth: the half-width of the azimuths where c + k cos φ > 0 (k ≥ 0), −1
-// where there are none (src/quadrature.rs).
+// where there are none (src/light/quadrature.rs).
 fn visible_half_azimuth(c: f32, k: f32) -> f32 {
     if c >= k {
         return PI;
@@ -378,7 +398,7 @@ fn visible_half_azimuth(c: f32, k: f32) -> f32 {
     return acos_precise(clamp(-c / k, -1.0, 1.0));
 }
 
-// Both lobes integrated over one ring of the cap at ν = 1 − μ (src/quadrature.rs
+// Both lobes integrated over one ring of the cap at ν = 1 − μ (src/light/quadrature.rs
 // cap_integral_about's ring), the ring split at the mirror direction's azimuth where it holds it.
 fn exact_ring(
     s: SphereShading,
@@ -420,7 +440,7 @@ fn exact_ring(
 }
 
 // ring_frame: t in the plane of the axis and +z with t.z ≥ 0 (+x where the axis is ±z), and
-// b = axis × t (src/quadrature.rs).
+// b = axis × t (src/light/quadrature.rs).
 fn ring_frame(axis: vec3<f32>) -> mat2x3<f32> {
     var t = vec3<f32>(1.0, 0.0, 0.0);
     let up = vec3<f32>(0.0, 0.0, 1.0) - axis * axis.z;
@@ -431,7 +451,7 @@ fn ring_frame(axis: vec3<f32>) -> mat2x3<f32> {
 }
 
 // sphere_exact: w(d) · L · ∫ f cos dω over the cap's directions above the surface, by the
-// rule of src/quadrature.rs with 8 nodes per dimension and piece (src/sphere_light.rs
+// rule of src/light/quadrature.rs with 8 nodes per dimension and piece (src/light/sphere.rs
 // GPU_EXACT_NODES): rings placed by ν = 1 − μ (f32 keeps a small cap's rings apart that way),
 // the ν range split where rings start to be cut (1 ∓ t_z) and at the mirror direction, each
 // piece's nodes crowded to its ends.

@@ -92,11 +92,6 @@ pub fn v_smith_ggx_correlated<T: Real>(n_v: T, n_l: T, a2: T, view_factor: T) ->
     T::lit(0.5) / (n_l * view_factor + n_v * light_factor)
 }
 
-/// The view factor of `v_smith_ggx_correlated`.
-pub fn smith_view_factor<T: Real>(n_v: T, a2: T) -> T {
-    (n_v * n_v * (T::one() - a2) + a2).sqrt()
-}
-
 /// Schlick's Fresnel, Schlick 1994 eq. 15, with the exponent on `(1 − v·h)` — the paper's
 /// eq. 6 misprints it as `(1 − (v·h)⁵)` (docs/design.md §1).
 pub fn f_schlick<T: Real>(f0: T, v_h: T) -> T {

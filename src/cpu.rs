@@ -8,6 +8,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact};
+use crate::light::sphere::{GPU_EXACT_NODES, SphereMethod, SphereShading, sphere_light_with};
 use crate::ltc::lut::Lut;
 use crate::ltc::nl_fit::{self, NlTerms};
 use crate::ltc::remedy::HorizonRule;
@@ -19,7 +20,6 @@ use crate::render::{
     Tables, View,
 };
 use crate::scene::{Light, Scene};
-use crate::sphere_light::{GPU_EXACT_NODES, SphereMethod, SphereShading, sphere_light_with};
 
 /// The per-pixel state of LTC shading: the frame, the two looked-up lobes and the horizon
 /// rule with its correction read at the same place of the table.
@@ -232,7 +232,7 @@ fn combine(lobes: Lobes<f64>, base_color: [f64; 3]) -> DVec3 {
 }
 
 /// Renders the scene as `s.view` shows it: one method's radiance, both split at the divider,
-/// or their relative difference. `tables`: one table, or A's and B's (`s.table_b`).
+/// or their relative difference. `tables`: one table, or A's and B's (B's where `s.b_reads_table_b`).
 pub fn render<'a>(scene: &Scene, tables: impl Into<Tables<'a>>, s: &RenderSettings) -> Frame {
     let tables = tables.into();
     let mut bands = Bands::new(s);
@@ -517,12 +517,4 @@ pub fn clip_counts_map(
     per_pixel(scene, (width, height), |p| {
         Some(clip_counts(scene, lut, p, &scene.lights))
     })
-}
-
-/// Clipping counts summed over every pixel of a `width × height` view.
-pub fn clip_counts_image(scene: &Scene, lut: &Lut, width: usize, height: usize) -> ClipCounts {
-    clip_counts_map(scene, lut, width, height)
-        .into_iter()
-        .flatten()
-        .fold(ClipCounts::default(), std::ops::Add::add)
 }

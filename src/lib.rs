@@ -5,26 +5,20 @@
 //! binary's (`src/main.rs`, `src/cli/`).
 
 pub mod app;
-pub mod atlas;
-pub mod bench;
 pub mod brdf;
 pub mod colormap;
 pub mod cpu;
 pub mod error;
-pub mod eval;
 pub mod files;
 pub mod gpu;
-pub mod horizon;
+pub mod light;
 pub mod ltc;
+pub mod measure;
 pub mod metrics;
+pub(crate) mod named;
 pub mod output;
-pub mod parity;
 pub mod pixel;
 pub mod plot;
-pub mod quadrature;
 pub mod render;
 pub mod scene;
-pub mod sphere_error;
-pub mod sphere_light;
-pub mod study;
 pub mod tables;

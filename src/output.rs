@@ -49,7 +49,7 @@ pub fn diff_scale_position(rel: f64) -> f64 {
 }
 
 /// Background (off the plane) in PNGs.
-const BACKGROUND: [u8; 3] = [24, 24, 28];
+pub const BACKGROUND: [u8; 3] = [24, 24, 28];
 
 /// An 8-bit picture of a frame: tone-mapped radiance (with the split divider drawn), or the
 /// false-colour difference map with its colour bar and labels underneath.

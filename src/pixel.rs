@@ -9,12 +9,12 @@ use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
 use crate::cpu::{LtcPixel, exact_term, ltc_term, sphere_term};
+use crate::light::sphere::SphereMethod;
 use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
 use crate::metrics::luminance;
 use crate::render::{LtcRules, SurfacePoint};
 use crate::scene::{Light, Scene};
-use crate::sphere_light::SphereMethod;
 
 /// One light's share of a pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]

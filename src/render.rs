@@ -4,63 +4,40 @@
 
 use glam::DVec3;
 
+use crate::light::sphere::SphereMethod;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::HorizonRule;
 use crate::ltc::{Clipping, Normalization};
-use crate::sphere_light::SphereMethod;
+use crate::named::named_enum;
 
-/// How one pixel's lights are summed. The CPU reference has one form of each: the fast
-/// forms are the same math as their literal twins there.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-pub enum Method {
-    /// The exact BRDF as docs/design.md §1 writes it (eq. 28).
-    Brdf,
-    /// The exact BRDF with Filament's `V_SmithGGXCorrelated` and no root for `E`.
-    BrdfFast,
-    /// The paper's LTC (eq. 30): normalize `l`, rotate it into the frame, `M⁻¹ l` per lobe.
-    Ltc,
-    /// LTC with the rotation folded into `M⁻¹` per pixel, the unnormalized light vector and
-    /// eq. 27's factoring: one square root per light.
-    LtcFast,
-    /// `LtcFast` with `M⁻¹l` and `D` in f16 (GPUs with `SHADER_F16` only).
-    LtcF16,
-    /// `LtcF16` with two lights per `vec2<f16>` lane pair, light positions relative to the
-    /// workgroup's centre (GPUs with `SHADER_F16` only).
-    LtcF16Pairs,
+named_enum! {
+    /// How one pixel's lights are summed. The CPU reference has one form of each: the fast
+    /// forms are the same math as their literal twins there.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+    pub enum Method {
+        /// The exact BRDF as docs/design.md §1 writes it (eq. 28).
+        Brdf = "brdf",
+        /// The exact BRDF with Filament's `V_SmithGGXCorrelated` and no root for `E`.
+        BrdfFast = "brdf-fast",
+        /// The paper's LTC (eq. 30): normalize `l`, rotate it into the frame, `M⁻¹ l` per lobe.
+        Ltc = "ltc",
+        /// LTC with the rotation folded into `M⁻¹` per pixel, the unnormalized light vector and
+        /// eq. 27's factoring: one square root per light.
+        LtcFast = "ltc-fast",
+        /// `LtcFast` with `M⁻¹l` and `D` in f16 (GPUs with `SHADER_F16` only).
+        LtcF16 = "ltc-f16",
+        /// `LtcF16` with two lights per `vec2<f16>` lane pair, light positions relative to the
+        /// workgroup's centre (GPUs with `SHADER_F16` only).
+        LtcF16Pairs = "ltc-f16-pairs",
+    }
 }
 
 impl Method {
-    /// Every method, in the order the tables list them.
-    pub const ALL: [Self; 6] = [
-        Self::Brdf,
-        Self::BrdfFast,
-        Self::Ltc,
-        Self::LtcFast,
-        Self::LtcF16,
-        Self::LtcF16Pairs,
-    ];
-
     /// The methods every adapter runs.
     pub const F32: [Self; 4] = [Self::Brdf, Self::BrdfFast, Self::Ltc, Self::LtcFast];
 
     /// The methods that need `SHADER_F16`.
     pub const F16: [Self; 2] = [Self::LtcF16, Self::LtcF16Pairs];
-
-    /// The name on the command line, in CSV files and in the lab.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Brdf => "brdf",
-            Self::BrdfFast => "brdf-fast",
-            Self::Ltc => "ltc",
-            Self::LtcFast => "ltc-fast",
-            Self::LtcF16 => "ltc-f16",
-            Self::LtcF16Pairs => "ltc-f16-pairs",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|m| m.name() == name)
-    }
 
     pub fn is_ltc(self) -> bool {
         matches!(

@@ -199,6 +199,10 @@ pub const PAPER_RANGE: f64 = 2.0;
 /// small enough that a typo cannot exhaust memory (32 bytes each on the GPU: 32 MiB).
 pub const MAX_LIGHTS: usize = 1 << 20;
 
+/// The most bytes of a scene file this program reads (`files::read_text`): `MAX_LIGHTS`
+/// lights written out one by one take some 150 bytes each as TOML, 150 MiB in all.
+pub const MAX_FILE_BYTES: u64 = 256 << 20;
+
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Scene {
@@ -222,7 +226,7 @@ impl Scene {
     /// Reads, validates and expands a scene file; every error names the file.
     pub fn load(path: &Path) -> Result<Scene> {
         let name = path.display().to_string();
-        let text = crate::files::read_text(path)?;
+        let text = crate::files::read_text(path, MAX_FILE_BYTES)?;
         Scene::from_toml(&text, &name)
     }
 

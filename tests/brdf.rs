@@ -113,9 +113,11 @@ proptest! {
     /// The `brdf-fast` visibility term is the literal G2 / (4 n·v n·l), rearranged.
     #[test]
     fn filament_visibility_equals_g2_over_cosines(n_v in 1e-3f64..=1.0, n_l in 1e-3f64..=1.0, alpha in 1e-4f64..=1.0) {
-        use ltc_lab::brdf::{g2_correlated, smith_view_factor, v_smith_ggx_correlated};
+        use ltc_lab::brdf::{g2_correlated, v_smith_ggx_correlated};
         let a2 = alpha * alpha;
-        let v = v_smith_ggx_correlated(n_v, n_l, a2, smith_view_factor(n_v, a2));
+        // The view factor as plane.wgsl computes it once per pixel.
+        let view_factor = (n_v * n_v * (1.0 - a2) + a2).sqrt();
+        let v = v_smith_ggx_correlated(n_v, n_l, a2, view_factor);
         let g = g2_correlated(n_v, n_l, alpha) / (4.0 * n_v * n_l);
         // Two f64 evaluations of one rational function in different orders: 1e-10.
         prop_assert!((v - g).abs() <= 1e-10 * g, "{v} vs {g}");

@@ -7,7 +7,6 @@
 use std::sync::OnceLock;
 
 use glam::DVec3;
-use ltc_lab::horizon::{BandError, remedy_errors};
 use ltc_lab::ltc::ClipCase;
 use ltc_lab::ltc::fit::{CellProblem, FitSettings, FitStrata};
 use ltc_lab::ltc::fit_point::{ArrivalQuadrature, QUADRATURE_STRATA};
@@ -16,6 +15,7 @@ use ltc_lab::ltc::lut::{Channel, Lut, Table};
 use ltc_lab::ltc::nl_fit::{NlFitSettings, fit_terms};
 use ltc_lab::ltc::point_params::{CellObjective, PointFit};
 use ltc_lab::ltc::remedy::Horizon;
+use ltc_lab::measure::horizon::{BandError, remedy_errors};
 use ltc_lab::scene::SplitMix64;
 
 /// Cases per band: a tenth of the docs' million, whose figures spread about 3% of
@@ -38,7 +38,7 @@ fn measured(remedy: Horizon) -> &'static [BandError] {
     let all = ALL.get_or_init(|| {
         Horizon::ALL
             .iter()
-            .map(|&h| remedy_errors(Lut::embedded(), h, CASES, ltc_lab::horizon::SEED).1)
+            .map(|&h| remedy_errors(Lut::embedded(), h, CASES, ltc_lab::measure::horizon::SEED).1)
             .collect()
     });
     &all[Horizon::ALL.iter().position(|&h| h == remedy).unwrap()]
@@ -124,7 +124,7 @@ fn the_arrival_table_improves_its_objective_on_the_classic_cells() {
     let (arrival, classic) = (Lut::shipped(Table::Arrival), Lut::embedded());
     let (mut sum_a, mut sum_c) = (0.0, 0.0);
     for (i, j) in [(4, 10), (16, 40), (30, 55), (45, 20), (63, 60), (10, 62)] {
-        for lobe in Lobe::BOTH {
+        for lobe in Lobe::ALL {
             let p = CellProblem::new(lobe, i, j, &settings, &strata_fit);
             let q = ArrivalQuadrature::new(lobe, p.view, p.alpha, &nodes);
             let a = q.relative_l1(&PointFit::stored(arrival.cell(i, j), lobe), p.norm);

@@ -6,13 +6,13 @@
 
 use glam::DVec3;
 use ltc_lab::cpu::{Bands, render, shade_exact, shade_ltc};
+use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Normalization};
 use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
 use ltc_lab::render::{LtcRules, Method, RenderSettings, Tables, View};
 use ltc_lab::scene::{SPHERE_PRESETS, preset};
-use ltc_lab::sphere_light::SphereMethod;
 
 /// The lab's sphere methods (the LTC side's, the exact side's): point scenes never read them.
 const SPHERES: [SphereMethod; 2] = [SphereMethod::LtcDisk, SphereMethod::Exact];

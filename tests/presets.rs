@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use ltc_lab::cpu::{clip_counts_image, render};
+use ltc_lab::cpu::{ClipCounts, clip_counts_map, render};
 use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::luminance_range;
@@ -90,7 +90,10 @@ fn figure2_case2_is_the_search_optimum_and_its_negative_light_is_visible() {
         "negative peak only {ratio:.2e} of the lit plane"
     );
     assert!(negative > 96 * 54 / 3, "only {negative} negative pixels");
-    let counts = clip_counts_image(&s, lut, 64, 64);
+    let counts = clip_counts_map(&s, lut, 64, 64)
+        .into_iter()
+        .flatten()
+        .fold(ClipCounts::default(), std::ops::Add::add);
     assert_eq!(
         counts.lifted + counts.stays_below,
         0,

@@ -134,7 +134,7 @@ fn function_names(module: &naga::Module) -> Vec<&str> {
 fn mirrored_functions_have_the_same_names() {
     let module = validate("plane", &plane_module_source(false));
     let wgsl = function_names(&module);
-    // Each exists in Rust under this name (src/brdf.rs, src/ltc/mod.rs, src/ltc/lut.rs); the
+    // Each exists in Rust under this name (src/brdf.rs, src/ltc/mod.rs, src/ltc/lut/); the
     // `use` below fails to compile if one is renamed.
     #[allow(unused_imports)]
     use ltc_lab::brdf::{
@@ -187,16 +187,16 @@ fn sphere_light_functions_have_the_rust_names() {
     let wgsl = function_names(&module);
     // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
     #[allow(unused_imports)]
+    use ltc_lab::light::quadrature::visible_half_azimuth;
+    #[allow(unused_imports)]
+    use ltc_lab::light::sphere::{
+        fd_toward, mirror, sphere_exact, sphere_ltc_disk, sphere_point, sphere_radiance,
+        sphere_representative_point,
+    };
+    #[allow(unused_imports)]
     use ltc_lab::ltc::{
         disk::{ltc_disk, negative_eigenvalue, transformed_cone},
         sphere::{Cap, illuminance_sphere},
-    };
-    #[allow(unused_imports)]
-    use ltc_lab::quadrature::visible_half_azimuth;
-    #[allow(unused_imports)]
-    use ltc_lab::sphere_light::{
-        fd_toward, mirror, sphere_exact, sphere_ltc_disk, sphere_radiance,
-        sphere_representative_point,
     };
     let _ = (
         Cap::of_sphere,
@@ -218,6 +218,7 @@ fn sphere_light_functions_have_the_rust_names() {
         "sphere_representative_point",
         "fd_toward",
         "sphere_exact",
+        "sphere_point",
         "visible_half_azimuth",
         "mirror",
     ] {
@@ -225,50 +226,138 @@ fn sphere_light_functions_have_the_rust_names() {
     }
 }
 
-/// The value of the WGSL constant `name` (a `u32`).
-fn constant(module: &naga::Module, name: &str) -> u32 {
+/// A WGSL constant's value, its components flattened (a scalar is one number, a vector or
+/// an array its components in order), as naga's constant evaluation left it.
+fn constant_value(module: &naga::Module, name: &str) -> Vec<f64> {
     let (_, c) = module
         .constants
         .iter()
         .find(|(_, c)| c.name.as_deref() == Some(name))
         .unwrap_or_else(|| panic!("no constant {name} in the WGSL"));
-    match module.global_expressions[c.init] {
-        naga::Expression::Literal(naga::Literal::U32(v)) => v,
-        ref other => panic!("{name} is {other:?}, not a u32 literal"),
+    expression_value(module, c.init, name)
+}
+
+fn expression_value(
+    module: &naga::Module,
+    e: naga::Handle<naga::Expression>,
+    name: &str,
+) -> Vec<f64> {
+    use naga::{Expression, Literal};
+    match &module.global_expressions[e] {
+        Expression::Literal(Literal::U32(v)) => vec![f64::from(*v)],
+        Expression::Literal(Literal::I32(v)) => vec![f64::from(*v)],
+        Expression::Literal(Literal::F32(v)) => vec![f64::from(*v)],
+        Expression::Literal(Literal::Bool(v)) => vec![f64::from(u8::from(*v))],
+        Expression::Constant(c) => expression_value(module, module.constants[*c].init, name),
+        Expression::Compose { components, .. } => components
+            .iter()
+            .flat_map(|&c| expression_value(module, c, name))
+            .collect(),
+        other => panic!("{name} is {other:?}: not a value this test reads"),
     }
 }
 
-/// The pipelines' override constants and uniforms name the methods, sphere methods, views and
-/// horizon rules by the values plane.wgsl and ltc.wgsl give them: a constant renumbered on one
-/// side only would shade every pixel with another method.
-#[test]
-fn the_constants_rust_passes_are_the_wgsl_ones() {
-    use ltc_lab::gpu::ltc::horizon_constant;
-    use ltc_lab::gpu::plane::{ViewConstant, method_constant, sphere_constant};
+/// The shaders' constants that only the shaders read, each with why Rust has no twin.
+const SHADER_ONLY: [(&str, &str); 2] = [
+    // bin.wgsl's workgroup: Rust dispatches its passes by tile, not by it.
+    ("WORKGROUP", "bin.wgsl's workgroup size"),
+    // plane.wgsl's largest finite f32, the floor of an empty min.
+    ("F32_MAX", "a bound inside plane.wgsl"),
+];
+
+/// Every constant the WGSL and Rust share, as Rust has it: `(name in the WGSL, value)`.
+fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
+    use ltc_lab::gpu::ltc::{
+        CLIP_HORIZON, CLIP_TRANSFORMED, LUT_VEC4S_PER_CELL, horizon_constant,
+        normalization_constant,
+    };
+    use ltc_lab::gpu::plane::{LOAD, ViewConstant, method_constant, sphere_constant};
+    use ltc_lab::gpu::scene::TILE_SIDE;
+    use ltc_lab::light::sphere::SphereMethod;
+    use ltc_lab::ltc::Normalization;
     use ltc_lab::ltc::remedy::HorizonRule;
     use ltc_lab::render::Method;
-    let module = validate("plane", &plane_module_source(true));
-    let mut checked = Vec::new();
-    let methods = Method::ALL.map(method_constant);
-    let spheres = ltc_lab::sphere_light::SphereMethod::ALL.map(sphere_constant);
-    let views = ViewConstant::ALL.map(ViewConstant::constant);
-    let rules = [
-        HorizonRule::Eq30,
-        HorizonRule::NlFit,
-        HorizonRule::ExactBand,
-    ]
-    .map(horizon_constant);
-    for (value, name) in methods.into_iter().chain(spheres).chain(views).chain(rules) {
-        assert_eq!(constant(&module, name), value, "{name}");
-        checked.push(name);
-    }
-    // Every such constant of the WGSL has its Rust twin.
-    for (_, c) in module.constants.iter() {
-        let name = c.name.as_deref().unwrap_or_default();
-        let family = ["METHOD_", "SPHERE_", "VIEW_", "HORIZON_"];
-        if family.iter().any(|f| name.starts_with(f)) {
-            assert!(checked.contains(&name), "{name} has no Rust twin");
+    // A WGSL f32 literal holds the Rust f64 rounded to f32: compare in that rounding.
+    let f32s = |v: &[f64]| v.iter().map(|&x| f64::from(x as f32)).collect::<Vec<_>>();
+    let codes = Method::ALL
+        .map(method_constant)
+        .into_iter()
+        .chain(SphereMethod::ALL.map(sphere_constant))
+        .chain(ViewConstant::ALL.map(ViewConstant::constant))
+        .chain(
+            [
+                HorizonRule::Eq30,
+                HorizonRule::NlFit,
+                HorizonRule::ExactBand,
+            ]
+            .map(horizon_constant),
+        )
+        .chain(Normalization::ALL.map(normalization_constant))
+        .chain([
+            (CLIP_HORIZON, "CLIP_HORIZON"),
+            (CLIP_TRANSFORMED, "CLIP_TRANSFORMED"),
+        ])
+        .map(|(value, name)| (name, vec![f64::from(value)]));
+    // The positive half of the 8-point rule in increasing order, as sphere_light.wgsl's
+    // `gl8` unfolds it.
+    let mut gl8 = ltc_lab::light::quadrature::gauss_legendre(8);
+    gl8.retain(|&(x, _)| x > 0.0);
+    gl8.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let half = |pick: fn(&(f64, f64)) -> f64| f32s(&gl8.iter().map(pick).collect::<Vec<_>>());
+    let background = ltc_lab::output::BACKGROUND.map(|c| f64::from(c) / 255.0);
+    codes
+        .chain([
+            ("LUT_VEC4S_PER_CELL", vec![LUT_VEC4S_PER_CELL as f64]),
+            ("TILE_SIDE", vec![TILE_SIDE as f64]),
+            ("LOAD", vec![LOAD as f64]),
+            ("PI", f32s(&[std::f64::consts::PI])),
+            (
+                "MIN_LIGHT_DISTANCE",
+                f32s(&[ltc_lab::brdf::MIN_LIGHT_DISTANCE]),
+            ),
+            ("EXACT_BAND_Z", f32s(&[ltc_lab::ltc::remedy::EXACT_BAND_Z])),
+            ("NL_BAND_Z", f32s(&[ltc_lab::ltc::nl_fit::NL_BAND_Z])),
+            (
+                "POINT_LIMIT_SIN_SIGMA",
+                f32s(&[ltc_lab::light::sphere::POINT_LIMIT_SIN_SIGMA]),
+            ),
+            ("GL8_NODES", half(|&(x, _)| x)),
+            ("GL8_WEIGHTS", half(|&(_, w)| w)),
+            ("BACKGROUND", f32s(&background)),
+        ])
+        .collect()
+}
+
+/// Every constant the shaders and Rust share has one value on both sides, and every constant
+/// of the shaders is either shared (and so checked) or listed as the shaders' own: a value
+/// changed or a constant added on one side only fails here. The codes the pipelines pass
+/// (methods, sphere methods, views, horizon rules) would otherwise shade every pixel with
+/// another method.
+#[test]
+fn the_constants_rust_shares_are_the_wgsl_ones() {
+    let modules = [
+        validate("plane", &plane_module_source(true)),
+        validate("scene.wgsl + bin.wgsl", &bin_module_source()),
+        validate("display.wgsl", ltc_lab::gpu::display::SOURCE),
+    ];
+    let shared = shared_constants();
+    let mut found = Vec::new();
+    for module in &modules {
+        for (_, c) in module.constants.iter() {
+            let name = c.name.as_deref().unwrap_or_default();
+            if SHADER_ONLY.iter().any(|&(n, _)| n == name) {
+                continue;
+            }
+            let rust = shared
+                .iter()
+                .find(|(n, _)| *n == name)
+                .unwrap_or_else(|| panic!("the WGSL constant {name} has no Rust twin"));
+            assert_eq!(constant_value(module, name), rust.1, "{name}");
+            found.push(name);
         }
+    }
+    for (name, _) in &shared {
+        assert!(found.contains(name), "Rust's {name} is in no shader");
     }
 }
 
@@ -337,4 +426,68 @@ fn the_bindings_rust_lists_are_the_wgsl_ones() {
         rust.sort_by_key(|b| b.number);
         assert_eq!(rust, wgsl, "{name}");
     }
+}
+
+/// Every repository path that a shader's, a source file's or a document's text names
+/// (`src/…rs`, `shaders/…wgsl`, `tests/…rs`, `docs/…md`) exists: a file moved without its
+/// mentions fails here instead of leaving a reader at a dead end.
+#[test]
+fn every_path_the_comments_name_exists() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut texts = vec![root.join("README.md")];
+    let mut dirs = vec![
+        root.join("src"),
+        root.join("shaders"),
+        root.join("docs"),
+        root.join("tests"),
+    ];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path
+                .extension()
+                .is_some_and(|e| e == "rs" || e == "wgsl" || e == "md")
+            {
+                texts.push(path);
+            }
+        }
+    }
+    let mut missing = Vec::new();
+    for file in &texts {
+        let text = std::fs::read_to_string(file).unwrap();
+        for (at, _) in text.match_indices(['s', 't', 'd']) {
+            let rest = &text[at..];
+            let Some(prefix) = ["src/", "shaders/", "tests/", "docs/"]
+                .into_iter()
+                .find(|p| rest.starts_with(p))
+            else {
+                continue;
+            };
+            // Only a path that starts a word (not `gpu_tests/…`, not inside another path).
+            if at > 0 {
+                let before = text[..at].chars().next_back().unwrap();
+                if before.is_alphanumeric() || "_/.-".contains(before) {
+                    continue;
+                }
+            }
+            let len = rest
+                .find(|c: char| !(c.is_ascii_alphanumeric() || "_/.-".contains(c)))
+                .unwrap_or(rest.len());
+            let path = rest[..len].trim_end_matches('.');
+            let named_file = [".rs", ".wgsl", ".md"].iter().any(|e| path.ends_with(e));
+            if path.len() > prefix.len() && named_file && !root.join(path).exists() {
+                missing.push(format!(
+                    "{}: {path}",
+                    file.strip_prefix(root).unwrap().display()
+                ));
+            }
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "paths that do not exist:\n{}",
+        missing.join("\n")
+    );
 }

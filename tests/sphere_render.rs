@@ -3,11 +3,11 @@
 //! by name, and the failure presets give finite, non-negative images without black spots.
 
 use ltc_lab::cpu::render;
+use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::luminance;
 use ltc_lab::render::{Frame, Method, RenderSettings};
 use ltc_lab::scene::{Light, MIN_RADIUS, PRESETS, SPHERE_PRESETS, Scene, preset};
-use ltc_lab::sphere_light::SphereMethod;
 
 const W: usize = 48;
 const H: usize = 40;

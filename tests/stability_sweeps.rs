@@ -123,7 +123,7 @@ fn fitter_on_grazing_and_alpha_min_cells_is_finite_within_its_limit() {
     };
     let strata = FitStrata::new(&settings);
     let n = settings.size;
-    for lobe in Lobe::BOTH {
+    for lobe in Lobe::ALL {
         for (i, j) in [
             (0, 0),
             (0, n - 1),

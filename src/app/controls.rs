@@ -10,13 +10,13 @@ use crate::app::files::Purpose;
 use crate::app::lab::parts::{BRDF_FORMS, LTC_FORMS, RADIUS_RANGE, RANGE_RANGE};
 use crate::app::lab::{Forms, Lab, LobeView, Overrides, Request, SphereForms};
 use crate::app::panel::Panel;
-use crate::app::widgets::{clipping_rules, explain, name};
+use crate::app::ui::widgets::{clipping_rules, explain, name};
+use crate::light::sphere::SphereMethod;
 use crate::ltc::Normalization;
 use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::ltc::remedy::Horizon;
 use crate::render::LtcRules;
 use crate::scene::{Light, Material, PRESETS, SPHERE_PRESETS, preset};
-use crate::sphere_light::SphereMethod;
 use crate::tables::Source;
 
 /// The light counts the slider offers, at most (and at most what the adapter shades).

@@ -59,13 +59,15 @@ impl LabApp {
                 Message::error("load study: name a study.csv in the field first")
             }
             (Purpose::Study, _) => {
-                let rows = crate::study::read_csv(Path::new(path));
-                self.panels.chart().use_study(rows, path)
+                let rows = crate::measure::study::read_csv(Path::new(path));
+                self.panels.use_study(rows, path)
             }
-            (Purpose::Lesson, _) => match crate::files::read_text(Path::new(path)) {
-                Ok(text) => self.take_lesson(&text, path),
-                Err(e) => Message::error(format!("load lesson: {e}")),
-            },
+            (Purpose::Lesson, _) => {
+                match crate::files::read_text(Path::new(path), Purpose::Lesson.max_bytes()) {
+                    Ok(text) => self.take_lesson(&text, path),
+                    Err(e) => Message::error(format!("load lesson: {e}")),
+                }
+            }
         }
     }
 
@@ -97,9 +99,9 @@ impl LabApp {
             let mut refused = Vec::new();
             for file in files {
                 let name = file.path().display().to_string();
-                match file.bytes() {
+                match crate::files::read_bytes(file.path(), Purpose::largest_max_bytes()) {
                     Ok(bytes) => given.push((name, bytes)),
-                    Err(e) => refused.push(format!("{name}: cannot read it ({e})")),
+                    Err(e) => refused.push(e.to_string()),
                 }
             }
             self.take_given(None, given, refused);
@@ -166,6 +168,12 @@ impl LabApp {
         let Some((name, bytes)) = files.first() else {
             return;
         };
+        if let Some(e) = files.iter().find_map(|(name, b)| {
+            crate::files::check_length(name, b.len(), purpose.max_bytes()).err()
+        }) {
+            self.lab.say(Message::error(e.to_string()));
+            return;
+        }
         let text = || String::from_utf8_lossy(bytes).into_owned();
         let message = match purpose {
             Purpose::Scene => use_scene(&mut self.lab, Scene::from_toml(&text(), name), name),
@@ -175,8 +183,7 @@ impl LabApp {
             },
             Purpose::Study => self
                 .panels
-                .chart()
-                .use_study(crate::study::parse_csv(&text(), name), name),
+                .use_study(crate::measure::study::parse_csv(&text(), name), name),
             Purpose::Lesson => self.take_lesson(&text(), name),
         };
         self.lab.say(message);

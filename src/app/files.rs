@@ -23,6 +23,26 @@ pub enum Purpose {
 }
 
 impl Purpose {
+    /// The most bytes of such a file the lab reads, from a path, a drop or a picker.
+    pub fn max_bytes(self) -> u64 {
+        match self {
+            Self::Scene => crate::scene::MAX_FILE_BYTES,
+            Self::Table | Self::TableB => crate::ltc::lut::MAX_FILE_BYTES,
+            Self::Study => crate::measure::study::MAX_FILE_BYTES,
+            Self::Lesson => crate::app::lesson::MAX_FILE_BYTES,
+        }
+    }
+
+    /// The most bytes of any file the lab reads (a dropped file's, before its name says what
+    /// it is for).
+    pub fn largest_max_bytes() -> u64 {
+        [Self::Scene, Self::Table, Self::Study, Self::Lesson]
+            .map(Self::max_bytes)
+            .into_iter()
+            .max()
+            .unwrap_or(0)
+    }
+
     /// What a dropped file is for, by its extension: a lesson, a scene, a table (A) or a
     /// study.
     pub fn of_name(name: &str) -> Option<Self> {

@@ -8,7 +8,7 @@ use base64::Engine;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::{Deserialize, Serialize};
 
-use crate::app::clip_setup::ClippingState;
+use crate::app::clipping::setup::ClippingState;
 use crate::app::lab::{LastRefit, Lights, Part, Shared, Tables};
 use crate::app::lobe::LobeState;
 use crate::app::plane::PlaneState;

@@ -2,46 +2,28 @@
 //! the LUT, the plane in split or difference view, the paper's Figure 2 clipping cases, and
 //! speed against accuracy — and the global controls beside them. State persists between runs.
 
-pub mod axes;
-pub mod background;
 #[cfg(target_arch = "wasm32")]
 pub mod browser;
-pub mod cache;
 pub mod chart;
-pub mod clip_rows;
-pub mod clip_setup;
 pub mod clipping;
-pub mod completion;
 pub mod controls;
 pub mod device;
-pub mod display;
-pub mod elevation;
 pub mod file_io;
 pub mod files;
 pub mod lab;
 pub mod layout;
 pub mod lesson;
-pub mod lesson_app;
-pub mod lesson_bar;
 pub mod link;
 pub mod lobe;
-pub mod lobe_sphere;
 pub mod matrix;
-pub mod measure;
-pub mod pacer;
 pub mod panel;
 pub mod panels;
-pub mod pixel_table;
 pub mod plane;
-pub mod plane_paint;
-pub mod refit;
 pub mod report;
 pub mod screenshot;
-pub mod shading;
-pub mod sphere_cases;
 pub mod state;
-pub mod studies;
-pub mod widgets;
+pub mod ui;
+pub mod work;
 
 pub use lab::{Lab, Message};
 pub use panel::{Panel, PanelId};
@@ -51,7 +33,10 @@ pub use state::LabState;
 
 use crate::app::lab::Request;
 use crate::app::panels::Panels;
+use crate::app::plane::shading;
 use crate::app::state::WindowState;
+use crate::app::ui::widgets;
+use crate::app::work::background;
 use crate::scene::Scene;
 
 /// The window: the lab the panels share, the panels, and the layout.
@@ -74,7 +59,7 @@ pub struct LabApp {
     counts: Vec<(&'static str, u64)>,
     remade: Vec<&'static str>,
     /// The lesson being walked, with its bar.
-    lesson: Option<lesson_bar::LessonBar>,
+    lesson: Option<lesson::bar::LessonBar>,
     /// Files the browser is reading: picked for a purpose, or dropped (`None`: each for what
     /// its name says).
     #[cfg(target_arch = "wasm32")]
@@ -177,7 +162,7 @@ impl LabApp {
             self.window.maximised = s.panel;
         }
         if s.measure {
-            self.panels.chart().start(&self.lab);
+            self.panels.start_measurement(&self.lab);
         }
         if let Some((lesson, source, step)) = s.lesson {
             self.open_lesson(lesson, &source, step);
@@ -253,13 +238,12 @@ impl LabApp {
         self.take_picked();
         if let Some(path) = &self.saving_exr {
             let exposure = self.lab.exposure().0;
-            let plane = self.panels.plane();
-            match plane.save_exr(path, exposure) {
+            match self.panels.save_plane_exr(path, exposure) {
                 Some(Ok(done)) => self.lab.say(Message::note(done)),
                 Some(Err(e)) => self.lab.say(Message::error(e)),
                 None => ctx.request_repaint(),
             }
-            if !self.panels.plane().read_pending() {
+            if !self.panels.plane_read_pending() {
                 self.saving_exr = None;
             }
         }

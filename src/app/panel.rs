@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::{Lab, SideB};
+use crate::named::named_enum;
 
 /// Every panel: it draws itself into `ui`, reads and edits the lab, and keeps its own state
 /// and work.
@@ -15,34 +16,26 @@ pub trait Panel {
         false
     }
 
-    /// Its caches (`app::cache`): each one's name and how many values it has made.
+    /// Its caches (`app::work::cache`): each one's name and how many values it has made.
     fn caches(&self) -> Vec<(&'static str, u64)> {
         Vec::new()
     }
 }
 
-/// The panels: the side panel, then the grid's five.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum PanelId {
-    Controls,
-    Lobe,
-    Matrix,
-    Plane,
-    Clipping,
-    Chart,
+named_enum! {
+    /// The panels: the side panel, then the grid's five.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+    pub enum PanelId {
+        Controls = "controls",
+        Lobe = "lobe",
+        Matrix = "matrix",
+        Plane = "plane",
+        Clipping = "clipping",
+        Chart = "chart",
+    }
 }
 
 impl PanelId {
-    /// Every panel, the side panel first (the frame log's columns follow this order).
-    pub const ALL: [Self; 6] = [
-        Self::Controls,
-        Self::Lobe,
-        Self::Matrix,
-        Self::Plane,
-        Self::Clipping,
-        Self::Chart,
-    ];
-
     /// The grid's panels: each can be shown alone (maximised, a tab, `lab --panel`).
     pub const GRID: [Self; 5] = [
         Self::Lobe,
@@ -51,18 +44,6 @@ impl PanelId {
         Self::Clipping,
         Self::Chart,
     ];
-
-    /// Its name on the command line (`lab --panel`) and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Controls => "controls",
-            Self::Lobe => "lobe",
-            Self::Matrix => "matrix",
-            Self::Plane => "plane",
-            Self::Clipping => "clipping",
-            Self::Chart => "chart",
-        }
-    }
 
     /// Its title on its frame and its tab: the plane's says what its two sides are.
     pub fn title(self, lab: &Lab) -> String {
@@ -85,6 +66,6 @@ impl PanelId {
 
     /// The panel `name` names, one of the grid's.
     pub fn of_name(name: &str) -> Option<Self> {
-        Self::GRID.into_iter().find(|p| p.name() == name)
+        Self::from_name(name).filter(|p| Self::GRID.contains(p))
     }
 }

@@ -7,13 +7,17 @@ use crate::app::chart::ChartPanel;
 use crate::app::clipping::ClippingPanel;
 use crate::app::controls::ControlsPanel;
 use crate::app::lab::Lab;
+use crate::app::lab::Message;
 use crate::app::lesson::Now;
 use crate::app::lobe::LobePanel;
 use crate::app::matrix::MatrixPanel;
 use crate::app::panel::{Panel, PanelId};
 use crate::app::plane::PlanePanel;
+use crate::app::plane::shading::Progress;
 use crate::app::state::LabState;
+use crate::error::Result;
 use crate::gpu::GpuContext;
+use crate::measure::study::StudyRow;
 
 /// The panels themselves.
 pub struct Panels {
@@ -114,17 +118,33 @@ impl Panels {
         }
     }
 
-    /// The plane panel (the app saves its image and reports its progress).
-    pub fn plane(&mut self) -> &mut PlanePanel {
-        &mut self.plane
+    /// Writes the plane's finished image as EXR to the path the user named, once it is read
+    /// back: `None` until then (`PlanePanel::save_exr`).
+    pub fn save_plane_exr(
+        &mut self,
+        path: &std::path::Path,
+        exposure: f64,
+    ) -> Option<Result<String, String>> {
+        self.plane.save_exr(path, exposure)
     }
 
-    pub fn plane_ref(&self) -> &PlanePanel {
-        &self.plane
+    /// Whether the plane's image is still being read back for `save_plane_exr`.
+    pub fn plane_read_pending(&self) -> bool {
+        self.plane.read_pending()
     }
 
-    /// The chart panel (the app hands it a study and starts a measurement).
-    pub fn chart(&mut self) -> &mut ChartPanel {
-        &mut self.chart
+    /// How far the plane's render is, and its size once it has shown one (for the report).
+    pub fn plane_progress(&self) -> (&Progress, Option<(usize, usize)>) {
+        (self.plane.progress(), self.plane.size())
+    }
+
+    /// Hands the chart a study read from a file, and says what became of it.
+    pub fn use_study(&mut self, rows: Result<Vec<StudyRow>>, name: &str) -> Message {
+        self.chart.use_study(rows, name)
+    }
+
+    /// Starts the chart's measurement (`lab --measure`).
+    pub fn start_measurement(&mut self, lab: &Lab) {
+        self.chart.start(lab);
     }
 }

@@ -26,7 +26,7 @@ pub struct Report {
     /// Milliseconds the last frame spent in each panel, in `PanelId::ALL`'s order (0 for one
     /// not shown).
     pub part_ms: Vec<f64>,
-    /// The caches the last frame made again (`app::cache`), by name.
+    /// The caches the last frame made again (`app::work::cache`), by name.
     pub remade: Vec<&'static str>,
     /// The lesson being walked, if any.
     pub lesson: Option<LessonReport>,
@@ -48,7 +48,7 @@ pub struct LessonReport {
 impl LabApp {
     /// The lab as the last frame left it.
     pub fn report(&self) -> Report {
-        let progress = self.panels.plane_ref().progress();
+        let (progress, plane_size) = self.panels.plane_progress();
         Report {
             busy: self.busy(),
             working: self
@@ -58,7 +58,7 @@ impl LabApp {
                 .map(PanelId::name)
                 .collect(),
             plane: [progress.done, progress.total],
-            plane_size: self.panels.plane_ref().size().map(|(w, h)| [w, h]),
+            plane_size: plane_size.map(|(w, h)| [w, h]),
             shading: if self.lab.device().is_some() {
                 "gpu"
             } else {

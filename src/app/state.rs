@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::app::chart::ChartState;
-use crate::app::clip_setup::ClippingState;
+use crate::app::clipping::setup::ClippingState;
 use crate::app::controls::ControlsState;
 use crate::app::lab::{Checked, Shared};
 use crate::app::lobe::LobeState;

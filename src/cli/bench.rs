@@ -2,11 +2,11 @@
 
 use std::path::PathBuf;
 
-use ltc_lab::bench::{BenchRow, BenchSettings};
 use ltc_lab::error::Result;
 use ltc_lab::files::{check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
+use ltc_lab::measure::bench::{BenchRow, BenchSettings};
 
 use ltc_lab::ltc::remedy::Horizon;
 
@@ -54,7 +54,7 @@ pub fn run(a: &Args) -> Result<()> {
     }
     let lut = a.lut.load()?;
     let ctx = GpuContext::new()?;
-    ltc_lab::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
+    ltc_lab::measure::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
     let device = ctx.describe();
     eprintln!("benchmarking on {device}");
     if !ctx.has_timestamps() {
@@ -77,7 +77,7 @@ pub fn run(a: &Args) -> Result<()> {
         horizons: a.horizon.clone(),
         sphere_radius: a.sphere_radius,
     };
-    let rows = ltc_lab::bench::run(&ctx, &lut, &settings, |r| {
+    let rows = ltc_lab::measure::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(
             "  {:>28} {:>6} lights, cull {:>3}: {:.3} ms",
             r.label(),
@@ -94,7 +94,7 @@ pub fn run(a: &Args) -> Result<()> {
         }
         write_atomically(p, text.as_bytes())?;
     }
-    print(&ltc_lab::bench::markdown(&rows, &device))
+    print(&ltc_lab::measure::bench::markdown(&rows, &device))
 }
 
 /// `--sphere-radius`: a radius a scene's light may have, and not 0 (that is the point rows).

@@ -3,8 +3,8 @@
 use std::path::PathBuf;
 
 use ltc_lab::error::{Error, Result};
-use ltc_lab::eval::{evaluate, output_header, parse_cases};
 use ltc_lab::files::read_text;
+use ltc_lab::measure::eval::{evaluate, output_header, parse_cases};
 
 use ltc_lab::ltc::remedy::Horizon;
 
@@ -29,7 +29,7 @@ pub struct Args {
 }
 
 pub fn run(a: &Args) -> Result<()> {
-    let text = read_text(&a.cases)?;
+    let text = read_text(&a.cases, ltc_lab::measure::eval::MAX_FILE_BYTES)?;
     let cases = parse_cases(&text, &a.cases.display().to_string())?;
     a.lut.check_horizon(a.horizon)?;
     if cases.spheres && a.horizon != Horizon::Eq30 {

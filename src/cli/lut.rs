@@ -2,12 +2,12 @@
 
 use std::path::PathBuf;
 
-use ltc_lab::atlas::atlas_files;
 use ltc_lab::error::{Error, Result};
 use ltc_lab::files::check_distinct;
 use ltc_lab::ltc::formats::dds::Precision;
 use ltc_lab::ltc::formats::{Export, Header, export};
 use ltc_lab::ltc::lut::Channel;
+use ltc_lab::measure::atlas::atlas_files;
 
 use super::{LutArgs, one_of, print};
 
@@ -57,7 +57,7 @@ pub fn run(a: &Args) -> Result<()> {
         return Err(Error::input("--export", "needs --out"));
     }
     if let Some(dir) = &a.atlas {
-        let summary = ltc_lab::atlas::write_atlas(&lut, dir)?;
+        let summary = ltc_lab::measure::atlas::write_atlas(&lut, dir)?;
         print(
             &summary
                 .lines

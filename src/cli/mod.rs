@@ -235,7 +235,7 @@ pub fn parse_range(s: &str) -> std::result::Result<Range, String> {
 impl Range {
     /// The range asked for, or paper-100's.
     pub fn or_default(range: Option<Range>) -> Option<f64> {
-        range.map_or(Some(ltc_lab::bench::DEFAULT_RANGE), |r| r.0)
+        range.map_or(Some(ltc_lab::measure::bench::DEFAULT_RANGE), |r| r.0)
     }
 }
 

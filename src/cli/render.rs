@@ -10,13 +10,13 @@ use ltc_lab::files::{Claim, check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
 use ltc_lab::gpu::renderer::PlaneRenderer;
+use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::Table;
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::output::{ImageFormat, frame_bytes};
 use ltc_lab::render::{Frame, Method, RenderSettings, View};
 use ltc_lab::scene::Scene;
-use ltc_lab::sphere_light::SphereMethod;
 use ltc_lab::tables::{NamedTable, NamedTables, Source};
 
 use super::{HORIZON_HELP, LutArgs, horizon_parser, one_of, parse_cull, parse_size};

@@ -8,10 +8,10 @@ use std::time::Instant;
 use ltc_lab::error::{Error, Result, number};
 use ltc_lab::files::Outputs;
 use ltc_lab::gpu::GpuContext;
-use ltc_lab::horizon;
 use ltc_lab::ltc::lut::{ALPHA_MIN, Lut};
 use ltc_lab::ltc::remedy::Horizon;
-use ltc_lab::study;
+use ltc_lab::measure::horizon;
+use ltc_lab::measure::study;
 
 use super::{CullArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size, print};
 
@@ -77,7 +77,7 @@ pub fn run(a: &Args) -> Result<()> {
     };
     let dir = out.dir().to_path_buf();
     let ctx = GpuContext::new()?;
-    ltc_lab::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
+    ltc_lab::measure::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
     let device = ctx.describe();
     eprintln!("study on {device}");
     let start = Instant::now();
@@ -92,7 +92,7 @@ pub fn run(a: &Args) -> Result<()> {
         heights: if a.scene == "low-lights" {
             study::LOW_HEIGHTS
         } else {
-            ltc_lab::bench::PAPER_HEIGHTS
+            ltc_lab::measure::bench::PAPER_HEIGHTS
         },
     };
     let rows = study::run(&ctx, &lut, &settings, |r| {

@@ -28,10 +28,61 @@ pub use claim::Claim;
 pub use outputs::Outputs;
 pub use unfinished::exit_interrupted;
 
-/// A text file, without a leading UTF-8 byte-order mark (spreadsheets write one).
-pub fn read_text(path: &Path) -> Result<String> {
+/// The bytes of the file at `path`, read up to `limit`: a longer file — or one that never
+/// ends, such as a device (`/dev/zero`, `/dev/urandom`) — is refused as bad input naming the
+/// file and the limit once `limit + 1` bytes were read, so no input can hold the program for
+/// longer or take more memory than its limit. Every file the lab and the CLI read comes
+/// through here.
+pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>> {
+    use std::io::Read;
     let name = path.display().to_string();
-    let text = fs::read_to_string(path).map_err(|e| Error::io(&name, "read", &e))?;
+    if path.is_dir() {
+        return Err(Error::input(name, "is a directory, not a file"));
+    }
+    let file = fs::File::open(path).map_err(|e| Error::io(&name, "read", &e))?;
+    let mut bytes = Vec::new();
+    file.take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| Error::io(&name, "read", &e))?;
+    check_length(&name, bytes.len(), limit)?;
+    Ok(bytes)
+}
+
+/// Refuses `len` bytes of the input `name` past `limit` (a file read whole elsewhere, such
+/// as one dropped on the window or picked in a browser, is held to the same limit).
+pub fn check_length(name: &str, len: usize, limit: u64) -> Result<()> {
+    if len as u64 > limit {
+        return Err(Error::input(
+            name,
+            format!(
+                "is longer than the {} this program reads of such a file",
+                size_in_words(limit)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// `limit` bytes in words: `4 MiB`, `512 kiB`, `100 bytes`.
+fn size_in_words(limit: u64) -> String {
+    match limit {
+        l if l >= 1 << 20 && l % (1 << 20) == 0 => format!("{} MiB", l >> 20),
+        l if l >= 1 << 10 && l % (1 << 10) == 0 => format!("{} kiB", l >> 10),
+        l => format!("{l} bytes"),
+    }
+}
+
+/// A text file read up to `limit` bytes (`read_bytes`), without a leading UTF-8 byte-order
+/// mark (spreadsheets write one).
+pub fn read_text(path: &Path, limit: u64) -> Result<String> {
+    let name = path.display().to_string();
+    text_of(read_bytes(path, limit)?, &name)
+}
+
+/// Bytes as UTF-8 text without a leading byte-order mark; refused naming `name` otherwise.
+pub fn text_of(bytes: Vec<u8>, name: &str) -> Result<String> {
+    let text = String::from_utf8(bytes)
+        .map_err(|e| Error::input(name, format!("is not UTF-8 text ({e})")))?;
     Ok(match text.strip_prefix('\u{feff}') {
         Some(rest) => rest.to_string(),
         None => text,

@@ -236,5 +236,36 @@ fn a_byte_order_mark_is_dropped() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("bom.csv");
     fs::write(&p, "\u{feff}a,b\n").unwrap();
-    assert_eq!(read_text(&p).unwrap(), "a,b\n");
+    assert_eq!(read_text(&p, 1 << 10).unwrap(), "a,b\n");
+}
+
+#[test]
+fn a_file_is_read_up_to_its_limit_and_refused_past_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("big.toml");
+    fs::write(&p, vec![b'#'; 1025]).unwrap();
+    // One byte over: refused as bad input, naming the file and the limit.
+    let e = read_bytes(&p, 1024).unwrap_err();
+    assert_eq!(e.exit_code(), 2, "{e}");
+    let m = e.to_string();
+    assert!(m.contains("big.toml") && m.contains("1 kiB"), "{m}");
+    // At the limit: read whole.
+    assert_eq!(read_bytes(&p, 1025).unwrap().len(), 1025);
+    // A directory is not a file.
+    assert_eq!(read_bytes(dir.path(), 1024).unwrap_err().exit_code(), 2);
+    // Bytes that are not UTF-8 are bad input too.
+    fs::write(&p, [0xff, 0xfe, 0x00]).unwrap();
+    assert_eq!(read_text(&p, 1024).unwrap_err().exit_code(), 2);
+}
+
+/// A device that never ends is read to the limit and refused, quickly and in bounded memory,
+/// instead of filling memory (`/dev/zero`) or never returning (`/dev/urandom`).
+#[cfg(unix)]
+#[test]
+fn an_endless_device_is_refused_at_the_limit() {
+    for device in ["/dev/zero", "/dev/urandom"] {
+        let e = read_text(Path::new(device), 1 << 20).unwrap_err();
+        assert_eq!(e.exit_code(), 2, "{device}: {e}");
+        assert!(e.to_string().contains(device), "{e}");
+    }
 }

@@ -4,27 +4,23 @@
 
 use crate::error::Error;
 use crate::gpu::GpuContext;
+use crate::gpu::plane::LOAD;
+use crate::named::named_enum;
 
-/// The values the adapter limits.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Limited {
-    /// An image's width and height.
-    ImageSize,
-    /// How many lights are shaded at once.
-    LightCount,
-    /// A LUT's cells per side.
-    TableSize,
-}
-
-impl Limited {
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::ImageSize => "image size",
-            Self::LightCount => "light count",
-            Self::TableSize => "LUT",
-        }
+named_enum! {
+    /// The values the adapter limits.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub enum Limited {
+        /// An image's width and height.
+        ImageSize = "image size",
+        /// How many lights are shaded at once.
+        LightCount = "light count",
+        /// A LUT's cells per side.
+        TableSize = "LUT",
     }
 }
+
+impl Limited {}
 
 /// A value beyond the adapter's limits, and the sentence naming the limit.
 #[derive(Debug, thiserror::Error)]
@@ -68,12 +64,12 @@ pub fn buffer_max_lights(ctx: &GpuContext, light_bytes: usize) -> usize {
 /// The most lights one invocation of plane.wgsl sums on this adapter, where the driver caps
 /// shader loops: Mesa's llvmpipe (lavapipe) ends every loop of an invocation after 65 535
 /// iterations in all (`LP_MAX_TGSI_LOOP_ITERATIONS`, shared between loops), and the light
-/// loop takes one iteration per light plus one per 256-light tile: 65 535 · 256/257 = 65 280
-/// lights at most, less one tile of margin (at the limit itself invocations end before
+/// loop takes one iteration per light plus one per `LOAD`-light tile: 65 535 · 256/257 =
+/// 65 280 lights at most, less one tile of margin (at the limit itself invocations end before
 /// writing their pixel).
 pub fn light_loop_limit(ctx: &GpuContext) -> Option<usize> {
     let llvmpipe = ctx.info.name.contains("llvmpipe") || ctx.info.driver.contains("llvmpipe");
-    llvmpipe.then_some(65_535 * 256 / 257 - 256)
+    llvmpipe.then_some(65_535 * LOAD / (LOAD + 1) - LOAD)
 }
 
 /// The most lights this device shades: the buffer's capacity, or less where the driver ends

@@ -7,6 +7,7 @@ use crate::gpu::{GpuContext, limits};
 use crate::ltc::lut::{Channel, Lut};
 use crate::ltc::nl_fit::nl_terms;
 use crate::ltc::remedy::HorizonRule;
+use crate::ltc::{Clipping, Normalization};
 
 /// The shader text (composed after `brdf::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/ltc.wgsl");
@@ -22,7 +23,26 @@ pub fn horizon_constant(h: HorizonRule) -> (u32, &'static str) {
 }
 
 /// `LUT_VEC4S_PER_CELL` of ltc.wgsl.
-pub const VEC4S_PER_CELL: usize = 4;
+pub const LUT_VEC4S_PER_CELL: usize = 4;
+
+/// `CLIP_HORIZON` of ltc.wgsl: `Params::clip`'s bit for case 1 (clip at the surface's horizon).
+pub const CLIP_HORIZON: u32 = 1;
+
+/// `CLIP_TRANSFORMED` of ltc.wgsl: `Params::clip`'s bit for case 2 (clip after `M⁻¹`).
+pub const CLIP_TRANSFORMED: u32 = 2;
+
+/// `Params::clip`: the clipping rules as ltc.wgsl reads them.
+pub fn clip_bits(c: Clipping) -> u32 {
+    (if c.case1 { CLIP_HORIZON } else { 0 }) | (if c.case2 { CLIP_TRANSFORMED } else { 0 })
+}
+
+/// `NORMALIZATION_*` of ltc.wgsl (`Params::normalization`): its value and its name there.
+pub fn normalization_constant(n: Normalization) -> (u32, &'static str) {
+    match n {
+        Normalization::Corrected => (0, "NORMALIZATION_CORRECTED"),
+        Normalization::PaperLiteral => (1, "NORMALIZATION_PAPER_LITERAL"),
+    }
+}
 
 /// Four vec4s per cell, as `lut_texel` and `nl_sample_uv` in ltc.wgsl read them:
 /// `[spec m00 m02 m20 m22] [diff m00 m02 m20 m22] [scale·spec.norm scale·spec.fresnel diff.norm
@@ -100,7 +120,7 @@ impl LutBuffer {
         let (a, b) = (&luts.0, luts.1.as_ref());
         let size_a = a.size;
         // Checked before packing: packing may fit the correction of every cell.
-        let bytes = |lut: &Lut| (lut.size * lut.size * VEC4S_PER_CELL * 16) as u64;
+        let bytes = |lut: &Lut| (lut.size * lut.size * LUT_VEC4S_PER_CELL * 16) as u64;
         let largest = b.map_or(size_a, |lut| lut.size.max(size_a));
         limits::check_lut_size(ctx, largest, bytes(a) + b.map_or(0, bytes))?;
         let mut all = pack_lut(a, with_nl);

@@ -10,13 +10,17 @@ use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::target::OUTPUT_FORMAT;
+use crate::light::sphere::SphereMethod;
 use crate::ltc::remedy::HorizonRule;
 use crate::render::{LutFilter, Method, RenderSettings, View};
 use crate::scene::{Light, Scene};
-use crate::sphere_light::SphereMethod;
 
 /// The shader text (composed after `scene::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/plane.wgsl");
+
+/// `LOAD` of plane.wgsl: the lights a workgroup loads into its shared memory at a time (one
+/// tile of the light loop).
+pub const LOAD: usize = 256;
 
 /// `METHOD_*` of plane.wgsl: its value and its name there.
 pub fn method_constant(m: Method) -> (u32, &'static str) {

@@ -5,7 +5,7 @@
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 
-use crate::ltc::Normalization;
+use crate::gpu::ltc::{clip_bits, normalization_constant};
 use crate::render::RenderSettings;
 use crate::scene::{Light, Scene};
 
@@ -103,12 +103,8 @@ pub fn params(settings: &RenderSettings, scene: &Scene) -> Params {
         width: settings.width as u32,
         height: settings.height as u32,
         light_count: scene.lights.len() as u32,
-        clip: u32::from(settings.rules.clipping.case1)
-            | (u32::from(settings.rules.clipping.case2) << 1),
-        normalization: match settings.rules.normalization {
-            Normalization::Corrected => 0,
-            Normalization::PaperLiteral => 1,
-        },
+        clip: clip_bits(settings.rules.clipping),
+        normalization: normalization_constant(settings.rules.normalization).0,
         tiles_x: tiles_x as u32,
         tiles_y: tiles_y as u32,
         cull: u32::from(settings.cull),

@@ -12,7 +12,7 @@ use crate::gpu::plane_render::{Kept, PlaneRender};
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::target::PendingRead;
 use crate::ltc::lut::Lut;
-use crate::parity::Parity;
+use crate::measure::parity::Parity;
 use crate::render::{Frame, Method, RenderSettings};
 use crate::scene::{Scene, preset};
 

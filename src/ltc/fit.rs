@@ -24,7 +24,7 @@ pub struct FitSettings {
     pub fit_samples: usize,
     /// Strata per side for the magnitudes and average direction (ltc_code: 32). With the
     /// visible-normal sampling of `lobe_moments`, 256² keeps every magnitude within 1e-3 of
-    /// f64 quadrature (tests/fit.rs checks 12 cells, grazing ones included).
+    /// f64 quadrature (tests/fit/classic.rs checks 12 cells, grazing ones included).
     pub moment_samples: usize,
     /// Strata per side for the pointwise error stored in the `err` channels.
     pub error_samples: usize,

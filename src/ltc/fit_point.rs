@@ -19,7 +19,7 @@ use crate::ltc::lut::{Channel, Lut, LutCell};
 use crate::ltc::point_params::{CellObjective, Free, PointFit, fits_scale};
 use crate::ltc::{Clipping, Normalization};
 
-/// Strata per axis of the fit's quadrature (64² nodes); tests/fit_point.rs compares it with
+/// Strata per axis of the fit's quadrature (64² nodes); tests/fit/point.rs compares it with
 /// a 4× finer one on the hardest cells.
 pub const QUADRATURE_STRATA: usize = 64;
 
@@ -250,7 +250,7 @@ impl PointObjective {
 /// (entries, scale, error; `norm` and `fresnel` stay the true albedos).
 fn merge(current: &LutCell, fits: [Option<(PointFit, f64)>; 2]) -> LutCell {
     let mut cell = *current;
-    for (fit, lobe) in fits.iter().zip(Lobe::BOTH) {
+    for (fit, lobe) in fits.iter().zip(Lobe::ALL) {
         if let Some((fit, err)) = fit {
             for (c, v) in Channel::entries(lobe).iter().zip(fit.entries) {
                 cell.0[*c as usize] = v as f32;
@@ -317,7 +317,7 @@ pub fn fit_table_for(
                 .map(|j| {
                     let classic_cell = classic.cell(i, j);
                     let fits = std::array::from_fn(|k| {
-                        let lobe = Lobe::BOTH[k];
+                        let lobe = Lobe::ALL[k];
                         let mut starts = vec![PointFit::stored(classic_cell, lobe)];
                         starts.extend(previous[k]);
                         let (point, fit) = refit(classic_cell, lobe, i, j, &starts);
@@ -353,7 +353,7 @@ pub fn fit_table_for(
                     })
                     .collect();
                 let fits = std::array::from_fn(|k| {
-                    let lobe = Lobe::BOTH[k];
+                    let lobe = Lobe::ALL[k];
                     let mut starts = vec![PointFit::stored(current, lobe)];
                     starts.extend(neighbours.iter().map(|c| PointFit::stored(c, lobe)));
                     refit(current, lobe, i, j, &starts).1

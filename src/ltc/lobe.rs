@@ -6,12 +6,15 @@ use glam::DVec3;
 
 use crate::brdf::{Dots, d_ggx, diffuse_cos, g2_correlated, lambda_ggx, specular_cos};
 use crate::ltc::cosine_sample;
+use crate::named::named_enum;
 
-/// Which lobe of the BRDF.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-pub enum Lobe {
-    Specular,
-    Diffuse,
+named_enum! {
+    /// Which lobe of the BRDF.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+    pub enum Lobe {
+        Specular = "spec",
+        Diffuse = "diff",
+    }
 }
 
 /// A lobe value `f cos` at a direction and the density of the lobe's own sampling there.
@@ -22,15 +25,6 @@ pub struct LobeSample {
 }
 
 impl Lobe {
-    pub const BOTH: [Self; 2] = [Self::Specular, Self::Diffuse];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Specular => "spec",
-            Self::Diffuse => "diff",
-        }
-    }
-
     /// `f cos` (F = 1 / c = 1) toward unit `l` for unit `v`, and the sampling density at `l`.
     pub fn eval(self, v: DVec3, l: DVec3, alpha: f64) -> LobeSample {
         let Some(d) = Dots::new(v.to_array(), l.to_array()) else {
@@ -150,7 +144,7 @@ pub struct LobeMoments {
 /// ltc_code does. The specular lobe samples GGX's *visible* normals (Heitz 2018) rather than
 /// ltc_code's plain normals: the weight `f cos / pdf = G2/G1(v)` is then bounded by 1,
 /// whereas with plain normals most samples leave below the horizon at grazing views and
-/// even 512² strata miss the norm by 1.6e-3 at θo = 85° (quadrature in tests/fit.rs).
+/// even 512² strata miss the norm by 1.6e-3 at θo = 85° (quadrature in tests/fit/classic.rs).
 pub fn lobe_moments(lobe: Lobe, v: DVec3, alpha: f64, strata: &[Stratum]) -> LobeMoments {
     let mut norm = 0.0;
     let mut fresnel = 0.0;

@@ -20,6 +20,7 @@ pub mod sphere;
 use glam::{DMat3, DVec3};
 
 use crate::brdf::Lobes;
+use crate::named::named_enum;
 
 /// Which of the paper's two light-clipping rules (eq. 30) are applied. The paper applies both.
 /// The command line names them by what they test: `horizon` (case 1) and `transformed` (case 2).
@@ -74,30 +75,22 @@ impl Default for Clipping {
     }
 }
 
-/// How the LTC sum is normalized.
-#[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
-)]
-pub enum Normalization {
-    /// docs/design.md §1: `D` carries its 1/π, and each lobe its magnitude (`F0 n_s + (1−F0) f_s` for
-    /// specular, `n_d` for diffuse).
-    #[default]
-    Corrected,
-    /// The paper's eq. 25/30 as printed: no 1/π and no magnitudes (kept to show the cost).
-    PaperLiteral,
-}
-
-impl Normalization {
-    pub const ALL: [Self; 2] = [Self::Corrected, Self::PaperLiteral];
-
-    /// `corrected` or `paper`, as on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Corrected => "corrected",
-            Self::PaperLiteral => "paper",
-        }
+named_enum! {
+    /// How the LTC sum is normalized.
+    #[derive(
+        Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+    )]
+    pub enum Normalization {
+        /// docs/design.md §1: `D` carries its 1/π, and each lobe its magnitude (`F0 n_s + (1−F0) f_s` for
+        /// specular, `n_d` for diffuse).
+        #[default]
+        Corrected = "corrected",
+        /// The paper's eq. 25/30 as printed: no 1/π and no magnitudes (kept to show the cost).
+        PaperLiteral = "paper",
     }
 }
+
+impl Normalization {}
 
 /// One fitted lobe: its matrix both ways, `|det M⁻¹|`, and its magnitudes.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -241,20 +234,22 @@ impl LtcPair {
     }
 }
 
-/// Which clipping case a light direction falls in for a lobe (docs/design.md §1, the paper's §2.5):
-/// the four combinations of above/below the horizon before and after `M⁻¹`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum ClipCase {
-    /// Above the horizon before and after the transform: shaded as fitted.
-    Visible,
-    /// Case 1: below the horizon (`n·l ≤ 0`) but lifted above it by `M⁻¹` — without the
-    /// horizon rule it glows (the paper's Figure 2c).
-    Lifted,
-    /// Case 2: above the horizon but pushed below it (`(M⁻¹l).z ≤ 0`) — without the
-    /// transformed rule it is negative light.
-    PushedBelow,
-    /// Below the horizon and still below after `M⁻¹`: either rule removes it.
-    StaysBelow,
+named_enum! {
+    /// Which clipping case a light direction falls in for a lobe (docs/design.md §1, the paper's §2.5):
+    /// the four combinations of above/below the horizon before and after `M⁻¹`.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+    pub enum ClipCase {
+        /// Above the horizon before and after the transform: shaded as fitted.
+        Visible = "visible",
+        /// Case 1: below the horizon (`n·l ≤ 0`) but lifted above it by `M⁻¹` — without the
+        /// horizon rule it glows (the paper's Figure 2c).
+        Lifted = "case 1 (lifted)",
+        /// Case 2: above the horizon but pushed below it (`(M⁻¹l).z ≤ 0`) — without the
+        /// transformed rule it is negative light.
+        PushedBelow = "case 2 (pushed below)",
+        /// Below the horizon and still below after `M⁻¹`: either rule removes it.
+        StaysBelow = "below, stays below",
+    }
 }
 
 impl ClipCase {
@@ -266,28 +261,6 @@ impl ClipCase {
             (true, false) => ClipCase::PushedBelow,
             (false, true) => ClipCase::Lifted,
             (false, false) => ClipCase::StaysBelow,
-        }
-    }
-
-    pub const ALL: [Self; 4] = [
-        Self::Visible,
-        Self::Lifted,
-        Self::PushedBelow,
-        Self::StaysBelow,
-    ];
-
-    /// Its place in `ALL` (the declaration order).
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// How the lab's legends and tables name it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Visible => "visible",
-            Self::Lifted => "case 1 (lifted)",
-            Self::PushedBelow => "case 2 (pushed below)",
-            Self::StaysBelow => "below, stays below",
         }
     }
 }

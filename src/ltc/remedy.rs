@@ -6,6 +6,7 @@
 use crate::brdf::Lobes;
 use crate::ltc::lut::Table;
 use crate::ltc::nl_fit::{NlTerms, nl_weight};
+use crate::named::named_enum;
 
 /// `n·l` below which `exact-band` shades with the exact BRDF: sin 15°, the top of the two
 /// bands where the LTC is wrong by half (docs/design.md §4.7).
@@ -51,47 +52,27 @@ pub fn in_exact_band(z: f64) -> bool {
     z > 0.0 && z < EXACT_BAND_Z
 }
 
-/// A horizon remedy as `--horizon` and the lab name it: eq. 30 (the reference), a table
-/// fitted otherwise, or a rule per light.
-#[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
-)]
-pub enum Horizon {
-    #[default]
-    Eq30,
-    /// `Table::Arrival` with eq. 30's rules.
-    ArrivalFit,
-    /// `Table::Constrained` with eq. 30's rules.
-    ConstrainedFit,
-    /// `HorizonRule::NlFit` on the table in use.
-    NlFit,
-    /// `HorizonRule::ExactBand` on the table in use.
-    ExactBand,
+named_enum! {
+    /// A horizon remedy as `--horizon` and the lab name it: eq. 30 (the reference), a table
+    /// fitted otherwise, or a rule per light.
+    #[derive(
+        Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+    )]
+    pub enum Horizon {
+        #[default]
+        Eq30 = "eq30",
+        /// `Table::Arrival` with eq. 30's rules.
+        ArrivalFit = "arrival-fit",
+        /// `Table::Constrained` with eq. 30's rules.
+        ConstrainedFit = "constrained-fit",
+        /// `HorizonRule::NlFit` on the table in use.
+        NlFit = "nl-fit",
+        /// `HorizonRule::ExactBand` on the table in use.
+        ExactBand = "exact-band",
+    }
 }
 
 impl Horizon {
-    pub const ALL: [Self; 5] = [
-        Self::Eq30,
-        Self::ArrivalFit,
-        Self::ConstrainedFit,
-        Self::NlFit,
-        Self::ExactBand,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Eq30 => "eq30",
-            Self::ArrivalFit => "arrival-fit",
-            Self::ConstrainedFit => "constrained-fit",
-            Self::NlFit => "nl-fit",
-            Self::ExactBand => "exact-band",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|h| h.name() == name)
-    }
-
     /// The table the remedy shades with, where it is a table.
     pub fn table(self) -> Option<Table> {
         match self {

@@ -6,6 +6,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
+use crate::named::named_enum;
 use glam::DVec3;
 
 /// The projected solid angle `∫_cap max(cos θ, 0) dω` of a spherical cap of angular radius
@@ -87,6 +88,15 @@ impl Cap {
         })
     }
 
+    /// `1 − cos σ` without cancellation (`sin²σ / (1 + cos σ)`): a small cap's depth along
+    /// its axis, 2 for the whole sphere.
+    pub fn depth(&self) -> f64 {
+        if self.encloses() {
+            return 2.0;
+        }
+        self.sin_sigma * self.sin_sigma / (1.0 + self.cos_sigma)
+    }
+
     /// True where the shading point is inside (or on) the sphere.
     pub fn encloses(&self) -> bool {
         self.cos_sigma <= -1.0
@@ -137,36 +147,22 @@ pub fn illuminance_sphere(cos_theta: f64, sin2_sigma: f64) -> f64 {
     ((cos_theta * y.acos() - x * z) * sin2_sigma + z.atan2(x)).max(0.0)
 }
 
-/// Where a sphere light is against the surface, seen from a shading point: the failure cases
-/// of docs/design.md §1.10 (the plane panel's map of sphere cases), from the least to the most
-/// telling — the order a map takes the largest of a pixel's cases in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum SphereCase {
-    /// The whole cap above the horizon: every method shades it as it was made to.
-    Above,
-    /// Below the horizon: it lights nothing.
-    Below,
-    /// Cut by the horizon: part of the sphere below the surface (the disk clips it as a disc
-    /// facing the point; the representative point does not see the cut).
-    Cut,
-    /// The point is inside the sphere (or on it): the cap is the whole upper hemisphere.
-    Inside,
-}
-
-impl SphereCase {
-    pub const ALL: [Self; 4] = [Self::Above, Self::Below, Self::Cut, Self::Inside];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Above => "above",
-            Self::Cut => "cut by the horizon",
-            Self::Below => "below",
-            Self::Inside => "inside the sphere",
-        }
-    }
-
-    /// Its place in `ALL` (the declaration's order).
-    pub fn rank(self) -> usize {
-        self as usize
+named_enum! {
+    /// Where a sphere light is against the surface, seen from a shading point: the failure cases
+    /// of docs/design.md §1.10 (the plane panel's map of sphere cases), from the least to the most
+    /// telling — the order a map takes the largest of a pixel's cases in.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+    pub enum SphereCase {
+        /// The whole cap above the horizon: every method shades it as it was made to.
+        Above = "above",
+        /// Below the horizon: it lights nothing.
+        Below = "below",
+        /// Cut by the horizon: part of the sphere below the surface (the disk clips it as a disc
+        /// facing the point; the representative point does not see the cut).
+        Cut = "cut by the horizon",
+        /// The point is inside the sphere (or on it): the cap is the whole upper hemisphere.
+        Inside = "inside the sphere",
     }
 }
+
+impl SphereCase {}

@@ -1,6 +1,6 @@
 //! `ltc-lab lab` arguments (the window itself: tests/lab_window.rs).
 
-use crate::{assert_refused, ltc_lab};
+use crate::{assert_refused, ltc_lab, stderr};
 
 #[test]
 fn lab_refuses_bad_arguments_before_opening_a_window() {
@@ -90,4 +90,33 @@ fn lab_refuses_a_lesson_that_does_not_open() {
         let o = ltc_lab(&[&["lab"][..], args].concat());
         assert_eq!(o.status.code(), Some(2), "{args:?}");
     }
+}
+
+/// Every input file is read up to its stated limit: a device that never ends (`/dev/zero`
+/// filled memory until the process was killed, `/dev/urandom` never returned) and a file
+/// over the limit are refused in one line naming them, as a lesson, a scene, a table and a
+/// cases CSV alike, exit 2.
+#[cfg(unix)]
+#[test]
+fn endless_and_oversized_inputs_are_refused_at_their_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    // One byte over a lesson's 4 MiB.
+    let big = dir.path().join("big.lesson.toml");
+    std::fs::write(&big, vec![b'#'; (4 << 20) + 1]).unwrap();
+    let big = big.to_str().unwrap();
+    for device in ["/dev/zero", "/dev/urandom"] {
+        for args in [
+            vec!["lab", "--lesson", device],
+            vec!["render", "--scene", device, "--method", "ltc", "--cpu"],
+            vec!["lut", "--lut", device],
+            vec!["eval", "--cases", device],
+        ] {
+            let o = ltc_lab(&args);
+            assert_refused(&o, device);
+            assert!(stderr(&o).contains("longer than"), "{args:?}: {}", stderr(&o));
+        }
+    }
+    let o = ltc_lab(&["lab", "--lesson", big]);
+    assert_refused(&o, big);
+    assert!(stderr(&o).contains("4 MiB"), "{}", stderr(&o));
 }

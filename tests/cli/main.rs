@@ -11,6 +11,8 @@ mod fit;
 mod lab;
 mod lut;
 mod render;
+mod render_names;
+mod render_refusals;
 mod study;
 
 use std::io::{BufRead, BufReader};

@@ -21,7 +21,7 @@ fn study_writes_every_variant_and_the_pareto_chart() {
     args.extend(SMALL);
     let o = ltc_lab(&args);
     assert!(o.status.success(), "{}", stderr(&o));
-    let rows = ltc_lab::study::read_csv(&dir.join("study.csv")).unwrap();
+    let rows = ltc_lab::measure::study::read_csv(&dir.join("study.csv")).unwrap();
     let names: Vec<&str> = rows.iter().map(|r| r.variant.as_str()).collect();
     let mut expected = vec![
         "brdf",
@@ -264,7 +264,7 @@ fn two_default_studies_at_once_get_two_directories() {
     for d in &dirs {
         let dir = cwd.path().join(d);
         assert!(
-            !ltc_lab::study::read_csv(&dir.join("study.csv"))
+            !ltc_lab::measure::study::read_csv(&dir.join("study.csv"))
                 .unwrap()
                 .is_empty()
         );

@@ -8,7 +8,7 @@ use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
 use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::parity::{Parity, RADIANCE_TOLERANCE};
+use ltc_lab::measure::parity::{Parity, RADIANCE_TOLERANCE};
 use ltc_lab::render::Frame;
 use wgpu::util::DeviceExt;
 
@@ -56,7 +56,7 @@ pub fn bits(f: &Frame) -> Vec<[u64; 3]> {
 }
 
 /// Per-pixel agreement of a GPU frame with the CPU reference, at the library's parity
-/// tolerance (`ltc_lab::parity`, which says where it comes from).
+/// tolerance (`ltc_lab::measure::parity`, which says where it comes from).
 pub fn assert_close(what: &str, gpu: &Frame, cpu: &Frame) {
     let parity = Parity::of(gpu, cpu);
     if let Err(why) = parity.check() {

@@ -3,9 +3,9 @@
 
 use egui_kittest::kittest::Queryable;
 use ltc_lab::app::PanelId;
-use ltc_lab::app::measure::{Measurement, Point};
+use ltc_lab::app::chart::measure::{Measurement, Point};
+use ltc_lab::measure::study::StudyRow;
 use ltc_lab::render::Method;
-use ltc_lab::study::StudyRow;
 
 use crate::harness::{lab, maximised, notice, options, shows, type_into};
 
@@ -67,7 +67,7 @@ fn zero_or_infinite_timings_are_refused_where_they_are_read() {
         ),
     )
     .unwrap();
-    let e = ltc_lab::study::read_csv(&zero).unwrap_err();
+    let e = ltc_lab::measure::study::read_csv(&zero).unwrap_err();
     assert!(
         e.to_string().contains("zero.csv line 2") && e.message.contains("ms_median"),
         "{e}"

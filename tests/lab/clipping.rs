@@ -3,7 +3,7 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use ltc_lab::app::clip_setup::ClipScene;
+use ltc_lab::app::clipping::setup::ClipScene;
 use ltc_lab::app::{LabApp, PanelId};
 use ltc_lab::ltc::ClipCase;
 
@@ -121,7 +121,7 @@ fn the_clipping_case_map_is_the_cpu_classification() {
     let Some(mut h) = lab((1000.0, 700.0), state) else {
         return;
     };
-    let (w, hgt) = ltc_lab::app::clip_rows::PICTURE;
+    let (w, hgt) = ltc_lab::app::clipping::rows::PICTURE;
     let setup = h.state().state().clipping.setup;
     let lut = &h.state().lab().tables().a().lut;
     let mut counts = Vec::new();
@@ -193,7 +193,7 @@ fn dragging_on_a_clipping_picture_draws_the_profiles_line() {
 /// measures again.
 #[test]
 fn the_clipping_panel_gives_the_error_by_elevation_at_the_labs_view() {
-    use ltc_lab::horizon::band_errors_at;
+    use ltc_lab::measure::horizon::band_errors_at;
     let Some(mut h) = lab((1200.0, 1100.0), maximised(PanelId::Clipping)) else {
         return;
     };
@@ -205,8 +205,8 @@ fn the_clipping_panel_gives_the_error_by_elevation_at_the_labs_view() {
             lut,
             &ltc_lab::render::LtcRules::default(),
             at,
-            ltc_lab::app::elevation::CASES,
-            ltc_lab::horizon::SEED,
+            ltc_lab::app::clipping::elevation::CASES,
+            ltc_lab::measure::horizon::SEED,
         )[0];
         let text = format!(
             "0–5°: {:.0}% (energy ×{:.2})",

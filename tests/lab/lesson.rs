@@ -7,7 +7,7 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use ltc_lab::app::lesson::Lesson;
-use ltc_lab::app::lesson_bar::LessonBar;
+use ltc_lab::app::lesson::bar::LessonBar;
 use ltc_lab::app::{LabApp, LabState, link};
 
 use crate::harness::{drop_file, lab, notice, press, settle, shows, slide, type_into};
@@ -134,8 +134,8 @@ fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
             // The speed step quotes the shipped studies' ratios, read from their files here;
             // the chart plots the H100's on request.
             Some(_) => {
-                for (_, path, text) in ltc_lab::app::studies::SHIPPED_STUDIES {
-                    let rows = ltc_lab::study::parse_csv(text, path).expect("a study");
+                for (_, path, text) in ltc_lab::app::chart::studies::SHIPPED_STUDIES {
+                    let rows = ltc_lab::measure::study::parse_csv(text, path).expect("a study");
                     let ms = |v: &str| {
                         let r = rows.iter().find(|r| r.variant == v && r.lights == 1000);
                         r.expect("1000 lights").ms_median

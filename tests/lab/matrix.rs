@@ -76,7 +76,7 @@ fn the_worst_cell_refitted_by_the_point_objective_shows_both_matrices_and_errors
     assert_eq!(r.cell, lab.nearest_cell());
     // Started from the stored cell and kept the best point by its own objective (a
     // quadrature of the same L1 integral the error estimates by strata): it may not end above
-    // the stored error by more than tests/refit.rs allows a refit (5% of the albedo).
+    // the stored error by more than tests/fit/refit.rs allows a refit (5% of the albedo).
     assert!(
         r.error <= r.stored_error + 0.05,
         "{} vs {}",

@@ -95,7 +95,7 @@ fn dragging_the_divider_moves_it() {
 
 /// Summed over many frames in paced chunks, the plane is the one-shot render to the bit: the
 /// same f32 operations in the same order, the sums kept exactly in between (as
-/// tests/gpu_render.rs shows for hand-picked chunks; here the lab's pacer picks them).
+/// tests/gpu/render.rs shows for hand-picked chunks; here the lab's pacer picks them).
 #[test]
 fn the_plane_summed_over_frames_is_the_one_shot_render() {
     if gpu_common::gpu().is_none() {
@@ -154,7 +154,7 @@ fn a_render_in_flight_never_stops_the_window() {
 }
 
 /// "A | B tables": side B shades the same LTC form with table B, as the CPU reference does
-/// with the two tables (the GPU–CPU tolerance of tests/gpu_parity.rs); a table loaded "as B"
+/// with the two tables (the GPU–CPU tolerance of tests/gpu/parity.rs); a table loaded "as B"
 /// becomes table B, is named in the matrix panel, and stays when table A changes.
 #[test]
 fn two_tables_compared_on_the_plane_and_in_the_matrix() {
@@ -281,7 +281,8 @@ fn a_pinned_pixel_opens_into_its_lights_and_one_shows_on_the_lobe() {
         "no exact {exact}"
     );
     // Sorted by the share of the error, largest first: click the top row's index.
-    let top = ltc_lab::app::pixel_table::sorted_rows(&t, h.state().state().plane.light_sort)[0];
+    let top =
+        ltc_lab::app::plane::pixel_table::sorted_rows(&t, h.state().state().plane.light_sort)[0];
     let (index, omega) = (top.index, top.omega);
     h.get_by_label(&index.to_string()).click();
     h.run_steps(2);
@@ -420,7 +421,7 @@ fn with_two_tables_the_pinned_pixel_compares_table_a_with_table_b_per_light() {
     // is the table's first row.
     let first_row = |h: &Harness<'static, LabApp>| {
         let sort = h.state().state().plane.light_sort;
-        ltc_lab::app::pixel_table::sorted_rows(&t, sort)[0].index
+        ltc_lab::app::plane::pixel_table::sorted_rows(&t, sort)[0].index
     };
     assert_eq!(
         first_row(&h),
@@ -533,7 +534,7 @@ fn a_new_light_is_seen_away_from_the_divider_and_the_other_lights() {
 /// has run a second (`Progress::time_left`, at the rate so far).
 #[test]
 fn a_render_in_flight_is_previewed_at_full_scale_and_says_so() {
-    use ltc_lab::app::shading::Progress;
+    use ltc_lab::app::plane::shading::Progress;
     use std::time::Duration;
     let p = Progress {
         done: 250,

@@ -10,11 +10,11 @@ use ltc_lab::app::lab::Selection;
 use ltc_lab::app::{LabApp, PanelId};
 use ltc_lab::colormap::short_number;
 use ltc_lab::cpu::sphere_case_map;
+use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::sphere::SphereCase;
 use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
 use ltc_lab::scene::MIN_RADIUS;
-use ltc_lab::sphere_light::SphereMethod;
 
 use crate::harness::{click_at, lab, maximised, notice, settle, shows, slide};
 

@@ -118,7 +118,7 @@ async fn gpu_check(ctx: GpuContext) -> String {
                     backend: "webgpu",
                     adapter: Some(report.adapter.clone()),
                     max_rel_diff: Some(report.max_rel_diff()),
-                    tolerance: Some(ltc_lab::parity::RADIANCE_TOLERANCE),
+                    tolerance: Some(ltc_lab::measure::parity::RADIANCE_TOLERANCE),
                     passed: Some(report.check().is_ok()),
                     first_frame_ms: first_frame_ms.map(f64::round),
                     total_ms: Some(browser::now_ms().round()),

@@ -1,7 +1,7 @@
 //! What the panels share, and the only doors it changes through. Each shared thing is a part
 //! of its own type (`parts`): a panel reads a part (`lab.material()`), and writes one only by
 //! naming its type in `Lab::edit` or `Lab::set`, which check what enters and stamp the part.
-//! Work made from parts keys on the parts it reads (`app::cache`). A panel's own settings are
+//! Work made from parts keys on the parts it reads (`app::work::cache`). A panel's own settings are
 //! its own.
 
 pub mod part;

@@ -8,13 +8,13 @@ use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::{Checked, Notes, notes};
 use crate::app::lab::refit_result::RefitResult;
+use crate::light::sphere::SphereMethod;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::render::{LtcRules, Method};
 use crate::scene::{
     Camera, Light, MAX_COORDINATE, MAX_INTENSITY, MAX_LIGHTS, MIN_RADIUS, Material, Plane, Scene,
 };
-use crate::sphere_light::SphereMethod;
 use crate::tables::{NamedTable, NamedTables, Source};
 
 /// The scene the parts make.

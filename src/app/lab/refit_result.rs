@@ -1,4 +1,4 @@
-//! A finished refit of one cell (`app::refit` runs it): the lab keeps it as a part, the
+//! A finished refit of one cell (`app::matrix::refit` runs it): the lab keeps it as a part, the
 //! matrix panel plots it and the lobe panel draws its lobe. Plain data, checked on entry.
 
 use serde::{Deserialize, Serialize};
@@ -6,30 +6,24 @@ use serde::{Deserialize, Serialize};
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{Channel, Lut};
 use crate::ltc::{Ltc, mat3_from_rows};
+use crate::named::named_enum;
 
-/// Which fitter a refit runs: each shipped table is the minimum of its own objective, so a
-/// cell is refitted with the one that made it.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Objective {
-    /// ltc_code's fit (`fit.rs`): Nelder–Mead on the |·|³ error from both distributions; the
-    /// classic table.
-    #[default]
-    LtcCode,
-    /// The point fit (`fit_point.rs`): the relative L1 error by the lobe-following
-    /// quadrature, the four entries and the specular scale free; the point table.
-    Point,
+named_enum! {
+    /// Which fitter a refit runs: each shipped table is the minimum of its own objective, so a
+    /// cell is refitted with the one that made it.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+    pub enum Objective {
+        /// ltc_code's fit (`fit.rs`): Nelder–Mead on the |·|³ error from both distributions; the
+        /// classic table.
+        #[default]
+        LtcCode = "ltc_code",
+        /// The point fit (`fit_point.rs`): the relative L1 error by the lobe-following
+        /// quadrature, the four entries and the specular scale free; the point table.
+        Point = "point L1",
+    }
 }
 
 impl Objective {
-    pub const BOTH: [Objective; 2] = [Objective::LtcCode, Objective::Point];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Objective::LtcCode => "ltc_code",
-            Objective::Point => "point L1",
-        }
-    }
-
     /// The objective that made `lut`, as far as its cells tell: the point fit is the only
     /// fitter here that frees the specular scale, and it moves it off 1 in some cells.
     pub fn of_lut(lut: &Lut) -> Self {

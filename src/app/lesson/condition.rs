@@ -5,11 +5,12 @@
 use std::fmt;
 use std::str::FromStr;
 
+use crate::app::chart::measure::Measurement;
 use crate::app::lab::Lab;
 use crate::app::lobe::LobeState;
-use crate::app::measure::Measurement;
 use crate::app::plane::PlaneState;
 use crate::ltc::{ClipCase, Normalization};
+use crate::named::named_enum;
 use crate::pixel::PixelTerms;
 use crate::render::View;
 
@@ -28,68 +29,30 @@ pub struct Now<'a> {
     pub measurements: u64,
 }
 
-/// What a condition reads, each a number (a switch is 1 on, 0 off).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Quantity {
-    Alpha,
-    ThetaO,
-    F0,
-    Morph,
-    Case1,
-    Case2,
-    PaperLiteral,
-    Lights,
-    LobeLight,
-    LightElevation,
-    Pinned,
-    PinnedCase1,
-    PinnedCase2,
-    Difference,
-    Divider,
-    Measured,
+named_enum! {
+    /// What a condition reads, each a number (a switch is 1 on, 0 off).
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub enum Quantity {
+        Alpha = "alpha",
+        ThetaO = "theta_o",
+        F0 = "f0",
+        Morph = "morph",
+        Case1 = "case1",
+        Case2 = "case2",
+        PaperLiteral = "paper_literal",
+        Lights = "lights",
+        LobeLight = "lobe_light",
+        LightElevation = "light_elevation",
+        Pinned = "pinned",
+        PinnedCase1 = "pinned_case1",
+        PinnedCase2 = "pinned_case2",
+        Difference = "difference",
+        Divider = "divider",
+        Measured = "measured",
+    }
 }
 
 impl Quantity {
-    pub const ALL: [Self; 16] = [
-        Self::Alpha,
-        Self::ThetaO,
-        Self::F0,
-        Self::Morph,
-        Self::Case1,
-        Self::Case2,
-        Self::PaperLiteral,
-        Self::Lights,
-        Self::LobeLight,
-        Self::LightElevation,
-        Self::Pinned,
-        Self::PinnedCase1,
-        Self::PinnedCase2,
-        Self::Difference,
-        Self::Divider,
-        Self::Measured,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Alpha => "alpha",
-            Self::ThetaO => "theta_o",
-            Self::F0 => "f0",
-            Self::Morph => "morph",
-            Self::Case1 => "case1",
-            Self::Case2 => "case2",
-            Self::PaperLiteral => "paper_literal",
-            Self::Lights => "lights",
-            Self::LobeLight => "lobe_light",
-            Self::LightElevation => "light_elevation",
-            Self::Pinned => "pinned",
-            Self::PinnedCase1 => "pinned_case1",
-            Self::PinnedCase2 => "pinned_case2",
-            Self::Difference => "difference",
-            Self::Divider => "divider",
-            Self::Measured => "measured",
-        }
-    }
-
     /// Its value now; `None` where it has none yet (no light on the lobe, no pixel pinned).
     pub fn value(self, now: &Now<'_>) -> Option<f64> {
         let lab = now.lab;
@@ -199,16 +162,13 @@ impl FromStr for Condition {
                     .min_by_key(|&(at, (t, _))| (at, std::cmp::Reverse(t.len())))
                     .ok_or_else(|| format!("'{part}' has no comparison (<, <=, >, >=, ==, !=)"))?;
                 let name = part[..at].trim();
-                let quantity = Quantity::ALL
-                    .into_iter()
-                    .find(|q| q.name() == name)
-                    .ok_or_else(|| {
-                        let names: Vec<&str> = Quantity::ALL.iter().map(|q| q.name()).collect();
-                        format!(
-                            "'{name}' is not a quantity the lab checks ({})",
-                            names.join(", ")
-                        )
-                    })?;
+                let quantity = Quantity::from_name(name).ok_or_else(|| {
+                    let names: Vec<&str> = Quantity::ALL.iter().map(|q| q.name()).collect();
+                    format!(
+                        "'{name}' is not a quantity the lab checks ({})",
+                        names.join(", ")
+                    )
+                })?;
                 let number = part[at + op_text.len()..].trim();
                 let value: f64 = number
                     .parse()

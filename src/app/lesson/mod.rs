@@ -4,6 +4,9 @@
 //! *share view* writes, and an optional *try this* whose condition the lab checks. A file is
 //! input from anyone: read field by field, and refused naming the step and the field.
 
+pub mod bar;
+pub mod window;
+
 pub mod condition;
 pub mod readings;
 
@@ -25,6 +28,10 @@ pub use crate::app::files::LESSON_EXTENSION as EXTENSION;
 
 /// The most steps a lesson has: a lecture is a dozen; more is not a lesson a person wrote.
 const MAX_STEPS: usize = 200;
+
+/// The most bytes of a lesson file this program reads (`files::read_text`): `MAX_STEPS` steps
+/// of `MAX_TEXT` characters (up to 4 bytes each) with their views fit in 4 MiB.
+pub const MAX_FILE_BYTES: u64 = 4 << 20;
 
 /// The longest text a field holds, in characters (a step's text is 2–6 sentences; a view of
 /// moved lights is longer, up to the link's own limit, `link::MAX_LEN`).
@@ -159,10 +166,11 @@ impl Lesson {
         if let Some(lesson) = Self::shipped(arg) {
             return Ok(lesson);
         }
-        let text = crate::files::read_text(std::path::Path::new(arg)).map_err(|e| {
-            let names: Vec<&str> = SHIPPED.iter().map(|(n, _)| *n).collect();
-            format!("not a shipped lesson ({}), and {e}", names.join(", "))
-        })?;
+        let text =
+            crate::files::read_text(std::path::Path::new(arg), MAX_FILE_BYTES).map_err(|e| {
+                let names: Vec<&str> = SHIPPED.iter().map(|(n, _)| *n).collect();
+                format!("not a shipped lesson ({}), and {e}", names.join(", "))
+            })?;
         Self::from_toml(&text, arg)
     }
 }

@@ -5,8 +5,8 @@
 use glam::DVec3;
 
 use crate::app::chart::fps_ratios;
+use crate::app::chart::studies::{SHIPPED_STUDIES, shipped_study, study_device};
 use crate::app::lesson::Now;
-use crate::app::studies::{SHIPPED_STUDIES, shipped_study, study_device};
 use crate::gpu::work::Work;
 use crate::ltc::fit::pointwise_error;
 use crate::ltc::lobe::Lobe;

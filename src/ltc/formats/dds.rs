@@ -8,25 +8,19 @@ use half::f16;
 
 use crate::error::{Error, Result};
 use crate::ltc::lut::check_size;
+use crate::named::named_enum;
 
-/// Texel precision of a DDS texture.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Precision {
-    /// RGBA16F: what ltc_code writes.
-    F16,
-    F32,
+named_enum! {
+    /// Texel precision of a DDS texture.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub enum Precision {
+        /// RGBA16F: what ltc_code writes.
+        F16 = "f16",
+        F32 = "f32",
+    }
 }
 
 impl Precision {
-    pub const ALL: [Self; 2] = [Self::F16, Self::F32];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::F16 => "f16",
-            Self::F32 => "f32",
-        }
-    }
-
     fn texel_bytes(self) -> usize {
         match self {
             Self::F16 => 8,

@@ -14,6 +14,7 @@ use std::path::{Path, PathBuf};
 use crate::error::{Error, Result};
 use crate::files::Outputs;
 use crate::ltc::lut::{Channel, Lut, Table};
+use crate::named::named_enum;
 use packing::Packed;
 
 /// A table read from a file, with what the file could not hold.
@@ -84,7 +85,7 @@ struct Disk;
 
 impl Source for Disk {
     fn bytes(&self, path: &Path) -> Result<Vec<u8>> {
-        std::fs::read(path).map_err(|e| Error::io(path.display().to_string(), "read", &e))
+        crate::files::read_bytes(path, crate::ltc::lut::MAX_FILE_BYTES)
     }
 
     fn is_dir(&self, path: &Path) -> bool {
@@ -300,27 +301,18 @@ impl Header {
     }
 }
 
-/// The formats `lut --export` writes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Export {
-    LtcCodeJs,
-    LtcCodeDds,
-    C,
-    Wgsl,
-}
-
-impl Export {
-    pub const ALL: [Self; 4] = [Self::LtcCodeJs, Self::LtcCodeDds, Self::C, Self::Wgsl];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::LtcCodeJs => "ltc-code-js",
-            Self::LtcCodeDds => "ltc-code-dds",
-            Self::C => "c",
-            Self::Wgsl => "wgsl",
-        }
+named_enum! {
+    /// The formats `lut --export` writes.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub enum Export {
+        LtcCodeJs = "ltc-code-js",
+        LtcCodeDds = "ltc-code-dds",
+        C = "c",
+        Wgsl = "wgsl",
     }
 }
+
+impl Export {}
 
 /// Writes `lut` as `format` to `out` (for DDS: a directory, made if missing, receiving
 /// `ltc_1.dds`, `ltc_2.dds` and the header as `ltc_dds.txt`); all files or none. Returns the

@@ -2,66 +2,31 @@
 //! lobe it belongs to, and its place in a cell is its discriminant.
 
 use crate::ltc::lobe::Lobe;
+use crate::named::named_enum;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Channel {
-    SpecM00,
-    SpecM02,
-    SpecM20,
-    SpecM22,
-    SpecNorm,
-    SpecFresnel,
-    SpecErr,
-    DiffM00,
-    DiffM02,
-    DiffM20,
-    DiffM22,
-    DiffNorm,
-    DiffErr,
-    /// The fitted factor on the specular magnitude (`Ltc::scale`): 1 in the classic table.
-    SpecScale,
+named_enum! {
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+    pub enum Channel {
+        SpecM00 = "spec.m00",
+        SpecM02 = "spec.m02",
+        SpecM20 = "spec.m20",
+        SpecM22 = "spec.m22",
+        SpecNorm = "spec.norm",
+        SpecFresnel = "spec.fresnel",
+        SpecErr = "spec.err",
+        DiffM00 = "diff.m00",
+        DiffM02 = "diff.m02",
+        DiffM20 = "diff.m20",
+        DiffM22 = "diff.m22",
+        DiffNorm = "diff.norm",
+        DiffErr = "diff.err",
+        /// The fitted factor on the specular magnitude (`Ltc::scale`): 1 in the classic table.
+        SpecScale = "spec.scale",
+    }
 }
 
 impl Channel {
-    pub const COUNT: usize = 14;
-
-    /// Every channel in a cell's order (`Channel as usize`; `tests/lut.rs` checks it).
-    pub const ALL: [Self; Self::COUNT] = [
-        Self::SpecM00,
-        Self::SpecM02,
-        Self::SpecM20,
-        Self::SpecM22,
-        Self::SpecNorm,
-        Self::SpecFresnel,
-        Self::SpecErr,
-        Self::DiffM00,
-        Self::DiffM02,
-        Self::DiffM20,
-        Self::DiffM22,
-        Self::DiffNorm,
-        Self::DiffErr,
-        Self::SpecScale,
-    ];
-
-    /// The channel's name in a table file, `lut --dump`'s header and the lab.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::SpecM00 => "spec.m00",
-            Self::SpecM02 => "spec.m02",
-            Self::SpecM20 => "spec.m20",
-            Self::SpecM22 => "spec.m22",
-            Self::SpecNorm => "spec.norm",
-            Self::SpecFresnel => "spec.fresnel",
-            Self::SpecErr => "spec.err",
-            Self::DiffM00 => "diff.m00",
-            Self::DiffM02 => "diff.m02",
-            Self::DiffM20 => "diff.m20",
-            Self::DiffM22 => "diff.m22",
-            Self::DiffNorm => "diff.norm",
-            Self::DiffErr => "diff.err",
-            Self::SpecScale => "spec.scale",
-        }
-    }
+    pub const COUNT: usize = Self::ALL.len();
 
     /// The lobe whose fit the channel holds.
     pub fn lobe(self) -> Lobe {

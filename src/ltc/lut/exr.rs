@@ -65,7 +65,7 @@ impl Lut {
     /// Reads and validates a LUT file; errors name the file.
     pub fn read(path: &Path) -> Result<Lut> {
         let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|e| Error::io(&name, "read", &e))?;
+        let bytes = crate::files::read_bytes(path, super::MAX_FILE_BYTES)?;
         Lut::from_exr_bytes(&bytes, &name)
     }
 

@@ -13,10 +13,16 @@ use std::sync::OnceLock;
 pub use axes::{ALPHA_MIN, THETA_MAX, axes, cell_alpha, cell_theta};
 pub use channel::Channel;
 pub use exr::{MAX_SIZE, check_size};
+
+/// The most bytes of a table file this program reads (`files::read_bytes`; a DDS pair's
+/// each): the shipped 64² tables are ~100 kB, a 2048² table of 14 f32 channels uncompressed
+/// 235 MB. A `MAX_SIZE` table beyond that must come compressed.
+pub const MAX_FILE_BYTES: u64 = 256 << 20;
 pub use sample::{LutSample, bilinear_taps};
 pub use validate::ChannelLimits;
 
 use crate::ltc::{Ltc, mat3_rows};
+use crate::named::named_enum;
 
 /// The stored form of docs/design.md §2: `M⁻¹` divided by its middle element, as
 /// `[m00, m02, m20, m22]` of `[[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]`.
@@ -39,36 +45,27 @@ pub const EMBEDDED_ARRIVAL_EXR: &[u8] = include_bytes!("../../../luts/ltc_arriva
 /// `ltc-lab fit --objective constrained`).
 pub const EMBEDDED_CONSTRAINED_EXR: &[u8] = include_bytes!("../../../luts/ltc_constrained.exr");
 
-/// Which shipped table (and the objective that fitted it).
-#[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
-)]
-pub enum Table {
-    /// ltc_code's objective (`luts/ltc.exr`).
-    #[default]
-    Classic,
-    /// The point-light objective (`luts/ltc_point.exr`).
-    Point,
-    /// The point-light objective weighted by where lights above a plane arrive from, the
-    /// horizon included (`luts/ltc_arrival.exr`; docs/design.md §4.7).
-    Arrival,
-    /// The point-light objective with `m20 = 0`, so that `M⁻¹` never carries a direction
-    /// across the horizon (`luts/ltc_constrained.exr`; docs/design.md §4.7).
-    Constrained,
+named_enum! {
+    /// Which shipped table (and the objective that fitted it).
+    #[derive(
+        Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+    )]
+    pub enum Table {
+        /// ltc_code's objective (`luts/ltc.exr`).
+        #[default]
+        Classic = "classic",
+        /// The point-light objective (`luts/ltc_point.exr`).
+        Point = "point",
+        /// The point-light objective weighted by where lights above a plane arrive from, the
+        /// horizon included (`luts/ltc_arrival.exr`; docs/design.md §4.7).
+        Arrival = "arrival",
+        /// The point-light objective with `m20 = 0`, so that `M⁻¹` never carries a direction
+        /// across the horizon (`luts/ltc_constrained.exr`; docs/design.md §4.7).
+        Constrained = "constrained",
+    }
 }
 
 impl Table {
-    pub const ALL: [Self; 4] = [Self::Classic, Self::Point, Self::Arrival, Self::Constrained];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Classic => "classic",
-            Self::Point => "point",
-            Self::Arrival => "arrival",
-            Self::Constrained => "constrained",
-        }
-    }
-
     /// The shipped file's path in the repository.
     pub fn path(self) -> &'static str {
         match self {

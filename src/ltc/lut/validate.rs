@@ -99,7 +99,7 @@ impl Lut {
                     ));
                 }
             }
-            for lobe in Lobe::BOTH {
+            for lobe in Lobe::ALL {
                 let [m00, m02, m20, m22] = Channel::entries(lobe).map(|c| f64::from(cell.get(c)));
                 let det = m00 * m22 - m02 * m20;
                 if det <= 0.0 {

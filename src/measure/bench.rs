@@ -1,0 +1,477 @@
+//! The paper's Table 1 on this machine's GPU: GPU time per frame of every method at several
+//! light counts, culled and not, measured in one run, with the ratios between the LTC and
+//! BRDF forms and the fraction of lights in range of a pixel (the best culling can do).
+
+use glam::DVec3;
+
+use crate::error::Result;
+use crate::gpu::GpuContext;
+use crate::gpu::plane::ShaderChecks;
+use crate::gpu::renderer::PlaneRenderer;
+use crate::gpu::timing::FrameTimes;
+use crate::light::sphere::SphereMethod;
+use crate::ltc::lut::Lut;
+use crate::ltc::remedy::Horizon;
+use crate::render::{LtcRules, Method, RenderSettings};
+use crate::scene::{RandomLights, Scene, generate_lights, preset};
+
+/// The paper's Table 1 (GTX 1060, its resolution unstated): fps at 100, 500, 1000, 5000
+/// lights.
+pub const PAPER_LIGHTS: [usize; 4] = [100, 500, 1000, 5000];
+pub const PAPER_BRDF_FPS: [f64; 4] = [118.0, 23.0, 12.0, 2.0];
+pub const PAPER_LTC_FPS: [f64; 4] = [285.0, 56.0, 28.0, 5.0];
+
+/// The range of the benchmark's lights unless `--range` says otherwise: paper-100's.
+pub const DEFAULT_RANGE: f64 = crate::scene::PAPER_RANGE;
+
+/// One measured cell of the table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BenchRow {
+    pub method: Method,
+    /// How every light, a sphere of `radius`, was shaded (`None`: as points, by `method`).
+    pub sphere: Option<SphereMethod>,
+    /// The lights' radius (0: points).
+    pub radius: f64,
+    /// The horizon remedy the LTC methods shaded with (eq30 for the BRDF forms).
+    pub horizon: Horizon,
+    pub lights: usize,
+    pub width: usize,
+    pub height: usize,
+    pub frames: usize,
+    pub cull: bool,
+    /// Every light's range (`None`: infinite).
+    pub range: Option<f64>,
+    /// The mean fraction of lights within range of a pixel: the least any culling must sum.
+    pub in_range_fraction: f64,
+    /// Per frame: binning (culled) plus shading.
+    pub ms_median: f64,
+    pub ms_min: f64,
+    pub ms_max: f64,
+    /// The binning's share of the median frame (culled frames with timestamps).
+    pub bin_ms_median: Option<f64>,
+}
+
+impl BenchRow {
+    pub fn fps(&self) -> f64 {
+        1e3 / self.ms_median
+    }
+
+    /// Light-pixel evaluations per second, in billions, counting every light at every pixel
+    /// (as unculled shading does them), so that culled and unculled rates compare.
+    pub fn glightpx_per_s(&self) -> f64 {
+        (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
+    }
+
+    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,sphere,radius";
+
+    pub fn csv(&self) -> String {
+        format!(
+            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3},{},{}",
+            self.method.name(),
+            self.horizon.name(),
+            self.lights,
+            self.width,
+            self.height,
+            self.frames,
+            if self.cull { "on" } else { "off" },
+            range_text(self.range),
+            self.in_range_fraction,
+            self.ms_median,
+            self.ms_min,
+            self.ms_max,
+            self.bin_ms_median
+                .map_or(String::new(), |b| format!("{b:.6}")),
+            self.fps(),
+            self.glightpx_per_s(),
+            self.sphere.map_or("point", SphereMethod::name),
+            self.radius
+        )
+    }
+
+    /// The method as the table names it: the sphere method and radius, or the point method
+    /// with its remedy.
+    pub fn label(&self) -> String {
+        match (self.sphere, self.horizon) {
+            (Some(m), _) => format!("{} (r = {})", m.name(), self.radius),
+            (None, Horizon::Eq30) => self.method.name().to_string(),
+            (None, h) => format!("{} ({})", self.method.name(), h.name()),
+        }
+    }
+}
+
+/// A range as the CSV and the table write it.
+pub fn range_text(range: Option<f64>) -> String {
+    range.map_or("inf".into(), |r| r.to_string())
+}
+
+/// The benchmark scene: paper-100's material (α = 0.27) and light distribution, seen from
+/// above a plane large enough that every pixel shades it, so that light-pixels = lights ×
+/// width × height; every light of range `range`.
+pub fn bench_scene(lights: usize, range: Option<f64>) -> Scene {
+    bench_scene_at(lights, range, PAPER_HEIGHTS)
+}
+
+/// paper-100's light heights above the plane.
+pub const PAPER_HEIGHTS: [f64; 2] = [0.05, 0.6];
+
+/// `bench_scene` with the lights' heights drawn from `height` instead of paper-100's.
+pub fn bench_scene_at(lights: usize, range: Option<f64>, height: [f64; 2]) -> Scene {
+    let mut scene = preset("paper-100");
+    let spread = scene.plane.half_size;
+    scene.plane.half_size = 1e3;
+    scene.camera.position = [0.0, -2.0, 2.5];
+    scene.camera.target = [0.0, 0.0, 0.0];
+    scene.lights = generate_lights(
+        &RandomLights {
+            count: lights,
+            seed: 27,
+            height,
+            intensity: [0.02, 0.08],
+            range,
+            radius: 0.0,
+        },
+        spread,
+    );
+    scene
+}
+
+/// Pixels between the samples of `in_range_fraction`, each way: 1/64 of a 1920×1080 frame
+/// (32 400 pixels) already pins the mean to ~0.5% of itself.
+const FRACTION_STRIDE: usize = 8;
+
+/// The mean over the plane's pixels of the fraction of lights whose range reaches them (an
+/// infinite range reaches every pixel), on every `FRACTION_STRIDE`-th pixel each way.
+pub fn in_range_fraction(scene: &Scene, width: usize, height: usize) -> f64 {
+    if scene.lights.is_empty() {
+        return 0.0;
+    }
+    let (mut sum, mut count) = (0.0, 0usize);
+    for y in (FRACTION_STRIDE / 2..height).step_by(FRACTION_STRIDE) {
+        for x in (FRACTION_STRIDE / 2..width).step_by(FRACTION_STRIDE) {
+            let Some(p) = scene.surface_point(x, y, width, height) else {
+                continue;
+            };
+            let reached = scene
+                .lights
+                .iter()
+                .filter(|l| {
+                    l.range
+                        .is_none_or(|r| DVec3::from(l.position).distance(p.position) < r)
+                })
+                .count();
+            sum += reached as f64 / scene.lights.len() as f64;
+            count += 1;
+        }
+    }
+    if count > 0 { sum / count as f64 } else { 0.0 }
+}
+
+/// Median of a non-empty sample.
+fn median(xs: &mut [f64]) -> f64 {
+    xs.sort_by(f64::total_cmp);
+    let n = xs.len();
+    if n % 2 == 1 {
+        xs[n / 2]
+    } else {
+        0.5 * (xs[n / 2 - 1] + xs[n / 2])
+    }
+}
+
+/// Frames shaded before timing starts (pipeline compilation, caches, clocks).
+pub const WARM_UP_FRAMES: usize = 5;
+
+/// Every light count and the size against the adapter's limits: nothing is measured for a
+/// run that cannot finish (`study` checks the same).
+pub fn check(
+    ctx: &GpuContext,
+    light_counts: &[usize],
+    (width, height): (usize, usize),
+) -> crate::gpu::limits::Result<()> {
+    for &n in light_counts {
+        PlaneRenderer::check_light_count(ctx, n)?;
+    }
+    crate::gpu::target::check_size(ctx, width, height)
+}
+
+/// What `run` measures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BenchSettings {
+    pub lights: Vec<usize>,
+    pub size: (usize, usize),
+    pub frames: usize,
+    pub checks: ShaderChecks,
+    /// Culling off, on, or both.
+    pub culls: Vec<bool>,
+    pub range: Option<f64>,
+    /// The horizon remedies each LTC method is measured with (the f16 forms: eq30 only).
+    pub horizons: Vec<Horizon>,
+    /// Also every light as a sphere of this radius, by each sphere method.
+    pub sphere_radius: Option<f64>,
+}
+
+/// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
+pub fn methods(ctx: &GpuContext) -> Vec<Method> {
+    let f16 = if ctx.has_f16() { &Method::F16[..] } else { &[] };
+    Method::F32.iter().chain(f16).copied().collect()
+}
+
+/// The methods and remedies of one light count and culling: each BRDF form once with eq30,
+/// each f32 LTC form with eq30 (the reference every remedy is divided by) and then each
+/// other remedy, the f16 forms with eq30 alone.
+pub fn runs(ctx: &GpuContext, horizons: &[Horizon]) -> Vec<(Method, Horizon)> {
+    let mut runs = Vec::new();
+    for m in methods(ctx) {
+        runs.push((m, Horizon::Eq30));
+        if m.is_ltc() && !m.needs_f16() {
+            for &h in horizons {
+                if !runs.contains(&(m, h)) {
+                    runs.push((m, h));
+                }
+            }
+        }
+    }
+    runs
+}
+
+/// What one timed run shades: a point method with its remedy, and the sphere method of
+/// lights with a size (`None`: points).
+type Run = (Method, Horizon, Option<SphereMethod>);
+
+/// `runs`, then each sphere method where the lights have a size (on ltc-fast's sums, the
+/// form an engine ships; a sized light's cost does not depend on the point method).
+fn all_runs(ctx: &GpuContext, s: &BenchSettings) -> Vec<Run> {
+    let points = runs(ctx, &s.horizons)
+        .into_iter()
+        .map(|(m, h)| (m, h, None));
+    let spheres = s
+        .sphere_radius
+        .iter()
+        .flat_map(|_| SphereMethod::ALL.map(|sm| (Method::LtcFast, Horizon::Eq30, Some(sm))));
+    points.chain(spheres).collect()
+}
+
+/// Measures every method (and remedy) at every light count and culling: `frames` timed
+/// frames after warm-up each.
+pub fn run(
+    ctx: &GpuContext,
+    lut: &Lut,
+    s: &BenchSettings,
+    mut progress: impl FnMut(&BenchRow),
+) -> Result<Vec<BenchRow>> {
+    check(ctx, &s.lights, s.size)?;
+    let (width, height) = s.size;
+    let mut renderer = PlaneRenderer::new(ctx, lut, s.checks)?;
+    let mut rows = Vec::new();
+    let mut kept = None;
+    for &lights in &s.lights {
+        let points = bench_scene(lights, s.range);
+        let fraction = in_range_fraction(&points, width, height);
+        let mut spheres = points.clone();
+        for l in &mut spheres.lights {
+            l.radius = s.sphere_radius.unwrap_or(0.0);
+        }
+        for &cull in &s.culls {
+            for (method, horizon, sphere) in all_runs(ctx, s) {
+                let scene = if sphere.is_some() { &spheres } else { &points };
+                let table = horizon.table().map_or(lut, |t| Lut::shipped(t));
+                renderer.set_tables(ctx, table, None)?;
+                let settings = RenderSettings {
+                    cull,
+                    rules: LtcRules {
+                        horizon: horizon.rule(),
+                        ..LtcRules::default()
+                    },
+                    sphere_a: sphere.unwrap_or(SphereMethod::LtcPoint),
+                    ..RenderSettings::single(width, height, method)
+                };
+                let mut render = renderer.begin(ctx, scene, &settings, kept.take())?;
+                for _ in 0..WARM_UP_FRAMES {
+                    render.run(ctx);
+                }
+                let times: Vec<FrameTimes> = (0..s.frames).map(|_| render.run(ctx)).collect();
+                kept = Some(render.into_kept());
+                let mut ms: Vec<f64> = times.iter().map(FrameTimes::total_ms).collect();
+                let mut bins: Vec<f64> = times.iter().filter_map(|t| t.bin_ms).collect();
+                let row = BenchRow {
+                    method,
+                    sphere,
+                    radius: if sphere.is_some() {
+                        s.sphere_radius.unwrap_or(0.0)
+                    } else {
+                        0.0
+                    },
+                    horizon,
+                    lights,
+                    width,
+                    height,
+                    frames: s.frames,
+                    cull,
+                    range: s.range,
+                    in_range_fraction: fraction,
+                    ms_min: ms.iter().copied().fold(f64::INFINITY, f64::min),
+                    ms_max: ms.iter().copied().fold(0.0, f64::max),
+                    ms_median: median(&mut ms),
+                    bin_ms_median: (!bins.is_empty()).then(|| median(&mut bins)),
+                };
+                progress(&row);
+                rows.push(row);
+            }
+        }
+    }
+    Ok(rows)
+}
+
+/// The table in Markdown: one row per method, light count and culling, then the speed-ups of
+/// each LTC form over each BRDF form and of culling, and the paper's figures for reference.
+pub fn markdown(rows: &[BenchRow], device: &str) -> String {
+    let mut out = format!(
+        "GPU: {device}\n\n| method | lights | size | cull | range | in range | ms (median) | ms (min–max) | bin ms | fps | G light-px/s |\n|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n"
+    );
+    for r in rows {
+        let method = r.label();
+        out.push_str(&format!(
+            "| {method} | {} | {}×{} | {} | {} | {:.1}% | {:.3} | {:.3}–{:.3} | {} | {:.1} | {:.2} |\n",
+            r.lights,
+            r.width,
+            r.height,
+            if r.cull { "on" } else { "off" },
+            range_text(r.range),
+            100.0 * r.in_range_fraction,
+            r.ms_median,
+            r.ms_min,
+            r.ms_max,
+            r.bin_ms_median.map_or("–".into(), |b| format!("{b:.3}")),
+            r.fps(),
+            r.glightpx_per_s()
+        ));
+    }
+    let ms_with = |n: usize, cull: bool, m: Method, h: Horizon| {
+        rows.iter()
+            .find(|r| {
+                r.lights == n
+                    && r.cull == cull
+                    && r.method == m
+                    && r.horizon == h
+                    && r.sphere.is_none()
+            })
+            .map(|r| r.ms_median)
+    };
+    let ms = |n: usize, cull: bool, m: Method| ms_with(n, cull, m, Horizon::Eq30);
+    let ratio = |slow: Option<f64>, fast: Option<f64>| match (slow, fast) {
+        (Some(s), Some(f)) => format!("{:.2}×", s / f),
+        _ => "–".into(),
+    };
+    let mut keys: Vec<(usize, bool)> = rows.iter().map(|r| (r.lights, r.cull)).collect();
+    keys.dedup();
+    out.push_str("\nSpeed-up (ms of the slower / ms of the faster, same run):\n\n| lights | cull | ltc / brdf | ltc-fast / brdf | ltc / brdf-fast | ltc-fast / brdf-fast | ltc-f16-pairs / ltc-fast |\n|---:|---|---:|---:|---:|---:|---:|\n");
+    for &(n, cull) in &keys {
+        let m = |method| ms(n, cull, method);
+        out.push_str(&format!(
+            "| {n} | {} | {} | {} | {} | {} | {} |\n",
+            if cull { "on" } else { "off" },
+            ratio(m(Method::Brdf), m(Method::Ltc)),
+            ratio(m(Method::Brdf), m(Method::LtcFast)),
+            ratio(m(Method::BrdfFast), m(Method::Ltc)),
+            ratio(m(Method::BrdfFast), m(Method::LtcFast)),
+            ratio(m(Method::LtcFast), m(Method::LtcF16Pairs)),
+        ));
+    }
+    let counts: Vec<usize> = keys.iter().map(|k| k.0).collect();
+    if rows.iter().any(|r| r.cull) && rows.iter().any(|r| !r.cull) {
+        out.push_str("\nCulling (unculled ms / culled ms, same run):\n\n| lights | brdf | ltc-fast | ltc-f16-pairs |\n|---:|---:|---:|---:|\n");
+        let mut seen = counts.clone();
+        seen.dedup();
+        for n in seen {
+            let r = |m| ratio(ms(n, false, m), ms(n, true, m));
+            out.push_str(&format!(
+                "| {n} | {} | {} | {} |\n",
+                r(Method::Brdf),
+                r(Method::LtcFast),
+                r(Method::LtcF16Pairs)
+            ));
+        }
+    }
+    let mut remedies: Vec<Horizon> = Vec::new();
+    for r in rows.iter().filter(|r| r.horizon != Horizon::Eq30) {
+        if !remedies.contains(&r.horizon) {
+            remedies.push(r.horizon);
+        }
+    }
+    if !remedies.is_empty() {
+        let names: Vec<&str> = remedies.iter().map(|h| h.name()).collect();
+        out.push_str(&format!(
+            "\nHorizon remedies (ms with the remedy / ms with eq30, same run):\n\n| lights | cull | method | {} |\n|---:|---|---|{}\n",
+            names.join(" | "),
+            "---:|".repeat(names.len())
+        ));
+        for &(n, cull) in &keys {
+            for m in [Method::Ltc, Method::LtcFast] {
+                let cells: Vec<String> = remedies
+                    .iter()
+                    .map(|&h| ratio(ms_with(n, cull, m, h), ms(n, cull, m)))
+                    .collect();
+                out.push_str(&format!(
+                    "| {n} | {} | {} | {} |\n",
+                    if cull { "on" } else { "off" },
+                    m.name(),
+                    cells.join(" | ")
+                ));
+            }
+        }
+    }
+    if let Some(r) = rows.iter().find(|r| r.sphere.is_some()) {
+        out.push_str(&spheres_markdown(rows, &keys, r.radius, &ms));
+    }
+    out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");
+    for k in 0..PAPER_LIGHTS.len() {
+        out.push_str(&format!(
+            "| {} | {} | {} | {:.2}× |\n",
+            PAPER_LIGHTS[k],
+            PAPER_BRDF_FPS[k],
+            PAPER_LTC_FPS[k],
+            PAPER_LTC_FPS[k] / PAPER_BRDF_FPS[k]
+        ));
+    }
+    out
+}
+
+/// Lights with a size: each sphere method's ms per frame and its cost over the point
+/// formula's (ltc and ltc-fast on points, same run, same lights).
+fn spheres_markdown(
+    rows: &[BenchRow],
+    keys: &[(usize, bool)],
+    radius: f64,
+    point_ms: &dyn Fn(usize, bool, Method) -> Option<f64>,
+) -> String {
+    let names: Vec<&str> = SphereMethod::ALL.iter().map(|m| m.name()).collect();
+    let mut out = format!(
+        "\nLights with a size (every light a sphere of radius {radius}; ms, and × the point formula's ltc-fast / ltc, same run):\n\n| lights | cull | {} |\n|---:|---|{}\n",
+        names.join(" | "),
+        "---:|".repeat(names.len())
+    );
+    for &(n, cull) in keys {
+        let sphere_ms = |sm| {
+            rows.iter()
+                .find(|r| r.lights == n && r.cull == cull && r.sphere == Some(sm))
+                .map(|r| r.ms_median)
+        };
+        let point = |m| point_ms(n, cull, m);
+        let (fast, paper) = (point(Method::LtcFast), point(Method::Ltc));
+        let cells: Vec<String> = SphereMethod::ALL
+            .iter()
+            .map(|&sm| match (sphere_ms(sm), fast, paper) {
+                (Some(ms), Some(f), Some(p)) => {
+                    format!("{ms:.3} ({:.2}× / {:.2}×)", ms / f, ms / p)
+                }
+                (Some(ms), _, _) => format!("{ms:.3}"),
+                _ => "–".into(),
+            })
+            .collect();
+        out.push_str(&format!(
+            "| {n} | {} | {} |\n",
+            if cull { "on" } else { "off" },
+            cells.join(" | ")
+        ));
+    }
+    out
+}

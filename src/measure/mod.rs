@@ -1,0 +1,12 @@
+//! The measures: everything that says how wrong or how fast a method is, on the same terms
+//! everywhere (docs/design.md §4) — the `eval` cases, the parity of two renders, Table 1's
+//! benchmark, the study of speed against accuracy, the error atlas, the horizon's study, and
+//! the sphere lights' errors by size and elevation.
+
+pub mod atlas;
+pub mod bench;
+pub mod eval;
+pub mod horizon;
+pub mod parity;
+pub mod sphere_error;
+pub mod study;

@@ -1,0 +1,390 @@
+//! Speed against accuracy (docs/design.md §4): every shading variant timed on the GPU in one run and
+//! compared with the exact BRDF image of the same scene, for the paper-100 set-up at several
+//! light counts and roughnesses.
+
+use crate::error::{Error, Result};
+use crate::gpu::GpuContext;
+use crate::gpu::plane::ShaderChecks;
+use crate::gpu::renderer::PlaneRenderer;
+use crate::ltc::fit::{FitSettings, fit_table};
+use crate::ltc::lut::{Lut, Table};
+use crate::ltc::remedy::Horizon;
+use crate::ltc::{Clipping, Normalization};
+use crate::metrics::image_error;
+use crate::render::{LtcRules, LutFilter, Method, RenderSettings};
+use crate::scene::Scene;
+
+/// Which table a variant shades with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LutChoice {
+    /// The shipped 64×64 table.
+    Shipped,
+    /// A table of this size fitted by `ltc::fit` at the study's start.
+    Fitted(usize),
+    /// The shipped point-light fit (`luts/ltc_point.exr`).
+    Point,
+    /// The horizon remedies' fits (`luts/ltc_arrival.exr`, `luts/ltc_constrained.exr`).
+    Arrival,
+    Constrained,
+}
+
+/// One shading variant of the study.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Variant {
+    pub name: &'static str,
+    pub method: Method,
+    pub normalization: Normalization,
+    pub filter: LutFilter,
+    pub lut: LutChoice,
+    /// The horizon remedy (eq30 but in the remedies' variants).
+    pub horizon: Horizon,
+}
+
+/// The variants the study compares (docs/design.md §4.6), and `ltc-fast` with each horizon remedy
+/// (docs/design.md §4.7); `brdf` is the reference (error 0).
+pub fn variants() -> Vec<Variant> {
+    let v = |name, method, normalization, filter, lut| Variant {
+        name,
+        method,
+        normalization,
+        filter,
+        lut,
+        horizon: Horizon::Eq30,
+    };
+    let remedy = |name, lut, horizon| Variant {
+        horizon,
+        ..v(
+            name,
+            Method::LtcFast,
+            Normalization::Corrected,
+            LutFilter::Bilinear,
+            lut,
+        )
+    };
+    use LutChoice::*;
+    use LutFilter::*;
+    use Method::*;
+    use Normalization::*;
+    vec![
+        v("brdf", Brdf, Corrected, Bilinear, Shipped),
+        v("brdf-fast", BrdfFast, Corrected, Bilinear, Shipped),
+        v("ltc", Ltc, Corrected, Bilinear, Shipped),
+        v("ltc-fast", LtcFast, Corrected, Bilinear, Shipped),
+        v("ltc-paper", Ltc, PaperLiteral, Bilinear, Shipped),
+        v("ltc-nearest", Ltc, Corrected, Nearest, Shipped),
+        v("ltc-lut16", Ltc, Corrected, Bilinear, Fitted(16)),
+        v("ltc-lut32", Ltc, Corrected, Bilinear, Fitted(32)),
+        v("ltc-point", Ltc, Corrected, Bilinear, Point),
+        v("ltc-fast-point", LtcFast, Corrected, Bilinear, Point),
+        // Where the adapter has SHADER_F16 (`run` drops them elsewhere).
+        v("ltc-f16", LtcF16, Corrected, Bilinear, Shipped),
+        v("ltc-f16-pairs", LtcF16Pairs, Corrected, Bilinear, Shipped),
+        remedy("ltc-fast-arrival-fit", Arrival, Horizon::ArrivalFit),
+        remedy(
+            "ltc-fast-constrained-fit",
+            Constrained,
+            Horizon::ConstrainedFit,
+        ),
+        remedy("ltc-fast-nl-fit", Shipped, Horizon::NlFit),
+        remedy("ltc-fast-exact-band", Shipped, Horizon::ExactBand),
+    ]
+}
+
+/// The variant named `name`.
+pub fn variant(name: &str) -> Option<Variant> {
+    variants().into_iter().find(|v| v.name == name)
+}
+
+/// One row of `study.csv`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StudyRow {
+    pub variant: String,
+    pub alpha: f64,
+    pub lights: usize,
+    pub width: usize,
+    pub height: usize,
+    pub cull: bool,
+    /// Every light's range (`None`: infinite).
+    pub range: Option<f64>,
+    pub ms_median: f64,
+    pub rel_rmse: f64,
+    pub max_rel_err: f64,
+    pub p99_rel_err: f64,
+}
+
+impl StudyRow {
+    pub const CSV_HEADER: &'static str = "variant,alpha,lights,width,height,cull,range,ms_median,glightpx_per_s,rel_rmse,max_rel_err,p99_rel_err";
+
+    /// Light-pixel evaluations per second, in billions (every pixel of the study scene sees
+    /// the plane).
+    pub fn glightpx_per_s(&self) -> f64 {
+        (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
+    }
+
+    pub fn csv(&self) -> String {
+        format!(
+            "{},{},{},{},{},{},{},{:.6},{:.4},{:.6e},{:.6e},{:.6e}",
+            self.variant,
+            self.alpha,
+            self.lights,
+            self.width,
+            self.height,
+            if self.cull { "on" } else { "off" },
+            crate::measure::bench::range_text(self.range),
+            self.ms_median,
+            self.glightpx_per_s(),
+            self.rel_rmse,
+            self.max_rel_err,
+            self.p99_rel_err
+        )
+    }
+
+    /// Parses a row written by `csv` (the lab reads study.csv back); errors name the line.
+    pub fn parse(line: &str, at: &str) -> Result<Self> {
+        let f: Vec<&str> = line.split(',').map(str::trim).collect();
+        if f.len() != 12 {
+            return Err(Error::input(
+                at,
+                format!("expected 12 values, found {}", f.len()),
+            ));
+        }
+        let num = |k: usize| -> Result<f64> {
+            f[k].parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite() && *x >= 0.0)
+                .ok_or_else(|| Error::input(at, format!("'{}' is not a finite number ≥ 0", f[k])))
+        };
+        let int = |k: usize| -> Result<usize> {
+            f[k].parse::<usize>()
+                .ok()
+                .filter(|&n| n > 0)
+                .ok_or_else(|| Error::input(at, format!("'{}' is not a whole number ≥ 1", f[k])))
+        };
+        // A time of 0 makes fps = 1000/0: the chart froze on it.
+        let time = |k: usize| -> Result<f64> {
+            Some(num(k)?)
+                .filter(|&t| t > 0.0)
+                .ok_or_else(|| Error::input(at, format!("ms_median '{}' must be > 0", f[k])))
+        };
+        let cull = match f[5] {
+            "on" => true,
+            "off" => false,
+            other => {
+                return Err(Error::input(
+                    at,
+                    format!("cull '{other}' is neither on nor off"),
+                ));
+            }
+        };
+        let range = match f[6] {
+            "inf" => None,
+            _ => Some(num(6)?).filter(|&r| r > 0.0),
+        };
+        Ok(Self {
+            variant: f[0].to_string(),
+            alpha: num(1)?,
+            lights: int(2)?,
+            width: int(3)?,
+            height: int(4)?,
+            cull,
+            range,
+            ms_median: time(7)?,
+            rel_rmse: num(9)?,
+            max_rel_err: num(10)?,
+            p99_rel_err: num(11)?,
+        })
+    }
+}
+
+/// The study scene: paper-100's plane, material and light distribution with `lights`
+/// generated lights (100 gives paper-100's own) at `heights` and GGX α = `alpha`, seen from
+/// above so that every pixel shades the plane.
+pub fn study_scene(lights: usize, alpha: f64, range: Option<f64>, heights: [f64; 2]) -> Scene {
+    let mut scene = crate::measure::bench::bench_scene_at(lights, range, heights);
+    scene.material.alpha = alpha;
+    scene
+}
+
+/// The most bytes of a `study.csv` this program reads (`files::read_text`): a study's row is
+/// ~200 bytes, and a study of every method at a hundred light counts is some 20 kB.
+pub const MAX_FILE_BYTES: u64 = 16 << 20;
+
+/// Reads `study.csv`; errors name the file and line.
+pub fn read_csv(path: &std::path::Path) -> Result<Vec<StudyRow>> {
+    let text = crate::files::read_text(path, MAX_FILE_BYTES)?;
+    parse_csv(&text, &path.display().to_string())
+}
+
+/// A `study.csv`'s text (`name` for errors); lines starting with `#` are comments (the
+/// bundled reference study states its device and size in them).
+pub fn parse_csv(text: &str, name: &str) -> Result<Vec<StudyRow>> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim_start().starts_with('#'));
+    match lines.next() {
+        Some((_, h)) if h.trim() == StudyRow::CSV_HEADER => {}
+        other => {
+            return Err(Error::input(
+                format!("{name} line {}", other.map_or(1, |(k, _)| k + 1)),
+                format!("the header must be '{}'", StudyRow::CSV_HEADER),
+            ));
+        }
+    }
+    lines
+        .filter(|(_, l)| !l.trim().is_empty())
+        .map(|(k, l)| StudyRow::parse(l, &format!("{name} line {}", k + 1)))
+        .collect()
+}
+
+/// What the study measures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StudySettings {
+    pub size: (usize, usize),
+    pub lights: Vec<usize>,
+    pub alphas: Vec<f64>,
+    pub frames: usize,
+    /// Culling off, on, or both (the same images: only the times differ).
+    pub culls: Vec<bool>,
+    pub range: Option<f64>,
+    /// The remedies whose variants run (eq30's always do).
+    pub horizons: Vec<Horizon>,
+    /// The lights' heights above the plane (paper-100's, or a scene whose lights sit low).
+    pub heights: [f64; 2],
+}
+
+/// The heights of the study's scene whose lights sit low: most pixels see most of their
+/// lights within 15° of the horizon (a light 0.15 up is 15° above a pixel 0.56 away).
+pub const LOW_HEIGHTS: [f64; 2] = [0.02, 0.15];
+
+/// Runs the study: for each α, light count and culling, the exact image, then every variant,
+/// each timed (median of `frames` after one warm-up) and measured against the exact image.
+pub fn run(
+    ctx: &GpuContext,
+    shipped: &Lut,
+    s: &StudySettings,
+    mut progress: impl FnMut(&StudyRow),
+) -> Result<Vec<StudyRow>> {
+    crate::measure::bench::check(ctx, &s.lights, s.size)?;
+    let (width, height) = s.size;
+    let variants: Vec<Variant> = variants()
+        .into_iter()
+        .filter(|v| !v.method.needs_f16() || ctx.has_f16())
+        .filter(|v| v.horizon == Horizon::Eq30 || s.horizons.contains(&v.horizon))
+        .collect();
+    let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
+    for v in &variants {
+        if renderers.iter().any(|(c, _)| *c == v.lut) {
+            continue;
+        }
+        let lut = match v.lut {
+            LutChoice::Shipped => shipped.clone(),
+            LutChoice::Point => Lut::embedded_point().clone(),
+            LutChoice::Arrival => Lut::shipped(Table::Arrival).clone(),
+            LutChoice::Constrained => Lut::shipped(Table::Constrained).clone(),
+            LutChoice::Fitted(size) => {
+                fit_table(
+                    &FitSettings {
+                        size,
+                        ..FitSettings::default()
+                    },
+                    &|| {},
+                )
+                .lut
+            }
+        };
+        renderers.push((v.lut, PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)?));
+    }
+    let mut rows = Vec::new();
+    for &alpha in &s.alphas {
+        for &lights in &s.lights {
+            let scene = study_scene(lights, alpha, s.range, s.heights);
+            for &cull in &s.culls {
+                let mut exact = None;
+                for v in &variants {
+                    let renderer = &mut renderers
+                        .iter_mut()
+                        .find(|(c, _)| *c == v.lut)
+                        .expect("made above")
+                        .1;
+                    let settings = RenderSettings {
+                        rules: LtcRules {
+                            clipping: Clipping::BOTH,
+                            normalization: v.normalization,
+                            filter: v.filter,
+                            horizon: v.horizon.rule(),
+                        },
+                        cull,
+                        ..RenderSettings::single(width, height, v.method)
+                    };
+                    let mut render = renderer.begin(ctx, &scene, &settings, None)?;
+                    render.run(ctx);
+                    let mut ms: Vec<f64> = (0..s.frames.max(1))
+                        .map(|_| render.run(ctx).total_ms())
+                        .collect();
+                    ms.sort_by(f64::total_cmp);
+                    let image = render.read(ctx)?;
+                    let reference = exact.get_or_insert_with(|| image.clone());
+                    let e = image_error(&image, reference);
+                    let row = StudyRow {
+                        variant: v.name.into(),
+                        alpha,
+                        lights,
+                        width,
+                        height,
+                        cull,
+                        range: s.range,
+                        ms_median: ms[ms.len() / 2],
+                        rel_rmse: e.rel_rmse,
+                        max_rel_err: e.max_rel,
+                        p99_rel_err: e.p99_rel,
+                    };
+                    progress(&row);
+                    rows.push(row);
+                }
+            }
+        }
+    }
+    Ok(rows)
+}
+
+/// The rows as CSV text.
+pub fn csv(rows: &[StudyRow]) -> String {
+    let mut out = format!("{}\n", StudyRow::CSV_HEADER);
+    for r in rows {
+        out.push_str(&r.csv());
+        out.push('\n');
+    }
+    out
+}
+
+/// The Pareto chart as PNG bytes: every row as a faint marker, the case closest to
+/// paper-100 (100 lights, α = 0.27) as one large labelled marker per variant; `scene` names the
+/// light set in the title (paper-100, or the low-lights scene).
+pub fn pareto_png(rows: &[StudyRow], device: &str, scene: &str) -> Result<Vec<u8>> {
+    let key =
+        |r: &StudyRow| ((r.lights as f64).ln() - 100f64.ln()).abs() + (r.alpha - 0.27).abs() * 10.0;
+    let best = rows.iter().map(key).fold(f64::INFINITY, f64::min);
+    let (lights, alpha) = rows
+        .iter()
+        .find(|r| key(r) == best)
+        .map_or((0, 0.0), |r| (r.lights, r.alpha));
+    let points: Vec<crate::plot::ParetoPoint> = rows
+        .iter()
+        .map(|r| crate::plot::ParetoPoint {
+            label: r.variant.clone(),
+            ms: r.ms_median,
+            error: r.rel_rmse,
+            highlight: r.lights == lights && r.alpha == alpha,
+        })
+        .collect();
+    let size = rows.first().map_or((0, 0), |r| (r.width, r.height));
+    crate::plot::pareto_png(
+        "study.png",
+        &format!(
+            "{scene}: {lights} lights, α = {alpha} (large); all cases (small) — {}×{} on {device}",
+            size.0, size.1
+        ),
+        &points,
+    )
+}
