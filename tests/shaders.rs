@@ -267,11 +267,12 @@ const SHADER_ONLY: [(&str, &str); 2] = [
 
 /// Every constant the WGSL and Rust share, as Rust has it: `(name in the WGSL, value)`.
 fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
+    use ltc_lab::gpu::limits::LOAD;
     use ltc_lab::gpu::ltc::{
         CLIP_HORIZON, CLIP_TRANSFORMED, LUT_VEC4S_PER_CELL, horizon_constant,
         normalization_constant,
     };
-    use ltc_lab::gpu::plane::{LOAD, ViewConstant, method_constant, sphere_constant};
+    use ltc_lab::gpu::plane::{ViewConstant, method_constant, sphere_constant};
     use ltc_lab::gpu::scene::TILE_SIDE;
     use ltc_lab::light::sphere::SphereMethod;
     use ltc_lab::ltc::Normalization;

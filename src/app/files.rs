@@ -8,6 +8,10 @@ use std::path::Path;
 /// What a lesson file's name ends with (a dropped `.toml` without it is a scene).
 pub const LESSON_EXTENSION: &str = ".lesson.toml";
 
+/// The most bytes of a lesson file the lab reads (`crate::files::read_text`): a lesson's 200
+/// steps of 4 000 characters (up to 4 bytes each) with their views fit in 4 MiB.
+pub const LESSON_MAX_BYTES: u64 = 4 << 20;
+
 /// What a given file is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Purpose {
@@ -29,7 +33,7 @@ impl Purpose {
             Self::Scene => crate::scene::MAX_FILE_BYTES,
             Self::Table | Self::TableB => crate::ltc::lut::MAX_FILE_BYTES,
             Self::Study => crate::measure::study::MAX_FILE_BYTES,
-            Self::Lesson => crate::app::lesson::MAX_FILE_BYTES,
+            Self::Lesson => LESSON_MAX_BYTES,
         }
     }
 

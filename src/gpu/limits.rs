@@ -4,7 +4,6 @@
 
 use crate::error::Error;
 use crate::gpu::GpuContext;
-use crate::gpu::plane::LOAD;
 use crate::named::named_enum;
 
 named_enum! {
@@ -60,6 +59,10 @@ fn storage_binding_bytes(ctx: &GpuContext) -> u64 {
 pub fn buffer_max_lights(ctx: &GpuContext, light_bytes: usize) -> usize {
     (storage_binding_bytes(ctx) / light_bytes as u64) as usize
 }
+
+/// `LOAD` of plane.wgsl: the lights a workgroup loads into its shared memory at a time (one
+/// tile of the light loop), which bounds the loop's iterations below.
+pub const LOAD: usize = 256;
 
 /// The most lights one invocation of plane.wgsl sums on this adapter, where the driver caps
 /// shader loops: Mesa's llvmpipe (lavapipe) ends every loop of an invocation after 65 535

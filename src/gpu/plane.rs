@@ -18,10 +18,6 @@ use crate::scene::{Light, Scene};
 /// The shader text (composed after `scene::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/plane.wgsl");
 
-/// `LOAD` of plane.wgsl: the lights a workgroup loads into its shared memory at a time (one
-/// tile of the light loop).
-pub const LOAD: usize = 256;
-
 /// `METHOD_*` of plane.wgsl: its value and its name there.
 pub fn method_constant(m: Method) -> (u32, &'static str) {
     match m {

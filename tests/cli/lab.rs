@@ -113,7 +113,11 @@ fn endless_and_oversized_inputs_are_refused_at_their_limit() {
         ] {
             let o = ltc_lab(&args);
             assert_refused(&o, device);
-            assert!(stderr(&o).contains("longer than"), "{args:?}: {}", stderr(&o));
+            assert!(
+                stderr(&o).contains("longer than"),
+                "{args:?}: {}",
+                stderr(&o)
+            );
         }
     }
     let o = ltc_lab(&["lab", "--lesson", big]);

@@ -29,9 +29,7 @@ pub use crate::app::files::LESSON_EXTENSION as EXTENSION;
 /// The most steps a lesson has: a lecture is a dozen; more is not a lesson a person wrote.
 const MAX_STEPS: usize = 200;
 
-/// The most bytes of a lesson file this program reads (`files::read_text`): `MAX_STEPS` steps
-/// of `MAX_TEXT` characters (up to 4 bytes each) with their views fit in 4 MiB.
-pub const MAX_FILE_BYTES: u64 = 4 << 20;
+pub use crate::app::files::LESSON_MAX_BYTES as MAX_FILE_BYTES;
 
 /// The longest text a field holds, in characters (a step's text is 2–6 sentences; a view of
 /// moved lights is longer, up to the link's own limit, `link::MAX_LEN`).
