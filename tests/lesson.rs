@@ -2,8 +2,8 @@
 //! every character it shows has a glyph; a lesson round-trips through its file; a broken one is
 //! refused naming its step and field; conditions and readings read as documented.
 
-use ltc_lab::app::lesson::readings::{READINGS, check_placeholders, fill};
-use ltc_lab::app::lesson::{Condition, Lesson, Step, TryThis};
+use ltc_lab::app::lesson::readings::{Reading, check_placeholders, fill};
+use ltc_lab::app::lesson::{Condition, Lesson, Step, StepView, TryThis};
 use ltc_lab::app::{LabState, PanelId, link};
 
 fn paper() -> Lesson {
@@ -20,7 +20,15 @@ fn the_shipped_lesson_reads_and_every_view_opens() {
         lesson.steps.len()
     );
     for (k, step) in lesson.steps.iter().enumerate() {
-        let state = link::decode(&step.view, &LabState::default())
+        // Every view is the table a person reads, not a share-view string.
+        assert!(
+            matches!(step.view, StepView::Fields(_)),
+            "step {}: a share-view string",
+            k + 1
+        );
+        let state = step
+            .view
+            .open(&LabState::default())
             .unwrap_or_else(|e| panic!("step {}: its view does not open: {e}", k + 1));
         let mut checked = state.clone();
         assert!(
@@ -84,7 +92,7 @@ fn every_character_of_the_shipped_lesson_has_a_glyph() {
 #[test]
 fn a_lesson_round_trips_through_its_file() {
     let mut lesson = paper();
-    let view = link::encode(&LabState::default());
+    let view = StepView::of(&LabState::default()).expect("a view");
     lesson.steps.push(
         Step::captured(
             "A teacher's step",
@@ -142,62 +150,81 @@ fn broken(field: &str, value: Option<&str>) -> String {
 }
 
 #[test]
-fn a_broken_lesson_is_refused_naming_its_step_and_field() {
+fn a_broken_lesson_is_refused_naming_its_line_step_and_field() {
+    // The third step starts on line 12 (`broken` writes a title, then two steps of five lines);
+    // a field it adds is on line 17.
     for (field, value, says) in [
-        ("title", None, "step 3: field `title`: missing"),
+        ("title", None, "line 12, step 3: missing field `title`"),
         (
             "title",
             Some("5"),
-            "step 3: field `title`: expected text, found integer",
+            "step 3: invalid type: integer `5`, expected a string",
         ),
-        ("text", Some("\"  \""), "step 3: field `text`: empty"),
+        (
+            "text",
+            Some("\"  \""),
+            "line 12, step 3: field `text`: empty",
+        ),
         (
             "text",
             Some("\"{nope}\""),
-            "step 3: field `text`: {nope} is not a reading",
+            "line 12, step 3: field `text`: {nope} is not a reading",
         ),
         (
             "text",
             Some("\"a } alone\""),
-            "step 3: field `text`: a '}' without its '{'",
+            "line 12, step 3: field `text`: a '}' without its '{'",
         ),
         (
             "panels",
             Some("[\"teapot\"]"),
-            "step 3: field `panels`: 'teapot' is not a panel",
+            "line 12, step 3: field `panels`: 'teapot' is not a panel",
         ),
-        ("panels", Some("[]"), "step 3: field `panels`: 0 panels"),
+        (
+            "panels",
+            Some("[]"),
+            "line 12, step 3: field `panels`: 0 panels",
+        ),
         (
             "panels",
             Some("[\"lobe\", \"plane\", \"chart\"]"),
-            "step 3: field `panels`: 3 panels",
+            "line 12, step 3: field `panels`: 3 panels",
         ),
-        ("view", None, "step 3: field `view`: missing"),
-        ("titel", Some("\"x\""), "step 3: unknown field `titel`"),
+        ("view", None, "step 3: missing field `view`"),
+        (
+            "view",
+            Some("3"),
+            "line 12, step 3: field `view`: a table of settings or a share-view string",
+        ),
+        (
+            "titel",
+            Some("\"x\""),
+            "line 17, step 3: unknown field `titel`",
+        ),
         (
             "try",
             Some("{ task = \"t\", when = \"morph < \" }"),
-            "step 3: field `try.when`: '' is not a finite number",
+            "line 12, step 3: field `try.when`: '' is not a finite number",
         ),
         (
             "try",
             Some("{ task = \"t\", when = \"teapot > 1\" }"),
-            "step 3: field `try.when`: 'teapot' is not a quantity",
+            "line 12, step 3: field `try.when`: 'teapot' is not a quantity",
         ),
         (
             "try",
             Some("{ task = \"t\", when = \"morph ~ 1\" }"),
-            "step 3: field `try.when`: 'morph ~ 1' has no comparison",
+            "line 12, step 3: field `try.when`: 'morph ~ 1' has no comparison",
         ),
         (
             "try",
             Some("{ when = \"morph < 1\" }"),
-            "step 3: field `try.task`: missing",
+            "step 3: missing field `task`",
         ),
         (
             "equations",
             Some("[1]"),
-            "step 3: field `equations`: item 1: expected text, found integer",
+            "line 17, step 3: invalid type: integer `1`, expected a string",
         ),
     ] {
         let text = broken(field, value);
@@ -209,10 +236,17 @@ fn a_broken_lesson_is_refused_naming_its_step_and_field() {
         );
     }
     for (text, says) in [
-        ("title = \"x\"\n", "it has no [[step]]"),
-        ("title = \"x\"\nstep = 3\n", "`step` is not a list"),
-        ("title = \"x\"\nauthor = \"me\"\n", "unknown field `author`"),
-        ("[[step]\n", "not a lesson's TOML"),
+        ("title = \"x\"\n", "missing field `step`"),
+        (
+            "title = \"x\"\nstep = 3\n",
+            "line 2: invalid type: integer `3`, expected a sequence",
+        ),
+        (
+            "title = \"x\"\nauthor = \"me\"\n",
+            "line 2: unknown field `author`",
+        ),
+        ("title = \"x\"\n\n[[step]\n", "line 3"),
+        ("title = \"x\"\nstep = []\n", "it has 0 steps"),
     ] {
         let e = Lesson::from_toml(text, "t.lesson.toml").expect_err(says);
         assert!(e.contains(says), "said '{e}', not '{says}'");
@@ -221,6 +255,44 @@ fn a_broken_lesson_is_refused_naming_its_step_and_field() {
     // why (the lab's test walks that).
     let text = broken("view", Some("\"v1.not-a-view\""));
     assert!(Lesson::from_toml(&text, "t.lesson.toml").is_ok());
+    let text = broken("view", Some("{ lobe.teapot = 1 }"));
+    assert!(Lesson::from_toml(&text, "t.lesson.toml").is_ok());
+}
+
+/// A step's view as a table: what it names is set, the rest stays at the lab's defaults; a
+/// setting the view does not have, or a value of the wrong kind, is named when the step opens.
+#[test]
+fn a_view_table_sets_what_it_names_and_refuses_what_it_does_not_know() {
+    let defaults = LabState::default();
+    let view: toml::Table = toml::from_str(
+        "lab.material.alpha = 0.35\nlobe.theta_o_deg = 1\nlab.lobe_view.theta_o_deg = 70.0",
+    )
+    .unwrap();
+    let err = StepView::Fields(view)
+        .open(&defaults)
+        .expect_err("lobe.theta_o_deg");
+    assert!(
+        err.contains("`lobe.theta_o_deg` is not a setting of the view"),
+        "{err}"
+    );
+    let view: toml::Table =
+        toml::from_str("lab.material.alpha = 0.35\nlab.lobe_view.theta_o_deg = 70.0").unwrap();
+    let state = StepView::Fields(view.clone())
+        .open(&defaults)
+        .expect("it opens");
+    assert_eq!(state.lab.material.alpha, 0.35);
+    assert_eq!(state.lab.lobe_view.theta_o_deg, 70.0);
+    assert_eq!(state.lab.lights, defaults.lab.lights);
+    // What `StepView::of` writes is exactly what differs, and opens to the same state.
+    match StepView::of(&state).unwrap() {
+        StepView::Fields(t) => assert_eq!(t, view),
+        other => panic!("{other:?}"),
+    }
+    let wrong: toml::Table = toml::from_str("lab.material.alpha = \"rough\"").unwrap();
+    let err = StepView::Fields(wrong)
+        .open(&defaults)
+        .expect_err("a text for α");
+    assert!(err.contains("does not read"), "{err}");
 }
 
 #[test]
@@ -252,8 +324,10 @@ fn readings_fill_braces_and_refuse_what_they_do_not_know() {
     let filled = fill("a {x} b {{c}} {y}", |n| Ok(n.to_uppercase())).expect("fills");
     assert_eq!(filled, "a X b {c} Y");
     assert!(fill("a {x", |_| Ok(String::new())).is_err());
-    for (name, _) in READINGS {
+    for reading in Reading::ALL {
+        let name = reading.name();
         check_placeholders(&format!("the {{{name}}} reading")).expect(name);
+        assert!(!reading.describe().is_empty(), "{name}");
     }
     assert!(check_placeholders("{teapot}").is_err());
 }

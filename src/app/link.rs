@@ -41,6 +41,14 @@ struct Link {
 
 /// The view of `state` as a link's string: RON, raw deflate, URL-safe base64.
 pub fn encode(state: &LabState) -> String {
+    let link = link_of(state);
+    let text = ron::to_string(&link).expect("the lab's state always serializes");
+    let packed = miniz_oxide::deflate::compress_to_vec(text.as_bytes(), 9);
+    format!("{VERSION}{}", URL_SAFE_NO_PAD.encode(packed))
+}
+
+/// What a link carries of `state`.
+fn link_of(state: &LabState) -> Link {
     let mut lab = state.lab.clone();
     lab.tables = Part::new(Tables::shipped(lab.tables.shipped));
     lab.refit = Part::new(LastRefit(None));
@@ -53,17 +61,14 @@ pub fn encode(state: &LabState) -> String {
         list: lights,
         seed: lab.lights.seed,
     });
-    let link = Link {
+    Link {
         generated,
         lab,
         lobe: state.lobe.clone(),
         plane: state.plane.clone(),
         clipping: state.clipping.clone(),
         window: state.window.clone(),
-    };
-    let text = ron::to_string(&link).expect("the lab's state always serializes");
-    let packed = miniz_oxide::deflate::compress_to_vec(text.as_bytes(), 9);
-    format!("{VERSION}{}", URL_SAFE_NO_PAD.encode(packed))
+    }
 }
 
 /// `state` with the view of `text` in place of its own (its chart and the side panel's file
@@ -93,8 +98,12 @@ pub fn decode(text: &str, state: &LabState) -> Result<LabState, String> {
             )
         })?;
     let text = String::from_utf8(bytes).map_err(|_| "the view's text is not UTF-8".to_string())?;
-    let mut link: Link =
-        ron::from_str(&text).map_err(|e| format!("the view does not read: {e}"))?;
+    let link: Link = ron::from_str(&text).map_err(|e| format!("the view does not read: {e}"))?;
+    state_with(link, state)
+}
+
+/// `state` with the view `link` in place of its own.
+fn state_with(mut link: Link, state: &LabState) -> Result<LabState, String> {
     if let Some(count) = link.generated {
         // Refused before they are made: a count beyond the limit is not a view of the lab.
         if count > crate::scene::MAX_LIGHTS {
@@ -131,4 +140,74 @@ fn rounded_lights(lights: &[crate::scene::Light]) -> Vec<crate::scene::Light> {
         ..crate::scene::preset("paper-100")
     };
     scene.rounded_for_saving().lights
+}
+
+/// The view of `state` as a table a person reads and edits (a lesson's `[step.view]`): only
+/// what differs from the lab's defaults, by the names the lab's state has (`lobe.theta_o_deg
+/// = 60`, `lab.material.alpha = 0.1`). `table` reads it back.
+pub fn to_table(state: &LabState) -> Result<toml::Table, String> {
+    let value = |state: &LabState| {
+        toml::Table::try_from(link_of(state)).map_err(|e| format!("the view does not write: {e}"))
+    };
+    Ok(difference(&value(state)?, &value(&LabState::default())?))
+}
+
+/// The entries of `a` that differ from `b`'s, nested tables by their own differing entries.
+fn difference(a: &toml::Table, b: &toml::Table) -> toml::Table {
+    a.iter()
+        .filter_map(|(key, value)| match (value, b.get(key)) {
+            (_, Some(other)) if other == value => None,
+            (toml::Value::Table(t), Some(toml::Value::Table(u))) => {
+                Some((key.clone(), toml::Value::Table(difference(t, u))))
+            }
+            _ => Some((key.clone(), value.clone())),
+        })
+        .collect()
+}
+
+/// `state` with the view a table written by `to_table` describes (what it does not name
+/// stays at the lab's defaults); why not, naming the entry, where an entry is not one of the
+/// view's or its value does not read.
+pub fn table(view: &toml::Table, state: &LabState) -> Result<LabState, String> {
+    let defaults = toml::Table::try_from(link_of(&LabState::default()))
+        .map_err(|e| format!("the view does not write: {e}"))?;
+    let mut merged = defaults;
+    merge(&mut merged, view);
+    let link: Link = merged
+        .try_into()
+        .map_err(|e: toml::de::Error| format!("the view does not read: {}", e.message().trim()))?;
+    // Every entry written must be read: serde passes over a name the state does not have.
+    let read = toml::Table::try_from(&link).map_err(|e| format!("the view does not write: {e}"))?;
+    if let Some(path) = unread(view, &read, "") {
+        return Err(format!("`{path}` is not a setting of the view"));
+    }
+    state_with(link, state)
+}
+
+/// `view`'s entries laid over `into`, nested tables entry by entry.
+fn merge(into: &mut toml::Table, view: &toml::Table) {
+    for (key, value) in view {
+        match (into.get_mut(key), value) {
+            (Some(toml::Value::Table(t)), toml::Value::Table(v)) => merge(t, v),
+            _ => {
+                into.insert(key.clone(), value.clone());
+            }
+        }
+    }
+}
+
+/// The first entry of `written` (its dotted path under `at`) that `read` lacks.
+fn unread(written: &toml::Table, read: &toml::Table, at: &str) -> Option<String> {
+    written.iter().find_map(|(key, value)| {
+        let path = if at.is_empty() {
+            key.clone()
+        } else {
+            format!("{at}.{key}")
+        };
+        match (value, read.get(key)) {
+            (_, None) => Some(path),
+            (toml::Value::Table(w), Some(toml::Value::Table(r))) => unread(w, r, &path),
+            _ => None,
+        }
+    })
 }

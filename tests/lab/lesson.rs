@@ -6,8 +6,8 @@
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use ltc_lab::app::lesson::Lesson;
 use ltc_lab::app::lesson::bar::LessonBar;
+use ltc_lab::app::lesson::{Lesson, StepView};
 use ltc_lab::app::{LabApp, LabState, link};
 
 use crate::harness::{drop_file, lab, notice, press, settle, shows, slide, type_into};
@@ -25,10 +25,15 @@ fn paper() -> Lesson {
     Lesson::shipped("paper").expect("the shipped lesson")
 }
 
-/// The state a view's string opens, as the lab's own state compares (the parts a link
+/// The state a step's view opens, as the lab's own state compares (the parts a view
 /// carries).
-fn opened(view: &str) -> LabState {
-    link::decode(view, &LabState::default()).expect("a view")
+fn opened(view: &StepView) -> LabState {
+    view.open(&LabState::default()).expect("a view")
+}
+
+/// The lab's view now, as a share-view string holds it.
+fn view_now(h: &Harness<'static, LabApp>) -> StepView {
+    StepView::Link(link::encode(&h.state().state()))
 }
 
 /// Where the lesson is: (step from 1, its *try this* done).
@@ -42,7 +47,7 @@ fn at(h: &Harness<'static, LabApp>) -> (usize, bool) {
 fn check_arrival(h: &Harness<'static, LabApp>, lesson: &Lesson, k: usize) {
     let step = &lesson.steps[k];
     assert_eq!(at(h), (k + 1, false), "step {}: {}", k + 1, step.title);
-    let now = opened(&link::encode(&h.state().state()));
+    let now = opened(&view_now(h));
     let want = opened(&step.view);
     assert_eq!(now.lab, want.lab, "step {}: the lab's parts", k + 1);
     assert_eq!(
@@ -134,8 +139,10 @@ fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
             // The speed step quotes the shipped studies' ratios, read from their files here;
             // the chart plots the H100's on request.
             Some(_) => {
-                for (_, path, text) in ltc_lab::app::chart::studies::SHIPPED_STUDIES {
-                    let rows = ltc_lab::measure::study::parse_csv(text, path).expect("a study");
+                for study in ltc_lab::app::chart::studies::ShippedStudy::ALL {
+                    let path = study.path();
+                    let rows =
+                        ltc_lab::measure::study::parse_csv(study.text(), path).expect("a study");
                     let ms = |v: &str| {
                         let r = rows.iter().find(|r| r.variant == v && r.lights == 1000);
                         r.expect("1000 lights").ms_median
@@ -171,7 +178,7 @@ fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
     press(&mut h, "close lesson");
     h.run_steps(2);
     assert!(h.state().lesson().is_none());
-    assert_eq!(opened(&link::encode(&h.state().state())).lab, last.lab);
+    assert_eq!(opened(&view_now(&h)).lab, last.lab);
     settle(&mut h);
 }
 
@@ -232,7 +239,7 @@ fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
     h.run_steps(10);
     type_into(&mut h, "new step's title", "My own step");
     type_into(&mut h, "new step's text", "Look here. Then there.");
-    let view = link::encode(&h.state().state());
+    let view = view_now(&h);
     press(&mut h, "add step");
     h.run_steps(2);
     let written = h.state().lesson().unwrap().lesson().clone();
@@ -244,6 +251,12 @@ fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
         ("My own step", "Look here. Then there.")
     );
     assert_eq!(opened(&added.view), opened(&view));
+    // *add step* writes the view a person reads: a table of what differs from the defaults.
+    assert!(
+        matches!(&added.view, StepView::Fields(_)),
+        "{:?}",
+        added.view
+    );
 
     // A name without .lesson.toml is refused (a drop would read it as a scene).
     let file = dir.path().join("mine.lesson.toml");
@@ -284,7 +297,7 @@ fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
         said.is_error
             && said
                 .text
-                .contains("broken.lesson.toml: step 1: field `panels`"),
+                .contains("broken.lesson.toml: line 4, step 1: field `panels`"),
         "{said:?}"
     );
     assert_eq!(h.state().state(), before);
@@ -292,7 +305,7 @@ fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
 
     // A step whose view does not open shows its text, and why.
     let mut lesson = written.clone();
-    lesson.steps[1].view = "v1.cut-short".into();
+    lesson.steps[1].view = StepView::Link("v1.cut-short".into());
     h.state_mut().open_lesson(lesson, "cut.lesson.toml", 1);
     h.run_steps(2);
     assert!(shows(&h, "Look here. Then there."));
@@ -315,7 +328,7 @@ fn a_try_this_ticks_only_for_what_the_student_did() {
     rough.lab.material = ltc_lab::app::lab::Part::new(material);
     let mut lesson = paper();
     lesson.steps.truncate(1);
-    lesson.steps[0].view = link::encode(&rough);
+    lesson.steps[0].view = StepView::of(&rough).expect("a view");
     h.state_mut().open_lesson(lesson, "rough.lesson.toml", 0);
     settle(&mut h);
     // α = 0.6 ≥ 0.5 from the view: nothing done yet.

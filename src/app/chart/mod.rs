@@ -11,7 +11,7 @@ use egui::Color32;
 use serde::{Deserialize, Serialize};
 
 use crate::app::chart::measure::{MEASURE_SIZE, MeasureJob, Measurement, Point, REPEATS};
-use crate::app::chart::studies::{SHIPPED_STUDIES, reference_study, shipped_study, study_device};
+use crate::app::chart::studies::{ShippedStudy, reference_study};
 use crate::app::files::Purpose;
 use crate::app::lab::{Checked, Forms, Lab, Message, Request};
 use crate::app::panel::Panel;
@@ -162,22 +162,26 @@ impl ChartPanel {
         {
             lab.request(Request::Open(Purpose::Study, self.study_path.clone()));
         }
-        for (name, path, text) in SHIPPED_STUDIES {
+        for study in ShippedStudy::ALL {
             let hover = format!(
-                "Plot the study shipped with the lab ({path}), measured on {}",
-                study_device(text)
+                "Plot the study shipped with the lab ({}), measured on {}",
+                study.path(),
+                study.device()
             );
             if ui
-                .small_button(format!("{name} study"))
+                .small_button(format!("{} study", study.name()))
                 .on_hover_text(hover)
                 .clicked()
             {
-                self.state.measurement = shipped_study(name);
+                self.state.measurement = study.measurement();
                 self.error = None;
             }
         }
         if let Some(m) = &self.state.measurement {
-            ui.small(&m.device);
+            match m.note.as_str() {
+                "" => ui.small(&m.device),
+                note => ui.small(format!("{} — {note}", m.device)),
+            };
         }
     }
 

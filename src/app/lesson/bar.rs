@@ -8,7 +8,7 @@
 use std::path::PathBuf;
 
 use crate::app::lesson::readings::read;
-use crate::app::lesson::{Lesson, Now, Step};
+use crate::app::lesson::{Lesson, Now, Step, StepView};
 use crate::app::panel::PanelId;
 use crate::app::ui::widgets::name;
 use crate::app::work::cache::{Cached, Own};
@@ -132,7 +132,7 @@ impl LessonBar {
 
     /// A step of the lab's view, `view`, after the shown one (which it becomes), with the
     /// title and text written (or a placeholder title); or why not, the lesson unchanged.
-    pub fn add_step(&mut self, view: String, panels: Vec<PanelId>) -> Result<(), String> {
+    pub fn add_step(&mut self, view: StepView, panels: Vec<PanelId>) -> Result<(), String> {
         if !self.lesson.has_room() {
             return Err("the lesson is full".into());
         }

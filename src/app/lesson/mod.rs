@@ -1,8 +1,9 @@
 //! A lesson (docs/design.md §5.11): the paper's derivation as steps a student walks in the
 //! lab. A lesson is a TOML file: a title and its steps, each with a title, a short text, the
 //! equations it is about, the panels it shows and the control it names, a view in the format
-//! *share view* writes, and an optional *try this* whose condition the lab checks. A file is
-//! input from anyone: read field by field, and refused naming the step and the field.
+//! settings as a table (or a string *share view* wrote), and an optional *try this* whose
+//! condition the lab checks. A file is input from anyone: read through serde (an unknown field
+//! refused by name), then checked in one step, and refused naming its line, step and field.
 
 pub mod bar;
 pub mod window;
@@ -10,8 +11,9 @@ pub mod window;
 pub mod condition;
 pub mod readings;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
+use crate::app::link;
 use crate::app::panel::PanelId;
 pub use condition::{Condition, Now};
 
@@ -62,10 +64,36 @@ pub struct Step {
     /// The control it is about, named as the lab labels it.
     #[serde(skip_serializing_if = "String::is_empty")]
     pub control: String,
-    /// The lab's view at this step: a string *share view* wrote.
-    pub view: String,
     #[serde(rename = "try", skip_serializing_if = "Option::is_none")]
     pub try_this: Option<TryThis>,
+    /// The lab's view at this step (last, so that its table follows the step's plain fields).
+    pub view: StepView,
+}
+
+/// A step's view: the settings that differ from the lab's defaults, as a table a person
+/// reads and edits (what *add step* writes), or a string *share view* wrote (what a teacher
+/// pastes). Opened when the step is shown, not when the file is read: a view that does not
+/// open leaves its step's text readable, with why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum StepView {
+    Fields(toml::Table),
+    Link(String),
+}
+
+impl StepView {
+    /// The view of the lab `state` as a step writes it: its table of settings.
+    pub fn of(state: &crate::app::LabState) -> Result<Self, String> {
+        link::to_table(state).map(Self::Fields)
+    }
+
+    /// `state` with this view in place of its own, or why it does not open.
+    pub fn open(&self, state: &crate::app::LabState) -> Result<crate::app::LabState, String> {
+        match self {
+            Self::Fields(table) => link::table(table, state),
+            Self::Link(text) => link::decode(text, state),
+        }
+    }
 }
 
 /// Something the student does, and the condition that says it is done.
@@ -84,6 +112,37 @@ fn condition_text<S: serde::Serializer>(c: &Condition, s: S) -> Result<S::Ok, S:
     s.serialize_str(&c.to_string())
 }
 
+/// A lesson's file as serde reads it, before its one check (`RawLesson::check`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawLesson {
+    title: String,
+    #[serde(rename = "step")]
+    steps: Vec<RawStep>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawStep {
+    title: String,
+    text: String,
+    #[serde(default)]
+    equations: Vec<String>,
+    panels: Vec<String>,
+    #[serde(default)]
+    control: String,
+    view: toml::Value,
+    #[serde(rename = "try")]
+    try_this: Option<RawTry>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawTry {
+    task: String,
+    when: String,
+}
+
 impl Lesson {
     /// The shipped lesson `name`.
     pub fn shipped(name: &str) -> Option<Self> {
@@ -94,9 +153,13 @@ impl Lesson {
     /// The lesson in `text` (read from `source`, for the messages), or why not: the step (from
     /// 1) and the field named.
     pub fn from_toml(text: &str, source: &str) -> Result<Self, String> {
-        let table: toml::Table = toml::from_str(text)
-            .map_err(|e| format!("{source}: not a lesson's TOML: {}", e.message()))?;
-        read_lesson(&table).map_err(|e| format!("{source}: {e}"))
+        let raw: RawLesson = toml::from_str(text).map_err(|e| {
+            let at = e
+                .span()
+                .map_or_else(String::new, |s| where_in(text, s.start));
+            format!("{source}: {at}{}", e.message().trim())
+        })?;
+        raw.check(text).map_err(|e| format!("{source}: {e}"))
     }
 
     /// Step `k` counted from 1, as links and `--step` name it, counted from 0; or why it is
@@ -173,129 +236,116 @@ impl Lesson {
     }
 }
 
-/// The fields a step may have, for the message that refuses another.
-const STEP_FIELDS: [&str; 7] = [
-    "title",
-    "text",
-    "equations",
-    "panels",
-    "control",
-    "view",
-    "try",
-];
-
-fn read_lesson(table: &toml::Table) -> Result<Lesson, String> {
-    if let Some(key) = table
-        .keys()
-        .find(|k| !["title", "step"].contains(&k.as_str()))
-    {
-        return Err(format!(
-            "unknown field `{key}` (a lesson has title and step)"
-        ));
+/// "line L, step K: " for the byte `at` of a lesson's `text` (no step before its first).
+fn where_in(text: &str, at: usize) -> String {
+    let before = &text[..at.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    match step_headers(text).iter().filter(|&&h| h <= at).count() {
+        0 => format!("line {line}: "),
+        k => format!("line {line}, step {k}: "),
     }
-    let title = text_field(table, "title", true).map_err(|e| format!("the title: {e}"))?;
-    let steps = match table.get("step") {
-        Some(toml::Value::Array(steps)) => steps,
-        Some(_) => return Err("`step` is not a list of [[step]] tables".into()),
-        None => return Err("it has no [[step]]".into()),
-    };
-    if steps.is_empty() || steps.len() > MAX_STEPS {
-        return Err(format!(
-            "it has {} steps: a lesson has 1 to {MAX_STEPS}",
-            steps.len()
-        ));
-    }
-    let steps = steps
-        .iter()
-        .enumerate()
-        .map(|(k, s)| read_step(s).map_err(|e| format!("step {}: {e}", k + 1)))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(Lesson { title, steps })
 }
 
-fn read_step(value: &toml::Value) -> Result<Step, String> {
-    let toml::Value::Table(t) = value else {
-        return Err("not a table".into());
-    };
-    if let Some(key) = t.keys().find(|k| !STEP_FIELDS.contains(&k.as_str())) {
-        return Err(format!(
-            "unknown field `{key}` (a step has {})",
-            STEP_FIELDS.join(", ")
-        ));
-    }
-    let field = |name: &'static str, required: bool| {
-        text_field(t, name, required).map_err(|e| format!("field `{name}`: {e}"))
-    };
-    let title = field("title", true)?;
-    let text = field("text", true)?;
-    readings::check_placeholders(&text).map_err(|e| format!("field `text`: {e}"))?;
-    let control = field("control", false)?;
-    let view = field("view", true)?;
-    if view.len() > crate::app::link::MAX_LEN {
-        return Err(format!("field `view`: {} bytes, not a view", view.len()));
-    }
-    let equations = match t.get("equations") {
-        None => Vec::new(),
-        Some(v) => strings(v).map_err(|e| format!("field `equations`: {e}"))?,
-    };
-    let panels = match t.get("panels") {
-        None => return Err("field `panels`: missing (the panels the step is about)".into()),
-        Some(v) => read_panels(v).map_err(|e| format!("field `panels`: {e}"))?,
-    };
-    let try_this = t
-        .get("try")
-        .map(|v| read_try(v).map_err(|e| format!("field `try.{e}")))
-        .transpose()?;
-    Ok(Step {
-        title,
-        text,
-        equations,
-        panels,
-        control,
-        view,
-        try_this,
-    })
-}
-
-/// Text field `name` of `t` (empty where it is missing and not `required`), or what is
-/// wrong with it.
-fn text_field(t: &toml::Table, name: &str, required: bool) -> Result<String, String> {
-    match t.get(name) {
-        None if required => Err("missing".into()),
-        None => Ok(String::new()),
-        Some(toml::Value::String(s)) if s.trim().is_empty() && required => Err("empty".into()),
-        Some(toml::Value::String(s)) if name != "view" && s.chars().count() > MAX_TEXT => {
-            Err(format!(
-                "{} characters, over the {MAX_TEXT} a field holds",
-                s.chars().count()
-            ))
+/// Where each `[[step]]` header starts in `text`.
+fn step_headers(text: &str) -> Vec<usize> {
+    let mut at = 0;
+    let mut headers = Vec::new();
+    for line in text.split_inclusive('\n') {
+        if line.trim_start().starts_with("[[step]]") {
+            headers.push(at);
         }
-        Some(toml::Value::String(s)) => Ok(s.trim().to_string()),
-        Some(v) => Err(format!("expected text, found {}", v.type_str())),
+        at += line.len();
+    }
+    headers
+}
+
+impl RawLesson {
+    /// The lesson, every field checked; or the first that is wrong, with its step's line.
+    fn check(self, text: &str) -> Result<Lesson, String> {
+        let title = text_field(&self.title, true).map_err(|e| format!("the title: {e}"))?;
+        if self.steps.is_empty() || self.steps.len() > MAX_STEPS {
+            return Err(format!(
+                "it has {} steps: a lesson has 1 to {MAX_STEPS}",
+                self.steps.len()
+            ));
+        }
+        let headers = step_headers(text);
+        let steps = self
+            .steps
+            .into_iter()
+            .enumerate()
+            .map(|(k, s)| {
+                s.check().map_err(|e| match headers.get(k) {
+                    Some(&at) => format!("{}{e}", where_in(text, at)),
+                    None => format!("step {}: {e}", k + 1),
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Lesson { title, steps })
     }
 }
 
-fn strings(v: &toml::Value) -> Result<Vec<String>, String> {
-    let toml::Value::Array(items) = v else {
-        return Err(format!("expected a list of texts, found {}", v.type_str()));
-    };
-    items
-        .iter()
-        .enumerate()
-        .map(|(k, item)| match item {
-            toml::Value::String(s) if s.chars().count() <= MAX_TEXT => Ok(s.clone()),
-            toml::Value::String(_) => Err(format!("item {} is over {MAX_TEXT} characters", k + 1)),
-            other => Err(format!(
-                "item {}: expected text, found {}",
-                k + 1,
-                other.type_str()
-            )),
+impl RawStep {
+    fn check(self) -> Result<Step, String> {
+        let field = |name: &str, value: &str, required: bool| {
+            text_field(value, required).map_err(|e| format!("field `{name}`: {e}"))
+        };
+        let title = field("title", &self.title, true)?;
+        let text = field("text", &self.text, true)?;
+        readings::check_placeholders(&text).map_err(|e| format!("field `text`: {e}"))?;
+        let control = field("control", &self.control, false)?;
+        for (k, e) in self.equations.iter().enumerate() {
+            field("equations", e, false).map_err(|why| format!("{why} (item {})", k + 1))?;
+        }
+        let panels = read_panels(&self.panels).map_err(|e| format!("field `panels`: {e}"))?;
+        let view = match self.view {
+            toml::Value::String(s) if s.len() > link::MAX_LEN => {
+                return Err(format!("field `view`: {} bytes, not a view", s.len()));
+            }
+            toml::Value::String(s) => StepView::Link(s.trim().to_string()),
+            toml::Value::Table(t) => StepView::Fields(t),
+            other => {
+                return Err(format!(
+                    "field `view`: a table of settings or a share-view string, not {}",
+                    other.type_str()
+                ));
+            }
+        };
+        let try_this = self
+            .try_this
+            .map(|t| {
+                let task = field("try.task", &t.task, true)?;
+                let when = field("try.when", &t.when, true)?;
+                let when = when.parse().map_err(|e| format!("field `try.when`: {e}"))?;
+                Ok::<_, String>(TryThis { task, when })
+            })
+            .transpose()?;
+        Ok(Step {
+            title,
+            text,
+            equations: self.equations,
+            panels,
+            control,
+            try_this,
+            view,
         })
-        .collect()
+    }
 }
 
-fn read_panels(v: &toml::Value) -> Result<Vec<PanelId>, String> {
-    let names = strings(v)?;
+/// A text field's value, trimmed; or what is wrong with it: empty where `required`, or over
+/// `MAX_TEXT` characters.
+fn text_field(value: &str, required: bool) -> Result<String, String> {
+    let n = value.chars().count();
+    if required && value.trim().is_empty() {
+        Err("empty".into())
+    } else if n > MAX_TEXT {
+        Err(format!("{n} characters, over the {MAX_TEXT} a field holds"))
+    } else {
+        Ok(value.trim().to_string())
+    }
+}
+
+fn read_panels(names: &[String]) -> Result<Vec<PanelId>, String> {
     if names.is_empty() || names.len() > MAX_PANELS {
         return Err(format!(
             "{} panels: a step shows 1 or {MAX_PANELS}",
@@ -313,23 +363,6 @@ fn read_panels(v: &toml::Value) -> Result<Vec<PanelId>, String> {
         .collect()
 }
 
-/// A step's *try this*; an error starts with the field's name after `try.`.
-fn read_try(v: &toml::Value) -> Result<TryThis, String> {
-    let toml::Value::Table(t) = v else {
-        return Err(format!(
-            "`: expected a table of task and when, found {}",
-            v.type_str()
-        ));
-    };
-    if let Some(key) = t.keys().find(|k| !["task", "when"].contains(&k.as_str())) {
-        return Err(format!("{key}`: unknown (try has task and when)"));
-    }
-    let task = text_field(t, "task", true).map_err(|e| format!("task`: {e}"))?;
-    let when = text_field(t, "when", true).map_err(|e| format!("when`: {e}"))?;
-    let when = when.parse().map_err(|e| format!("when`: {e}"))?;
-    Ok(TryThis { task, when })
-}
-
 impl Step {
     /// A step of the lab's `view` as it is now, for a teacher's *add step*; or why its title
     /// or text would not read back (the same rules as a file's).
@@ -337,13 +370,12 @@ impl Step {
         title: &str,
         text: &str,
         panels: Vec<PanelId>,
-        view: String,
+        view: StepView,
     ) -> Result<Self, String> {
-        let mut t = toml::Table::new();
-        t.insert("title".into(), toml::Value::String(title.into()));
-        t.insert("text".into(), toml::Value::String(text.into()));
-        let field = |name: &str| text_field(&t, name, true).map_err(|e| format!("its {name}: {e}"));
-        let (title, text) = (field("title")?, field("text")?);
+        let field = |name: &str, value: &str| {
+            text_field(value, true).map_err(|e| format!("its {name}: {e}"))
+        };
+        let (title, text) = (field("title", title)?, field("text", text)?);
         readings::check_placeholders(&text).map_err(|e| format!("its text: {e}"))?;
         Ok(Self {
             title,
@@ -351,8 +383,8 @@ impl Step {
             equations: Vec::new(),
             panels,
             control: String::new(),
-            view,
             try_this: None,
+            view,
         })
     }
 }

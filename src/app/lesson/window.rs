@@ -5,10 +5,10 @@
 
 use crate::app::files::{Purpose, save};
 use crate::app::lab::{Message, Request};
-use crate::app::lesson::Lesson;
 use crate::app::lesson::bar::{Action, LessonBar, bar_width};
+use crate::app::lesson::{Lesson, StepView};
 use crate::app::panel::PanelId;
-use crate::app::{LabApp, LabState, link};
+use crate::app::{LabApp, LabState};
 
 /// The width over height above which a step's two panels sit side by side.
 const SIDE_BY_SIDE: f32 = 1.6;
@@ -48,7 +48,7 @@ impl LabApp {
         let Some(bar) = &self.lesson else { return };
         let k = k.min(bar.lesson().steps.len() - 1);
         let view = bar.lesson().steps[k].view.clone();
-        let opened = link::decode(&view, &self.state()).map(|state| self.use_view(state));
+        let opened = view.open(&self.state()).map(|state| self.use_view(state));
         if let Some(bar) = &mut self.lesson {
             bar.show_step(k, opened.err());
         }
@@ -114,7 +114,7 @@ impl LabApp {
                     .say(Message::note("left the lesson; the view stays"));
             }
             Action::AddStep => {
-                let view = link::encode(&self.state());
+                let view = StepView::of(&self.state());
                 let panels = match (self.window.maximised, &self.lesson) {
                     (Some(p), _) => vec![p],
                     (None, Some(bar)) => bar.current().panels.clone(),
@@ -122,13 +122,14 @@ impl LabApp {
                 };
                 if let Some(bar) = &mut self.lesson {
                     let n = bar.lesson().steps.len() + 1;
-                    self.lab.say(match bar.add_step(view, panels) {
-                        Ok(()) => Message::note(format!(
-                            "added step {} of {n}, of this view",
-                            bar.step() + 1
-                        )),
-                        Err(e) => Message::error(format!("add step: {e}: nothing added")),
-                    });
+                    self.lab
+                        .say(match view.and_then(|view| bar.add_step(view, panels)) {
+                            Ok(()) => Message::note(format!(
+                                "added step {} of {n}, of this view",
+                                bar.step() + 1
+                            )),
+                            Err(e) => Message::error(format!("add step: {e}: nothing added")),
+                        });
                 }
             }
             Action::RemoveStep => {
