@@ -20,7 +20,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let lut = Lut::embedded();
     let mut gpu = PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked)?;
     // The lab's light generator, as its slider makes 20 000 lights.
-    let mut lab = Lab::new(Default::default(), Err("not needed".into()));
+    let mut lab = Lab::new(
+        Default::default(),
+        Err("not needed".into()),
+        ltc_lab::scene::MAX_LIGHTS,
+    );
     lab.set_light_count(20_000);
     let scenes: [(&str, Scene, usize); 2] = [
         ("paper-100", preset("paper-100"), 512),

@@ -95,7 +95,10 @@ impl LabApp {
             Some(why) => Err(why),
             None => device,
         };
-        let mut lab = Lab::new(state.lab, device);
+        let max_lights = device.as_ref().map_or(crate::scene::MAX_LIGHTS, |g| {
+            crate::gpu::renderer::PlaneRenderer::max_lights(g)
+        });
+        let mut lab = Lab::new(state.lab, device, max_lights);
         let notes: Vec<String> = notes
             .into_iter()
             .chain(lab.message().map(|m| m.text.clone()))

@@ -83,7 +83,32 @@ impl Measurement {
     pub fn ms_of(&self, label: &str) -> Option<f64> {
         self.points.iter().find(|p| p.label == label).map(|p| p.ms)
     }
+
+    /// LTC's fps over the BRDF's at each light count both were measured at, for the forms `ltc`
+    /// and `brdf` (or the first of each kind measured).
+    pub fn fps_ratios(&self, ltc: Method, brdf: Method) -> Option<FpsRatios> {
+        let pick = |chosen: Method| {
+            self.scaling.iter().find(|(x, _)| *x == chosen).or_else(|| {
+                self.scaling
+                    .iter()
+                    .find(|(x, _)| x.is_ltc() == chosen.is_ltc())
+            })
+        };
+        let (ltc, ltc_fps) = pick(ltc)?;
+        let (brdf, brdf_fps) = pick(brdf)?;
+        let ratios = ltc_fps
+            .iter()
+            .filter_map(|[n, f]| {
+                let b = brdf_fps.iter().find(|q| q[0] == *n)?;
+                Some((*n, f / b[1]))
+            })
+            .collect();
+        Some((*ltc, *brdf, ratios))
+    }
 }
+
+/// The LTC and BRDF forms compared, and (lights, LTC's fps over the BRDF's) at each count.
+pub type FpsRatios = (Method, Method, Vec<(f64, f64)>);
 
 impl Measurement {
     /// Why the chart cannot plot this, if it cannot: every time and fps finite and > 0, every

@@ -357,34 +357,9 @@ fn fps_plot(ui: &mut egui::Ui, m: &Measurement, forms: &Forms, height: f32) {
     legend(ui, &entries);
 }
 
-/// The LTC and BRDF forms compared, and (lights, LTC's fps over the BRDF's) at each count.
-pub type FpsRatios = (Method, Method, Vec<(f64, f64)>);
-
-/// LTC's fps over the BRDF's at each light count both were measured at, for the forms `ltc`
-/// and `brdf` (or the first of each kind measured).
-pub fn fps_ratios(m: &Measurement, ltc: Method, brdf: Method) -> Option<FpsRatios> {
-    let pick = |chosen: Method| {
-        m.scaling.iter().find(|(x, _)| *x == chosen).or_else(|| {
-            m.scaling
-                .iter()
-                .find(|(x, _)| x.is_ltc() == chosen.is_ltc())
-        })
-    };
-    let (ltc, ltc_fps) = pick(ltc)?;
-    let (brdf, brdf_fps) = pick(brdf)?;
-    let ratios = ltc_fps
-        .iter()
-        .filter_map(|[n, f]| {
-            let b = brdf_fps.iter().find(|q| q[0] == *n)?;
-            Some((*n, f / b[1]))
-        })
-        .collect();
-    Some((*ltc, *brdf, ratios))
-}
-
-/// The lab's LTC and BRDF forms' `fps_ratios`, in words: the paper's Table 1 comparison.
+/// The lab's LTC and BRDF forms' `Measurement::fps_ratios`, in words: the paper's Table 1 comparison.
 pub fn speed_ratio(m: &Measurement, forms: &Forms) -> Option<String> {
-    let (ltc, brdf, ratios) = fps_ratios(m, forms.ltc, forms.brdf)?;
+    let (ltc, brdf, ratios) = m.fps_ratios(forms.ltc, forms.brdf)?;
     let ratios: Vec<String> = ratios
         .iter()
         // Plain counts: a thin space between thousands is where a line would break.

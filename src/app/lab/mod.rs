@@ -70,64 +70,7 @@ pub enum Request {
     Open(crate::app::files::Purpose, String),
 }
 
-/// The parts, as eframe keeps them between runs and a link carries them.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Shared {
-    pub lights: Part<Lights>,
-    pub material: Part<Material>,
-    pub stage: Part<Stage>,
-    pub exposure: Part<Exposure>,
-    pub lobe_view: Part<LobeView>,
-    pub forms: Part<Forms>,
-    pub spheres: Part<SphereForms>,
-    pub side_b: Part<SideB>,
-    pub overrides: Part<Overrides>,
-    pub rules: Part<LtcRules>,
-    pub tables: Part<Tables>,
-    pub selection: Part<Selection>,
-    pub refit: Part<LastRefit>,
-}
-
 impl Shared {
-    /// Every part brought within its range (against its default: what came in had no value
-    /// before it); what was refused or clamped, named.
-    pub fn check(&mut self) -> Vec<String> {
-        fn one<T: Checked + Default>(part: &mut Part<T>, notes: &mut Vec<String>) {
-            notes.extend(part.value_mut().check(&T::default()));
-        }
-        let Self {
-            lights,
-            material,
-            stage,
-            exposure,
-            lobe_view,
-            forms,
-            spheres,
-            side_b,
-            overrides,
-            rules,
-            tables,
-            selection,
-            refit,
-        } = self;
-        let mut notes = Vec::new();
-        one(material, &mut notes);
-        one(lights, &mut notes);
-        one(stage, &mut notes);
-        one(exposure, &mut notes);
-        one(lobe_view, &mut notes);
-        one(forms, &mut notes);
-        one(spheres, &mut notes);
-        one(side_b, &mut notes);
-        one(overrides, &mut notes);
-        one(rules, &mut notes);
-        one(tables, &mut notes);
-        one(selection, &mut notes);
-        one(refit, &mut notes);
-        notes
-    }
-
     /// The lights of `count` from the seeded generator (heights 0.05–0.6, paper-100's
     /// intensities and range), as the lights slider makes them.
     pub fn generated_lights(&self, count: usize) -> Vec<Light> {
@@ -158,8 +101,30 @@ pub trait HasPart<T> {
 /// The key to a part's writing: made only here, by the lab's doors.
 pub struct Key(());
 
+/// The parts, named once: `Shared` (as eframe keeps them between runs and a link carries
+/// them), its check, and the lab's doors to each, all from this one list.
 macro_rules! parts {
     ($($name:ident: $t:ty;)*) => {
+        /// The parts, as eframe keeps them between runs and a link carries them.
+        #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+        #[serde(default, deny_unknown_fields)]
+        pub struct Shared {
+            $(pub $name: Part<$t>,)*
+        }
+
+        impl Shared {
+            /// Every part brought within its range (against its default: what came in had no
+            /// value before it); what was refused or clamped, named.
+            pub fn check(&mut self) -> Vec<String> {
+                fn one<T: Checked + Default>(part: &mut Part<T>, notes: &mut Vec<String>) {
+                    notes.extend(part.value_mut().check(&T::default()));
+                }
+                let mut notes = Vec::new();
+                $(one(&mut self.$name, &mut notes);)*
+                notes
+            }
+        }
+
         $(
             impl HasPart<$t> for Lab {
                 fn part(&self) -> &Part<$t> {
@@ -214,18 +179,21 @@ pub type Device = Result<GpuContext, String>;
 pub struct Lab {
     shared: Shared,
     device: Device,
+    /// The most lights the plane shades at once (the app asks the plane's renderer).
+    max_lights: usize,
     message: Option<Message>,
     requests: Vec<Request>,
 }
 
 impl Lab {
     /// A lab of `shared`'s parts, each checked (what was refused or clamped is said), its
-    /// lights cut to what `device` shades.
-    pub fn new(mut shared: Shared, device: Device) -> Self {
+    /// lights cut to the `max_lights` the plane shades on `device`.
+    pub fn new(mut shared: Shared, device: Device, max_lights: usize) -> Self {
         let notes = shared.check();
         let mut lab = Self {
             shared,
             device,
+            max_lights,
             message: None,
             requests: Vec::new(),
         };
@@ -347,9 +315,7 @@ impl Lab {
 
     /// The most lights the plane shades at once: the GPU's limit, or the scene's on the CPU.
     pub fn max_lights(&self) -> usize {
-        self.device().map_or(crate::scene::MAX_LIGHTS, |g| {
-            crate::gpu::renderer::PlaneRenderer::max_lights(g)
-        })
+        self.max_lights
     }
 
     /// The scene the parts make.

@@ -83,12 +83,15 @@ pub enum StepView {
 
 impl StepView {
     /// The view of the lab `state` as a step writes it: its table of settings.
-    pub fn of(state: &crate::app::LabState) -> Result<Self, String> {
+    pub fn of(state: &crate::app::state::LabState) -> Result<Self, String> {
         link::to_table(state).map(Self::Fields)
     }
 
     /// `state` with this view in place of its own, or why it does not open.
-    pub fn open(&self, state: &crate::app::LabState) -> Result<crate::app::LabState, String> {
+    pub fn open(
+        &self,
+        state: &crate::app::state::LabState,
+    ) -> Result<crate::app::state::LabState, String> {
         match self {
             Self::Fields(table) => link::table(table, state),
             Self::Link(text) => link::decode(text, state),

@@ -4,7 +4,6 @@
 
 use glam::DVec3;
 
-use crate::app::chart::fps_ratios;
 use crate::app::chart::studies::ShippedStudy;
 use crate::app::lesson::Now;
 use crate::gpu::work::Work;
@@ -212,7 +211,7 @@ impl Reading {
 fn shipped_speedups(study: ShippedStudy) -> String {
     let ratios = study
         .measurement()
-        .and_then(|m| fps_ratios(&m, Method::LtcFast, Method::Brdf));
+        .and_then(|m| m.fps_ratios(Method::LtcFast, Method::Brdf));
     let Some((_, _, ratios)) = ratios else {
         return "—".into();
     };
