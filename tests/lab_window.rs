@@ -190,6 +190,49 @@ fn no_driver_chatter_reaches_the_user_when_the_window_opens() {
     assert!(out.exists());
 }
 
+/// A lesson checked from the command line: `--screenshot` of a step whose view does not open
+/// takes the screenshot (the step's text with why, as a student would see it), then says on
+/// standard error which step and why, exit 2; the step before it, whose view opens, exits 0.
+#[test]
+fn a_screenshot_of_a_step_whose_view_does_not_open_says_so() {
+    if !window_available() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let lesson = dir.path().join("cut.lesson.toml");
+    let step = |view: &str| {
+        format!("[[step]]\ntitle = \"t\"\ntext = \"One. Two.\"\npanels = [\"lobe\"]\n{view}\n")
+    };
+    let text = format!(
+        "title = \"cut\"\n{}{}",
+        step("view.lab.material.alpha = 0.3"),
+        step("view.lobe.teapot = 1")
+    );
+    std::fs::write(&lesson, text).unwrap();
+    for (k, ok) in [(1, true), (2, false)] {
+        let out = dir.path().join(format!("step{k}.png"));
+        let o = Command::new(env!("CARGO_BIN_EXE_ltc-lab"))
+            .args(["lab", "--size", "640x400", "--lesson"])
+            .arg(&lesson)
+            .args(["--step", &k.to_string(), "--screenshot"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        let said = String::from_utf8_lossy(&o.stderr);
+        assert!(out.exists(), "step {k}: no screenshot: {said}");
+        if ok {
+            assert!(o.status.success(), "step {k}: {said}");
+        } else {
+            assert_eq!(o.status.code(), Some(2), "step {k}: {said}");
+            assert_eq!(said.trim_end().lines().count(), 1, "{said}");
+            assert!(
+                said.contains("step 2's view does not open") && said.contains("lobe.teapot"),
+                "{said}"
+            );
+        }
+    }
+}
+
 /// A view from anyone (`--view`), its numbers non-finite or out of range, opens a drawn lab
 /// within seconds and says what it refused (a divider of NaN left the plane unfinished for
 /// ever: the screenshot never came); a string that is not a view is refused in one line with

@@ -118,6 +118,18 @@ pub fn run(a: Args) -> Result<()> {
         .as_deref()
         .map(|l| open_lesson(l, a.step))
         .transpose()?;
+    // A step whose view does not open is shown with its text and why (the window says so);
+    // a screenshot of it is taken, then refused on standard error, naming the step.
+    let broken_view = lesson.as_ref().and_then(|(lesson, name, k)| {
+        let why = lesson.steps[*k].view.open(&LabState::default()).err()?;
+        Some(Error::input(
+            "--lesson",
+            format!(
+                "{name}: step {}'s view does not open ({why}); the screenshot shows the step without it",
+                k + 1
+            ),
+        ))
+    });
     let (w, h) = a.size.unwrap_or(DEFAULT_SIZE);
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
@@ -187,7 +199,7 @@ pub fn run(a: Args) -> Result<()> {
             // The screenshot's own error keeps its kind: a path that cannot be written is the
             // user's to fix (exit 2), as in every command.
             match (run, taken) {
-                (Ok(()), Some(outcome)) => outcome,
+                (Ok(()), Some(outcome)) => outcome.and(broken_view.map_or(Ok(()), Err)),
                 (Ok(()), None) => Err(window_error(
                     "the window closed before the screenshot".into(),
                 )),
