@@ -359,3 +359,36 @@ fn a_lesson_link_names_a_shipped_lesson_and_a_step() {
         assert!(e.contains(says), "{bad}: said '{e}'");
     }
 }
+
+/// The README's reference for lesson authors names every reading and every quantity with the
+/// meaning the lab gives it, and every field a step has: a reading or quantity added to the
+/// lab and not to the README fails here.
+#[test]
+fn the_readme_lists_every_reading_quantity_and_field() {
+    use ltc_lab::app::lesson::condition::Quantity;
+    let readme = include_str!("../README.md");
+    let section = readme
+        .split("### Writing a lesson")
+        .nth(1)
+        .expect("the README has a section for lesson authors");
+    for r in Reading::ALL {
+        let row = format!("| `{{{}}}` | {} |", r.name(), r.describe());
+        assert!(section.contains(&row), "the README lacks: {row}");
+    }
+    for q in Quantity::ALL {
+        let row = format!("| `{}` | {} |", q.name(), q.describe());
+        assert!(section.contains(&row), "the README lacks: {row}");
+    }
+    for field in [
+        "title",
+        "text",
+        "equations",
+        "panels",
+        "control",
+        "view",
+        "try.task",
+        "try.when",
+    ] {
+        assert!(section.contains(&format!("| `{field}` |")), "{field}");
+    }
+}

@@ -53,6 +53,28 @@ named_enum! {
 }
 
 impl Quantity {
+    /// What it is, for the lesson's authors (the README lists these).
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::Alpha => "the material's GGX α",
+            Self::ThetaO => "θo, degrees",
+            Self::F0 => "Schlick's F0",
+            Self::Morph => "the lobe panel's \"M: I -> fitted\" slider, 0 to 1",
+            Self::Case1 => "clipping rule 1 (clip at the surface's horizon) on: 1, off: 0",
+            Self::Case2 => "clipping rule 2 (clip after M^-1) on: 1, off: 0",
+            Self::PaperLiteral => "the paper's eq. 25 as printed (1) or corrected (0)",
+            Self::Lights => "the scene's light count",
+            Self::LobeLight => "a light shown on the lobe panel: 1, none: 0",
+            Self::LightElevation => "the lobe panel's light's elevation, degrees",
+            Self::Pinned => "a pixel pinned on the plane: 1, none: 0",
+            Self::PinnedCase1 => "the pinned pixel's lights in clipping case 1",
+            Self::PinnedCase2 => "the pinned pixel's lights in clipping case 2",
+            Self::Difference => "the plane shows the difference map: 1, else 0",
+            Self::Divider => "the plane's divider, 0 (left) to 1 (right)",
+            Self::Measured => "measurements the chart finished since the step opened",
+        }
+    }
+
     /// Its value now; `None` where it has none yet (no light on the lobe, no pixel pinned).
     pub fn value(self, now: &Now<'_>) -> Option<f64> {
         let lab = now.lab;

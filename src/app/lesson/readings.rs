@@ -61,7 +61,9 @@ impl Reading {
             }
             Self::LightElevation => "the lobe panel's light's elevation, degrees",
             Self::LightImage => "its image M^-1ω's elevation, degrees",
-            Self::Jacobian => "eq. 18's |M^-1| / |M^-1ω|³ at the lobe panel's light",
+            Self::Jacobian => {
+                "eq. 18's det M^-1 over the cube of M^-1ω's length, at the lobe panel's light"
+            }
             Self::Glow => "the lobe panel's light's unclipped D over D along the lobe's axis, %",
             Self::PinnedError => "the pinned pixel's relative error LTC vs BRDF, %",
             Self::PinnedLights => "the pinned pixel's light count",
