@@ -13,7 +13,7 @@ const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnor
 const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
 const METHOD_LTC_F16_PAIRS: u32 = 5u; // the same, two lights per vec2<f16> (ltc_f16.wgsl)
 
-// How a side shades a light with a size (src/light/sphere.rs SphereMethod; src/gpu/plane.rs
+// How a side shades a light with a size (src/light/sphere/mod.rs SphereMethod; src/gpu/plane.rs
 // sphere_constant).
 const SPHERE_EXACT: u32 = 0u;                // the BRDF over the cap (sphere_light.wgsl)
 const SPHERE_LTC_POINT: u32 = 1u;            // the paper's point formula at the centre
@@ -34,7 +34,7 @@ override VIEW: u32 = VIEW_SINGLE;
 override TABLE_B: bool = false;
 // What the LTC methods do for lights near the horizon (HORIZON_* of ltc.wgsl).
 override HORIZON: u32 = HORIZON_EQ30;
-// Some light has a size: without one, the light loop has no test of the radius at all.
+// Some light is not a point: without one, the light loop has no test of the shape at all.
 override SIZED: bool = false;
 // How A and B shade the lights with a size: constants too, so that a pipeline holds only the
 // sphere methods it uses (the exact one's loops would weigh on every other's registers).
@@ -305,7 +305,9 @@ fn add_sphere(
     (*s).diff += light.intensity.rgb * lobes.y;
 }
 
-// One light by one side: a point by its method, a light with a size by its sphere method.
+// One light by one side: by the side's method for the light's shape, one arm per shape
+// (src/cpu.rs light_term). Where every light is a point (SIZED off) the loop has no test of
+// the shape at all.
 fn add_light(
     method: u32,
     sphere: u32,
@@ -314,10 +316,18 @@ fn add_light(
     ltc: LtcShading,
     light: GpuLight,
 ) {
-    if SIZED && light.intensity.w > 0.0 {
-        add_sphere(method, sphere, s, p, ltc, light);
-        return;
+    var shape = SHAPE_POINT;
+    if SIZED {
+        shape = light_shape(light);
     }
+    switch shape {
+        case SHAPE_SPHERE: { add_sphere(method, sphere, s, p, ltc, light); }
+        default: { add_point(method, s, p, ltc, light); }
+    }
+}
+
+// A point light by the side's method.
+fn add_point(method: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: GpuLight) {
     switch method {
         case METHOD_BRDF: { add_brdf(s, p, light); }
         case METHOD_BRDF_FAST: { add_brdf_fast(s, p, light); }

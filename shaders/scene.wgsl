@@ -36,10 +36,22 @@ struct Params {
 }
 
 // Must match src/gpu/scene.rs GpuLight: position and range (≤ 0: infinite), colour × intensity
-// and the radius (0: a point light).
+// and the shape's size (GpuLight::new: 0 a point, a sphere's radius).
 struct GpuLight {
     position_range: vec4<f32>,
     intensity: vec4<f32>,
+}
+
+// A light's shape (src/light/mod.rs Shape; src/gpu/scene.rs shape_constant).
+const SHAPE_POINT: u32 = 0u;
+const SHAPE_SPHERE: u32 = 1u;
+
+// The shape GpuLight::new wrote: a sphere's radius in w, 0 for a point.
+fn light_shape(light: GpuLight) -> u32 {
+    if light.intensity.w > 0.0 {
+        return SHAPE_SPHERE;
+    }
+    return SHAPE_POINT;
 }
 
 @group(0) @binding(0) var<uniform> params: Params;

@@ -1,5 +1,5 @@
 // Lights with a size (docs/design.md §1.10), mirroring src/ltc/sphere.rs (Cap and the
-// illuminance of a cap), src/ltc/disk.rs, src/light/quadrature.rs and src/light/sphere.rs by name.
+// illuminance of a cap), src/light/sphere/disk.rs, src/light/sphere/quadrature.rs and src/light/sphere/mod.rs by name.
 // Composed after brdf.wgsl and ltc.wgsl (uses PI, Ltc, LtcPair, ltc_eval's constants and the
 // BRDF terms).
 
@@ -89,7 +89,7 @@ fn acos_precise(y: f32) -> f32 {
 
 // negative_eigenvalue: the root of f(e) = det(q − eI) = det − c₁e + tr·e² − e³ in
 // [−‖q‖, 0], by Newton's method from det/c₁ with bisection where a step would leave the
-// bracket (src/ltc/disk.rs; no trigonometry, whose WGSL error bounds are too loose here).
+// bracket (src/light/sphere/disk.rs; no trigonometry, whose WGSL error bounds are too loose here).
 fn negative_eigenvalue(q: mat3x3<f32>, det: f32) -> f32 {
     let trace = q[0][0] + q[1][1] + q[2][2];
     let c1 = q[0][0] * q[1][1] - q[1][0] * q[0][1] + q[0][0] * q[2][2] - q[2][0] * q[0][2]
@@ -123,7 +123,7 @@ fn negative_eigenvalue(q: mat3x3<f32>, det: f32) -> f32 {
 }
 
 // The adjugate of m (m⁻¹ · det m): M up to a positive or negative scale, which the cone's
-// quadratic form does not see (src/ltc/disk.rs takes M itself; the table holds M⁻¹ only).
+// quadratic form does not see (src/light/sphere/disk.rs takes M itself; the table holds M⁻¹ only).
 fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
     // The rows of m are the columns of its transpose; adj's columns are their cross products.
     let r = transpose(m);
@@ -132,7 +132,7 @@ fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
 
 // transformed_cone: the axis (xyz) and form factor (w) of the cap's image under M⁻¹: the cone
 // over the ellipse of B = M⁻¹ [sin σ t₁, sin σ t₂, cos σ a], Q = B⁻ᵀ diag(1, 1, −1) B⁻¹,
-// det Q = −1/det(B)², and (e₁ − e₃)(e₂ − e₃) = det/e₃ − e₃(tr − e₃) + e₃² (src/ltc/disk.rs).
+// det Q = −1/det(B)², and (e₁ − e₃)(e₂ − e₃) = det/e₃ − e₃(tr − e₃) + e₃² (src/light/sphere/disk.rs).
 // M⁻¹ is first scaled to entries of at most 1 (the cone does not see its scale).
 fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
     let m_inv = ltc.cos_from_brdf;
@@ -157,7 +157,7 @@ fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
 }
 
 // null_vector: a unit vector in the null space of a rank-2 symmetric matrix, the longest cross
-// product of two of its rows (src/ltc/disk.rs).
+// product of two of its rows (src/light/sphere/disk.rs).
 fn null_vector(m: mat3x3<f32>) -> vec3<f32> {
     let r = transpose(m);
     let c01 = cross(r[0], r[1]);
@@ -219,7 +219,7 @@ fn sphere_radiance(intensity: f32, r: f32) -> f32 {
     return intensity / (PI * r * r);
 }
 
-// One sphere light at one shading point (src/light/sphere.rs SphereShading; range ≤ 0 is
+// One sphere light at one shading point (src/light/sphere/mod.rs SphereShading; range ≤ 0 is
 // an infinite range, as for point lights).
 struct SphereShading {
     v: vec3<f32>,
@@ -252,7 +252,7 @@ fn sphere_ltc_point(s: SphereShading, pair: LtcPair) -> vec2<f32> {
     return e * weights * lobes;
 }
 
-// POINT_LIMIT_SIN_SIGMA: below this sin σ a sphere is shaded as its point light (src/light/sphere.rs).
+// POINT_LIMIT_SIN_SIGMA: below this sin σ a sphere is shaded as its point light (src/light/sphere/mod.rs).
 const POINT_LIMIT_SIN_SIGMA: f32 = 1e-7;
 
 // sphere_point: a sphere below POINT_LIMIT_SIN_SIGMA as its point light — the exact point light
@@ -291,7 +291,7 @@ fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
     return scale * weights * lobes;
 }
 
-// sphere_representative_point: Karis 2013 in Unreal's form (src/light/sphere.rs).
+// sphere_representative_point: Karis 2013 in Unreal's form (src/light/sphere/mod.rs).
 fn sphere_representative_point(s: SphereShading, cap: Cap) -> vec2<f32> {
     let d = length(s.u);
     let w = window_falloff_d2(d * d, s.range);
@@ -333,7 +333,7 @@ fn fd_toward(v: vec3<f32>, l: vec3<f32>, alpha: f32) -> f32 {
     return fd_burley(v.z, max(l.z, 0.0), dot(l, h), alpha);
 }
 
-// The 8-point Gauss–Legendre rule on [−1, 1], as src/light/quadrature.rs gauss_legendre(8) computes
+// The 8-point Gauss–Legendre rule on [−1, 1], as src/light/sphere/quadrature.rs gauss_legendre(8) computes
 // it (nodes and weights of the positive half; the rule is symmetric). tests/gpu/sphere_light.rs
 // checks sphere_exact against the Rust rule with the same nodes.
 const GL8_NODES: array<f32, 4> = array<f32, 4>(
@@ -352,7 +352,7 @@ fn gl8(i: u32) -> vec2<f32> {
 }
 
 // crowded: node i of the rule on [lo, hi], crowded to both ends by x ↦ x(3 − x²)/2
-// (src/light/quadrature.rs): the point and its weight.
+// (src/light/sphere/quadrature.rs): the point and its weight.
 fn crowded(i: u32, lo: f32, hi: f32) -> vec2<f32> {
     let r = gl8(i);
     let mid = 0.5 * (lo + hi);
@@ -387,7 +387,7 @@ fn sincos_precise(phi: f32) -> vec2<f32> {
 }
 
 // visible_half_azimuth: the half-width of the azimuths where c + k cos φ > 0 (k ≥ 0), −1
-// where there are none (src/light/quadrature.rs).
+// where there are none (src/light/sphere/quadrature.rs).
 fn visible_half_azimuth(c: f32, k: f32) -> f32 {
     if c >= k {
         return PI;
@@ -398,7 +398,7 @@ fn visible_half_azimuth(c: f32, k: f32) -> f32 {
     return acos_precise(clamp(-c / k, -1.0, 1.0));
 }
 
-// Both lobes integrated over one ring of the cap at ν = 1 − μ (src/light/quadrature.rs
+// Both lobes integrated over one ring of the cap at ν = 1 − μ (src/light/sphere/quadrature.rs
 // cap_integral_about's ring), the ring split at the mirror direction's azimuth where it holds it.
 fn exact_ring(
     s: SphereShading,
@@ -440,7 +440,7 @@ fn exact_ring(
 }
 
 // ring_frame: t in the plane of the axis and +z with t.z ≥ 0 (+x where the axis is ±z), and
-// b = axis × t (src/light/quadrature.rs).
+// b = axis × t (src/light/sphere/quadrature.rs).
 fn ring_frame(axis: vec3<f32>) -> mat2x3<f32> {
     var t = vec3<f32>(1.0, 0.0, 0.0);
     let up = vec3<f32>(0.0, 0.0, 1.0) - axis * axis.z;
@@ -451,7 +451,7 @@ fn ring_frame(axis: vec3<f32>) -> mat2x3<f32> {
 }
 
 // sphere_exact: w(d) · L · ∫ f cos dω over the cap's directions above the surface, by the
-// rule of src/light/quadrature.rs with 8 nodes per dimension and piece (src/light/sphere.rs
+// rule of src/light/sphere/quadrature.rs with 8 nodes per dimension and piece (src/light/sphere/mod.rs
 // GPU_EXACT_NODES): rings placed by ν = 1 − μ (f32 keeps a small cap's rings apart that way),
 // the ν range split where rings start to be cut (1 ∓ t_z) and at the mirror direction, each
 // piece's nodes crowded to its ends.

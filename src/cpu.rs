@@ -8,16 +8,17 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact};
+use crate::light::Shape;
+use crate::light::sphere::cap::{Cap, SphereCase};
 use crate::light::sphere::{GPU_EXACT_NODES, SphereMethod, SphereShading, sphere_light_with};
 use crate::ltc::lut::Lut;
 use crate::ltc::nl_fit::{self, NlTerms};
 use crate::ltc::remedy::HorizonRule;
-use crate::ltc::sphere::{Cap, SphereCase};
 use crate::ltc::{ClipCase, LtcPair};
 use crate::metrics::relative_difference;
+use crate::render::ShapeMethods;
 use crate::render::{
-    Frame, FrameKind, LtcRules, LutFilter, Method, RenderSettings, ShadingFrame, SurfacePoint,
-    Tables, View,
+    Frame, FrameKind, LtcRules, LutFilter, RenderSettings, ShadingFrame, SurfacePoint, Tables, View,
 };
 use crate::scene::{Light, Scene};
 
@@ -148,14 +149,14 @@ pub fn ltc_term(
     light.radiant_intensity() * (e * combine(lobes, m.base_color))
 }
 
-/// One light with a size's radiance toward the camera by `method` (docs/design.md §1.10),
-/// with the pixel's LTC lobes for the LTC methods (eq. 30's clipping and normalization; the
+/// One sphere light's radiance toward the camera by `method` (docs/design.md §1.10), with
+/// the pixel's LTC lobes for the LTC methods (eq. 30's clipping and normalization; the
 /// horizon rules are the point formula's) and the renderers' rule for the exact one.
 pub fn sphere_term(
     scene: &Scene,
     px: &LtcPixel,
     p: &SurfacePoint,
-    light: &Light,
+    (light, radius): (&Light, f64),
     rules: &LtcRules,
     method: SphereMethod,
 ) -> DVec3 {
@@ -167,7 +168,7 @@ pub fn sphere_term(
             .tangent_from_world(DVec3::from(light.position) - p.position),
         intensity: 1.0,
         range: light.range_or_infinity(),
-        radius: light.radius,
+        radius,
         alpha: m.alpha,
         f0: m.f0,
         ltc: &px.pair,
@@ -178,12 +179,11 @@ pub fn sphere_term(
     light.radiant_intensity() * combine(lobes, m.base_color)
 }
 
-/// One side of a render: how it shades point lights, how it shades lights with a size, and
-/// the table its LTC methods read.
+/// One side of a render: its method for each light shape, and the table its LTC methods
+/// read.
 #[derive(Clone, Copy, Debug)]
 pub struct Side<'a> {
-    pub method: Method,
-    pub sphere: SphereMethod,
+    pub methods: ShapeMethods,
     pub lut: &'a Lut,
 }
 
@@ -191,8 +191,7 @@ impl<'a> Side<'a> {
     /// Method A's side of `s`.
     pub fn a(s: &RenderSettings, tables: Tables<'a>) -> Self {
         Self {
-            method: s.method_a,
-            sphere: s.sphere_a,
+            methods: s.a,
             lut: tables.a,
         }
     }
@@ -200,15 +199,14 @@ impl<'a> Side<'a> {
     /// Method B's side of `s`.
     pub fn b(s: &RenderSettings, tables: Tables<'a>) -> Self {
         Self {
-            method: s.method_b,
-            sphere: s.sphere_b,
+            methods: s.b,
             lut: tables.for_b(s),
         }
     }
 }
 
-/// One light's radiance toward the camera by one side: a point by the side's method (the
-/// CPU's literal form of it), a light with a size by its sphere method.
+/// One light's radiance toward the camera by one side: by the side's method for the light's
+/// shape (for a point, the CPU's literal form of it). One arm per shape.
 pub fn light_term(
     scene: &Scene,
     px: &LtcPixel,
@@ -217,12 +215,12 @@ pub fn light_term(
     rules: &LtcRules,
     side: &Side<'_>,
 ) -> DVec3 {
-    if light.is_sized() {
-        sphere_term(scene, px, p, light, rules, side.sphere)
-    } else if side.method.is_ltc() {
-        ltc_term(scene, px, p, light, rules)
-    } else {
-        exact_term(scene, &px.frame, p, light)
+    match light.shape {
+        Shape::Point if side.methods.point.is_ltc() => ltc_term(scene, px, p, light, rules),
+        Shape::Point => exact_term(scene, &px.frame, p, light),
+        Shape::Sphere { radius } => {
+            sphere_term(scene, px, p, (light, radius), rules, side.methods.sphere)
+        }
     }
 }
 
@@ -394,11 +392,13 @@ pub fn sphere_case(scene: &Scene, p: &SurfacePoint) -> Option<SphereCase> {
     scene
         .lights
         .iter()
-        .filter(|l| l.is_sized())
         .filter_map(|l| {
+            let Shape::Sphere { radius } = l.shape else {
+                return None;
+            };
             let u = frame.tangent_from_world(DVec3::from(l.position) - p.position);
             let lit = irradiance_scale(1.0, u.length(), l.range_or_infinity()) > 0.0;
-            let cap = Cap::of_sphere(u, l.radius)?;
+            let cap = Cap::of_sphere(u, radius)?;
             // Inside the sphere the window's distance is 0 or less: it reaches the point.
             (lit || cap.encloses()).then(|| cap.case())
         })

@@ -27,8 +27,8 @@ fn main() -> ExitCode {
         eprintln!("ltc-lab: note: an interrupt will not clean up ({e})");
     }
     let result = match cli.command {
-        None => cli::lab::run(cli::lab::Args::default()),
-        Some(Command::Lab(a)) => cli::lab::run(a),
+        None => cli::lab::run(&cli::lab::Args::default()),
+        Some(Command::Lab(a)) => cli::lab::run(&a),
         Some(Command::Fit(a)) => cli::fit::run(&a),
         Some(Command::Eval(a)) => cli::eval::run(&a),
         Some(Command::Lut(a)) => cli::lut::run(&a),

@@ -9,6 +9,7 @@ use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
 use crate::cpu::{LtcPixel, exact_term, ltc_term, sphere_term};
+use crate::light::Shape;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
@@ -154,15 +155,19 @@ pub fn pixel_terms(
         .enumerate()
         .map(|(index, light)| {
             let mut term = light_term(scene, &px, p, (index, light), rules);
-            if light.is_sized() {
-                // Each side's value is its sphere method's, made once among all four.
-                let all = SphereMethod::ALL.map(|m| sphere_term(scene, &px, p, light, rules, m));
-                term.ltc = all[spheres[0].index()];
-                term.exact = all[spheres[1].index()];
-                term.ltc_b = px_b.map(|b| sphere_term(scene, &b, p, light, rules, spheres[0]));
-                term.spheres = Some(all);
-            } else {
-                term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, rules));
+            // One arm per shape: each side's value by its method for the shape.
+            match light.shape {
+                Shape::Point => term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, rules)),
+                Shape::Sphere { radius } => {
+                    // Every sphere method, made once; each side's value its method's.
+                    let sphere = (light, radius);
+                    let all =
+                        SphereMethod::ALL.map(|m| sphere_term(scene, &px, p, sphere, rules, m));
+                    term.ltc = all[spheres[0].index()];
+                    term.exact = all[spheres[1].index()];
+                    term.ltc_b = px_b.map(|b| sphere_term(scene, &b, p, sphere, rules, spheres[0]));
+                    term.spheres = Some(all);
+                }
             }
             term
         })

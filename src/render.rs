@@ -76,19 +76,26 @@ pub enum LutFilter {
     Nearest,
 }
 
+/// How one side of a render shades each shape: one method per shape, chosen together (the
+/// plane's A and B sides each have one).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ShapeMethods {
+    /// How point lights are summed (the paper's methods and their fast forms).
+    pub point: Method,
+    /// How spheres are shaded.
+    pub sphere: SphereMethod,
+}
+
 /// Everything about a render that is not the scene or the table.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings {
     pub width: usize,
     pub height: usize,
-    /// The approximation (left of a split, the numerator of a difference).
-    pub method_a: Method,
+    /// The approximation (left of a split, the numerator of a difference): a method per
+    /// light shape.
+    pub a: ShapeMethods,
     /// The reference (right of a split, the denominator of a difference).
-    pub method_b: Method,
-    /// How A and B shade the lights with a size (`Light::radius > 0`); a point light is
-    /// shaded by `method_a` / `method_b` alone, as if these did not exist.
-    pub sphere_a: SphereMethod,
-    pub sphere_b: SphereMethod,
+    pub b: ShapeMethods,
     pub view: View,
     /// What the LTC methods shade by beyond their table.
     pub rules: LtcRules,
@@ -121,11 +128,15 @@ impl RenderSettings {
         Self {
             width,
             height,
-            method_a: method,
-            method_b: Method::Brdf,
-            // What engines ship (EEVEE, Bevy's pull request) against the reference.
-            sphere_a: SphereMethod::LtcDisk,
-            sphere_b: SphereMethod::Exact,
+            // Spheres: what engines ship (EEVEE, Bevy's pull request) against the reference.
+            a: ShapeMethods {
+                point: method,
+                sphere: SphereMethod::LtcDisk,
+            },
+            b: ShapeMethods {
+                point: Method::Brdf,
+                sphere: SphereMethod::Exact,
+            },
             view: View::A,
             rules: LtcRules::default(),
             divider: 0.5,
@@ -150,16 +161,19 @@ impl RenderSettings {
     /// The methods the view needs, A first.
     pub fn methods(&self) -> Vec<Method> {
         match self.view {
-            View::A => vec![self.method_a],
-            View::B => vec![self.method_b],
-            View::Split | View::Diff => vec![self.method_a, self.method_b],
+            View::A => vec![self.a.point],
+            View::B => vec![self.b.point],
+            View::Split | View::Diff => vec![self.a.point, self.b.point],
         }
     }
 
     /// The same render showing one method alone, as `View::A`.
     pub fn alone(&self, method: Method) -> Self {
         Self {
-            method_a: method,
+            a: ShapeMethods {
+                point: method,
+                ..self.a
+            },
             view: View::A,
             ..*self
         }

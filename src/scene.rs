@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use crate::light::Shape;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
@@ -123,23 +124,59 @@ pub struct Camera {
     pub fov_y_degrees: f64,
 }
 
-/// A light: RGB `color × intensity` (W/sr-like units: irradiance `I/d²` at distance d), a
-/// point, or a sphere of radius `radius` whose radiance `I/(π r²)` lights a distant point as
-/// the point light does (docs/design.md §1.10).
+/// A light: RGB `color × intensity` (W/sr-like units: irradiance `I/d²` at distance d) from
+/// `position`, of a shape (a point, or a sphere whose radiance `I/(π r²)` lights a distant
+/// point as the point light does: docs/design.md §1.10).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(from = "LightFile", into = "LightFile")]
 pub struct Light {
-    #[serde(with = "exactly")]
     pub position: [f64; 3],
-    #[serde(default = "white", with = "exactly")]
     pub color: [f64; 3],
     pub intensity: f64,
     /// Range `R` of the windowed falloff; absent means infinite.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub range: Option<f64>,
-    /// The sphere's radius in scene units (metres); 0 (or absent): the paper's point light.
+    pub shape: Shape,
+}
+
+/// A light as a scene file (and a link) writes it: the shape by its fields, `radius` for a
+/// sphere (0 or absent: a point).
+#[derive(Clone, Copy, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LightFile {
+    #[serde(with = "exactly")]
+    position: [f64; 3],
+    #[serde(default = "white", with = "exactly")]
+    color: [f64; 3],
+    intensity: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    range: Option<f64>,
+    /// The sphere's radius in scene units (metres).
     #[serde(default, skip_serializing_if = "is_zero")]
-    pub radius: f64,
+    radius: f64,
+}
+
+impl From<LightFile> for Light {
+    fn from(f: LightFile) -> Self {
+        Self {
+            position: f.position,
+            color: f.color,
+            intensity: f.intensity,
+            range: f.range,
+            shape: Shape::of_radius(f.radius),
+        }
+    }
+}
+
+impl From<Light> for LightFile {
+    fn from(l: Light) -> Self {
+        Self {
+            position: l.position,
+            color: l.color,
+            intensity: l.intensity,
+            range: l.range,
+            radius: l.shape.radius(),
+        }
+    }
 }
 
 fn is_zero(x: &f64) -> bool {
@@ -158,11 +195,6 @@ impl Light {
 
     pub fn range_or_infinity(&self) -> f64 {
         self.range.unwrap_or(f64::INFINITY)
-    }
-
-    /// A light with a size, shaded by the sphere methods; radius 0 is a point.
-    pub fn is_sized(&self) -> bool {
-        self.radius > 0.0
     }
 }
 
@@ -264,7 +296,7 @@ impl Scene {
             l.color = l.color.map(|x| decimals(x, 3));
             l.intensity = significant(l.intensity);
             l.range = l.range.map(significant);
-            l.radius = significant(l.radius);
+            l.shape = Shape::of_radius(significant(l.shape.radius()));
         }
         out
     }
@@ -519,7 +551,10 @@ fn check_light(what: &str, l: &Light) -> std::result::Result<(), String> {
         ));
     }
     check_range(&format!("{what}.range"), l.range)?;
-    check_radius(&format!("{what}.radius"), l.radius)
+    match l.shape {
+        Shape::Point => Ok(()),
+        Shape::Sphere { radius } => check_radius(&format!("{what}.radius"), radius),
+    }
 }
 
 /// A radius is 0 (a point) or in `[MIN_RADIUS, MAX_COORDINATE]`.
@@ -575,7 +610,7 @@ pub fn generate_lights(r: &RandomLights, half_size: f64) -> Vec<Light> {
                 color: hue_color(hue, 0.6),
                 intensity: rng.uniform(r.intensity),
                 range: r.range,
-                radius: r.radius,
+                shape: Shape::of_radius(r.radius),
             }
         })
         .collect()

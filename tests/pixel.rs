@@ -97,7 +97,10 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
         let settings = |view| RenderSettings {
             view,
             b_reads_table_b: true,
-            method_b: Method::Ltc,
+            b: ltc_lab::render::ShapeMethods {
+                point: Method::Ltc,
+                sphere: SphereMethod::Exact,
+            },
             rules: LtcRules {
                 clipping: clip,
                 normalization: n,
@@ -258,10 +261,15 @@ fn sized_lights_sum_to_each_sides_render_by_its_sphere_method() {
             [SphereMethod::RepresentativePoint, SphereMethod::LtcPoint],
         ] {
             let settings = |method| RenderSettings {
-                sphere_a: spheres[0],
-                sphere_b: spheres[1],
+                a: ltc_lab::render::ShapeMethods {
+                    point: Method::Ltc,
+                    sphere: spheres[0],
+                },
+                b: ltc_lab::render::ShapeMethods {
+                    point: method,
+                    sphere: spheres[1],
+                },
                 view: View::B,
-                method_b: method,
                 ..RenderSettings::single(w, h, Method::Ltc)
             };
             let a = render(

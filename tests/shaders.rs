@@ -187,17 +187,19 @@ fn sphere_light_functions_have_the_rust_names() {
     let wgsl = function_names(&module);
     // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
     #[allow(unused_imports)]
-    use ltc_lab::light::quadrature::visible_half_azimuth;
+    use ltc_lab::light::sphere::quadrature::visible_half_azimuth;
+    #[allow(unused_imports)]
+    use ltc_lab::light::sphere::{
+        cap::Cap,
+        disk::{ltc_disk, negative_eigenvalue, transformed_cone},
+    };
     #[allow(unused_imports)]
     use ltc_lab::light::sphere::{
         fd_toward, mirror, sphere_exact, sphere_ltc_disk, sphere_point, sphere_radiance,
         sphere_representative_point,
     };
     #[allow(unused_imports)]
-    use ltc_lab::ltc::{
-        disk::{ltc_disk, negative_eigenvalue, transformed_cone},
-        sphere::{Cap, illuminance_sphere},
-    };
+    use ltc_lab::ltc::sphere::illuminance_sphere;
     let _ = (
         Cap::of_sphere,
         Cap::encloses,
@@ -274,6 +276,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
     };
     use ltc_lab::gpu::plane::{ViewConstant, method_constant, sphere_constant};
     use ltc_lab::gpu::scene::TILE_SIDE;
+    use ltc_lab::light::Shape;
     use ltc_lab::light::sphere::SphereMethod;
     use ltc_lab::ltc::Normalization;
     use ltc_lab::ltc::remedy::HorizonRule;
@@ -294,6 +297,9 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             .map(horizon_constant),
         )
         .chain(Normalization::ALL.map(normalization_constant))
+        .chain(
+            [Shape::Point, Shape::Sphere { radius: 1.0 }].map(ltc_lab::gpu::scene::shape_constant),
+        )
         .chain([
             (CLIP_HORIZON, "CLIP_HORIZON"),
             (CLIP_TRANSFORMED, "CLIP_TRANSFORMED"),
@@ -301,7 +307,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         .map(|(value, name)| (name, vec![f64::from(value)]));
     // The positive half of the 8-point rule in increasing order, as sphere_light.wgsl's
     // `gl8` unfolds it.
-    let mut gl8 = ltc_lab::light::quadrature::gauss_legendre(8);
+    let mut gl8 = ltc_lab::light::sphere::quadrature::gauss_legendre(8);
     gl8.retain(|&(x, _)| x > 0.0);
     gl8.sort_by(|a, b| a.0.total_cmp(&b.0));
     let half = |pick: fn(&(f64, f64)) -> f64| f32s(&gl8.iter().map(pick).collect::<Vec<_>>());

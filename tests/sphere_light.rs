@@ -4,14 +4,15 @@
 
 use glam::{DMat3, DVec3};
 use ltc_lab::brdf::{self, Lobes};
-use ltc_lab::light::quadrature::{cap_integral, gauss_legendre};
+use ltc_lab::light::sphere::cap::Cap;
+use ltc_lab::light::sphere::disk::{ltc_disk, negative_eigenvalue, transformed_cone};
+use ltc_lab::light::sphere::quadrature::{cap_integral, gauss_legendre};
 use ltc_lab::light::sphere::{
     EXACT_NODES, GPU_EXACT_NODES, POINT_LIMIT_SIN_SIGMA, SphereMethod, SphereShading, sphere_exact,
     sphere_light,
 };
-use ltc_lab::ltc::disk::{ltc_disk, negative_eigenvalue, transformed_cone};
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::ltc::sphere::{Cap, clipped_cap_projected_solid_angle, illuminance_sphere};
+use ltc_lab::ltc::sphere::{clipped_cap_projected_solid_angle, illuminance_sphere};
 use ltc_lab::ltc::{Clipping, Ltc, LtcPair, Normalization};
 use ltc_lab::measure::horizon::band_errors;
 use ltc_lab::measure::sphere_error::{MEASURE_NODES, sphere_errors};

@@ -7,14 +7,17 @@ use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::luminance;
 use ltc_lab::render::{Frame, Method, RenderSettings};
-use ltc_lab::scene::{Light, MIN_RADIUS, PRESETS, SPHERE_PRESETS, Scene, preset};
+use ltc_lab::scene::{MIN_RADIUS, PRESETS, SPHERE_PRESETS, Scene, preset};
 
 const W: usize = 48;
 const H: usize = 40;
 
 fn side(method: Method, sphere: SphereMethod) -> RenderSettings {
     RenderSettings {
-        sphere_a: sphere,
+        a: ltc_lab::render::ShapeMethods {
+            point: method,
+            sphere,
+        },
         ..RenderSettings::single(W, H, method)
     }
 }
@@ -24,7 +27,7 @@ fn sized(radius: f64) -> Scene {
     let mut s = preset("paper-100");
     s.lights.truncate(12);
     for l in &mut s.lights {
-        l.radius = radius;
+        l.shape = ltc_lab::light::Shape::of_radius(radius);
     }
     s
 }
@@ -137,7 +140,13 @@ fn the_failure_presets_give_finite_non_negative_images_without_black_spots() {
     let lut = Lut::embedded();
     for (name, _) in SPHERE_PRESETS {
         let scene = preset(name);
-        assert!(scene.lights.iter().all(Light::is_sized), "{name}");
+        assert!(
+            scene
+                .lights
+                .iter()
+                .all(|l| l.shape != ltc_lab::light::Shape::Point),
+            "{name}"
+        );
         let exact = render(&scene, lut, &side(Method::Brdf, SphereMethod::Exact));
         for sphere in SphereMethod::ALL {
             let s = side(Method::Ltc, sphere);

@@ -133,7 +133,7 @@ fn light() -> impl Strategy<Value = Light> {
             color: [1.0, 0.5, 0.25],
             intensity,
             range,
-            radius: 0.0,
+            shape: ltc_lab::light::Shape::of_radius(0.0),
         })
 }
 
@@ -175,7 +175,7 @@ proptest! {
     #[test]
     fn lights_below_the_plane_light_nothing_with_clipping(a in alpha(), x in -2.0f64..2.0,
             y in -2.0f64..2.0, depth in prop_oneof![Just(0.158731), 1e-9f64..10.0]) {
-        let s = scene(a, vec![Light { position: [x, y, -depth], color: [1.0; 3], intensity: 1e3, range: None, radius: 0.0 }]);
+        let s = scene(a, vec![Light { position: [x, y, -depth], color: [1.0; 3], intensity: 1e3, range: None, shape: ltc_lab::light::Shape::of_radius(0.0) }]);
         for method in [Method::Brdf, Method::Ltc] {
             let frame = render(&s, Lut::embedded(), &RenderSettings::single(10, 10, method));
             prop_assert!(frame.pixels.iter().all(|p| *p == DVec3::ZERO), "{method:?}");

@@ -187,7 +187,7 @@ fn gpu_sweep_is_finite_non_negative_and_dark_below() {
                     color: [1.0, 0.6, 0.3],
                     intensity,
                     range: None,
-                    radius: 0.0,
+                    shape: ltc_lab::light::Shape::of_radius(0.0),
                 });
             }
         }
@@ -246,7 +246,7 @@ fn gpu_light_counts_zero_one_and_the_maximum() {
         color: [1.0; 3],
         intensity: 1e-6,
         range: None,
-        radius: 0.0,
+        shape: ltc_lab::light::Shape::of_radius(0.0),
     };
     let brightest = |count: usize, r: &mut PlaneRenderer| {
         let scene = gpu_scene(0.27, 3.0, vec![light; count]);

@@ -11,6 +11,7 @@ use crate::app::lab::parts::{BRDF_FORMS, LTC_FORMS, RADIUS_RANGE, RANGE_RANGE};
 use crate::app::lab::{Forms, Lab, LobeView, Overrides, Request, SphereForms};
 use crate::app::panel::Panel;
 use crate::app::ui::widgets::{clipping_rules, explain, name};
+use crate::light::Shape;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::Normalization;
 use crate::ltc::lut::{ALPHA_MIN, Table};
@@ -325,10 +326,13 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
                 .labelled_by(label.id)
                 .on_hover_text(hover);
         }
+        // The shape by its radius: 0 a point, more a sphere.
         let label = ui.label("r");
-        ui.add(egui::DragValue::new(&mut light.radius).speed(0.001).range(0.0..=RADIUS_RANGE[1]).max_decimals(4))
+        let mut radius = light.shape.radius();
+        ui.add(egui::DragValue::new(&mut radius).speed(0.001).range(0.0..=RADIUS_RANGE[1]).max_decimals(4))
             .labelled_by(label.id)
             .on_hover_text("Radius: 0 is the paper's point light; from 0.0001 a sphere, shaded by each side's method for lights with a size");
+        light.shape = Shape::of_radius(radius);
     });
 }
 

@@ -87,7 +87,56 @@ impl Default for Args {
     }
 }
 
-pub fn run(a: Args) -> Result<()> {
+pub fn run(a: &Args) -> Result<()> {
+    let Checked {
+        startup,
+        broken_view,
+    } = check(a)?;
+    let options = window_options(a);
+    // Drivers print while eframe opens the window's adapter (gpu::driver_output says what):
+    // held back until the app is made, then dropped; handed to the error if the window
+    // cannot open, or closes before the app is made.
+    driver_output::hold();
+    match &a.screenshot {
+        Some(path) => {
+            screenshot(
+                path.clone(),
+                a.frame_log.as_deref(),
+                a.view.clone(),
+                options,
+                startup,
+            )?;
+            broken_view.map_or(Ok(()), Err)
+        }
+        None => {
+            let view = a.view.clone();
+            eframe::run_native(
+                "LTC Lab",
+                options,
+                Box::new(move |cc| {
+                    window_opened();
+                    keep_driver_loaded(cc);
+                    let mut app = LabApp::from_creation_context(cc, view.as_deref());
+                    app.start_with(startup);
+                    Ok(Box::new(app))
+                }),
+            )
+            .map_err(|e| window_error(&format!("cannot open the window: {e}")))
+        }
+    }
+}
+
+/// What the command line asks of the window, checked before it opens.
+struct Checked {
+    startup: Startup,
+    /// A lesson's step whose view does not open: the window shows it with why; a screenshot
+    /// of it is taken, then refused with this.
+    broken_view: Option<Error>,
+}
+
+/// Every argument checked before a window opens: files that must be read or written, the
+/// light count, the view, the lesson and its step.
+fn check(a: &Args) -> Result<Checked> {
     let scene = a.scene.as_deref().map(Scene::load).transpose()?;
     if let Some(p) = &a.screenshot {
         check_screenshot_path(p)?;
@@ -112,14 +161,11 @@ pub fn run(a: Args) -> Result<()> {
     if let Some(v) = &a.view {
         link::decode(v, &LabState::default()).map_err(|why| Error::input("--view", why))?;
     }
-    let view = a.view.clone();
     let lesson = a
         .lesson
         .as_deref()
         .map(|l| open_lesson(l, a.step))
         .transpose()?;
-    // A step whose view does not open is shown with its text and why (the window says so);
-    // a screenshot of it is taken, then refused on standard error, naming the step.
     let broken_view = lesson.as_ref().and_then(|(lesson, name, k)| {
         let why = lesson.steps[*k].view.open(&LabState::default()).err()?;
         Some(Error::input(
@@ -130,8 +176,24 @@ pub fn run(a: Args) -> Result<()> {
             ),
         ))
     });
+    // What the command line asked for, over the kept state (or the defaults).
+    let startup = Startup {
+        scene,
+        lights: a.lights,
+        panel: a.panel.0,
+        measure: a.measure,
+        lesson,
+    };
+    Ok(Checked {
+        startup,
+        broken_view,
+    })
+}
+
+/// The window eframe opens: its title and size, on wgpu with the lab's device set-up.
+fn window_options(a: &Args) -> eframe::NativeOptions {
     let (w, h) = a.size.unwrap_or(DEFAULT_SIZE);
-    let options = eframe::NativeOptions {
+    eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("LTC Lab")
             // Names eframe's store too; the lab keeps no egui memory there
@@ -147,77 +209,63 @@ pub fn run(a: Args) -> Result<()> {
         // for wins over the last session's.
         persist_window: a.screenshot.is_none() && a.size.is_none(),
         ..Default::default()
-    };
-    // What the command line asked for, over the kept state (or the defaults).
-    let startup = Startup {
-        scene,
-        lights: a.lights,
-        panel: a.panel.0,
-        measure: a.measure,
-        lesson,
-    };
-    // Drivers print while eframe opens the window's adapter (gpu::driver_output says what):
-    // held back until the app is made, then dropped; handed to the error if the window
-    // cannot open, or closes before the app is made.
-    driver_output::hold();
-    let opened = || drop(driver_output::give_back());
-    let window_error = |why: String| {
-        let said = driver_output::as_note(&driver_output::give_back());
-        Error::machine("lab", format!("{why}{said}"))
-    };
-    match a.screenshot {
-        Some(path) => {
-            let result = Arc::new(Mutex::new(None));
-            let frames = Arc::new(Mutex::new(Vec::new()));
-            let (slot, log) = (result.clone(), frames.clone());
-            let run = eframe::run_native(
-                "LTC Lab (screenshot)",
-                options,
-                Box::new(move |cc| {
-                    opened();
-                    keep_driver_loaded(cc);
-                    // A screenshot shows the defaults (or the view, checked above), not
-                    // whatever the last session kept.
-                    let defaults = LabState::default();
-                    let state = match &view {
-                        Some(v) => link::decode(v, &defaults).unwrap_or(defaults),
-                        None => defaults,
-                    };
-                    let mut app = LabApp::new(state, cc.wgpu_render_state.as_ref());
-                    app.start_with(startup);
-                    let mut shot = ScreenshotApp::new(app, path);
-                    shot.result = slot;
-                    shot.frames = log;
-                    Ok(Box::new(shot))
-                }),
-            );
-            if let Some(p) = &a.frame_log {
-                let records = frames.lock().expect("not poisoned");
-                ltc_lab::files::write_atomically(p, frame_log_csv(&records).as_bytes())?;
-            }
-            let taken = result.lock().expect("not poisoned").take();
-            // The screenshot's own error keeps its kind: a path that cannot be written is the
-            // user's to fix (exit 2), as in every command.
-            match (run, taken) {
-                (Ok(()), Some(outcome)) => outcome.and(broken_view.map_or(Ok(()), Err)),
-                (Ok(()), None) => Err(window_error(
-                    "the window closed before the screenshot".into(),
-                )),
-                (Err(e), _) => Err(window_error(format!("cannot open the window: {e}"))),
-            }
-        }
-        None => eframe::run_native(
-            "LTC Lab",
-            options,
-            Box::new(move |cc| {
-                opened();
-                keep_driver_loaded(cc);
-                let mut app = LabApp::from_creation_context(cc, view.as_deref());
-                app.start_with(startup);
-                Ok(Box::new(app))
-            }),
-        )
-        .map_err(|e| window_error(format!("cannot open the window: {e}"))),
+    }
+}
+
+/// The window opened: what the drivers said while it did is dropped.
+fn window_opened() {
+    drop(driver_output::give_back());
+}
+
+/// The window failed: `why`, with what the drivers said while it opened.
+fn window_error(why: &str) -> Error {
+    let said = driver_output::as_note(&driver_output::give_back());
+    Error::machine("lab", format!("{why}{said}"))
+}
+
+/// The window's pixels, once its work is done, to `path` (and its frames to `frame_log`).
+fn screenshot(
+    path: PathBuf,
+    frame_log: Option<&Path>,
+    view: Option<String>,
+    options: eframe::NativeOptions,
+    startup: Startup,
+) -> Result<()> {
+    let result = Arc::new(Mutex::new(None));
+    let frames = Arc::new(Mutex::new(Vec::new()));
+    let (slot, log) = (result.clone(), frames.clone());
+    let run = eframe::run_native(
+        "LTC Lab (screenshot)",
+        options,
+        Box::new(move |cc| {
+            window_opened();
+            keep_driver_loaded(cc);
+            // A screenshot shows the defaults (or the view, checked above), not whatever the
+            // last session kept.
+            let defaults = LabState::default();
+            let state = match &view {
+                Some(v) => link::decode(v, &defaults).unwrap_or(defaults),
+                None => defaults,
+            };
+            let mut app = LabApp::new(state, cc.wgpu_render_state.as_ref());
+            app.start_with(startup);
+            let mut shot = ScreenshotApp::new(app, path);
+            shot.result = slot;
+            shot.frames = log;
+            Ok(Box::new(shot))
+        }),
+    );
+    if let Some(p) = frame_log {
+        let records = frames.lock().expect("not poisoned");
+        ltc_lab::files::write_atomically(p, frame_log_csv(&records).as_bytes())?;
+    }
+    let taken = result.lock().expect("not poisoned").take();
+    // The screenshot's own error keeps its kind: a path that cannot be written is the user's
+    // to fix (exit 2), as in every command.
+    match (run, taken) {
+        (Ok(()), Some(outcome)) => outcome,
+        (Ok(()), None) => Err(window_error("the window closed before the screenshot")),
+        (Err(e), _) => Err(window_error(&format!("cannot open the window: {e}"))),
     }
 }
 

@@ -127,8 +127,8 @@ pub fn run(a: &Args) -> Result<()> {
     settings.divider = a.divider;
     settings.cull = a.cull;
     settings.rules.horizon = a.horizon.rule();
-    settings.sphere_a = a.sphere_a;
-    settings.sphere_b = a.sphere_b;
+    settings.a.sphere = a.sphere_a;
+    settings.b.sphere = a.sphere_b;
     a.lut.check_horizon(a.horizon)?;
     let out = a
         .out
@@ -161,7 +161,7 @@ pub fn run(a: &Args) -> Result<()> {
                     "--table-b and --lut-b compare two tables: use split or diff",
                 ));
             }
-            settings.method_b = settings.method_a;
+            settings.b.point = settings.a.point;
             settings.b_reads_table_b = true;
             NamedTables { a: named_a, b }
         }

@@ -10,10 +10,11 @@ use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::target::OUTPUT_FORMAT;
+use crate::light::Shape;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::remedy::HorizonRule;
 use crate::render::{LutFilter, Method, RenderSettings, View};
-use crate::scene::{Light, Scene};
+use crate::scene::Scene;
 
 /// The shader text (composed after `scene::SOURCE`).
 pub const SOURCE: &str = include_str!("../../shaders/plane.wgsl");
@@ -102,26 +103,20 @@ pub type PipelineKey = (
 /// which the render puts in A's place).
 pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
     let (a, b, view, table_b) = match s.view {
-        View::A => (s.method_a, s.method_b, ViewConstant::Single, false),
-        View::B => (s.method_b, s.method_b, ViewConstant::Single, false),
-        View::Split => (
-            s.method_a,
-            s.method_b,
-            ViewConstant::Split,
-            s.b_reads_table_b,
-        ),
-        View::Diff => (
-            s.method_a,
-            s.method_b,
-            ViewConstant::Diff,
-            s.b_reads_table_b,
-        ),
+        View::A => (s.a.point, s.b.point, ViewConstant::Single, false),
+        View::B => (s.b.point, s.b.point, ViewConstant::Single, false),
+        View::Split => (s.a.point, s.b.point, ViewConstant::Split, s.b_reads_table_b),
+        View::Diff => (s.a.point, s.b.point, ViewConstant::Diff, s.b_reads_table_b),
     };
     let spheres = match s.view {
-        View::B => (s.sphere_b, s.sphere_b),
-        _ => (s.sphere_a, s.sphere_b),
+        View::B => (s.b.sphere, s.b.sphere),
+        _ => (s.a.sphere, s.b.sphere),
     };
-    let sized = scene.lights.iter().any(Light::is_sized).then_some(spheres);
+    let sized = scene
+        .lights
+        .iter()
+        .any(|l| l.shape != Shape::Point)
+        .then_some(spheres);
     (a, b, view, s.rules.filter, table_b, s.rules.horizon, sized)
 }
 

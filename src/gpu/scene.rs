@@ -6,6 +6,7 @@ use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 
 use crate::gpu::ltc::{clip_bits, normalization_constant};
+use crate::light::Shape;
 use crate::render::RenderSettings;
 use crate::scene::{Light, Scene};
 
@@ -58,8 +59,17 @@ pub struct Params {
 pub struct GpuLight {
     /// xyz position, w the range (≤ 0: infinite).
     pub position_range: [f32; 4],
-    /// rgb colour × intensity, w the radius (0: a point light).
+    /// rgb colour × intensity, w the shape's size (`GpuLight::new`).
     pub intensity: [f32; 4],
+}
+
+/// `SHAPE_*` of scene.wgsl (what `light_shape` reads a light's shape as): its value and its
+/// name there.
+pub fn shape_constant(shape: Shape) -> (u32, &'static str) {
+    match shape {
+        Shape::Point => (0, "SHAPE_POINT"),
+        Shape::Sphere { .. } => (1, "SHAPE_SPHERE"),
+    }
 }
 
 impl From<&Light> for GpuLight {
@@ -69,9 +79,14 @@ impl From<&Light> for GpuLight {
         // A range below f32's smallest normal would round to 0, which encodes "infinite":
         // kept positive, it lights nothing, as on the CPU.
         let range = l.range.map_or(0.0, |r| (r as f32).max(f32::MIN_POSITIVE));
+        // The shape, one arm per shape: scene.wgsl's `light_shape` reads it back from w.
+        let size = match l.shape {
+            Shape::Point => 0.0,
+            Shape::Sphere { radius } => radius as f32,
+        };
         Self {
             position_range: [p[0], p[1], p[2], range],
-            intensity: [i.x, i.y, i.z, l.radius as f32],
+            intensity: [i.x, i.y, i.z, size],
         }
     }
 }

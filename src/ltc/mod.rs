@@ -5,7 +5,6 @@
 //! `D(ω) = max(ω'.z, 0) · |det M⁻¹| / (π (ω'·ω')²)`, `ω' = M⁻¹ ω`.
 
 pub mod cell_fitter;
-pub mod disk;
 pub mod fit;
 pub mod fit_point;
 pub mod formats;

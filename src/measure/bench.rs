@@ -9,9 +9,11 @@ use crate::gpu::GpuContext;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::timing::FrameTimes;
+use crate::light::Shape;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::Horizon;
+use crate::render::ShapeMethods;
 use crate::render::{LtcRules, Method, RenderSettings};
 use crate::scene::{RandomLights, Scene, generate_lights, preset};
 
@@ -268,7 +270,7 @@ pub fn run(
         let fraction = in_range_fraction(&points, width, height);
         let mut spheres = points.clone();
         for l in &mut spheres.lights {
-            l.radius = s.sphere_radius.unwrap_or(0.0);
+            l.shape = Shape::of_radius(s.sphere_radius.unwrap_or(0.0));
         }
         for &cull in &s.culls {
             for (method, horizon, sphere) in all_runs(ctx, s) {
@@ -281,7 +283,10 @@ pub fn run(
                         horizon: horizon.rule(),
                         ..LtcRules::default()
                     },
-                    sphere_a: sphere.unwrap_or(SphereMethod::LtcPoint),
+                    a: ShapeMethods {
+                        point: method,
+                        sphere: sphere.unwrap_or(SphereMethod::LtcPoint),
+                    },
                     ..RenderSettings::single(width, height, method)
                 };
                 let mut render = renderer.begin(ctx, scene, &settings, kept.take())?;

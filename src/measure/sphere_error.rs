@@ -7,9 +7,9 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{Lobes, view_from_theta};
+use crate::light::sphere::cap::Cap;
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_exact, sphere_light};
 use crate::ltc::lut::{Lut, THETA_MAX};
-use crate::ltc::sphere::Cap;
 use crate::measure::horizon::{BANDS, F0, draw};
 use crate::scene::SplitMix64;
 

@@ -296,7 +296,10 @@ fn render_shades_lights_with_a_size_by_the_method_asked() {
         let pixels = render_exr(dir.path(), &scene, &args, true);
         // render_exr's size.
         let settings = ltc_lab::render::RenderSettings {
-            sphere_a: ltc_lab::light::sphere::SphereMethod::from_name(sphere).unwrap(),
+            a: ltc_lab::render::ShapeMethods {
+                point: ltc_lab::render::Method::Ltc,
+                sphere: ltc_lab::light::sphere::SphereMethod::from_name(sphere).unwrap(),
+            },
             ..ltc_lab::render::RenderSettings::single(48, 32, ltc_lab::render::Method::Ltc)
         };
         let scene = ltc_lab::scene::preset("sphere-horizon");

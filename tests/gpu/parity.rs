@@ -216,7 +216,7 @@ fn ltc_and_ltc_fast_agree_to_f32_rounding() {
             let mut s = RenderSettings::single(W, H, Method::Ltc);
             s.rules.clipping = clip;
             let a = gpu_frame(&scene, &s);
-            s.method_a = Method::LtcFast;
+            s.a.point = Method::LtcFast;
             let b = gpu_frame(&scene, &s);
             let floor = relative_floor(&a, &a);
             for k in 0..a.pixels.len() {
@@ -249,7 +249,7 @@ fn no_nan_reaches_the_image() {
         color: [1.0, 0.0, 0.5],
         intensity,
         range,
-        radius: 0.0,
+        shape: ltc_lab::light::Shape::of_radius(0.0),
     };
     let lights = vec![
         light([0.5, 0.5, 0.0], 1.0, None),
@@ -389,7 +389,10 @@ fn gpu_matches_cpu_for_every_horizon_remedy() {
                     &scene,
                     lut,
                     &RenderSettings {
-                        method_a: Method::Ltc,
+                        a: ltc_lab::render::ShapeMethods {
+                            point: Method::Ltc,
+                            ..s.a
+                        },
                         ..s
                     },
                 );

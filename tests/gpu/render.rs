@@ -49,7 +49,7 @@ fn binning_scene(range: f64, count: usize) -> Scene {
         color: [1.0, 0.8, 0.6],
         intensity: 0.1,
         range,
-        radius: 0.0,
+        shape: ltc_lab::light::Shape::of_radius(0.0),
     };
     for ty in 0..=H / 16 {
         for tx in 0..=W / 16 {
@@ -88,7 +88,7 @@ fn culled_images_equal_unculled_ones_exactly() {
             for view in [View::A, View::Split, View::Diff] {
                 let mut s = RenderSettings::single(W, H, method);
                 s.view = view;
-                s.method_b = if method == Method::Brdf {
+                s.b.point = if method == Method::Brdf {
                     Method::Ltc
                 } else {
                     Method::Brdf
@@ -136,7 +136,10 @@ fn a_render_summed_in_chunks_is_the_one_shot_render() {
             let s = RenderSettings {
                 view,
                 cull,
-                method_b: other,
+                b: ltc_lab::render::ShapeMethods {
+                    point: other,
+                    ..RenderSettings::single(W, H, method).b
+                },
                 ..RenderSettings::single(W, H, method)
             };
             let whole = frame(&mut r, &scene, &s);
@@ -187,7 +190,10 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
     for method in [Method::Ltc, Method::LtcFast] {
         for view in [View::Split, View::B] {
             let s = RenderSettings {
-                method_b: method,
+                b: ltc_lab::render::ShapeMethods {
+                    point: method,
+                    ..RenderSettings::single(W, H, method).b
+                },
                 view,
                 b_reads_table_b: true,
                 ..RenderSettings::single(W, H, method)
@@ -198,7 +204,10 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
         }
         // B alone with the point table is the point table's image, not the classic one's.
         let alone = RenderSettings {
-            method_b: method,
+            b: ltc_lab::render::ShapeMethods {
+                point: method,
+                ..RenderSettings::single(W, H, method).b
+            },
             view: View::B,
             b_reads_table_b: true,
             ..RenderSettings::single(W, H, method)
@@ -211,7 +220,10 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
     }
     // The difference of the two tables on the GPU is the CPU's to the diff bound.
     let diff = RenderSettings {
-        method_b: Method::Ltc,
+        b: ltc_lab::render::ShapeMethods {
+            point: Method::Ltc,
+            ..RenderSettings::single(W, H, Method::Ltc).b
+        },
         view: View::Diff,
         b_reads_table_b: true,
         ..RenderSettings::single(W, H, Method::Ltc)

@@ -1,5 +1,5 @@
 //! Lights with a size on the GPU (shaders/sphere_light.wgsl) against the f64 CPU methods
-//! (src/light/sphere.rs) — the exact integral with the GPU's rule, the LTC disk and the
+//! (src/light/sphere/mod.rs) — the exact integral with the GPU's rule, the LTC disk and the
 //! representative point — measured directly on random spheres: cut by the horizon, below it,
 //! enclosing the point, from a tenth of a degree to 60°.
 
@@ -7,11 +7,11 @@ use crate::gpu_common::{gpu, run_probe};
 use glam::{DMat3, DVec3};
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::gpu::{brdf, ltc, sphere_light};
+use ltc_lab::light::sphere::cap::Cap;
 use ltc_lab::light::sphere::{
     GPU_EXACT_NODES, SphereShading, sphere_exact, sphere_ltc_disk, sphere_representative_point,
 };
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::ltc::sphere::Cap;
 use ltc_lab::ltc::{Clipping, Ltc, LtcPair, Normalization};
 use ltc_lab::measure::parity::RADIANCE_TOLERANCE;
 use ltc_lab::scene::SplitMix64;
@@ -287,7 +287,7 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
         color: [1.0, 0.8, 0.6],
         intensity: 0.2,
         range: None,
-        radius,
+        shape: ltc_lab::light::Shape::of_radius(radius),
     };
     let mut scene = preset("paper-100");
     scene.lights = vec![
@@ -301,7 +301,10 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
     for method in [Method::Brdf, Method::Ltc, Method::LtcFast] {
         for sphere in SphereMethod::ALL {
             let s = RenderSettings {
-                sphere_a: sphere,
+                a: ltc_lab::render::ShapeMethods {
+                    point: method,
+                    sphere,
+                },
                 ..RenderSettings::single(w, h, method)
             };
             let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
@@ -349,7 +352,10 @@ fn gpu_failure_presets_are_finite_and_match_the_cpu() {
         let scene = preset(name);
         for sphere in SphereMethod::ALL {
             let s = RenderSettings {
-                sphere_a: sphere,
+                a: ltc_lab::render::ShapeMethods {
+                    point: Method::LtcFast,
+                    sphere,
+                },
                 ..RenderSettings::single(48, 40, Method::LtcFast)
             };
             let gpu = gpu_frame(&scene, &s);
@@ -378,7 +384,7 @@ fn a_far_tiny_sphere_renders_as_its_point_light() {
             color: [1.0, 1.0, 1.0],
             intensity: 1e6,
             range: None,
-            radius,
+            shape: ltc_lab::light::Shape::of_radius(radius),
         }];
         scene
     };
@@ -386,7 +392,10 @@ fn a_far_tiny_sphere_renders_as_its_point_light() {
     for method in [Method::Brdf, Method::LtcFast] {
         for sphere in SphereMethod::ALL {
             let s = RenderSettings {
-                sphere_a: sphere,
+                a: ltc_lab::render::ShapeMethods {
+                    point: method,
+                    sphere,
+                },
                 ..RenderSettings::single(32, 24, method)
             };
             let what = format!("{} {}", method.name(), sphere.name());

@@ -167,7 +167,7 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     settle(&mut h);
     let gpu = plane_image(&mut h);
     let s = settings(&h, View::Split, (gpu.width, gpu.height));
-    assert!(s.b_reads_table_b && s.method_b == s.method_a);
+    assert!(s.b_reads_table_b && s.b.point == s.a.point);
     let tables = ltc_lab::render::Tables {
         a: ltc_lab::ltc::lut::Lut::embedded(),
         b: ltc_lab::ltc::lut::Lut::embedded_point(),

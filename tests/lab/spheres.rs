@@ -10,8 +10,9 @@ use ltc_lab::app::lab::Selection;
 use ltc_lab::app::{LabApp, PanelId};
 use ltc_lab::colormap::short_number;
 use ltc_lab::cpu::sphere_case_map;
+use ltc_lab::light::Shape;
 use ltc_lab::light::sphere::SphereMethod;
-use ltc_lab::ltc::sphere::SphereCase;
+use ltc_lab::light::sphere::cap::SphereCase;
 use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
 use ltc_lab::scene::MIN_RADIUS;
@@ -39,7 +40,7 @@ fn a_failure_preset_shows_its_sphere_cases_on_the_plane() {
             .lights()
             .list
             .iter()
-            .all(ltc_lab::scene::Light::is_sized)
+            .all(|l| matches!(l.shape, Shape::Sphere { .. }))
     );
     h.get_by_label("sphere cases").click();
     settle(&mut h);
@@ -112,12 +113,18 @@ fn a_lights_radius_is_checked_where_it_enters() {
     h.get_by_role_and_label(Role::SpinButton, "r")
         .set_value_accesskit(0.1);
     settle(&mut h);
-    assert_eq!(h.state().lab().lights().list[0].radius, 0.1);
+    assert_eq!(
+        h.state().lab().lights().list[0].shape,
+        Shape::Sphere { radius: 0.1 }
+    );
     // Below the smallest sphere: raised to it, and said with the field's name.
     h.get_by_role_and_label(Role::SpinButton, "r")
         .set_value_accesskit(1e-7);
     settle(&mut h);
-    assert_eq!(h.state().lab().lights().list[0].radius, MIN_RADIUS);
+    assert_eq!(
+        h.state().lab().lights().list[0].shape,
+        Shape::Sphere { radius: MIN_RADIUS }
+    );
     let said = notice(&h).map(|m| m.text).unwrap_or_default();
     assert!(said.contains("lights[0].radius"), "{said}");
 }

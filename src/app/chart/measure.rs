@@ -423,7 +423,7 @@ impl MeasureJob {
         let task = &self.tasks[self.next];
         self.result.points.push(Point {
             label: task.label.clone(),
-            method: Some(task.settings.method_a),
+            method: Some(task.settings.a.point),
             ms: median,
             rel_rmse,
             ms_range: Some(range),

@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::{Checked, Notes, notes};
 use crate::app::lab::refit_result::RefitResult;
+use crate::light::Shape;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{ALPHA_MIN, Table};
@@ -37,7 +38,7 @@ pub fn shaded(mut scene: Scene, o: &Overrides) -> Scene {
         if o.range > 0.0 {
             l.range = Some(o.range);
         }
-        l.radius = o.shaded_radius(l);
+        l.shape = o.shaded_shape(l);
     }
     scene
 }
@@ -92,7 +93,10 @@ impl Checked for Lights {
 /// it to take the value from.
 fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -> bool {
     let values = l.position.into_iter().chain(l.color).chain([l.intensity]);
-    let finite = values.chain(l.range).chain([l.radius]).all(f64::is_finite);
+    let finite = values
+        .chain(l.range)
+        .chain([l.shape.radius()])
+        .all(f64::is_finite);
     let before = match (before, finite) {
         (Some(b), _) => *b,
         (None, true) => *l,
@@ -124,9 +128,12 @@ fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -
         let previous = before.range.unwrap_or(*r);
         n.number(&name("range"), r, previous, [1e-6, 2.0 * MAX_COORDINATE]);
     }
-    // 0 is a point light; a size is at least `MIN_RADIUS` (docs/design.md §3).
-    if l.radius != 0.0 {
-        n.number(&name("radius"), &mut l.radius, before.radius, RADIUS_RANGE);
+    // A sphere's radius is at least `MIN_RADIUS` (docs/design.md §3).
+    match &mut l.shape {
+        Shape::Point => {}
+        Shape::Sphere { radius } => {
+            n.number(&name("radius"), radius, before.shape.radius(), RADIUS_RANGE);
+        }
     }
     true
 }
@@ -365,7 +372,7 @@ pub struct Overrides {
     pub intensity_scale: f64,
     /// Every light's range where > 0; 0 keeps each light's own.
     pub range: f64,
-    /// Every light's radius where > 0; 0 keeps each light's own.
+    /// Every light a sphere of this radius where > 0; 0 keeps each light's own shape.
     pub radius: f64,
 }
 
@@ -380,12 +387,14 @@ pub const INTENSITY_RANGE: [f64; 2] = [0.01, 100.0];
 pub const RANGE_RANGE: [f64; 2] = [0.01, 10.0];
 
 impl Overrides {
-    /// The radius `l` is shaded with: every light's where set, else its own.
-    pub fn shaded_radius(&self, l: &Light) -> f64 {
+    /// The shape `l` is shaded with: every light's sphere where set, else its own.
+    pub fn shaded_shape(&self, l: &Light) -> Shape {
         if self.radius > 0.0 {
-            self.radius
+            Shape::Sphere {
+                radius: self.radius,
+            }
         } else {
-            l.radius
+            l.shape
         }
     }
 }

@@ -9,9 +9,9 @@ pub mod paint;
 pub mod pixel_table;
 pub mod shading;
 pub mod sphere_cases;
+pub mod spots;
 
 use egui::{Pos2, Vec2};
-use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::Notes;
@@ -24,10 +24,13 @@ use crate::app::plane::paint::{
 use crate::app::plane::pixel_table::{LightColumn, PinnedLights};
 use crate::app::plane::shading::Shading;
 use crate::app::plane::sphere_cases::SphereCases;
+use crate::app::plane::spots::{free_spot, worst_pixel};
 use crate::app::ui::display::{ShownImage, colour_bar, difference_scale};
 use crate::gpu::GpuContext;
-use crate::render::{Frame, FrameKind, RenderSettings, View};
-use crate::scene::{Light, Scene};
+use crate::light::Shape;
+use crate::render::ShapeMethods;
+use crate::render::{Frame, RenderSettings, View};
+use crate::scene::Light;
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
 /// 20 000 lights in under a minute on a CPU driver (lavapipe, ~0.2 G light-px/s), and in
@@ -331,7 +334,7 @@ impl PlanePanel {
                     color: [1.0; 3],
                     intensity: 0.2,
                     range: None,
-                    radius: 0.0,
+                    shape: Shape::Point,
                 });
             });
             let added = lab.lights().list.len().checked_sub(1);
@@ -476,10 +479,17 @@ pub fn render_settings(
     let forms = **lab.forms();
     let spheres = **lab.spheres();
     let tables = **lab.side_b() == SideB::TableB;
+    let ltc = ShapeMethods {
+        point: forms.ltc,
+        sphere: spheres.ltc,
+    };
+    let brdf = ShapeMethods {
+        point: forms.brdf,
+        sphere: spheres.brdf,
+    };
     RenderSettings {
-        method_b: if tables { forms.ltc } else { forms.brdf },
-        sphere_a: spheres.ltc,
-        sphere_b: if tables { spheres.ltc } else { spheres.brdf },
+        a: ltc,
+        b: if tables { ltc } else { brdf },
         b_reads_table_b: tables,
         view: state.view,
         rules: **lab.rules(),
@@ -579,68 +589,11 @@ fn side_names(side_b: SideB) -> (&'static str, &'static str) {
     }
 }
 
-/// The plane pixel where a difference frame is largest (the first of equals); `None` for a
-/// radiance frame or one without plane pixels.
-pub fn worst_pixel(frame: &Frame) -> Option<(usize, usize)> {
-    if frame.kind != FrameKind::RelativeDifference {
-        return None;
-    }
-    let k = (0..frame.pixels.len())
-        .filter(|&k| frame.on_plane[k] && !frame.pixels[k].x.is_nan())
-        .reduce(|best, k| {
-            if frame.pixels[k].x > frame.pixels[best].x {
-                k
-            } else {
-                best
-            }
-        })?;
-    Some((k % frame.width, k / frame.width))
-}
-
-/// Where *+ light* puts a light, a quarter of the plane's half size above it: of a 9 × 9 grid
-/// over the plane, the point whose light and its foot are seen well inside a `size` image
-/// and whose light lies farthest (in the image) from the divider column and from every other
-/// light's image; above the centre where no point is seen.
-pub fn free_spot(scene: &Scene, divider: f64, (width, height): (usize, usize)) -> [f64; 3] {
-    const STEPS: usize = 9;
-    let half = scene.plane.half_size;
-    let z = 0.25 * half;
-    let (w, h) = (width as f64, height as f64);
-    // 5% of the width from the image's edges: a marker there is seen whole, not cut.
-    let margin = 0.05 * w;
-    let inside = |p: [f64; 3]| {
-        scene
-            .project(DVec3::from(p), width, height)
-            .filter(|&(x, y)| x >= margin && x <= w - margin && y >= margin && y <= h - margin)
-    };
-    let others: Vec<(f64, f64)> = scene
-        .lights
-        .iter()
-        .filter_map(|l| scene.project(DVec3::from(l.position), width, height))
-        .collect();
-    let divider_x = divider * w;
-    let mut best: Option<(f64, [f64; 3])> = None;
-    for j in 0..STEPS {
-        for i in 0..STEPS {
-            let at = |k: usize| half * (-0.9 + 1.8 * k as f64 / (STEPS - 1) as f64);
-            let (x, y) = (at(i), at(j));
-            let (Some(q), Some(_)) = (inside([x, y, z]), inside([x, y, 0.0])) else {
-                continue;
-            };
-            let clearance = others
-                .iter()
-                .map(|o| (o.0 - q.0).hypot(o.1 - q.1))
-                .fold((q.0 - divider_x).abs(), f64::min);
-            if best.is_none_or(|(c, _)| clearance > c) {
-                best = Some((clearance, [x, y, z]));
-            }
-        }
-    }
-    best.map_or([0.0, 0.0, z], |(_, p)| p)
-}
-
 /// Whether some light of the lab's scene, as shaded, has a size.
 fn sized(lab: &Lab) -> bool {
     let o = lab.overrides();
-    lab.lights().list.iter().any(|l| o.shaded_radius(l) > 0.0)
+    lab.lights()
+        .list
+        .iter()
+        .any(|l| o.shaded_shape(l) != Shape::Point)
 }

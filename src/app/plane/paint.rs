@@ -9,6 +9,7 @@ use crate::app::lab::Lab;
 use crate::app::plane::shading::{FRAME_BUDGET_MS, Progress};
 use crate::app::ui::display::ShownImage;
 use crate::cpu::{Side, clip_counts, shade};
+use crate::light::Shape;
 use crate::metrics::luminance;
 use crate::render::{RenderSettings, Tables};
 
@@ -185,10 +186,9 @@ pub fn paint_outlines(
         let Some(l) = lab.lights().list.get(*k) else {
             continue;
         };
-        let radius = lab.overrides().shaded_radius(l);
-        if radius <= 0.0 {
+        let Shape::Sphere { radius } = lab.overrides().shaded_shape(l) else {
             continue;
-        }
+        };
         let centre = DVec3::from(l.position);
         // The silhouette's radius, from the projection of a point one radius above the
         // centre across the view (exact for a sphere on the axis, within a few percent over

@@ -8,7 +8,7 @@ use egui::Color32;
 use crate::app::lab::{Exposure, Lab, parts};
 use crate::app::work::cache::{Cached, Own};
 use crate::cpu::sphere_case_map;
-use crate::ltc::sphere::SphereCase;
+use crate::light::sphere::cap::SphereCase;
 
 /// The map's pixels per render pixel, each way: a quarter keeps it under a few milliseconds
 /// for a hundred lights while its edges stay where the render's are to within 4 pixels.

@@ -4,11 +4,15 @@
 //! centre, Karis's representative point and Heitz & Hill's LTC disk are the approximations
 //! measured against it. A radius of zero is the paper's point light, unchanged.
 
+pub mod cap;
+pub mod disk;
+pub mod quadrature;
+
 use glam::DVec3;
 
 use crate::brdf::{self, Lobes, MIN_LIGHT_DISTANCE};
-use crate::light::quadrature::cap_integral_about;
-use crate::ltc::sphere::Cap;
+use crate::light::sphere::cap::Cap;
+use crate::light::sphere::quadrature::cap_integral_about;
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
 
@@ -195,7 +199,7 @@ pub fn sphere_ltc_disk(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
         Normalization::Corrected => (s.ltc.spec_magnitude(s.f0), s.ltc.diff.magnitude()),
         Normalization::PaperLiteral => (1.0, 1.0),
     };
-    let lobe = |ltc| crate::ltc::disk::ltc_disk(ltc, cap, s.clip.case2, s.normalization);
+    let lobe = |ltc| crate::light::sphere::disk::ltc_disk(ltc, cap, s.clip.case2, s.normalization);
     Lobes {
         specular: scale * spec_weight * lobe(&s.ltc.spec),
         diffuse: scale * diff_weight * lobe(&s.ltc.diff),

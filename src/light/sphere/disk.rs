@@ -11,8 +11,9 @@ use std::f64::consts::PI;
 
 use glam::{DMat3, DVec3};
 
-use super::sphere::{Cap, illuminance_sphere};
-use super::{Ltc, Normalization};
+use crate::light::sphere::cap::Cap;
+use crate::ltc::sphere::illuminance_sphere;
+use crate::ltc::{Ltc, Normalization};
 
 /// `∫ D(ω) dω` over the cap (every direction above the surface where the point is inside the
 /// sphere). `case2` clips the transformed cone at the clamped cosine's horizon (eq. 30's
