@@ -159,6 +159,7 @@ fn the_chart_keeps_its_legends_outside_and_gives_the_speed_ratio() {
         ],
         device: "a test's numbers".into(),
         note: String::new(),
+        study: None,
     };
     let mut state = maximised(PanelId::Chart);
     state.chart.measurement = Some(ranged);

@@ -61,6 +61,37 @@ fn check_arrival(h: &Harness<'static, LabApp>, lesson: &Lesson, k: usize) {
     let panels: Vec<&str> = step.panels.iter().map(|p| p.name()).collect();
     assert_eq!(drawn, panels, "step {}: the panels shown", k + 1);
     assert!(shows(h, &step.title), "step {}: its title", k + 1);
+    words_fit(h, step, k);
+}
+
+/// The step's words are all in view without scrolling: its title at the top of the bar (the
+/// bar scrolled back up on every step) and the last of its words — the *try this*, or the
+/// control to move where it asks nothing — inside the window.
+fn words_fit(h: &Harness<'static, LabApp>, step: &ltc_lab::app::lesson::Step, k: usize) {
+    let window = h.ctx.content_rect();
+    let title = h.get_by_label(&format!("{}. {}", k + 1, step.title)).rect();
+    let last = match &step.try_this {
+        Some(t) => format!("Try this: {}", t.task),
+        None if !step.control.is_empty() => format!("Move: {}", step.control),
+        None => "Look at: ".to_string(),
+    };
+    let last = h
+        .query_all_by_label_contains(&last)
+        .map(|n| n.rect())
+        .next()
+        .unwrap_or_else(|| panic!("step {}: '{last}' is not shown", k + 1));
+    assert!(
+        title.top() >= window.top() && title.top() < window.top() + 120.0,
+        "step {}: the title is scrolled to {title:?}",
+        k + 1
+    );
+    assert!(
+        last.bottom() <= window.bottom(),
+        "step {}: its last words end at {} below the window's {}",
+        k + 1,
+        last.bottom(),
+        window.bottom()
+    );
 }
 
 /// Does step `k`'s task with the control it names, as a student would.

@@ -55,6 +55,10 @@ pub struct Measurement {
     /// What the chart adds after it (a shipped study's invitation to measure this machine).
     #[serde(default, skip_serializing_if = "String::is_empty")]
     pub note: String,
+    /// The shipped study it is, by name (`ShippedStudy`); `None` for a measurement or a
+    /// study file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub study: Option<String>,
 }
 
 impl Measurement {
@@ -76,6 +80,7 @@ impl Measurement {
             scaling_range: Vec::new(),
             device: format!("{source}: {} rows", rows.len()),
             note: String::new(),
+            study: None,
         }
     }
 

@@ -51,6 +51,7 @@ impl ShippedStudy {
         };
         m.device = format!("{label} study ({})", self.device());
         m.note = "press measure for this machine".into();
+        m.study = Some(self.name().into());
         Some(m)
     }
 }

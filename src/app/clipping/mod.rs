@@ -49,14 +49,21 @@ impl Panel for ClippingPanel {
         egui::ScrollArea::vertical()
             .auto_shrink([false; 2])
             .show(ui, |ui| {
+                let first = self.state.elevation_first;
+                if first {
+                    self.elevation.show(ui, lab, self.state.setup.table);
+                    ui.separator();
+                }
                 for (r, &row) in ROWS.iter().enumerate() {
                     self.row_controls(ui, row);
                     self.row_pictures(ui, r, row, size);
                 }
                 self.legend(ui);
                 self.profile(ui);
-                ui.separator();
-                self.elevation.show(ui, lab, self.state.setup.table);
+                if !first {
+                    ui.separator();
+                    self.elevation.show(ui, lab, self.state.setup.table);
+                }
             });
     }
 
@@ -120,6 +127,8 @@ impl ClippingPanel {
             format!("B ({})", lab.tables().b().name),
         )
         .on_hover_text("Table B, the other fit");
+        ui.toggle_value(&mut self.state.elevation_first, "elevation on top")
+            .on_hover_text("The elevation view (one light's error over its height above the surface, by band) above the Figure 2 pictures instead of under them");
         if ui
             .small_button("reset")
             .on_hover_text("The presets' α and lights")

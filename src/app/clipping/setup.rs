@@ -15,6 +15,9 @@ pub struct ClippingState {
     /// The row whose case map legend and profile are shown.
     pub clip_scene: ClipScene,
     pub setup: ClipSetup,
+    /// The elevation view (one light's error over its height) above Figure 2's rows, where a
+    /// lesson's step is about it.
+    pub elevation_first: bool,
 }
 
 impl Default for ClippingState {
@@ -22,6 +25,7 @@ impl Default for ClippingState {
         Self {
             clip_scene: ClipScene::Case1,
             setup: ClipSetup::default(),
+            elevation_first: false,
         }
     }
 }

@@ -24,7 +24,7 @@ const SMALL_SIZE: f32 = 18.0;
 /// The bar's width: a third of the window, within what a line of text at `TEXT_SIZE` reads
 /// comfortably in (about 35 to 60 characters).
 pub fn bar_width(window_width: f32) -> f32 {
-    (window_width * 0.32).clamp(340.0, 600.0)
+    (window_width * 0.38).clamp(340.0, 640.0)
 }
 
 /// What the bar asks of the app.
@@ -71,6 +71,8 @@ pub struct LessonBar {
     armed: bool,
     /// The chart's finished measurements when the step was opened.
     measurements_before: Option<u64>,
+    /// The step changed: its words are shown from their top.
+    scroll_to_top: bool,
     /// The step's text with its readings.
     text: Cached<String>,
     /// Each method's work per light, counted from the shaders once a text asks for it.
@@ -89,6 +91,7 @@ impl LessonBar {
             view_error: None,
             armed: false,
             measurements_before: None,
+            scroll_to_top: true,
             text: Cached::new("lesson.text"),
             work: None,
             writing: Writing {
@@ -126,6 +129,7 @@ impl LessonBar {
     pub fn show_step(&mut self, k: usize, view_error: Option<String>) {
         self.step = k.min(self.lesson.steps.len().saturating_sub(1));
         self.view_error = view_error;
+        self.scroll_to_top = true;
         self.armed = false;
         self.measurements_before = None;
     }
@@ -205,7 +209,28 @@ impl LessonBar {
             {
                 action = Some(Action::Go(self.step + 1));
             }
-            ui.label(big(&format!("{} / {n}", self.step + 1)));
+            // The step's number opens the list of steps: one row for the navigation leaves
+            // the step's words the height a projector needs.
+            let mut chosen = self.step;
+            egui::ComboBox::from_id_salt("lesson steps")
+                .selected_text(big(&format!("{} / {n}", self.step + 1)))
+                .height(f32::INFINITY)
+                .show_ui(ui, |ui| {
+                    for (k, s) in self.lesson.steps.iter().enumerate() {
+                        let tick = if self.done(k) { " (done)" } else { "" };
+                        let line = format!("{}. {}{tick}", k + 1, s.title);
+                        ui.selectable_value(&mut chosen, k, line);
+                    }
+                })
+                .response
+                .on_hover_text(format!(
+                    "{}: its steps ({})",
+                    truncate(&self.lesson.title, 60),
+                    self.source
+                ));
+            if chosen != self.step {
+                action = Some(Action::Go(chosen));
+            }
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 if ui
                     .button("close lesson")
@@ -216,31 +241,19 @@ impl LessonBar {
                 }
             });
         });
-        let mut chosen = self.step;
-        egui::ComboBox::from_id_salt("lesson steps")
-            .width(ui.available_width() - 8.0)
-            .selected_text(truncate(&self.lesson.title, 48))
-            .show_ui(ui, |ui| {
-                for (k, s) in self.lesson.steps.iter().enumerate() {
-                    let tick = if self.done(k) { " (done)" } else { "" };
-                    ui.selectable_value(&mut chosen, k, format!("{}. {}{tick}", k + 1, s.title));
-                }
-            })
-            .response
-            .on_hover_text(format!("The lesson's steps ({})", self.source));
-        if chosen != self.step {
-            action = Some(Action::Go(chosen));
-        }
         ui.separator();
-        egui::ScrollArea::vertical()
-            .auto_shrink([false, false])
-            .show(ui, |ui| {
-                self.words(ui, now);
-                ui.add_space(16.0);
-                if let Some(a) = self.writing(ui) {
-                    action = Some(a);
-                }
-            });
+        // A new step's words start at their top, whatever the last step was scrolled to.
+        let mut area = egui::ScrollArea::vertical().auto_shrink([false, false]);
+        if std::mem::take(&mut self.scroll_to_top) {
+            area = area.vertical_scroll_offset(0.0);
+        }
+        area.show(ui, |ui| {
+            self.words(ui, now);
+            ui.add_space(16.0);
+            if let Some(a) = self.writing(ui) {
+                action = Some(a);
+            }
+        });
         action
     }
 

@@ -68,7 +68,9 @@ impl Reading {
             Self::PinnedError => "the pinned pixel's relative error LTC vs BRDF, %",
             Self::PinnedLights => "the pinned pixel's light count",
             Self::Speedup => "the chart's brdf time over its ltc-fast time",
-            Self::MeasuredOn => "where the chart's times come from",
+            Self::MeasuredOn => {
+                "where the chart's times come from: a study the lab ships, or this machine's device"
+            }
             Self::GpuStudy => {
                 "brdf's time over ltc-fast's per light count, in the H100 study the lab ships"
             }
@@ -198,7 +200,15 @@ impl Reading {
                 (Some(b), Some(f)) => format!("{:.2}×", b / f),
                 _ => none(),
             },
-            Self::MeasuredOn => now.measurement.map_or_else(none, |m| m.device.clone()),
+            // A shipped study by its name; a measurement by its device's name alone (the
+            // chart's label has its details).
+            Self::MeasuredOn => now.measurement.map_or_else(none, |m| match &m.study {
+                Some(name) => format!("the {name} study the lab ships"),
+                None => {
+                    let device = m.device.split(" (").next().unwrap_or(&m.device);
+                    format!("this machine's {device}")
+                }
+            }),
             Self::GpuStudy => shipped_speedups(ShippedStudy::H100),
             Self::CpuStudy => shipped_speedups(ShippedStudy::Lavapipe),
             Self::WorkBrdf => work_of(Method::Brdf),

@@ -134,12 +134,12 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
             "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it divided by its middle element, and this is the four cells about (θo, α) interpolated as the shader does",
         ),
         (
-            "M",
+            "M (its inverse)",
             ltc.brdf_from_cos,
             "brdf_from_cos: maps the clamped cosine onto the lobe",
         ),
         (
-            "paper's form (÷ m22)",
+            "M^-1 in the paper's form (÷ m22)",
             inv * (1.0 / m22),
             "[[a,0,b],[0,c,0],[d,0,1]]: the same M^-1 divided by its bottom-right element",
         ),

@@ -305,6 +305,9 @@ fn readout(ui: &mut egui::Ui, (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab), 
                 "Table A's LTC lobes' magnitudes at this pixel's θo (the same for all its lights)",
             );
         }
+        if !tables_compared(t) {
+            ui.small("error share: a light's LTC − exact over the pixel's (the shares sum to 100%; lights that err both ways give shares beyond ±100%)");
+        }
         if ui.small_button("unpin").clicked() {
             *pinned = None;
             lab.edit(|v: &mut LobeView| v.light = None);
