@@ -372,3 +372,43 @@ fn a_try_this_ticks_only_for_what_the_student_did() {
     assert_eq!(at(&h), (1, true));
     settle(&mut h);
 }
+
+/// A step's words start at their top whatever the step before was scrolled to: the bar kept
+/// its scroll position between steps, and steps opened with their titles scrolled away.
+#[test]
+fn every_step_opens_with_its_words_at_the_top() {
+    let Some(mut h) = lab((1280.0, 720.0), LabState::default()) else {
+        return;
+    };
+    let lesson = paper();
+    h.state_mut().open_lesson(lesson.clone(), "paper", 0);
+    settle(&mut h);
+    let title = |h: &Harness<'static, LabApp>, k: usize| {
+        h.get_by_label(&format!("{}. {}", k + 1, lesson.steps[k].title))
+            .rect()
+    };
+    let top = title(&h, 0).top();
+    // Scrolled down over the bar's words (open the teacher's tools so there is room to).
+    press(&mut h, "write a lesson");
+    h.run_steps(4);
+    let over_words = title(&h, 0).center() + egui::vec2(0.0, 200.0);
+    for _ in 0..10 {
+        h.hover_at(over_words);
+        h.event(egui::Event::MouseWheel {
+            unit: egui::MouseWheelUnit::Point,
+            delta: egui::vec2(0.0, -120.0),
+            phase: egui::TouchPhase::Move,
+            source: egui::MouseWheelSource::Unknown,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.run_steps(2);
+    }
+    assert!(
+        title(&h, 0).top() < top - 50.0,
+        "the bar did not scroll: {:?}",
+        title(&h, 0)
+    );
+    press(&mut h, "next");
+    settle(&mut h);
+    assert_eq!(title(&h, 1).top(), top, "step 2 opened scrolled");
+}
