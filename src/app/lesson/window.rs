@@ -10,10 +10,11 @@ use crate::app::lesson::{Lesson, StepView};
 use crate::app::panel::PanelId;
 use crate::app::{LabApp, LabState};
 
-/// The width over height above which a step's two panels sit side by side: from about square,
-/// since a panel gets more of its own room beside the other than under it (the plane's image
-/// keeps 16:9, and under a pinned pixel's table the stacked plane was 145×80 at 1280×720).
-const SIDE_BY_SIDE: f32 = 1.1;
+/// The width over height above which a step's two panels sit side by side: from a little
+/// taller than square, since a panel gets more of its own room beside the other than under it
+/// (the plane's image keeps 16:9: under a pinned pixel's table the stacked plane was 145×80 at
+/// 1280×720, side by side 365×205; at 1024×640, 70×40 against 300×170).
+const SIDE_BY_SIDE: f32 = 0.9;
 
 impl LabApp {
     /// Walks `lesson` (from `source`: a shipped name or a file) from step `step` (from 0).
