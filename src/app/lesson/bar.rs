@@ -21,8 +21,9 @@ pub const TEXT_SIZE: f32 = 19.0;
 const TITLE_SIZE: f32 = 26.0;
 const SMALL_SIZE: f32 = 18.0;
 
-/// The bar's width: a third of the window, within what a line of text at `TEXT_SIZE` reads
-/// comfortably in (about 35 to 60 characters).
+/// The bar's width: 38% of the window (every step of the shipped lesson fits at 1280×720),
+/// within what a line of text at `TEXT_SIZE` reads comfortably in (about 35 to 65
+/// characters).
 pub fn bar_width(window_width: f32) -> f32 {
     (window_width * 0.38).clamp(340.0, 640.0)
 }
