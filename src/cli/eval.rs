@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use ltc_lab::error::{Error, Result};
 use ltc_lab::files::read_text;
-use ltc_lab::measure::eval::{evaluate, output_header, parse_cases};
+use ltc_lab::measure::eval::{Kind, evaluate, header_of, parse_cases};
 
 use ltc_lab::ltc::remedy::Horizon;
 
@@ -20,6 +20,10 @@ pub struct Args {
     /// --horizon remedy. With a seventh column, sigma (degrees, 0–90), each light is a sphere of
     /// that angular radius at unit distance with unit intensity, and the output columns are
     /// both lobes by exact, ltc-point, ltc-disk and representative-point (docs/design.md §1.10).
+    /// With the header theta_o,alpha,f0,cx,cy,cz,ux,uy,uz,vx,vy,vz each row is a rect light of
+    /// radiance 1 (centre and half-edge vectors in the shading frame, emitting toward u × v),
+    /// and the columns are both lobes by exact, ltc-polygon, ltc-proxy, ltc-proxy-fast and
+    /// ltc-point (docs/design.md §1.11).
     #[arg(long)]
     cases: PathBuf,
     #[command(flatten)]
@@ -32,14 +36,14 @@ pub fn run(a: &Args) -> Result<()> {
     let text = read_text(&a.cases, ltc_lab::measure::eval::MAX_FILE_BYTES)?;
     let cases = parse_cases(&text, &a.cases.display().to_string())?;
     a.lut.check_horizon(a.horizon)?;
-    if cases.spheres && a.horizon != Horizon::Eq30 {
+    if cases.kind != Kind::Points && a.horizon != Horizon::Eq30 {
         return Err(Error::input(
             "--horizon",
-            "the horizon remedies are for point lights; sphere lights take eq30",
+            "the horizon remedies are for point lights; sphere and rect lights take eq30",
         ));
     }
     let lut = a.lut.load_for(a.horizon)?;
-    let mut out = output_header(cases.spheres) + "\n";
+    let mut out = header_of(cases.kind) + "\n";
     for c in &cases.rows {
         out.push_str(&evaluate(c, &lut, a.horizon.rule()));
         out.push('\n');

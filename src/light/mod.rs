@@ -5,6 +5,7 @@
 //! `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
 //! `gpu::scene::GpuLight::new` and plane.wgsl's `add_light`.
 
+pub mod rect;
 pub mod sphere;
 
 /// Where a light's light comes from.

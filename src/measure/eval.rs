@@ -1,12 +1,14 @@
 //! `ltc-lab eval`: light directions from a CSV file, evaluated with the exact lobes and their
 //! LTC approximation through the LUT (docs/design.md §6); with a `sigma` column, each light is
-//! a sphere of that angular radius, shaded by the four methods of docs/design.md §1.10.
+//! a sphere of that angular radius, shaded by the four methods of docs/design.md §1.10; with
+//! the rect header, each row is a rect light shaded by the methods of §1.11.
 
 use glam::DVec3;
 
 use crate::brdf::{brdf_cos, view_from_theta};
 use crate::cpu::LtcPixel;
 use crate::error::{Error, Result, number};
+use crate::light::rect::{Rect, RectMethod, RectShading, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
 use crate::ltc::lut::{ALPHA_MIN, Lut, THETA_MAX};
 use crate::ltc::remedy::HorizonRule;
@@ -37,12 +39,43 @@ pub fn sphere_output_columns() -> String {
         .join(",")
 }
 
+/// The header of rect lights: θo, α, F0, then the rect's centre and two half-edge vectors in
+/// the shading frame (radiance 1, emitting toward `u × v`).
+pub const RECT_HEADER: &str = "theta_o,alpha,f0,cx,cy,cz,ux,uy,uz,vx,vy,vz";
+
+/// The columns `evaluate` adds for a rect: both lobes by each method of `RectMethod::ALL`.
+pub fn rect_output_columns() -> String {
+    RectMethod::ALL
+        .map(|m| {
+            let name = m.name().replace('-', "_");
+            format!("{name}_spec,{name}_diffuse")
+        })
+        .join(",")
+}
+
 /// The output's header for input whose rows are spheres or not.
 pub fn output_header(spheres: bool) -> String {
     match spheres {
         true => format!("{SPHERE_HEADER},{}", sphere_output_columns()),
         false => format!("{HEADER},{OUTPUT_COLUMNS}"),
     }
+}
+
+/// The output's header for a file of `kind`.
+pub fn header_of(kind: Kind) -> String {
+    match kind {
+        Kind::Points => output_header(false),
+        Kind::Spheres => output_header(true),
+        Kind::Rects => format!("{RECT_HEADER},{}", rect_output_columns()),
+    }
+}
+
+/// What a file's rows are, by its header.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    Points,
+    Spheres,
+    Rects,
 }
 
 /// How far from unit length `l` may be: CSV values typed with 4 decimals are off by ~1e-4.
@@ -64,12 +97,15 @@ pub struct Case {
     pub f0: f64,
     /// The sphere's angular radius in degrees, where the file has a `sigma` column.
     pub sigma_degrees: Option<f64>,
+    /// The rect, where the file's rows are rects (`l` is then its centre's direction).
+    pub rect: Option<Rect>,
 }
 
 /// A file's cases, all points or all spheres (by its header).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Cases {
     pub spheres: bool,
+    pub kind: Kind,
     pub rows: Vec<Case>,
 }
 
@@ -78,16 +114,18 @@ pub fn parse_cases(text: &str, name: &str) -> Result<Cases> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text.lines().enumerate();
     let header = lines.next().map(|(_, h)| h.trim().replace(' ', ""));
-    let spheres = match header.as_deref() {
-        Some(HEADER) => false,
-        Some(SPHERE_HEADER) => true,
+    let kind = match header.as_deref() {
+        Some(HEADER) => Kind::Points,
+        Some(SPHERE_HEADER) => Kind::Spheres,
+        Some(RECT_HEADER) => Kind::Rects,
         _ => {
             return Err(Error::input(
                 format!("{name} line 1"),
-                format!("the header must be '{HEADER}' or '{SPHERE_HEADER}'"),
+                format!("the header must be '{HEADER}', '{SPHERE_HEADER}' or '{RECT_HEADER}'"),
             ));
         }
     };
+    let spheres = kind == Kind::Spheres;
     let rows = lines.filter(|(_, line)| !line.trim().is_empty());
     let mut cases = Vec::new();
     for (k, line) in rows {
@@ -97,14 +135,15 @@ pub fn parse_cases(text: &str, name: &str) -> Result<Cases> {
                 format!("more than {MAX_ROWS} cases: split the file"),
             ));
         }
-        cases.push(parse_case(
-            line,
-            &format!("{name} line {}", k + 1),
-            spheres,
-        )?);
+        let at = format!("{name} line {}", k + 1);
+        cases.push(match kind {
+            Kind::Rects => parse_rect(line, &at)?,
+            _ => parse_case(line, &at, spheres)?,
+        });
     }
     Ok(Cases {
         spheres,
+        kind,
         rows: cases,
     })
 }
@@ -171,6 +210,54 @@ fn parse_case(line: &str, at: &str, sphere: bool) -> Result<Case> {
         l: l.normalize(),
         f0,
         sigma_degrees: sphere.then_some(sigma),
+        rect: None,
+    })
+}
+
+/// A rect's row: θo, α and F0 checked as a point's; its centre and half-edges finite, its
+/// centre not at the shading point, its edges neither zero nor parallel.
+fn parse_rect(line: &str, at: &str) -> Result<Case> {
+    let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+    if fields.len() != 12 {
+        return Err(Error::input(
+            at,
+            format!("expected 12 values, found {}", fields.len()),
+        ));
+    }
+    let mut v = [0.0; 12];
+    for (x, f) in v.iter_mut().zip(&fields) {
+        *x = f
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| Error::input(at, format!("'{f}' is not a finite number")))?;
+    }
+    let [theta_o, alpha, f0, cx, cy, cz, ux, uy, uz, vx, vy, vz] = v;
+    // θo, α and F0 by the point rows' own checks: a point row of the same values.
+    let point = format!("{theta_o},{alpha},0,0,1,{f0}");
+    let checked = parse_case(&point, at, false)?;
+    let rect = Rect {
+        centre: DVec3::new(cx, cy, cz),
+        u: DVec3::new(ux, uy, uz),
+        v: DVec3::new(vx, vy, vz),
+    };
+    // Sizes from 1e-9 (a rect that small is its point light to far below f64's rounding of
+    // the BRDF) to 1e6 (the scene's coordinates' bound), relative to nothing: in scene units.
+    let sizes = [rect.centre.length(), rect.u.length(), rect.v.length()];
+    if sizes.iter().any(|&s| !(1e-9..=1e6).contains(&s)) {
+        return Err(Error::input(
+            at,
+            "the centre's distance and each half-edge's length must be in [1e-9, 1e6]",
+        ));
+    }
+    if rect.normal().length() <= 1e-12 * sizes[1] * sizes[2] {
+        return Err(Error::input(at, "u and v are parallel: not a rect"));
+    }
+    Ok(Case {
+        text: fields.join(","),
+        l: rect.centre.normalize(),
+        rect: Some(rect),
+        ..checked
     })
 }
 
@@ -182,6 +269,9 @@ pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
     let v = DVec3::from(view_from_theta(theta));
     if let Some(sigma) = c.sigma_degrees {
         return evaluate_sphere(c, lut, v, sigma);
+    }
+    if let Some(rect) = c.rect {
+        return evaluate_rect(c, lut, v, rect);
     }
     let exact = brdf_cos(v.to_array(), c.l.to_array(), c.alpha, c.f0);
     let rules = LtcRules {
@@ -204,6 +294,24 @@ fn evaluate_sphere(c: &Case, lut: &Lut, v: DVec3, sigma_degrees: f64) -> String 
     let mut row = c.text.clone();
     for method in SphereMethod::ALL {
         let lobes = sphere_light(method, &s);
+        row += &format!(",{:e},{:e}", lobes.specular, lobes.diffuse);
+    }
+    row
+}
+
+/// A rect's row: of radiance 1, both lobes by each method with the lab's rules.
+fn evaluate_rect(c: &Case, lut: &Lut, v: DVec3, rect: Rect) -> String {
+    let pair = lut.ltc_pair(c.alpha, v);
+    let s = RectShading {
+        v,
+        rect,
+        alpha: c.alpha,
+        f0: c.f0,
+        ltc: &pair,
+    };
+    let mut row = c.text.clone();
+    for method in RectMethod::ALL {
+        let lobes = rect_light(method, &s);
         row += &format!(",{:e},{:e}", lobes.specular, lobes.diffuse);
     }
     row
