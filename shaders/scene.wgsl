@@ -36,7 +36,7 @@ struct Params {
 }
 
 // Must match src/gpu/scene.rs GpuLight: position and range (≤ 0: infinite), colour × intensity
-// and the shape's size (GpuLight::new: 0 a point, a sphere's radius).
+// and the shape's size (GpuLight::from: 0 a point, a sphere's radius).
 struct GpuLight {
     position_range: vec4<f32>,
     intensity: vec4<f32>,
@@ -46,7 +46,7 @@ struct GpuLight {
 const SHAPE_POINT: u32 = 0u;
 const SHAPE_SPHERE: u32 = 1u;
 
-// The shape GpuLight::new wrote: a sphere's radius in w, 0 for a point.
+// The shape GpuLight::from wrote: a sphere's radius in w, 0 for a point.
 fn light_shape(light: GpuLight) -> u32 {
     if light.intensity.w > 0.0 {
         return SHAPE_SPHERE;

@@ -59,7 +59,7 @@ pub struct Params {
 pub struct GpuLight {
     /// xyz position, w the range (≤ 0: infinite).
     pub position_range: [f32; 4],
-    /// rgb colour × intensity, w the shape's size (`GpuLight::new`).
+    /// rgb colour × intensity, w the shape's size (`GpuLight::from`).
     pub intensity: [f32; 4],
 }
 

@@ -1,9 +1,10 @@
 //! A light's shape and the ways each shape is shaded (docs/design.md §1.10, §5.12): the
 //! paper's point light, and a sphere (`sphere`: its methods, the cap it covers, the LTC over
-//! that cap, and the Gauss–Legendre rule over it that the exact method integrates by). Adding
+//! that cap, and the Gauss–Legendre rule over it that the exact method integrates by); rect
+//! lights' polygon methods (`rect`) are in f64 and `eval` so far, not yet a `Shape`. Adding
 //! a shape is a module here, a variant of `Shape`, and one arm in each dispatch: the CPU's
 //! `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
-//! `gpu::scene::GpuLight::new` and plane.wgsl's `add_light`.
+//! `gpu::scene::GpuLight::from` and plane.wgsl's `add_light`.
 
 pub mod rect;
 pub mod sphere;
