@@ -99,14 +99,43 @@ pub fn polygon_integral<const K: usize>(
     n: usize,
     g: impl Fn(DVec3) -> [f64; K],
 ) -> [f64; K] {
+    polygon_integral_about(poly, n, None, g)
+}
+
+/// `polygon_integral` for an integrand peaked about the direction `focus` (a glossy lobe's
+/// mirror direction): where it points into the polygon, the fan's triangles all meet at the
+/// point it hits, where Duffy's collapse crowds their nodes, so the rule converges on a sharp
+/// lobe as on a smooth one.
+pub fn polygon_integral_about<const K: usize>(
+    poly: &[DVec3],
+    n: usize,
+    focus: Option<DVec3>,
+    g: impl Fn(DVec3) -> [f64; K],
+) -> [f64; K] {
     let rule = gauss_legendre(n);
     let mut total = [0.0; K];
     if poly.len() < 3 {
         return total;
     }
-    let p0 = poly[0];
-    for k in 1..poly.len() - 1 {
-        let (e1, e2) = (poly[k] - p0, poly[k + 1] - p0);
+    // The fan's apex and its triangles' far edges: the focus's hit where it is inside, every
+    // edge then; else the first corner, and the edges not through it.
+    let apex = focus.and_then(|f| hit_inside(poly, f));
+    let (p0, edges): (DVec3, Vec<(DVec3, DVec3)>) = match apex {
+        Some(x) => (
+            x,
+            (0..poly.len())
+                .map(|k| (poly[k], poly[(k + 1) % poly.len()]))
+                .collect(),
+        ),
+        None => (
+            poly[0],
+            (1..poly.len() - 1)
+                .map(|k| (poly[k], poly[k + 1]))
+                .collect(),
+        ),
+    };
+    for (a, b) in edges {
+        let (e1, e2) = (a - p0, b - p0);
         let normal = e1.cross(e2);
         let twice_area = normal.length();
         if twice_area == 0.0 {
@@ -134,6 +163,27 @@ pub fn polygon_integral<const K: usize>(
         }
     }
     total
+}
+
+/// Where the ray from the origin along `direction` meets the plane of the convex polygon
+/// `poly`, if that point lies inside it.
+fn hit_inside(poly: &[DVec3], direction: DVec3) -> Option<DVec3> {
+    let normal = (poly[1] - poly[0]).cross(poly[2] - poly[0]);
+    let along = direction.dot(normal);
+    if along == 0.0 {
+        return None;
+    }
+    let t = poly[0].dot(normal) / along;
+    if t <= 0.0 {
+        return None;
+    }
+    let x = direction * t;
+    let side = |k: usize| {
+        let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+        (b - a).cross(x - a).dot(normal)
+    };
+    let inside = (0..poly.len()).all(|k| side(k) >= 0.0) || (0..poly.len()).all(|k| side(k) <= 0.0);
+    inside.then_some(x)
 }
 
 /// `∫ D(ω) dω` of one LTC lobe over the polygon `poly` (a facing `Rect`'s corners): the
@@ -172,7 +222,9 @@ pub fn rect_exact(v: DVec3, rect: &Rect, alpha: f64, f0: f64, n: usize) -> Lobes
         return Lobes::default();
     }
     let above = clip_horizon(&rect.corners());
-    let [specular, diffuse] = polygon_integral(&above, n, |l| {
+    // The specular lobe peaks about the mirror direction: the rule crowds its nodes there.
+    let mirror = DVec3::new(-v.x, -v.y, v.z);
+    let [specular, diffuse] = polygon_integral_about(&above, n, Some(mirror), |l| {
         let lobes = crate::brdf::brdf_cos(v.to_array(), l.to_array(), alpha, f0);
         [lobes.specular, lobes.diffuse]
     });
