@@ -71,24 +71,7 @@ pub fn clip_horizon(poly: &[DVec3]) -> Vec<DVec3> {
 /// seen from the origin (a `Rect` that faces it). The clamped cosine's integral is this over
 /// `clip_horizon(poly)`.
 pub fn polygon_form_factor(poly: &[DVec3]) -> f64 {
-    let n = poly.len();
-    if n < 3 {
-        return 0.0;
-    }
-    let sum: f64 = (0..n)
-        .map(|k| {
-            let (a, b) = (poly[k].normalize(), poly[(k + 1) % n].normalize());
-            let cross = a.cross(b);
-            let len = cross.length();
-            if len == 0.0 {
-                return 0.0;
-            }
-            // atan2 keeps the angle accurate for the short edges of a small light.
-            let theta = len.atan2(a.dot(b));
-            theta * cross.z / len
-        })
-        .sum();
-    -sum / (2.0 * PI)
+    vector_form_factor(poly).z
 }
 
 /// `∫ g(ω) dω` over the directions of the convex polygon `poly` (its corners in either

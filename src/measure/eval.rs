@@ -31,11 +31,18 @@ pub const SPHERE_HEADER: &str = "theta_o,alpha,lx,ly,lz,f0,sigma";
 /// The columns `evaluate` adds for a sphere: both lobes by each method of
 /// `SphereMethod::ALL`, in its order, named after it (`exact_spec,exact_diffuse,ltc_point_spec,…`).
 pub fn sphere_output_columns() -> String {
-    SphereMethod::ALL
-        .map(|m| {
-            let name = m.name().replace('-', "_");
+    lobe_columns(&SphereMethod::ALL.map(SphereMethod::name))
+}
+
+/// `<name>_spec,<name>_diffuse` for each method name, `-` written `_`.
+fn lobe_columns(names: &[&str]) -> String {
+    names
+        .iter()
+        .map(|n| {
+            let name = n.replace('-', "_");
             format!("{name}_spec,{name}_diffuse")
         })
+        .collect::<Vec<_>>()
         .join(",")
 }
 
@@ -45,12 +52,7 @@ pub const RECT_HEADER: &str = "theta_o,alpha,f0,cx,cy,cz,ux,uy,uz,vx,vy,vz";
 
 /// The columns `evaluate` adds for a rect: both lobes by each method of `RectMethod::ALL`.
 pub fn rect_output_columns() -> String {
-    RectMethod::ALL
-        .map(|m| {
-            let name = m.name().replace('-', "_");
-            format!("{name}_spec,{name}_diffuse")
-        })
-        .join(",")
+    lobe_columns(&RectMethod::ALL.map(RectMethod::name))
 }
 
 /// The output's header for input whose rows are spheres or not.
