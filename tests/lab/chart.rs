@@ -158,7 +158,6 @@ fn the_chart_keeps_its_legends_outside_and_gives_the_speed_ratio() {
             (Method::Brdf, vec![[100.0, 7.0, 12.0], [1000.0, 0.9, 1.2]]),
         ],
         device: "a test's numbers".into(),
-        note: String::new(),
         study: None,
     };
     let mut state = maximised(PanelId::Chart);

@@ -52,9 +52,6 @@ pub struct Measurement {
     pub scaling_range: Vec<(Method, Vec<[f64; 3]>)>,
     /// Where it comes from: the device and size, or a study file.
     pub device: String,
-    /// What the chart adds after it (a shipped study's invitation to measure this machine).
-    #[serde(default, skip_serializing_if = "String::is_empty")]
-    pub note: String,
     /// The shipped study it is, by name (`ShippedStudy`); `None` for a measurement or a
     /// study file.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -79,7 +76,6 @@ impl Measurement {
             scaling: study_scaling(rows),
             scaling_range: Vec::new(),
             device: format!("{source}: {} rows", rows.len()),
-            note: String::new(),
             study: None,
         }
     }

@@ -178,9 +178,10 @@ impl ChartPanel {
             }
         }
         if let Some(m) = &self.state.measurement {
-            match m.note.as_str() {
-                "" => ui.small(&m.device),
-                note => ui.small(format!("{} — {note}", m.device)),
+            // A shipped study invites a measurement of this machine.
+            match m.study {
+                Some(_) => ui.small(format!("{} — press measure for this machine", m.device)),
+                None => ui.small(&m.device),
             };
         }
     }

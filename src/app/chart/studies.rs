@@ -50,7 +50,6 @@ impl ShippedStudy {
             Self::H100 => self.name(),
         };
         m.device = format!("{label} study ({})", self.device());
-        m.note = "press measure for this machine".into();
         m.study = Some(self.name().into());
         Some(m)
     }
