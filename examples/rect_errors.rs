@@ -10,6 +10,7 @@ use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::light::rect::{Rect, RectMethod, RectShading, rect_exact, rect_light};
 use ltc_lab::ltc::lut::Lut;
+use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::scene::SplitMix64;
 
 /// Solid angles of the rects (sr, approximately: `A cos θe / d²`).
@@ -70,6 +71,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     alpha,
                     f0: 0.04,
                     ltc: &pair,
+                    clip: Clipping::BOTH,
+                    normalization: Normalization::Corrected,
                 };
                 let exact = rect_light(RectMethod::Exact, &s);
                 let finer = rect_exact(v, &r, alpha, 0.04, 128);

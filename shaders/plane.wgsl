@@ -2,7 +2,8 @@
 // tile, lights read in workgroup-shared loads of 256 (docs/design.md §4). A render is summed in chunks
 // of each pixel's light list (all lights, or the tile's list when culling), the sums kept per
 // pixel between chunks, so that the lab can spread a render over frames; `resolve` turns the
-// sums into the image. Composed after brdf.wgsl, ltc.wgsl, sphere_light.wgsl and scene.wgsl. The CPU reference is
+// sums into the image. Composed after brdf.wgsl, ltc.wgsl, sphere_light.wgsl,
+// rect_light.wgsl and scene.wgsl. The CPU reference is
 // src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
 
 // Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
@@ -19,6 +20,13 @@ const SPHERE_EXACT: u32 = 0u;                // the BRDF over the cap (sphere_li
 const SPHERE_LTC_POINT: u32 = 1u;            // the paper's point formula at the centre
 const SPHERE_LTC_DISK: u32 = 2u;             // Heitz & Hill 2017's LTC disk
 const SPHERE_REPRESENTATIVE_POINT: u32 = 3u; // Karis 2013
+
+// How a side shades a rect (src/light/rect/mod.rs RectMethod; src/gpu/plane.rs rect_constant).
+const RECT_EXACT: u32 = 0u;          // the BRDF over the rect above the surface (rect_light.wgsl)
+const RECT_LTC_POLYGON: u32 = 1u;    // Heitz et al. 2016: clipped, M⁻¹, Lambert's edge formula
+const RECT_LTC_PROXY: u32 = 2u;      // Heitz & Hill 2017: the sphere of the same form factor
+const RECT_LTC_PROXY_FAST: u32 = 3u; // three.js's closed form of the proxy
+const RECT_LTC_POINT: u32 = 4u;      // the centre as an oriented point light
 
 // What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
@@ -40,6 +48,10 @@ override SIZED: bool = false;
 // sphere methods it uses (the exact one's loops would weigh on every other's registers).
 override SPHERE_A: u32 = SPHERE_LTC_DISK;
 override SPHERE_B: u32 = SPHERE_EXACT;
+// Some light is a rect, and how A and B shade rects (constants for the same reason).
+override RECTS: bool = false;
+override RECT_A: u32 = RECT_LTC_POLYGON;
+override RECT_B: u32 = RECT_EXACT;
 
 @group(0) @binding(3) var output: texture_storage_2d<rgba32float, write>;
 // Per pixel, the sums so far, kept between chunks: A's specular rgb and diffuse r; A's diffuse
@@ -305,12 +317,43 @@ fn add_sphere(
     (*s).diff += light.intensity.rgb * lobes.y;
 }
 
+// A rect by the side's rect method (src/cpu.rs rect_term): its radiance I/A times the
+// unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
+fn add_rect(
+    method: u32,
+    rect: u32,
+    s: ptr<function, Sums>,
+    p: Pixel,
+    ltc: LtcShading,
+    light: GpuLight,
+) {
+    let edges = rect_half_edges(light);
+    let centre = light.position_range.xyz - p.x;
+    let shading = RectShading(
+        p.v_tangent,
+        Rect(p.tangent_from_world * centre, p.tangent_from_world * edges[0], p.tangent_from_world * edges[1]),
+        params.alpha,
+        params.f0,
+        params.clip,
+        params.normalization,
+    );
+    var lobes = rect_light(rect, shading, ltc.pair);
+    let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / rect_area(shading.rect);
+    lobes *= scale;
+    if is_factored(method) {
+        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
+    }
+    (*s).spec += light.intensity.rgb * lobes.x;
+    (*s).diff += light.intensity.rgb * lobes.y;
+}
+
 // One light by one side: by the side's method for the light's shape, one arm per shape
 // (src/cpu.rs light_term). Where every light is a point (SIZED off) the loop has no test of
-// the shape at all.
+// the shape at all; without a rect (RECTS off), no rect arm.
 fn add_light(
     method: u32,
     sphere: u32,
+    rect: u32,
     s: ptr<function, Sums>,
     p: Pixel,
     ltc: LtcShading,
@@ -322,6 +365,11 @@ fn add_light(
     }
     switch shape {
         case SHAPE_SPHERE: { add_sphere(method, sphere, s, p, ltc, light); }
+        case SHAPE_RECT: {
+            if RECTS {
+                add_rect(method, rect, s, p, ltc, light);
+            }
+        }
         default: { add_point(method, s, p, ltc, light); }
     }
 }
@@ -471,10 +519,10 @@ fn shade(
             }
             for (; j < n; j++) {
                 if use_a {
-                    add_light(METHOD_A, SPHERE_A, &a, p, p.ltc_a, shared_lights[j]);
+                    add_light(METHOD_A, SPHERE_A, RECT_A, &a, p, p.ltc_a, shared_lights[j]);
                 }
                 if use_b {
-                    add_light(METHOD_B, SPHERE_B, &b, p, p.ltc_b, shared_lights[j]);
+                    add_light(METHOD_B, SPHERE_B, RECT_B, &b, p, p.ltc_b, shared_lights[j]);
                 }
             }
         }

@@ -36,7 +36,8 @@ struct Params {
 }
 
 // Must match src/gpu/scene.rs GpuLight: position and range (≤ 0: infinite), colour × intensity
-// and the shape's size (GpuLight::from: 0 a point, a sphere's radius).
+// and the shape's size (light_elements: 0 a point, a sphere's radius, −(slot + 1) for a rect,
+// whose half-edges are the xyz of element light_count + slot).
 struct GpuLight {
     position_range: vec4<f32>,
     intensity: vec4<f32>,
@@ -45,13 +46,24 @@ struct GpuLight {
 // A light's shape (src/light/mod.rs Shape; src/gpu/scene.rs shape_constant).
 const SHAPE_POINT: u32 = 0u;
 const SHAPE_SPHERE: u32 = 1u;
+const SHAPE_RECT: u32 = 2u;
 
-// The shape GpuLight::from wrote: a sphere's radius in w, 0 for a point.
+// The shape light_elements wrote: a sphere's radius in w, 0 for a point, a rect's slot
+// below 0.
 fn light_shape(light: GpuLight) -> u32 {
     if light.intensity.w > 0.0 {
         return SHAPE_SPHERE;
     }
+    if light.intensity.w < 0.0 {
+        return SHAPE_RECT;
+    }
     return SHAPE_POINT;
+}
+
+// A rect's half-edges, from its element after the lights (light_elements).
+fn rect_half_edges(light: GpuLight) -> mat2x3<f32> {
+    let extra = lights[params.light_count + u32(-light.intensity.w) - 1u];
+    return mat2x3<f32>(extra.position_range.xyz, extra.intensity.xyz);
 }
 
 @group(0) @binding(0) var<uniform> params: Params;

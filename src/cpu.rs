@@ -7,8 +7,11 @@ use std::ops::Range;
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact};
+use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact, window_falloff};
 use crate::light::Shape;
+use crate::light::rect::{
+    GPU_EXACT_NODES as RECT_GPU_EXACT_NODES, Rect, RectMethod, RectShading, rect_light_with,
+};
 use crate::light::sphere::cap::{Cap, SphereCase};
 use crate::light::sphere::{GPU_EXACT_NODES, SphereMethod, SphereShading, sphere_light_with};
 use crate::ltc::lut::Lut;
@@ -179,6 +182,38 @@ pub fn sphere_term(
     light.radiant_intensity() * combine(lobes, m.base_color)
 }
 
+/// One rect light's radiance toward the camera by `method` (docs/design.md §1.11): its
+/// radiance `I/A` times the unit-radiance lobes, windowed at the centre's distance as a
+/// sphere is, with the renderers' rule for the exact method.
+pub fn rect_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    (light, half_u, half_v): (&Light, DVec3, DVec3),
+    rules: &LtcRules,
+    method: RectMethod,
+) -> DVec3 {
+    let m = &scene.material;
+    let centre = DVec3::from(light.position) - p.position;
+    let rect = Rect {
+        centre: px.frame.tangent_from_world(centre),
+        u: px.frame.tangent_from_world(half_u),
+        v: px.frame.tangent_from_world(half_v),
+    };
+    let shading = RectShading {
+        v: px.frame.tangent_from_world(p.view),
+        rect,
+        alpha: m.alpha,
+        f0: m.f0,
+        ltc: &px.pair,
+        clip: rules.clipping,
+        normalization: rules.normalization,
+    };
+    let lobes = rect_light_with(method, &shading, RECT_GPU_EXACT_NODES);
+    let scale = window_falloff(centre.length(), light.range_or_infinity()) / rect.area();
+    light.radiant_intensity() * scale * combine(lobes, m.base_color)
+}
+
 /// One side of a render: its method for each light shape, and the table its LTC methods
 /// read.
 #[derive(Clone, Copy, Debug)]
@@ -221,6 +256,14 @@ pub fn light_term(
         Shape::Sphere { radius } => {
             sphere_term(scene, px, p, (light, radius), rules, side.methods.sphere)
         }
+        Shape::Rect { half_u, half_v } => rect_term(
+            scene,
+            px,
+            p,
+            (light, half_u, half_v),
+            rules,
+            side.methods.rect,
+        ),
     }
 }
 

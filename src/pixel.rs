@@ -3,13 +3,15 @@
 //! and of eq. 28 (Fresnel), its irradiance, and its LTC and exact radiance — the terms whose
 //! sums are the pixel (`cpu::shade`). Where two tables are compared, also its LTC radiance
 //! with table B, whose sum is the pixel of side B. A light with a size is shaded by each side's
-//! sphere method, and has every sphere method's radiance beside (docs/design.md §1.10).
+//! sphere or rect method, and has every such method's radiance beside (docs/design.md §1.10,
+//! §1.11).
 
 use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
-use crate::cpu::{LtcPixel, exact_term, ltc_term, sphere_term};
+use crate::cpu::{LtcPixel, exact_term, ltc_term, rect_term, sphere_term};
 use crate::light::Shape;
+use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
@@ -47,6 +49,8 @@ pub struct LightTerm {
     pub ltc_b: Option<DVec3>,
     /// A light with a size: its radiance by each of `SphereMethod::ALL` (table A).
     pub spheres: Option<[DVec3; 4]>,
+    /// A rect: its radiance by each of `RectMethod::ALL` (table A).
+    pub rects: Option<[DVec3; 5]>,
 }
 
 impl LightTerm {
@@ -134,14 +138,15 @@ pub fn elevation_azimuth(w: DVec3) -> (f64, f64) {
 
 /// Every light of `scene` at `p`, LTC with table A and the given rules against the exact
 /// BRDF, and with table B too where there is one (`tables.1`); lights with a size by
-/// `spheres` (the LTC side's sphere method, then the exact side's); `None` where the camera
-/// sees the plane from below.
+/// `spheres` and rects by `rects` (the LTC side's method, then the exact side's); `None` where
+/// the camera sees the plane from below.
 pub fn pixel_terms(
     scene: &Scene,
     (lut, lut_b): (&Lut, Option<&Lut>),
     p: &SurfacePoint,
     rules: &LtcRules,
     spheres: [SphereMethod; 2],
+    rects: [RectMethod; 2],
 ) -> Option<PixelTerms> {
     if p.view.z <= 0.0 {
         return None;
@@ -167,6 +172,14 @@ pub fn pixel_terms(
                     term.exact = all[spheres[1].index()];
                     term.ltc_b = px_b.map(|b| sphere_term(scene, &b, p, sphere, rules, spheres[0]));
                     term.spheres = Some(all);
+                }
+                Shape::Rect { half_u, half_v } => {
+                    let rect = (light, half_u, half_v);
+                    let all = RectMethod::ALL.map(|m| rect_term(scene, &px, p, rect, rules, m));
+                    term.ltc = all[rects[0].index()];
+                    term.exact = all[rects[1].index()];
+                    term.ltc_b = px_b.map(|b| rect_term(scene, &b, p, rect, rules, rects[0]));
+                    term.rects = Some(all);
                 }
             }
             term
@@ -222,5 +235,6 @@ fn light_term(
         exact: exact_term(scene, &px.frame, p, light),
         ltc_b: None,
         spheres: None,
+        rects: None,
     }
 }

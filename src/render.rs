@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::HorizonRule;
@@ -84,6 +85,8 @@ pub struct ShapeMethods {
     pub point: Method,
     /// How spheres are shaded.
     pub sphere: SphereMethod,
+    /// How rects are shaded.
+    pub rect: RectMethod,
 }
 
 /// Everything about a render that is not the scene or the table.
@@ -132,10 +135,13 @@ impl RenderSettings {
             a: ShapeMethods {
                 point: method,
                 sphere: SphereMethod::LtcDisk,
+                // Rects: the paper's own method against the reference.
+                rect: RectMethod::LtcPolygon,
             },
             b: ShapeMethods {
                 point: Method::Brdf,
                 sphere: SphereMethod::Exact,
+                rect: RectMethod::Exact,
             },
             view: View::A,
             rules: LtcRules::default(),

@@ -50,11 +50,29 @@ pub const SPHERE_PRESETS: [(&str, &str); 4] = [
     ),
 ];
 
-/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`).
+/// The failure cases of rect lights (docs/design.md §1.11): rects across the horizon, edge-on
+/// and facing away; touching the surface, behind it and tiny; and one filling the sky.
+pub const RECT_PRESETS: [(&str, &str); 3] = [
+    (
+        "rect-horizon",
+        include_str!("../assets/scenes/rect-horizon.toml"),
+    ),
+    (
+        "rect-limits",
+        include_str!("../assets/scenes/rect-limits.toml"),
+    ),
+    (
+        "rect-ceiling",
+        include_str!("../assets/scenes/rect-ceiling.toml"),
+    ),
+];
+
+/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`, `RECT_PRESETS`).
 pub fn preset(name: &str) -> Scene {
     let (_, text) = PRESETS
         .iter()
         .chain(&SPHERE_PRESETS)
+        .chain(&RECT_PRESETS)
         .find(|(n, _)| *n == name)
         .expect("a shipped preset");
     Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")
@@ -82,6 +100,26 @@ mod exactly {
                 &format!("a list of exactly {N} numbers").as_str(),
             )
         })
+    }
+}
+
+/// `exactly` for an optional list.
+mod exactly_option {
+    use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+    pub fn serialize<S: Serializer, const N: usize>(
+        v: &Option<[f64; N]>,
+        s: S,
+    ) -> Result<S::Ok, S::Error> {
+        v.as_ref().map(<[f64; N]>::as_slice).serialize(s)
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>, const N: usize>(
+        d: D,
+    ) -> Result<Option<[f64; N]>, D::Error> {
+        #[derive(Deserialize)]
+        struct Exactly<const M: usize>(#[serde(with = "super::exactly")] [f64; M]);
+        Ok(Option::<Exactly<N>>::deserialize(d)?.map(|e| e.0))
     }
 }
 
@@ -125,10 +163,11 @@ pub struct Camera {
 }
 
 /// A light: RGB `color × intensity` (W/sr-like units: irradiance `I/d²` at distance d) from
-/// `position`, of a shape (a point, or a sphere whose radiance `I/(π r²)` lights a distant
-/// point as the point light does: docs/design.md §1.10).
+/// `position`, of a shape (a point; a sphere whose radiance `I/(π r²)` lights a distant point
+/// as the point light does, docs/design.md §1.10; a rect whose radiance `I/A` lights it as
+/// the oriented point light of intensity `I cos θe`, §1.11).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(from = "LightFile", into = "LightFile")]
+#[serde(try_from = "LightFile", into = "LightFile")]
 pub struct Light {
     pub position: [f64; 3],
     pub color: [f64; 3],
@@ -139,7 +178,7 @@ pub struct Light {
 }
 
 /// A light as a scene file (and a link) writes it: the shape by its fields, `radius` for a
-/// sphere (0 or absent: a point).
+/// sphere (0 or absent: a point), `half_u` and `half_v` for a rect centred on `position`.
 #[derive(Clone, Copy, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct LightFile {
@@ -153,17 +192,47 @@ struct LightFile {
     /// The sphere's radius in scene units (metres).
     #[serde(default, skip_serializing_if = "is_zero")]
     radius: f64,
+    /// A rect's half-edge vectors (world); it emits toward `half_u × half_v`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        with = "exactly_option"
+    )]
+    half_u: Option<[f64; 3]>,
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        with = "exactly_option"
+    )]
+    half_v: Option<[f64; 3]>,
 }
 
-impl From<LightFile> for Light {
-    fn from(f: LightFile) -> Self {
-        Self {
+impl TryFrom<LightFile> for Light {
+    type Error = String;
+
+    /// The shape its fields name: a rect needs both half-edges and no radius.
+    fn try_from(f: LightFile) -> std::result::Result<Self, String> {
+        let shape = match (f.half_u, f.half_v) {
+            (None, None) => Shape::of_radius(f.radius),
+            (Some(u), Some(v)) if f.radius == 0.0 => Shape::Rect {
+                half_u: DVec3::from(u),
+                half_v: DVec3::from(v),
+            },
+            (Some(_), Some(_)) => {
+                return Err(
+                    "a light has a radius (a sphere) or half_u and half_v (a rect), not both"
+                        .into(),
+                );
+            }
+            _ => return Err("a rect light needs both half_u and half_v".into()),
+        };
+        Ok(Self {
             position: f.position,
             color: f.color,
             intensity: f.intensity,
             range: f.range,
-            shape: Shape::of_radius(f.radius),
-        }
+            shape,
+        })
     }
 }
 
@@ -175,6 +244,8 @@ impl From<Light> for LightFile {
             intensity: l.intensity,
             range: l.range,
             radius: l.shape.radius(),
+            half_u: l.shape.half_edges().map(|(u, _)| u.to_array()),
+            half_v: l.shape.half_edges().map(|(_, v)| v.to_array()),
         }
     }
 }
@@ -296,7 +367,13 @@ impl Scene {
             l.color = l.color.map(|x| decimals(x, 3));
             l.intensity = significant(l.intensity);
             l.range = l.range.map(significant);
-            l.shape = Shape::of_radius(significant(l.shape.radius()));
+            l.shape = match l.shape {
+                Shape::Rect { half_u, half_v } => Shape::Rect {
+                    half_u: half_u.to_array().map(significant).into(),
+                    half_v: half_v.to_array().map(significant).into(),
+                },
+                shape => Shape::of_radius(significant(shape.radius())),
+            };
         }
         out
     }
@@ -554,7 +631,36 @@ fn check_light(what: &str, l: &Light) -> std::result::Result<(), String> {
     match l.shape {
         Shape::Point => Ok(()),
         Shape::Sphere { radius } => check_radius(&format!("{what}.radius"), radius),
+        Shape::Rect { half_u, half_v } => check_rect(what, half_u, half_v),
     }
+}
+
+/// A rect's half-edges are finite, each within `MAX_COORDINATE`, and span a quarter-area
+/// `|half_u × half_v|` of at least `MIN_RADIUS²`: its radiance `I/A` then stays within f32
+/// (≤ 1e6/(4·1e-8) = 2.5e13), as a sphere's does.
+fn check_rect(what: &str, half_u: DVec3, half_v: DVec3) -> std::result::Result<(), String> {
+    let (u, v) = (half_u.to_array(), half_v.to_array());
+    within(
+        &format!("{what}.half_u"),
+        &u,
+        -MAX_COORDINATE,
+        MAX_COORDINATE,
+    )?;
+    within(
+        &format!("{what}.half_v"),
+        &v,
+        -MAX_COORDINATE,
+        MAX_COORDINATE,
+    )?;
+    let quarter_area = half_u.cross(half_v).length();
+    if quarter_area < MIN_RADIUS * MIN_RADIUS {
+        return Err(format!(
+            "{what}: half_u × half_v must have length ≥ {} (a rect of some area; parallel or zero half-edges are not a rect), got {}",
+            number(MIN_RADIUS * MIN_RADIUS),
+            number(quarter_area)
+        ));
+    }
+    Ok(())
 }
 
 /// A radius is 0 (a point) or in `[MIN_RADIUS, MAX_COORDINATE]`.

@@ -287,6 +287,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         .map(method_constant)
         .into_iter()
         .chain(SphereMethod::ALL.map(sphere_constant))
+        .chain(ltc_lab::light::rect::RectMethod::ALL.map(ltc_lab::gpu::plane::rect_constant))
         .chain(ViewConstant::ALL.map(ViewConstant::constant))
         .chain(
             [
@@ -298,7 +299,15 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         )
         .chain(Normalization::ALL.map(normalization_constant))
         .chain(
-            [Shape::Point, Shape::Sphere { radius: 1.0 }].map(ltc_lab::gpu::scene::shape_constant),
+            [
+                Shape::Point,
+                Shape::Sphere { radius: 1.0 },
+                Shape::Rect {
+                    half_u: glam::DVec3::X,
+                    half_v: glam::DVec3::Y,
+                },
+            ]
+            .map(ltc_lab::gpu::scene::shape_constant),
         )
         .chain([
             (CLIP_HORIZON, "CLIP_HORIZON"),
@@ -327,6 +336,10 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             (
                 "POINT_LIMIT_SIN_SIGMA",
                 f32s(&[ltc_lab::light::sphere::POINT_LIMIT_SIN_SIGMA]),
+            ),
+            (
+                "RECT_POINT_LIMIT",
+                f32s(&[ltc_lab::light::rect::RECT_POINT_LIMIT]),
             ),
             ("GL8_NODES", half(|&(x, _)| x)),
             ("GL8_WEIGHTS", half(|&(_, w)| w)),

@@ -17,6 +17,7 @@ fn side(method: Method, sphere: SphereMethod) -> RenderSettings {
         a: ltc_lab::render::ShapeMethods {
             point: method,
             sphere,
+            rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
         },
         ..RenderSettings::single(W, H, method)
     }

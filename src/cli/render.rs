@@ -10,6 +10,7 @@ use ltc_lab::files::{Claim, check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
 use ltc_lab::gpu::renderer::PlaneRenderer;
+use ltc_lab::light::rect::RectMethod;
 use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::Table;
@@ -112,6 +113,14 @@ pub struct Args {
     /// The same, right of a split (the reference).
     #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name), default_value = "exact")]
     sphere_b: SphereMethod,
+    /// How rect lights (`half_u` and `half_v` in the scene) are shaded by the method alone, or
+    /// left of a split (docs/design.md §1.11): exact, ltc-polygon, ltc-proxy, ltc-proxy-fast
+    /// or ltc-point.
+    #[arg(long, value_parser = one_of(&RectMethod::ALL, RectMethod::name), default_value = "ltc-polygon")]
+    rect_a: RectMethod,
+    /// The same, right of a split (the reference).
+    #[arg(long, value_parser = one_of(&RectMethod::ALL, RectMethod::name), default_value = "exact")]
+    rect_b: RectMethod,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -129,6 +138,8 @@ pub fn run(a: &Args) -> Result<()> {
     settings.rules.horizon = a.horizon.rule();
     settings.a.sphere = a.sphere_a;
     settings.b.sphere = a.sphere_b;
+    settings.a.rect = a.rect_a;
+    settings.b.rect = a.rect_b;
     a.lut.check_horizon(a.horizon)?;
     let out = a
         .out

@@ -14,6 +14,7 @@ pub mod ltc;
 pub mod ltc_f16;
 pub mod plane;
 pub mod plane_render;
+pub mod rect_light;
 pub mod renderer;
 pub mod scene;
 pub mod selfcheck;
@@ -25,7 +26,8 @@ pub mod work;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::error::Error;
 
-/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, scene.wgsl, plane.wgsl and
+/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, sphere_light.wgsl, rect_light.wgsl,
+/// scene.wgsl, plane.wgsl and
 /// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last.
 pub fn plane_module_source(f16: bool) -> String {
     let (enable, last) = if f16 {
@@ -38,6 +40,7 @@ pub fn plane_module_source(f16: bool) -> String {
         brdf::SOURCE,
         ltc::SOURCE,
         sphere_light::SOURCE,
+        rect_light::SOURCE,
         scene::SOURCE,
         plane::SOURCE,
         last,

@@ -11,6 +11,7 @@ use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::target::OUTPUT_FORMAT;
 use crate::light::Shape;
+use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::remedy::HorizonRule;
 use crate::render::{LutFilter, Method, RenderSettings, View};
@@ -38,6 +39,17 @@ pub fn sphere_constant(m: SphereMethod) -> (u32, &'static str) {
         SphereMethod::LtcPoint => (1, "SPHERE_LTC_POINT"),
         SphereMethod::LtcDisk => (2, "SPHERE_LTC_DISK"),
         SphereMethod::RepresentativePoint => (3, "SPHERE_REPRESENTATIVE_POINT"),
+    }
+}
+
+/// `RECT_*` of plane.wgsl: its value and its name there.
+pub fn rect_constant(m: RectMethod) -> (u32, &'static str) {
+    match m {
+        RectMethod::Exact => (0, "RECT_EXACT"),
+        RectMethod::LtcPolygon => (1, "RECT_LTC_POLYGON"),
+        RectMethod::LtcProxy => (2, "RECT_LTC_PROXY"),
+        RectMethod::LtcProxyFast => (3, "RECT_LTC_PROXY_FAST"),
+        RectMethod::LtcPoint => (4, "RECT_LTC_POINT"),
     }
 }
 
@@ -88,7 +100,8 @@ pub const BINDINGS: [Binding; 10] = [
 
 /// What a pipeline is specialized for (its override constants): methods A and B, the view,
 /// the LUT filter, whether B reads table B, the horizon rule, and where some light has a
-/// size, A's and B's sphere methods (`None`: point lights only, the pipelines of before).
+/// size, A's and B's sphere methods (`None`: point lights only, the pipelines of before),
+/// and where some light is a rect, A's and B's rect methods.
 pub type PipelineKey = (
     Method,
     Method,
@@ -97,6 +110,7 @@ pub type PipelineKey = (
     bool,
     HorizonRule,
     Option<(SphereMethod, SphereMethod)>,
+    Option<(RectMethod, RectMethod)>,
 );
 
 /// The pipeline's methods and view: `View::B` is B shaded as the single A (with B's table,
@@ -108,16 +122,27 @@ pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
         View::Split => (s.a.point, s.b.point, ViewConstant::Split, s.b_reads_table_b),
         View::Diff => (s.a.point, s.b.point, ViewConstant::Diff, s.b_reads_table_b),
     };
-    let spheres = match s.view {
-        View::B => (s.b.sphere, s.b.sphere),
-        _ => (s.a.sphere, s.b.sphere),
+    let (spheres, rects) = match s.view {
+        View::B => ((s.b.sphere, s.b.sphere), (s.b.rect, s.b.rect)),
+        _ => ((s.a.sphere, s.b.sphere), (s.a.rect, s.b.rect)),
     };
     let sized = scene
         .lights
         .iter()
         .any(|l| l.shape != Shape::Point)
         .then_some(spheres);
-    (a, b, view, s.rules.filter, table_b, s.rules.horizon, sized)
+    let any_rect = scene.lights.iter().any(|l| l.shape.half_edges().is_some());
+    let rects = any_rect.then_some(rects);
+    (
+        a,
+        b,
+        view,
+        s.rules.filter,
+        table_b,
+        s.rules.horizon,
+        sized,
+        rects,
+    )
 }
 
 /// Whether wgpu wraps the shader in its runtime bounds checks.
@@ -197,8 +222,9 @@ fn compile(
     layout: &wgpu::PipelineLayout,
     key: PipelineKey,
 ) -> Pipelines {
-    let (a, b, view, filter, table_b, horizon, sized) = key;
+    let (a, b, view, filter, table_b, horizon, sized, rects) = key;
     let spheres = sized.unwrap_or((SphereMethod::LtcDisk, SphereMethod::Exact));
+    let rect_methods = rects.unwrap_or((RectMethod::LtcPolygon, RectMethod::Exact));
     let constants = [
         ("METHOD_A", f64::from(method_constant(a).0)),
         ("METHOD_B", f64::from(method_constant(b).0)),
@@ -212,6 +238,9 @@ fn compile(
         ("SIZED", f64::from(u8::from(sized.is_some()))),
         ("SPHERE_A", f64::from(sphere_constant(spheres.0).0)),
         ("SPHERE_B", f64::from(sphere_constant(spheres.1).0)),
+        ("RECTS", f64::from(u8::from(rects.is_some()))),
+        ("RECT_A", f64::from(rect_constant(rect_methods.0).0)),
+        ("RECT_B", f64::from(rect_constant(rect_methods.1).0)),
     ];
     let pipeline = |entry_point| {
         ctx.device

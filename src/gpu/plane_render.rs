@@ -11,7 +11,7 @@ use crate::gpu::GpuContext;
 use crate::gpu::bin::{self, BinPass, Binning};
 use crate::gpu::ltc::LutBuffer;
 use crate::gpu::plane::{self, Pipelines};
-use crate::gpu::scene::{GpuLight, Params, params};
+use crate::gpu::scene::{GpuLight, Params, light_elements, params};
 use crate::gpu::target::{PendingRead, Target};
 use crate::gpu::timing::{FrameTimes, PassTimer, Slot};
 use crate::render::{Frame, RenderSettings, View};
@@ -66,12 +66,12 @@ impl PlaneRender {
         (scene, settings): (&Scene, &RenderSettings),
         kept: Option<Kept>,
     ) -> Self {
-        let lights: Vec<GpuLight> = scene.lights.iter().map(GpuLight::from).collect();
+        let lights: Vec<GpuLight> = light_elements(&scene.lights);
         let any_ranged = scene.lights.iter().any(|l| l.range.is_some());
         let cull = settings.cull && any_ranged;
         let (tiles_x, tiles_y) = crate::gpu::scene::tiles(settings.width, settings.height);
         let capacity = if cull {
-            bin::capacity(ctx, tiles_x * tiles_y, lights.len())
+            bin::capacity(ctx, tiles_x * tiles_y, scene.lights.len())
         } else {
             1
         };
@@ -99,7 +99,7 @@ impl PlaneRender {
             bin_group,
             params: p,
             settings: *settings,
-            light_count: lights.len(),
+            light_count: scene.lights.len(),
             bin_stage: cull.then_some(BinStage::Count(0)),
         }
     }

@@ -66,7 +66,9 @@ impl PlaneRenderer {
     /// Refuses what this device cannot render, before any work: the lights, a method it has
     /// no shaders for, a second table it was not given, the image.
     pub fn check(&self, ctx: &GpuContext, scene: &Scene, settings: &RenderSettings) -> Result<()> {
-        Self::check_light_count(ctx, scene.lights.len()).map_err(|e| e.named("scene"))?;
+        // A rect takes two elements of the buffer (`light_elements`): counted as two lights.
+        let elements = crate::gpu::scene::element_count(&scene.lights);
+        Self::check_light_count(ctx, elements).map_err(|e| e.named("scene"))?;
         if let Some(m) = settings.methods().into_iter().find(|&m| !self.supports(m)) {
             return Err(Error::input(
                 m.name(),

@@ -53,13 +53,14 @@ pub struct Params {
     pub bin_row: u32,
 }
 
-/// One light in the storage buffer; must match `GpuLight` in scene.wgsl.
+/// One light in the storage buffer; must match `GpuLight` in scene.wgsl. A rect takes a second
+/// element after all the lights, for its half-edges (`light_elements`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct GpuLight {
     /// xyz position, w the range (≤ 0: infinite).
     pub position_range: [f32; 4],
-    /// rgb colour × intensity, w the shape's size (`GpuLight::from`).
+    /// rgb colour × intensity, w the shape's size (`light_elements`).
     pub intensity: [f32; 4],
 }
 
@@ -69,11 +70,17 @@ pub fn shape_constant(shape: Shape) -> (u32, &'static str) {
     match shape {
         Shape::Point => (0, "SHAPE_POINT"),
         Shape::Sphere { .. } => (1, "SHAPE_SPHERE"),
+        Shape::Rect { .. } => (2, "SHAPE_RECT"),
     }
 }
 
-impl From<&Light> for GpuLight {
-    fn from(l: &Light) -> Self {
+/// The light buffer of `lights`: one element per light, in order, then one per rect holding
+/// its half-edges (xyz of each vec4), which the rect's element names by its w,
+/// `−(slot + 1)` (exact in f32 for up to 2²⁴ rects, far above `scene::MAX_LIGHTS`).
+pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
+    let mut head = Vec::with_capacity(lights.len());
+    let mut tail = Vec::new();
+    for l in lights {
         let p = l.position.map(|x| x as f32);
         let i = l.radiant_intensity().as_vec3();
         // A range below f32's smallest normal would round to 0, which encodes "infinite":
@@ -83,12 +90,31 @@ impl From<&Light> for GpuLight {
         let size = match l.shape {
             Shape::Point => 0.0,
             Shape::Sphere { radius } => radius as f32,
+            Shape::Rect { half_u, half_v } => {
+                let (u, v) = (half_u.as_vec3(), half_v.as_vec3());
+                tail.push(GpuLight {
+                    position_range: [u.x, u.y, u.z, 0.0],
+                    intensity: [v.x, v.y, v.z, 0.0],
+                });
+                -(tail.len() as f32)
+            }
         };
-        Self {
+        head.push(GpuLight {
             position_range: [p[0], p[1], p[2], range],
             intensity: [i.x, i.y, i.z, size],
-        }
+        });
     }
+    head.extend(tail);
+    head
+}
+
+/// The elements `light_elements` makes of `lights`: a rect takes two.
+pub fn element_count(lights: &[Light]) -> usize {
+    lights.len()
+        + lights
+            .iter()
+            .filter(|l| l.shape.half_edges().is_some())
+            .count()
 }
 
 /// Tiles across and down an image.

@@ -1,13 +1,15 @@
 //! A light's shape and the ways each shape is shaded (docs/design.md §1.10, §5.12): the
 //! paper's point light, and a sphere (`sphere`: its methods, the cap it covers, the LTC over
-//! that cap, and the Gauss–Legendre rule over it that the exact method integrates by); rect
-//! lights' polygon methods (`rect`) are in f64 and `eval` so far, not yet a `Shape`. Adding
+//! that cap, and the Gauss–Legendre rule over it that the exact method integrates by), and a
+//! rect (`rect`: the polygon it covers, the LTC over a polygon and the rule over it). Adding
 //! a shape is a module here, a variant of `Shape`, and one arm in each dispatch: the CPU's
 //! `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
-//! `gpu::scene::GpuLight::from` and plane.wgsl's `add_light`.
+//! `gpu::scene::light_elements` and plane.wgsl's `add_light`.
 
 pub mod rect;
 pub mod sphere;
+
+use glam::DVec3;
 
 /// Where a light's light comes from.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -18,6 +20,10 @@ pub enum Shape {
     /// A sphere of this radius and uniform radiance `I/(π r²)`, which lights a distant point
     /// as the point light of intensity `I` does (§1.10).
     Sphere { radius: f64 },
+    /// A one-sided rect about the light's position, of half-edges `half_u`, `half_v` (world),
+    /// emitting toward `half_u × half_v` with radiance `I/A` (`A = 4 |half_u × half_v|`), so
+    /// that far away it lights as the oriented point light of intensity `I cos θe` (§1.11).
+    Rect { half_u: DVec3, half_v: DVec3 },
 }
 
 impl Shape {
@@ -30,11 +36,19 @@ impl Shape {
         }
     }
 
-    /// The radius a scene writes for it: 0 for a point.
+    /// The radius a scene writes for it: 0 for a point or a rect.
     pub fn radius(self) -> f64 {
         match self {
-            Self::Point => 0.0,
+            Self::Point | Self::Rect { .. } => 0.0,
             Self::Sphere { radius } => radius,
+        }
+    }
+
+    /// A rect's two half-edges, `None` for the other shapes.
+    pub fn half_edges(self) -> Option<(DVec3, DVec3)> {
+        match self {
+            Self::Rect { half_u, half_v } => Some((half_u, half_v)),
+            _ => None,
         }
     }
 }

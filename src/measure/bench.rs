@@ -10,6 +10,7 @@ use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::timing::FrameTimes;
 use crate::light::Shape;
+use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::Horizon;
@@ -286,6 +287,7 @@ pub fn run(
                     a: ShapeMethods {
                         point: method,
                         sphere: sphere.unwrap_or(SphereMethod::LtcPoint),
+                        rect: RectMethod::LtcPoint,
                     },
                     ..RenderSettings::single(width, height, method)
                 };

@@ -12,6 +12,7 @@ use crate::light::rect::{Rect, RectMethod, RectShading, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
 use crate::ltc::lut::{ALPHA_MIN, Lut, THETA_MAX};
 use crate::ltc::remedy::HorizonRule;
+use crate::ltc::{Clipping, Normalization};
 use crate::render::LtcRules;
 
 /// The most bytes of a cases CSV this program reads (`files::read_text`): ~60 bytes a case,
@@ -310,6 +311,8 @@ fn evaluate_rect(c: &Case, lut: &Lut, v: DVec3, rect: Rect) -> String {
         alpha: c.alpha,
         f0: c.f0,
         ltc: &pair,
+        clip: Clipping::BOTH,
+        normalization: Normalization::Corrected,
     };
     let mut row = c.text.clone();
     for method in RectMethod::ALL {

@@ -299,6 +299,7 @@ fn render_shades_lights_with_a_size_by_the_method_asked() {
             a: ltc_lab::render::ShapeMethods {
                 point: ltc_lab::render::Method::Ltc,
                 sphere: ltc_lab::light::sphere::SphereMethod::from_name(sphere).unwrap(),
+                rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
             },
             ..ltc_lab::render::RenderSettings::single(48, 32, ltc_lab::render::Method::Ltc)
         };

@@ -304,6 +304,7 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
                 a: ltc_lab::render::ShapeMethods {
                     point: method,
                     sphere,
+                    rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
                 },
                 ..RenderSettings::single(w, h, method)
             };
@@ -355,6 +356,7 @@ fn gpu_failure_presets_are_finite_and_match_the_cpu() {
                 a: ltc_lab::render::ShapeMethods {
                     point: Method::LtcFast,
                     sphere,
+                    rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
                 },
                 ..RenderSettings::single(48, 40, Method::LtcFast)
             };
@@ -395,6 +397,7 @@ fn a_far_tiny_sphere_renders_as_its_point_light() {
                 a: ltc_lab::render::ShapeMethods {
                     point: method,
                     sphere,
+                    rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
                 },
                 ..RenderSettings::single(32, 24, method)
             };

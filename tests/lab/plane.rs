@@ -249,7 +249,15 @@ fn pinned_terms(
     let tables = lab.tables();
     let b = (**lab.side_b() == ltc_lab::app::lab::SideB::TableB).then_some(&tables.b().lut);
     let spheres = [lab.spheres().ltc, lab.spheres().brdf];
-    let terms = pixel_terms(&scene, (&tables.a().lut, b), &p, lab.rules(), spheres).unwrap();
+    let terms = pixel_terms(
+        &scene,
+        (&tables.a().lut, b),
+        &p,
+        lab.rules(),
+        spheres,
+        [lab.rects().ltc, lab.rects().brdf],
+    )
+    .unwrap();
     (terms, [u, v], p)
 }
 

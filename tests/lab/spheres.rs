@@ -87,7 +87,15 @@ fn the_pinned_pixel_gives_each_sized_light_by_every_method() {
         .unwrap();
     let spheres = [lab_.spheres().ltc, lab_.spheres().brdf];
     let lut = &lab_.tables().a().lut;
-    let t = pixel_terms(&scene, (lut, None), &p, lab_.rules(), spheres).unwrap();
+    let t = pixel_terms(
+        &scene,
+        (lut, None),
+        &p,
+        lab_.rules(),
+        spheres,
+        [lab_.rects().ltc, lab_.rects().brdf],
+    )
+    .unwrap();
     for l in &t.terms {
         let all = l.spheres.expect("every light of the preset has a size");
         let (disk, exact) = (

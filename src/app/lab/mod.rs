@@ -13,8 +13,8 @@ use serde::{Deserialize, Serialize};
 
 pub use part::{Checked, Part, Stamp};
 pub use parts::{
-    Exposure, Forms, LastRefit, Lights, LobeView, Overrides, Selection, SideB, SphereForms, Stage,
-    TableId, TableSources, Tables,
+    Exposure, Forms, LastRefit, Lights, LobeView, Overrides, RectForms, Selection, SideB,
+    SphereForms, Stage, TableId, TableSources, Tables,
 };
 
 use crate::gpu::GpuContext;
@@ -163,6 +163,7 @@ parts! {
     lobe_view: LobeView;
     forms: Forms;
     spheres: SphereForms;
+    rects: RectForms;
     side_b: SideB;
     overrides: Overrides;
     rules: LtcRules;

@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 use crate::app::lab::part::{Checked, Notes, notes};
 use crate::app::lab::refit_result::RefitResult;
 use crate::light::Shape;
+use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::lut::{ALPHA_MIN, Table};
@@ -130,7 +131,8 @@ fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -
     }
     // A sphere's radius is at least `MIN_RADIUS` (docs/design.md §3).
     match &mut l.shape {
-        Shape::Point => {}
+        // A rect's half-edges are scaled together by its size slider, within the scene's limits.
+        Shape::Point | Shape::Rect { .. } => {}
         Shape::Sphere { radius } => {
             n.number(&name("radius"), radius, before.shape.radius(), RADIUS_RANGE);
         }
@@ -345,6 +347,33 @@ impl Default for SphereForms {
 
 /// A choice among the sphere methods holds no number.
 impl Checked for SphereForms {
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
+/// How each side of the plane shades rect lights (docs/design.md §1.11).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RectForms {
+    /// The LTC side's (and table B's, where two tables are compared).
+    pub ltc: RectMethod,
+    /// The reference side's.
+    pub brdf: RectMethod,
+}
+
+impl Default for RectForms {
+    /// The paper's own method against the reference.
+    fn default() -> Self {
+        Self {
+            ltc: RectMethod::LtcPolygon,
+            brdf: RectMethod::Exact,
+        }
+    }
+}
+
+/// A choice among the rect methods holds no number.
+impl Checked for RectForms {
     fn check(&mut self, _: &Self) -> Vec<String> {
         Vec::new()
     }

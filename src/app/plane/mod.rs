@@ -478,14 +478,17 @@ pub fn render_settings(
 ) -> RenderSettings {
     let forms = **lab.forms();
     let spheres = **lab.spheres();
+    let rects = **lab.rects();
     let tables = **lab.side_b() == SideB::TableB;
     let ltc = ShapeMethods {
         point: forms.ltc,
         sphere: spheres.ltc,
+        rect: rects.ltc,
     };
     let brdf = ShapeMethods {
         point: forms.brdf,
         sphere: spheres.brdf,
+        rect: rects.brdf,
     };
     RenderSettings {
         a: ltc,

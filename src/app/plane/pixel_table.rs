@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 use crate::app::lab::{Lab, LobeView, Selection, SideB, parts};
 use crate::app::work::cache::{Cached, Own};
 use crate::colormap::short_number;
+use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::ClipCase;
 use crate::metrics::luminance;
@@ -65,7 +66,7 @@ impl PinnedLights {
             lab.side_b(),
             lab.rules(),
             lab.tables(),
-            lab.spheres(),
+            (lab.spheres(), lab.rects()),
             Own((pinned, size)),
         );
         self.terms.get(
@@ -78,7 +79,7 @@ impl PinnedLights {
                 side_b,
                 rules,
                 tables,
-                spheres,
+                (spheres, rects),
                 Own((pinned, (width, height))),
             )| {
                 let [u, v] = pinned?;
@@ -88,7 +89,8 @@ impl PinnedLights {
                     scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
                 let b = (**side_b == SideB::TableB).then_some(&tables.b().lut);
                 let spheres = [spheres.ltc, spheres.brdf];
-                pixel_terms(&scene, (&tables.a().lut, b), &p, rules, spheres)
+                let rects = [rects.ltc, rects.brdf];
+                pixel_terms(&scene, (&tables.a().lut, b), &p, rules, spheres, rects)
             },
         );
     }
@@ -315,32 +317,54 @@ fn readout(ui: &mut egui::Ui, (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab), 
     });
 }
 
-/// Each light with a size by every sphere method, against the exact integral (the renders'
-/// rule), in the table's order: what each engine's choice gives at this pixel.
+/// Each light with a size by every method of its shape, against the exact integral (the
+/// renders' rule), in the table's order: what each engine's choice gives at this pixel.
 fn sized_rows(ui: &mut egui::Ui, rows: &[&LightTerm]) {
-    let sized: Vec<(usize, [DVec3; 4])> = rows
+    let spheres: Vec<(usize, Vec<DVec3>)> = rows
         .iter()
-        .filter_map(|l| l.spheres.map(|s| (l.index, s)))
+        .filter_map(|l| l.spheres.map(|s| (l.index, s.to_vec())))
         .take(MAX_ROWS)
         .collect();
-    if sized.is_empty() {
+    let methods = SphereMethod::ALL.map(|m| (m.name(), m.describe()));
+    let exact_at = SphereMethod::Exact.index();
+    method_rows(ui, "spheres", (&methods, exact_at), &spheres);
+    let rects: Vec<(usize, Vec<DVec3>)> = rows
+        .iter()
+        .filter_map(|l| l.rects.map(|r| (l.index, r.to_vec())))
+        .take(MAX_ROWS)
+        .collect();
+    let methods = RectMethod::ALL.map(|m| (m.name(), m.describe()));
+    let exact_at = RectMethod::Exact.index();
+    method_rows(ui, "rects", (&methods, exact_at), &rects);
+}
+
+/// One grid of `sized_rows`: a light a row, a method (name, description) a column, each
+/// value's error against the column `exact_at`'s.
+fn method_rows(
+    ui: &mut egui::Ui,
+    shape: &str,
+    (methods, exact_at): (&[(&str, &str)], usize),
+    lights: &[(usize, Vec<DVec3>)],
+) {
+    if lights.is_empty() {
         return;
     }
-    let exact_at = SphereMethod::Exact.index();
-    ui.small("lights with a size, by each method (luminance; error against exact):");
-    egui::Grid::new("pixel sized lights")
+    ui.small(format!(
+        "{shape}, by each method (luminance; error against exact):"
+    ));
+    egui::Grid::new(format!("pixel {shape}"))
         .striped(true)
         .spacing([10.0, 2.0])
         .show(ui, |ui| {
             ui.small("light");
-            for m in SphereMethod::ALL {
-                ui.small(m.name()).on_hover_text(m.describe());
+            for (name, describe) in methods {
+                ui.small(*name).on_hover_text(*describe);
             }
             ui.end_row();
-            for (index, values) in sized {
+            for (index, values) in lights {
                 ui.monospace(index.to_string());
                 let exact = luminance(values[exact_at]);
-                for (k, v) in values.into_iter().enumerate() {
+                for (k, &v) in values.iter().enumerate() {
                     let l = luminance(v);
                     if k == exact_at {
                         ui.monospace(short_number(l));

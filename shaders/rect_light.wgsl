@@ -1,0 +1,346 @@
+// Rect lights (docs/design.md §1.11), mirroring src/light/rect/mod.rs, src/light/rect/polygon.rs
+// and src/light/rect/quadrature.rs by name. Composed after brdf.wgsl, ltc.wgsl and
+// sphere_light.wgsl (uses atan_precise, illuminance_sphere, gl8, mirror and
+// sphere_ltc_point's arithmetic).
+
+// Rect: centre and half-edges in the shading frame, relative to the shading point; it emits
+// toward u × v.
+struct Rect {
+    centre: vec3<f32>,
+    u: vec3<f32>,
+    v: vec3<f32>,
+}
+
+// A convex polygon of up to 6 corners: a rect (4), clipped at the surface's horizon (5), then
+// at the cosine's (6); each clip adds one corner at most.
+struct Polygon {
+    p: array<vec3<f32>, 6>,
+    n: u32,
+}
+
+// RECT_POINT_LIMIT: below this angular size a rect is shaded as its oriented point light
+// (src/light/rect/mod.rs: the edge sum's f32 rounding, ~2⁻²⁴ d/s of the value, stays ≤ 6e-5).
+const RECT_POINT_LIMIT: f32 = 1e-3;
+
+// Rect::corners: c − u − v, c + u − v, c + u + v, c − u + v.
+fn rect_corners(r: Rect) -> Polygon {
+    var poly: Polygon;
+    poly.p[0] = r.centre - r.u - r.v;
+    poly.p[1] = r.centre + r.u - r.v;
+    poly.p[2] = r.centre + r.u + r.v;
+    poly.p[3] = r.centre - r.u + r.v;
+    poly.n = 4u;
+    return poly;
+}
+
+// Rect::faces_origin.
+fn rect_faces_origin(r: Rect) -> bool {
+    return dot(r.centre, cross(r.u, r.v)) < 0.0;
+}
+
+// Rect::area: 4 |u × v|.
+fn rect_area(r: Rect) -> f32 {
+    return 4.0 * length(cross(r.u, r.v));
+}
+
+// Rect::angular_size: (|u| + |v|) / |c|.
+fn rect_angular_size(r: Rect) -> f32 {
+    return (length(r.u) + length(r.v)) / length(r.centre);
+}
+
+// Rect::point_irradiance: A cos θe / d² at unit radiance.
+fn rect_point_irradiance(r: Rect) -> f32 {
+    let d2 = dot(r.centre, r.centre);
+    let cos_e = -dot(normalize(cross(r.u, r.v)), r.centre) / sqrt(d2);
+    return rect_area(r) * max(cos_e, 0.0) / d2;
+}
+
+// clip_horizon: the part of the polygon with z ≥ 0 (Sutherland–Hodgman against one plane).
+fn clip_horizon(poly: Polygon) -> Polygon {
+    var out: Polygon;
+    out.n = 0u;
+    for (var k = 0u; k < poly.n; k++) {
+        let a = poly.p[k];
+        let b = poly.p[(k + 1u) % poly.n];
+        if a.z >= 0.0 {
+            out.p[out.n] = a;
+            out.n += 1u;
+        }
+        if (a.z >= 0.0) != (b.z >= 0.0) {
+            let t = a.z / (a.z - b.z);
+            let x = a + (b - a) * t;
+            out.p[out.n] = vec3<f32>(x.x, x.y, 0.0);
+            out.n += 1u;
+        }
+    }
+    return out;
+}
+
+// atan2(y, x) for y ≥ 0 by atan_precise: the angle in [0, π].
+fn atan2_precise(y: f32, x: f32) -> f32 {
+    if x > 0.0 {
+        return atan_precise(y / x);
+    }
+    if x < 0.0 {
+        return PI - atan_precise(y / -x);
+    }
+    return PI / 2.0;
+}
+
+// edge_vector: θ_e n̂_e of one edge, from the corners themselves (a × b and
+// atan2(|a × b|, a·b)): unit directions would leave a small polygon's cross products ε/θ_e of
+// relative precision.
+fn edge_vector(a: vec3<f32>, b: vec3<f32>) -> vec3<f32> {
+    let c = cross(a, b);
+    let len = length(c);
+    if len == 0.0 {
+        return vec3<f32>(0.0);
+    }
+    return c * (atan2_precise(len, dot(a, b)) / len);
+}
+
+// vector_form_factor: (1/2π) Σ θ_e n̂_e, the corners first scaled to a largest component of 1
+// (the formula does not see the scale; far or mapped corners would overflow |a × b|²).
+fn vector_form_factor(poly: Polygon) -> vec3<f32> {
+    if poly.n < 3u {
+        return vec3<f32>(0.0);
+    }
+    var big = 0.0;
+    for (var k = 0u; k < poly.n; k++) {
+        let a = abs(poly.p[k]);
+        big = max(big, max(a.x, max(a.y, a.z)));
+    }
+    if big == 0.0 {
+        return vec3<f32>(0.0);
+    }
+    var sum = vec3<f32>(0.0);
+    for (var k = 0u; k < poly.n; k++) {
+        sum += edge_vector(poly.p[k] / big, poly.p[(k + 1u) % poly.n] / big);
+    }
+    return -sum / (2.0 * PI);
+}
+
+// map_polygon: the corners mapped by M⁻¹.
+fn map_polygon(m: mat3x3<f32>, poly: Polygon) -> Polygon {
+    var out = poly;
+    for (var k = 0u; k < poly.n; k++) {
+        out.p[k] = m * poly.p[k];
+    }
+    return out;
+}
+
+// paper_scale: the printed eq. 25 drops D's 1/π.
+fn paper_scale(integral: f32, normalization: u32) -> f32 {
+    if normalization == NORMALIZATION_PAPER_LITERAL {
+        return PI * integral;
+    }
+    return integral;
+}
+
+// ltc_polygon: ∫ D over the polygon — clipped at the surface's horizon first (case 1), mapped
+// by M⁻¹, clipped at the cosine's horizon (case 2), Lambert's edge formula; M⁻¹ with a negative
+// determinant turns the polygon over.
+fn ltc_polygon(ltc: Ltc, poly_in: Polygon, clip: u32, normalization: u32) -> f32 {
+    var poly = poly_in;
+    if (clip & CLIP_HORIZON) != 0u {
+        poly = clip_horizon(poly);
+    }
+    var mapped = map_polygon(ltc.cos_from_brdf, poly);
+    if (clip & CLIP_TRANSFORMED) != 0u {
+        mapped = clip_horizon(mapped);
+    }
+    let turn = sign(determinant(ltc.cos_from_brdf));
+    var integral = turn * vector_form_factor(mapped).z;
+    // Clipped, the integral is ≥ 0: what rounding leaves below it is 0.
+    if (clip & CLIP_TRANSFORMED) != 0u {
+        integral = max(integral, 0.0);
+    }
+    return paper_scale(integral, normalization);
+}
+
+// mapped_form_factor: the vector form factor of M⁻¹P, turned back over where M⁻¹ turns it.
+fn mapped_form_factor(ltc: Ltc, poly: Polygon) -> vec3<f32> {
+    return sign(determinant(ltc.cos_from_brdf)) * vector_form_factor(map_polygon(ltc.cos_from_brdf, poly));
+}
+
+// proxy_sphere: the cap of the same vector form factor, clipped at the horizon (Heitz & Hill 2017).
+fn proxy_sphere(f: vec3<f32>) -> f32 {
+    let len = length(f);
+    if len == 0.0 {
+        return 0.0;
+    }
+    return illuminance_sphere(f.z / len, min(len, 1.0)) / PI;
+}
+
+// proxy_sphere_fast: three.js's LTC_ClippedSphereFormFactor.
+fn proxy_sphere_fast(f: vec3<f32>) -> f32 {
+    let len = length(f);
+    return max((len * len + f.z) / (len + 1.0), 0.0);
+}
+
+// ltc_proxy: the unclipped vector form factor of M⁻¹P through proxy_sphere (case 2), or its z.
+fn ltc_proxy(ltc: Ltc, poly: Polygon, clip: u32, normalization: u32) -> f32 {
+    let f = mapped_form_factor(ltc, poly);
+    var integral = f.z;
+    if (clip & CLIP_TRANSFORMED) != 0u {
+        integral = proxy_sphere(f);
+    }
+    return paper_scale(integral, normalization);
+}
+
+// ltc_proxy_fast: ltc_proxy with proxy_sphere_fast.
+fn ltc_proxy_fast(ltc: Ltc, poly: Polygon, clip: u32, normalization: u32) -> f32 {
+    let f = mapped_form_factor(ltc, poly);
+    var integral = f.z;
+    if (clip & CLIP_TRANSFORMED) != 0u {
+        integral = proxy_sphere_fast(f);
+    }
+    return paper_scale(integral, normalization);
+}
+
+// One rect of unit radiance at one shading point (src/light/rect/mod.rs RectShading).
+struct RectShading {
+    v: vec3<f32>,
+    rect: Rect,
+    alpha: f32,
+    f0: f32,
+    clip: u32,
+    normalization: u32,
+}
+
+// The lobes' magnitudes (none for the paper-literal normalization).
+fn rect_weights(s: RectShading, pair: LtcPair) -> vec2<f32> {
+    if s.normalization == NORMALIZATION_PAPER_LITERAL {
+        return vec2<f32>(1.0);
+    }
+    return vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
+}
+
+// rect_point: the oriented point light at the centre — the exact point light for the exact
+// method, the paper's point formula for the LTC ones.
+fn rect_point(s: RectShading, pair: LtcPair, exact: bool) -> vec2<f32> {
+    let e = rect_point_irradiance(s.rect);
+    let l = normalize(s.rect.centre);
+    if exact {
+        if l.z <= 0.0 {
+            return vec2<f32>(0.0);
+        }
+        let d = dots_new(s.v, l);
+        return e * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
+    }
+    let lobes = vec2<f32>(
+        ltc_eval(pair.spec, l, s.clip, s.normalization),
+        ltc_eval(pair.diff, l, s.clip, s.normalization),
+    );
+    return e * rect_weights(s, pair) * lobes;
+}
+
+// hit_inside: where the ray from the origin along `dir` meets the polygon's plane, w = 1 if
+// inside it (src/light/rect/quadrature.rs).
+fn hit_inside(poly: Polygon, dir: vec3<f32>) -> vec4<f32> {
+    let normal = cross(poly.p[1] - poly.p[0], poly.p[2] - poly.p[0]);
+    let along = dot(dir, normal);
+    if along == 0.0 {
+        return vec4<f32>(0.0);
+    }
+    let t = dot(poly.p[0], normal) / along;
+    if t <= 0.0 {
+        return vec4<f32>(0.0);
+    }
+    let x = dir * t;
+    var all_in = true;
+    var all_out = true;
+    for (var k = 0u; k < poly.n; k++) {
+        let a = poly.p[k];
+        let b = poly.p[(k + 1u) % poly.n];
+        let side = dot(cross(b - a, x - a), normal);
+        all_in = all_in && side >= 0.0;
+        all_out = all_out && side <= 0.0;
+    }
+    return vec4<f32>(x, select(0.0, 1.0, all_in || all_out));
+}
+
+// rect_exact: ∫ f cos dω over the rect above the surface at unit radiance, by
+// polygon_integral_about's rule with 8 nodes per dimension and triangle (src/light/rect/mod.rs
+// GPU_EXACT_NODES): a fan from the mirror direction's hit where it is inside, else from the
+// first corner, each triangle's nodes collapsed onto it (Duffy).
+fn rect_exact(s: RectShading) -> vec2<f32> {
+    let poly = clip_horizon(rect_corners(s.rect));
+    if poly.n < 3u {
+        return vec2<f32>(0.0);
+    }
+    let hit = hit_inside(poly, mirror(s.v));
+    var apex = poly.p[0];
+    var first = 1u;
+    var last = poly.n - 1u;
+    if hit.w > 0.0 {
+        apex = hit.xyz;
+        first = 0u;
+        last = poly.n;
+    }
+    var sum = vec2<f32>(0.0);
+    for (var k = first; k < last; k++) {
+        let e1 = poly.p[k] - apex;
+        let e2 = poly.p[(k + 1u) % poly.n] - apex;
+        let normal = cross(e1, e2);
+        let twice_area = length(normal);
+        if twice_area == 0.0 {
+            continue;
+        }
+        let unit = normal / twice_area;
+        for (var i = 0u; i < 8u; i++) {
+            let ns = gl8(i);
+            let sx = 0.5 * (ns.x + 1.0);
+            for (var j = 0u; j < 8u; j++) {
+                let nt = gl8(j);
+                let tx = 0.5 * (nt.x + 1.0);
+                let x = apex + e1 * sx + (e2 - e1) * (sx * tx);
+                let r2 = dot(x, x);
+                if r2 > 0.0 {
+                    let r = sqrt(r2);
+                    let l = x / r;
+                    if l.z > 0.0 {
+                        let weight = 0.25 * ns.y * nt.y * sx * twice_area * abs(dot(x, unit)) / (r * r2);
+                        let d = dots_new(s.v, l);
+                        sum += weight * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
+                    }
+                }
+            }
+        }
+    }
+    return sum;
+}
+
+// rect_light: both lobes of a rect of unit radiance by `method` (RECT_* of plane.wgsl): 0 facing away, its point light below
+// RECT_POINT_LIMIT.
+fn rect_light(method: u32, s: RectShading, pair: LtcPair) -> vec2<f32> {
+    if !rect_faces_origin(s.rect) {
+        return vec2<f32>(0.0);
+    }
+    if rect_angular_size(s.rect) < RECT_POINT_LIMIT {
+        return rect_point(s, pair, method == RECT_EXACT);
+    }
+    let corners = rect_corners(s.rect);
+    switch method {
+        case RECT_EXACT: { return rect_exact(s); }
+        case RECT_LTC_POLYGON: {
+            return rect_weights(s, pair) * vec2<f32>(
+                ltc_polygon(pair.spec, corners, s.clip, s.normalization),
+                ltc_polygon(pair.diff, corners, s.clip, s.normalization),
+            );
+        }
+        case RECT_LTC_PROXY: {
+            return rect_weights(s, pair) * vec2<f32>(
+                ltc_proxy(pair.spec, corners, s.clip, s.normalization),
+                ltc_proxy(pair.diff, corners, s.clip, s.normalization),
+            );
+        }
+        case RECT_LTC_PROXY_FAST: {
+            return rect_weights(s, pair) * vec2<f32>(
+                ltc_proxy_fast(pair.spec, corners, s.clip, s.normalization),
+                ltc_proxy_fast(pair.diff, corners, s.clip, s.normalization),
+            );
+        }
+        default: { return rect_point(s, pair, false); }
+    }
+}
