@@ -4,20 +4,22 @@
 
 use std::path::PathBuf;
 
+use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::app::files::Purpose;
 use crate::app::lab::parts::{BRDF_FORMS, LTC_FORMS, RADIUS_RANGE, RANGE_RANGE};
-use crate::app::lab::{Forms, Lab, LobeView, Overrides, Request, SphereForms};
+use crate::app::lab::{Forms, Lab, LobeView, Overrides, RectForms, Request, SphereForms};
 use crate::app::panel::Panel;
 use crate::app::ui::widgets::{clipping_rules, explain, name};
 use crate::light::Shape;
+use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::Normalization;
 use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::ltc::remedy::Horizon;
 use crate::render::LtcRules;
-use crate::scene::{Light, Material, PRESETS, SPHERE_PRESETS, preset};
+use crate::scene::{Light, MIN_RADIUS, Material, PRESETS, RECT_PRESETS, SPHERE_PRESETS, preset};
 use crate::tables::Source;
 
 /// The light counts the slider offers, at most (and at most what the adapter shades).
@@ -178,6 +180,48 @@ fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
     egui::CollapsingHeader::new("lights with a size")
         .id_salt("sized lights")
         .show(ui, |ui| sized_lights(ui, lab));
+    egui::CollapsingHeader::new("rect lights")
+        .id_salt("rect lights")
+        .show(ui, |ui| rect_lights(ui, lab));
+}
+
+/// How each side shades a rect light, and the rects' failure presets (docs/design.md §1.11).
+fn rect_lights(ui: &mut egui::Ui, lab: &mut Lab) {
+    lab.edit(|f: &mut RectForms| {
+        for (label, method, hover) in [
+            (
+                "rect LTC side",
+                &mut f.ltc,
+                "How the LTC side (and table B) shades a rect light",
+            ),
+            (
+                "rect reference side",
+                &mut f.brdf,
+                "How the BRDF side shades a rect light",
+            ),
+        ] {
+            egui::ComboBox::from_label(label)
+                .selected_text(method.name())
+                .show_ui(ui, |ui| {
+                    for m in RectMethod::ALL {
+                        ui.selectable_value(method, m, m.name())
+                            .on_hover_text(m.describe());
+                    }
+                })
+                .response
+                .on_hover_text(hover);
+        }
+    });
+    explain(
+        ui,
+        "A rect emits toward half_u × half_v with radiance I/A: far away it is the oriented point light of intensity I cos θe",
+    );
+    preset_buttons(
+        ui,
+        lab,
+        &RECT_PRESETS,
+        "Load this failure case of rect lights",
+    );
 }
 
 /// Every light's radius, how each side shades a light with one, and the failure presets
@@ -326,6 +370,10 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
                 .labelled_by(label.id)
                 .on_hover_text(hover);
         }
+        if let Shape::Rect { half_u, half_v } = &mut light.shape {
+            rect_size(ui, half_u, half_v);
+            return;
+        }
         // The shape by its radius: 0 a point, more a sphere.
         let label = ui.label("r");
         let mut radius = light.shape.radius();
@@ -334,6 +382,40 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
             .on_hover_text("Radius: 0 is the paper's point light; from 0.0001 a sphere, shaded by each side's method for lights with a size");
         light.shape = Shape::of_radius(radius);
     });
+}
+
+/// A rect's width and height (its edges' full lengths), each dragged along its own
+/// direction: the orientation stays.
+fn rect_size(ui: &mut egui::Ui, half_u: &mut DVec3, half_v: &mut DVec3) {
+    for (name, edge, hover) in [
+        (
+            "w",
+            half_u,
+            "Width: the length of the rect's first edge (2 |half_u|)",
+        ),
+        (
+            "h",
+            half_v,
+            "Height: the length of its second edge (2 |half_v|)",
+        ),
+    ] {
+        let label = ui.label(name);
+        let length = edge.length();
+        let mut full = 2.0 * length;
+        // From 2·MIN_RADIUS, so that a square keeps the scene's least area, to 4 (the
+        // default plane's side).
+        ui.add(
+            egui::DragValue::new(&mut full)
+                .speed(0.005)
+                .range(2.0 * MIN_RADIUS..=4.0)
+                .max_decimals(4),
+        )
+        .labelled_by(label.id)
+        .on_hover_text(hover);
+        if length > 0.0 && full != 2.0 * length {
+            *edge *= 0.5 * full / length;
+        }
+    }
 }
 
 /// A button per preset of `presets`, each loading its scene.

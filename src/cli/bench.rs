@@ -41,12 +41,19 @@ pub struct Args {
     /// method, in the same run (docs/design.md §1.10).
     #[arg(long)]
     sphere_radius: Option<f64>,
+    /// Also time every light as a square rect of this half-edge facing the plane (scene
+    /// units, ≥ 1e-4), by each rect method, in the same run (docs/design.md §1.11).
+    #[arg(long)]
+    rect_half_edge: Option<f64>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
     check_frames_and_lights(a.frames, &a.lights)?;
     if let Some(r) = a.sphere_radius {
-        check_sphere_radius(r)?;
+        check_size("--sphere-radius", r)?;
+    }
+    if let Some(h) = a.rect_half_edge {
+        check_size("--rect-half-edge", h)?;
     }
     if let Some(p) = &a.csv {
         // Refuse a bad path before minutes of measuring.
@@ -76,6 +83,7 @@ pub fn run(a: &Args) -> Result<()> {
         range: Range::or_default(a.culling.range),
         horizons: a.horizon.clone(),
         sphere_radius: a.sphere_radius,
+        rect_half_edge: a.rect_half_edge,
     };
     let rows = ltc_lab::measure::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(
@@ -97,14 +105,16 @@ pub fn run(a: &Args) -> Result<()> {
     print(&ltc_lab::measure::bench::markdown(&rows, &device))
 }
 
-/// `--sphere-radius`: a radius a scene's light may have, and not 0 (that is the point rows).
-fn check_sphere_radius(r: f64) -> Result<()> {
+/// `--sphere-radius` and `--rect-half-edge`: a size a scene's light may have, and not 0 (that
+/// is the point rows): a radius of at least `MIN_RADIUS`, a square of half-edge at least
+/// `MIN_RADIUS` (so `|half_u × half_v| ≥ MIN_RADIUS²`, as a scene requires).
+fn check_size(flag: &str, r: f64) -> Result<()> {
     let (lo, hi) = (ltc_lab::scene::MIN_RADIUS, ltc_lab::scene::MAX_COORDINATE);
     if (lo..=hi).contains(&r) {
         return Ok(());
     }
     Err(ltc_lab::error::Error::input(
-        "--sphere-radius",
+        flag,
         format!("must be in [{lo}, {hi}] scene units, got {r}"),
     ))
 }

@@ -27,14 +27,44 @@ pub const PAPER_LTC_FPS: [f64; 4] = [285.0, 56.0, 28.0, 5.0];
 /// The range of the benchmark's lights unless `--range` says otherwise: paper-100's.
 pub const DEFAULT_RANGE: f64 = crate::scene::PAPER_RANGE;
 
+/// What shape every light of a run had, and how it was shaded: points by the run's point
+/// method, or every light a sphere (or a rect) by one method.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Sizing {
+    Point,
+    Sphere(SphereMethod),
+    Rect(RectMethod),
+}
+
+impl Sizing {
+    /// The shape, as the CSV's `shape` column writes it.
+    pub fn shape_name(self) -> &'static str {
+        match self {
+            Self::Point => "point",
+            Self::Sphere(_) => "sphere",
+            Self::Rect(_) => "rect",
+        }
+    }
+
+    /// The shape's method, as the CSV's `shape_method` column writes it (empty for points:
+    /// the row's `method`).
+    pub fn method_name(self) -> &'static str {
+        match self {
+            Self::Point => "",
+            Self::Sphere(m) => m.name(),
+            Self::Rect(m) => m.name(),
+        }
+    }
+}
+
 /// One measured cell of the table.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BenchRow {
     pub method: Method,
-    /// How every light, a sphere of `radius`, was shaded (`None`: as points, by `method`).
-    pub sphere: Option<SphereMethod>,
-    /// The lights' radius (0: points).
-    pub radius: f64,
+    /// How every light was shaped and shaded (`Sizing::Point`: as points, by `method`).
+    pub sizing: Sizing,
+    /// The lights' size: a sphere's radius, a square rect's half-edge (0: points).
+    pub size: f64,
     /// The horizon remedy the LTC methods shaded with (eq30 for the BRDF forms).
     pub horizon: Horizon,
     pub lights: usize,
@@ -65,11 +95,11 @@ impl BenchRow {
         (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
     }
 
-    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,sphere,radius";
+    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,shape,shape_method,size";
 
     pub fn csv(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3},{},{}",
+            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3},{},{},{}",
             self.method.name(),
             self.horizon.name(),
             self.lights,
@@ -86,18 +116,20 @@ impl BenchRow {
                 .map_or(String::new(), |b| format!("{b:.6}")),
             self.fps(),
             self.glightpx_per_s(),
-            self.sphere.map_or("point", SphereMethod::name),
-            self.radius
+            self.sizing.shape_name(),
+            self.sizing.method_name(),
+            self.size
         )
     }
 
-    /// The method as the table names it: the sphere method and radius, or the point method
-    /// with its remedy.
+    /// The method as the table names it: the sphere method and radius, the rect method and
+    /// half-edge, or the point method with its remedy.
     pub fn label(&self) -> String {
-        match (self.sphere, self.horizon) {
-            (Some(m), _) => format!("{} (r = {})", m.name(), self.radius),
-            (None, Horizon::Eq30) => self.method.name().to_string(),
-            (None, h) => format!("{} ({})", self.method.name(), h.name()),
+        match (self.sizing, self.horizon) {
+            (Sizing::Sphere(m), _) => format!("{} (r = {})", m.name(), self.size),
+            (Sizing::Rect(m), _) => format!("rect {} (h = {})", m.name(), self.size),
+            (Sizing::Point, Horizon::Eq30) => self.method.name().to_string(),
+            (Sizing::Point, h) => format!("{} ({})", self.method.name(), h.name()),
         }
     }
 }
@@ -210,6 +242,9 @@ pub struct BenchSettings {
     pub horizons: Vec<Horizon>,
     /// Also every light as a sphere of this radius, by each sphere method.
     pub sphere_radius: Option<f64>,
+    /// Also every light as a square rect of this half-edge facing the plane, by each rect
+    /// method.
+    pub rect_half_edge: Option<f64>,
 }
 
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
@@ -236,21 +271,40 @@ pub fn runs(ctx: &GpuContext, horizons: &[Horizon]) -> Vec<(Method, Horizon)> {
     runs
 }
 
-/// What one timed run shades: a point method with its remedy, and the sphere method of
-/// lights with a size (`None`: points).
-type Run = (Method, Horizon, Option<SphereMethod>);
+/// What one timed run shades: a point method with its remedy, and the lights' shape and
+/// its method.
+type Run = (Method, Horizon, Sizing);
 
-/// `runs`, then each sphere method where the lights have a size (on ltc-fast's sums, the
-/// form an engine ships; a sized light's cost does not depend on the point method).
+/// `runs`, then each sphere method where the lights are spheres and each rect method where
+/// they are rects (on ltc-fast's sums, the form an engine ships; a sized light's cost does
+/// not depend on the point method).
 fn all_runs(ctx: &GpuContext, s: &BenchSettings) -> Vec<Run> {
     let points = runs(ctx, &s.horizons)
         .into_iter()
-        .map(|(m, h)| (m, h, None));
+        .map(|(m, h)| (m, h, Sizing::Point));
+    let sized = |sizing| (Method::LtcFast, Horizon::Eq30, sizing);
     let spheres = s
         .sphere_radius
         .iter()
-        .flat_map(|_| SphereMethod::ALL.map(|sm| (Method::LtcFast, Horizon::Eq30, Some(sm))));
-    points.chain(spheres).collect()
+        .flat_map(|_| SphereMethod::ALL.map(|m| sized(Sizing::Sphere(m))));
+    let rects = s
+        .rect_half_edge
+        .iter()
+        .flat_map(|_| RectMethod::ALL.map(|m| sized(Sizing::Rect(m))));
+    points.chain(spheres).chain(rects).collect()
+}
+
+/// `scene` with every light a square rect of half-edge `h` facing down onto the plane.
+pub fn as_rects(scene: &Scene, h: f64) -> Scene {
+    let mut rects = scene.clone();
+    for l in &mut rects.lights {
+        // half_u × half_v = (h, 0, 0) × (0, −h, 0) = (0, 0, −h²): toward the plane.
+        l.shape = Shape::Rect {
+            half_u: DVec3::new(h, 0.0, 0.0),
+            half_v: DVec3::new(0.0, -h, 0.0),
+        };
+    }
+    rects
 }
 
 /// Measures every method (and remedy) at every light count and culling: `frames` timed
@@ -273,9 +327,14 @@ pub fn run(
         for l in &mut spheres.lights {
             l.shape = Shape::of_radius(s.sphere_radius.unwrap_or(0.0));
         }
+        let rects = as_rects(&points, s.rect_half_edge.unwrap_or(0.0));
         for &cull in &s.culls {
-            for (method, horizon, sphere) in all_runs(ctx, s) {
-                let scene = if sphere.is_some() { &spheres } else { &points };
+            for (method, horizon, sizing) in all_runs(ctx, s) {
+                let (scene, size) = match sizing {
+                    Sizing::Point => (&points, 0.0),
+                    Sizing::Sphere(_) => (&spheres, s.sphere_radius.unwrap_or(0.0)),
+                    Sizing::Rect(_) => (&rects, s.rect_half_edge.unwrap_or(0.0)),
+                };
                 let table = horizon.table().map_or(lut, |t| Lut::shipped(t));
                 renderer.set_tables(ctx, table, None)?;
                 let settings = RenderSettings {
@@ -286,8 +345,14 @@ pub fn run(
                     },
                     a: ShapeMethods {
                         point: method,
-                        sphere: sphere.unwrap_or(SphereMethod::LtcPoint),
-                        rect: RectMethod::LtcPoint,
+                        sphere: match sizing {
+                            Sizing::Sphere(m) => m,
+                            _ => SphereMethod::LtcPoint,
+                        },
+                        rect: match sizing {
+                            Sizing::Rect(m) => m,
+                            _ => RectMethod::LtcPoint,
+                        },
                     },
                     ..RenderSettings::single(width, height, method)
                 };
@@ -301,12 +366,8 @@ pub fn run(
                 let mut bins: Vec<f64> = times.iter().filter_map(|t| t.bin_ms).collect();
                 let row = BenchRow {
                     method,
-                    sphere,
-                    radius: if sphere.is_some() {
-                        s.sphere_radius.unwrap_or(0.0)
-                    } else {
-                        0.0
-                    },
+                    sizing,
+                    size,
                     horizon,
                     lights,
                     width,
@@ -359,7 +420,7 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
                     && r.cull == cull
                     && r.method == m
                     && r.horizon == h
-                    && r.sphere.is_none()
+                    && r.sizing == Sizing::Point
             })
             .map(|r| r.ms_median)
     };
@@ -426,8 +487,36 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
             }
         }
     }
-    if let Some(r) = rows.iter().find(|r| r.sphere.is_some()) {
-        out.push_str(&spheres_markdown(rows, &keys, r.radius, &ms));
+    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Sphere(_))) {
+        let methods = SphereMethod::ALL.map(Sizing::Sphere);
+        let title = format!("every light a sphere of radius {}", r.size);
+        let pair = (
+            Sizing::Sphere(SphereMethod::LtcDisk),
+            Sizing::Sphere(SphereMethod::LtcPoint),
+        );
+        out.push_str(&sized_markdown(
+            rows,
+            (&keys, &title),
+            (&methods, pair),
+            &ms,
+        ));
+    }
+    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Rect(_))) {
+        let methods = RectMethod::ALL.map(Sizing::Rect);
+        let title = format!(
+            "every light a square rect of half-edge {}, facing the plane",
+            r.size
+        );
+        let pair = (
+            Sizing::Rect(RectMethod::LtcPolygon),
+            Sizing::Rect(RectMethod::LtcPoint),
+        );
+        out.push_str(&sized_markdown(
+            rows,
+            (&keys, &title),
+            (&methods, pair),
+            &ms,
+        ));
     }
     out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");
     for k in 0..PAPER_LIGHTS.len() {
@@ -442,31 +531,33 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
     out
 }
 
-/// Lights with a size: each sphere method's ms per frame and its cost over the point
-/// formula's (ltc and ltc-fast on points, same run, same lights).
-fn spheres_markdown(
+/// Lights with a size: each method's ms per frame and its cost over the point formula's
+/// (ltc and ltc-fast on points, same run, same lights), and one sized method's over another
+/// (`pair`: the LTC disk's or polygon's over the centre's point formula on the same lights).
+fn sized_markdown(
     rows: &[BenchRow],
-    keys: &[(usize, bool)],
-    radius: f64,
+    (keys, title): (&[(usize, bool)], &str),
+    (methods, pair): (&[Sizing], (Sizing, Sizing)),
     point_ms: &dyn Fn(usize, bool, Method) -> Option<f64>,
 ) -> String {
-    let names: Vec<&str> = SphereMethod::ALL.iter().map(|m| m.name()).collect();
+    let names: Vec<&str> = methods.iter().map(|m| m.method_name()).collect();
+    let pair_name = format!("{} / {}", pair.0.method_name(), pair.1.method_name());
     let mut out = format!(
-        "\nLights with a size (every light a sphere of radius {radius}; ms, and × the point formula's ltc-fast / ltc, same run):\n\n| lights | cull | {} |\n|---:|---|{}\n",
+        "\nLights with a size ({title}; ms, and × the point formula's ltc-fast / ltc, same run):\n\n| lights | cull | {} | {pair_name} |\n|---:|---|{}---:|\n",
         names.join(" | "),
         "---:|".repeat(names.len())
     );
     for &(n, cull) in keys {
-        let sphere_ms = |sm| {
+        let sized_ms = |sizing| {
             rows.iter()
-                .find(|r| r.lights == n && r.cull == cull && r.sphere == Some(sm))
+                .find(|r| r.lights == n && r.cull == cull && r.sizing == sizing)
                 .map(|r| r.ms_median)
         };
         let point = |m| point_ms(n, cull, m);
         let (fast, paper) = (point(Method::LtcFast), point(Method::Ltc));
-        let cells: Vec<String> = SphereMethod::ALL
+        let cells: Vec<String> = methods
             .iter()
-            .map(|&sm| match (sphere_ms(sm), fast, paper) {
+            .map(|&m| match (sized_ms(m), fast, paper) {
                 (Some(ms), Some(f), Some(p)) => {
                     format!("{ms:.3} ({:.2}× / {:.2}×)", ms / f, ms / p)
                 }
@@ -474,8 +565,12 @@ fn spheres_markdown(
                 _ => "–".into(),
             })
             .collect();
+        let ratio = match (sized_ms(pair.0), sized_ms(pair.1)) {
+            (Some(a), Some(b)) => format!("{:.2}×", a / b),
+            _ => "–".into(),
+        };
         out.push_str(&format!(
-            "| {n} | {} | {} |\n",
+            "| {n} | {} | {} | {ratio} |\n",
             if cull { "on" } else { "off" },
             cells.join(" | ")
         ));

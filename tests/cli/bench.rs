@@ -28,6 +28,8 @@ fn bench_prints_the_table_and_writes_the_csv() {
         "exact-band",
         "--sphere-radius",
         "0.05",
+        "--rect-half-edge",
+        "0.04",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = String::from_utf8(o.stdout).unwrap();
@@ -50,32 +52,46 @@ fn bench_prints_the_table_and_writes_the_csv() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,sphere,radius"
+        "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,shape,shape_method,size"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    // Every method with eq30, ltc and ltc-fast with exact-band too, and the four sphere
-    // methods on lights of radius 0.05.
-    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 } + 2 + 4;
+    // Every method with eq30, ltc and ltc-fast with exact-band too, the four sphere methods
+    // on lights of radius 0.05 and the five rect methods on rects of half-edge 0.04.
+    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 } + 2 + 4 + 5;
     assert_eq!(rows.len(), 2 * methods, "every method × 2 light counts");
-    let spheres: Vec<(&str, &str)> = rows
-        .iter()
-        .filter(|r| r[15] != "point")
-        .map(|r| (r[15], r[16]))
-        .collect();
+    let sized = |shape: &str| -> Vec<(&str, &str)> {
+        rows.iter()
+            .filter(|r| r[15] == shape)
+            .map(|r| (r[16], r[17]))
+            .collect()
+    };
+    let spheres = sized("sphere");
     assert_eq!(spheres.len(), 8, "{spheres:?}");
     assert!(spheres.iter().all(|&(_, r)| r == "0.05"), "{spheres:?}");
+    let rects = sized("rect");
+    assert_eq!(rects.len(), 10, "{rects:?}");
+    assert!(rects.iter().all(|&(_, h)| h == "0.04"), "{rects:?}");
+    assert!(rects.iter().any(|&(m, _)| m == "ltc-polygon"), "{rects:?}");
+    assert!(
+        table.contains("| rect ltc-polygon (h = 0.04) | 20 | 32×16 | on | 2 |"),
+        "{table}"
+    );
+    assert!(
+        table.contains("| lights | cull | exact | ltc-polygon | ltc-proxy | ltc-proxy-fast | ltc-point | ltc-polygon / ltc-point |"),
+        "{table}"
+    );
     assert!(
         table.contains("| ltc-disk (r = 0.05) | 20 | 32×16 | on | 2 |"),
         "{table}"
     );
     assert!(
-        table.contains("| lights | cull | exact | ltc-point | ltc-disk | representative-point |"),
+        table.contains("| lights | cull | exact | ltc-point | ltc-disk | representative-point | ltc-disk / ltc-point |"),
         "{table}"
     );
     let remedies = rows.iter().filter(|r| r[1] == "exact-band").count();
     assert_eq!(remedies, 4, "ltc and ltc-fast × 2 light counts");
     for r in &rows {
-        assert_eq!(r.len(), 17);
+        assert_eq!(r.len(), 18);
         assert_eq!((r[6], r[7]), ("on", "2"), "{r:?}");
         let fraction: f64 = r[8].parse().unwrap();
         assert!(fraction > 0.0 && fraction <= 1.0, "{r:?}");
@@ -98,6 +114,8 @@ fn bench_refuses_bad_arguments() {
     for r in ["0", "-1", "1e-5", "nan", "1e7"] {
         let flag = format!("--sphere-radius={r}");
         assert_refused(&ltc_lab(&["bench", &flag]), "--sphere-radius");
+        let flag = format!("--rect-half-edge={r}");
+        assert_refused(&ltc_lab(&["bench", &flag]), "--rect-half-edge");
     }
     assert_refused(
         &ltc_lab(&["bench", "--csv", "/nonexistent-dir/b.csv"]),

@@ -4,6 +4,7 @@
 //! shading forms, how each side shades lights with a size, side B, the lights' overrides, the LTC rules, the tables, the selection and
 //! the last refit. The lab holds each in a `Part` (`app::lab`).
 
+use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::{Checked, Notes, notes};
@@ -94,9 +95,14 @@ impl Checked for Lights {
 /// it to take the value from.
 fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -> bool {
     let values = l.position.into_iter().chain(l.color).chain([l.intensity]);
+    let edges = l
+        .shape
+        .half_edges()
+        .map_or([0.0; 6], |(u, v)| [u.x, u.y, u.z, v.x, v.y, v.z]);
     let finite = values
         .chain(l.range)
         .chain([l.shape.radius()])
+        .chain(edges)
         .all(f64::is_finite);
     let before = match (before, finite) {
         (Some(b), _) => *b,
@@ -131,13 +137,54 @@ fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light>) -
     }
     // A sphere's radius is at least `MIN_RADIUS` (docs/design.md §3).
     match &mut l.shape {
-        // A rect's half-edges are scaled together by its size slider, within the scene's limits.
-        Shape::Point | Shape::Rect { .. } => {}
+        Shape::Point => {}
         Shape::Sphere { radius } => {
             n.number(&name("radius"), radius, before.shape.radius(), RADIUS_RANGE);
         }
+        Shape::Rect { half_u, half_v } => check_rect(n, &name, (half_u, half_v), &before),
+    }
+    if !has_area(l.shape) {
+        let shape = if has_area(before.shape) {
+            before.shape
+        } else {
+            Shape::Point
+        };
+        n.say(format!(
+            "lights[{k}]: half_u × half_v has no area (under {:e}): not a rect, kept as a {}",
+            MIN_RADIUS * MIN_RADIUS,
+            if shape == Shape::Point {
+                "point"
+            } else {
+                "shape it had"
+            }
+        ));
+        l.shape = shape;
     }
     true
+}
+
+/// Whether a rect spans `scene::check_rect`'s least area (other shapes do).
+fn has_area(shape: Shape) -> bool {
+    shape
+        .half_edges()
+        .is_none_or(|(u, v)| u.cross(v).length() >= MIN_RADIUS * MIN_RADIUS)
+}
+
+/// A rect's half-edges within the coordinates' limits and of some area (`scene::check_rect`'s
+/// `MIN_RADIUS²`): a flat one takes the shape of the light it replaces, or becomes a point.
+fn check_rect(
+    n: &mut Notes,
+    name: &dyn Fn(&str) -> String,
+    (half_u, half_v): (&mut DVec3, &mut DVec3),
+    before: &Light,
+) {
+    let coordinate = [-MAX_COORDINATE, MAX_COORDINATE];
+    let (before_u, before_v) = before.shape.half_edges().unwrap_or((*half_u, *half_v));
+    for (field, edge, previous) in [("half_u", half_u, before_u), ("half_v", half_v, before_v)] {
+        let mut xs = edge.to_array();
+        n.numbers(&name(field), &mut xs, &previous.to_array(), coordinate);
+        *edge = DVec3::from(xs);
+    }
 }
 
 /// The plane's material: the scene file's ranges (docs/design.md §3).

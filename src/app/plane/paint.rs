@@ -34,6 +34,16 @@ pub struct Placed {
 }
 
 impl Placed {
+    /// A position in the render's pixels on the screen (`pixel`'s inverse).
+    pub fn to_screen(&self, (x, y): (f64, f64)) -> Pos2 {
+        let (width, height) = self.size;
+        self.rect.min
+            + Vec2::new(
+                (x / width as f64) as f32 * self.rect.width(),
+                (y / height as f64) as f32 * self.rect.height(),
+            )
+    }
+
     /// A screen position in the render's pixels.
     pub fn pixel(&self, pos: Pos2) -> (f64, f64) {
         let u = (pos - self.rect.min) / self.rect.size();
@@ -147,13 +157,6 @@ pub fn paint_divider(painter: &egui::Painter, rect: egui::Rect, x: f32, (a, b): 
 /// the image).
 pub fn markers(lab: &Lab, placed: Placed) -> Vec<(usize, Pos2)> {
     let (rect, (width, height)) = (placed.rect, placed.size);
-    let to_screen = |(x, y): (f64, f64)| {
-        rect.min
-            + Vec2::new(
-                (x / width as f64) as f32 * rect.width(),
-                (y / height as f64) as f32 * rect.height(),
-            )
-    };
     let scene = lab.stage_scene();
     lab.lights()
         .list
@@ -163,14 +166,15 @@ pub fn markers(lab: &Lab, placed: Placed) -> Vec<(usize, Pos2)> {
         .filter_map(|(k, l)| {
             scene
                 .project(DVec3::from(l.position), width, height)
-                .map(|p| (k, to_screen(p)))
+                .map(|p| (k, placed.to_screen(p)))
         })
         .filter(|(_, p)| rect.contains(*p))
         .collect()
 }
 
-/// The outline of each light with a size as the camera sees it (the sphere's silhouette,
-/// about its marker): where its size is on the plane.
+/// The outline of each light with a size as the camera sees it (the sphere's silhouette
+/// about its marker; a rect's four edges, with a tick along its normal toward the side it
+/// lights): where its size is on the plane.
 pub fn paint_outlines(
     painter: &egui::Painter,
     lab: &Lab,
@@ -182,29 +186,51 @@ pub fn paint_outlines(
     let (width, height) = placed.size;
     let (_, _, _, up) = scene.camera_basis();
     let scale = placed.rect.width() / width as f32;
+    let stroke = egui::Stroke::new(1.0, Color32::from_white_alpha(160));
     for (k, p) in markers {
         let Some(l) = lab.lights().list.get(*k) else {
             continue;
         };
-        let Shape::Sphere { radius } = lab.overrides().shaded_shape(l) else {
-            continue;
-        };
         let centre = DVec3::from(l.position);
-        // The silhouette's radius, from the projection of a point one radius above the
-        // centre across the view (exact for a sphere on the axis, within a few percent over
-        // the lab's field of view).
-        let (Some(a), Some(b)) = (
-            scene.project(centre, width, height),
-            scene.project(centre + up * radius, width, height),
-        ) else {
-            continue;
-        };
-        let r = ((a.0 - b.0).hypot(a.1 - b.1) as f32 * scale).min(placed.rect.width());
-        painter.circle_stroke(
-            *p,
-            r,
-            egui::Stroke::new(1.0, Color32::from_white_alpha(160)),
-        );
+        match lab.overrides().shaded_shape(l) {
+            Shape::Point => {}
+            Shape::Sphere { radius } => {
+                // The silhouette's radius, from the projection of a point one radius above
+                // the centre across the view (exact for a sphere on the axis, within a few
+                // percent over the lab's field of view).
+                let (Some(a), Some(b)) = (
+                    scene.project(centre, width, height),
+                    scene.project(centre + up * radius, width, height),
+                ) else {
+                    continue;
+                };
+                let r = ((a.0 - b.0).hypot(a.1 - b.1) as f32 * scale).min(placed.rect.width());
+                painter.circle_stroke(*p, r, stroke);
+            }
+            Shape::Rect { half_u, half_v } => {
+                let rect = crate::light::rect::Rect {
+                    centre,
+                    u: half_u,
+                    v: half_v,
+                };
+                // A corner behind the camera has no place on the image: no outline.
+                let corners: Option<Vec<Pos2>> = rect
+                    .corners()
+                    .iter()
+                    .map(|&c| scene.project(c, width, height).map(|q| placed.to_screen(q)))
+                    .collect();
+                let Some(mut corners) = corners else {
+                    continue;
+                };
+                corners.push(corners[0]);
+                painter.add(egui::Shape::line(corners, stroke));
+                let reach = 0.5 * half_u.length().min(half_v.length());
+                let tip = centre + rect.normal().normalize() * reach;
+                if let Some(t) = scene.project(tip, width, height) {
+                    painter.line_segment([*p, placed.to_screen(t)], stroke);
+                }
+            }
+        }
     }
 }
 
