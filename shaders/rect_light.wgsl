@@ -11,8 +11,8 @@ struct Rect {
     v: vec3<f32>,
 }
 
-// A convex polygon of up to 6 corners: a rect (4), clipped at the surface's horizon (5), then
-// at the cosine's (6); each clip adds one corner at most.
+// A convex polygon of up to 6 corners (the exact rule's rect clipped at the horizon: 5; each
+// clip adds one corner at most).
 struct Polygon {
     p: array<vec3<f32>, 6>,
     n: u32,
@@ -99,34 +99,39 @@ fn edge_vector(a: vec3<f32>, b: vec3<f32>) -> vec3<f32> {
     return c * (atan2_precise(len, dot(a, b)) / len);
 }
 
-// vector_form_factor: (1/2π) Σ θ_e n̂_e, the corners first scaled to a largest component of 1
-// (the formula does not see the scale; far or mapped corners would overflow |a × b|²).
-fn vector_form_factor(poly: Polygon) -> vec3<f32> {
-    if poly.n < 3u {
-        return vec3<f32>(0.0);
-    }
-    var big = 0.0;
-    for (var k = 0u; k < poly.n; k++) {
-        let a = abs(poly.p[k]);
-        big = max(big, max(a.x, max(a.y, a.z)));
-    }
-    if big == 0.0 {
-        return vec3<f32>(0.0);
-    }
-    var sum = vec3<f32>(0.0);
-    for (var k = 0u; k < poly.n; k++) {
-        sum += edge_vector(poly.p[k] / big, poly.p[(k + 1u) % poly.n] / big);
-    }
-    return -sum / (2.0 * PI);
+// A rect's four corners (rect_corners' first four), unclipped.
+alias Quad = array<vec3<f32>, 4>;
+
+// The corners of a rect as a Quad.
+fn rect_quad(r: Rect) -> Quad {
+    return Quad(r.centre - r.u - r.v, r.centre + r.u - r.v, r.centre + r.u + r.v, r.centre - r.u + r.v);
 }
 
-// map_polygon: the corners mapped by M⁻¹.
-fn map_polygon(m: mat3x3<f32>, poly: Polygon) -> Polygon {
-    var out = poly;
-    for (var k = 0u; k < poly.n; k++) {
-        out.p[k] = m * poly.p[k];
+// The quad mapped by m and scaled to a largest component of 1: the formulas below do not see
+// the scale, and far or mapped corners would overflow f32's |a × b|².
+fn map_quad(m: mat3x3<f32>, q: Quad) -> Quad {
+    var out: Quad;
+    var big = 0.0;
+    for (var k = 0u; k < 4u; k++) {
+        out[k] = m * q[k];
+        let a = abs(out[k]);
+        big = max(big, max(a.x, max(a.y, a.z)));
+    }
+    if big > 0.0 {
+        for (var k = 0u; k < 4u; k++) {
+            out[k] /= big;
+        }
     }
     return out;
+}
+
+// vector_form_factor: (1/2π) Σ θ_e n̂_e of a quad.
+fn vector_form_factor(q: Quad) -> vec3<f32> {
+    var sum = vec3<f32>(0.0);
+    for (var k = 0u; k < 4u; k++) {
+        sum += edge_vector(q[k], q[(k + 1u) % 4u]);
+    }
+    return -sum / (2.0 * PI);
 }
 
 // paper_scale: the printed eq. 25 drops D's 1/π.
@@ -137,20 +142,120 @@ fn paper_scale(integral: f32, normalization: u32) -> f32 {
     return integral;
 }
 
-// ltc_polygon: ∫ D over the polygon — clipped at the surface's horizon first (case 1), mapped
-// by M⁻¹, clipped at the cosine's horizon (case 2), Lambert's edge formula; M⁻¹ with a negative
-// determinant turns the polygon over.
-fn ltc_polygon(ltc: Ltc, poly_in: Polygon, clip: u32, normalization: u32) -> f32 {
-    var poly = poly_in;
-    if (clip & CLIP_HORIZON) != 0u {
-        poly = clip_horizon(poly);
+// Cut: the part t ∈ [t0, t1] of an edge that is kept, and the horizon (1 the surface's, 2 the
+// cosine's, 0 none) that cut each end (src/light/rect/polygon.rs).
+struct Cut {
+    t0: f32,
+    t1: f32,
+    plane0: u32,
+    plane1: u32,
+}
+
+// Cut::cut: what of c keeps a height going from f0 to f1 at or above 0, cut by `plane`.
+fn cut(c: Cut, f0: f32, f1: f32, plane: u32) -> Cut {
+    var out = c;
+    if f0 < 0.0 && f1 < 0.0 {
+        out.t0 = 1.0;
+        out.t1 = 0.0;
+    } else if f0 < 0.0 {
+        let t = f0 / (f0 - f1);
+        if t > out.t0 {
+            out.t0 = t;
+            out.plane0 = plane;
+        }
+    } else if f1 < 0.0 {
+        let t = f0 / (f0 - f1);
+        if t < out.t1 {
+            out.t1 = t;
+            out.plane1 = plane;
+        }
     }
-    var mapped = map_polygon(ltc.cos_from_brdf, poly);
-    if (clip & CLIP_TRANSFORMED) != 0u {
-        mapped = clip_horizon(mapped);
+    return out;
+}
+
+// horizons_meet: where both horizons are clipped at, the direction where they meet (the
+// original ẑ × r mapped, r the last row of M⁻¹, or its opposite) that the mapped quad holds;
+// w = 0 where there is none.
+fn horizons_meet(m: mat3x3<f32>, mapped: Quad, clip: u32) -> vec4<f32> {
+    if clip != (CLIP_HORIZON | CLIP_TRANSFORMED) {
+        return vec4<f32>(0.0);
     }
-    let turn = sign(determinant(ltc.cos_from_brdf));
-    var integral = turn * vector_form_factor(mapped).z;
+    let r = vec3<f32>(m[0].z, m[1].z, m[2].z);
+    let line = m * vec3<f32>(-r.y, r.x, 0.0);
+    if all(line == vec3<f32>(0.0)) {
+        return vec4<f32>(0.0);
+    }
+    let centre = mapped[0] + mapped[1] + mapped[2] + mapped[3];
+    var inside_plus = true;
+    var inside_minus = true;
+    for (var k = 0u; k < 4u; k++) {
+        let normal = cross(mapped[k], mapped[(k + 1u) % 4u]);
+        let side = dot(normal, centre);
+        inside_plus = inside_plus && dot(normal, line) * side >= 0.0;
+        inside_minus = inside_minus && -dot(normal, line) * side >= 0.0;
+    }
+    if inside_plus {
+        return vec4<f32>(line, 1.0);
+    }
+    if inside_minus {
+        return vec4<f32>(-line, 1.0);
+    }
+    return vec4<f32>(0.0);
+}
+
+// A path along the horizons from e (left by horizon `left_by`) to s (come back by
+// `back_by`): straight on one horizon, else through where they meet.
+fn along(e: vec3<f32>, left_by: u32, s: vec3<f32>, back_by: u32, meet: vec4<f32>) -> vec3<f32> {
+    if meet.w > 0.0 && left_by != back_by {
+        return edge_vector(e, meet.xyz) + edge_vector(meet.xyz, s);
+    }
+    return edge_vector(e, s);
+}
+
+// ltc_polygon: ∫ D over the quad — clipped at the surface's horizon (case 1) and, after M⁻¹,
+// at the cosine's (case 2), edge by edge with the paths along the horizons between where it
+// leaves and comes back, Lambert's edge formula; M⁻¹ with a negative determinant turns the
+// polygon over.
+fn ltc_polygon(ltc: Ltc, q: Quad, clip: u32, normalization: u32) -> f32 {
+    let m = ltc.cos_from_brdf;
+    let mapped = map_quad(m, q);
+    let meet = horizons_meet(m, mapped, clip);
+    var sum = vec3<f32>(0.0);
+    var left = vec4<f32>(0.0);       // xyz where it last left, w its horizon (0: none)
+    var first_back = vec4<f32>(0.0); // xyz where it first came back, w its horizon
+    for (var k = 0u; k < 4u; k++) {
+        let j = (k + 1u) % 4u;
+        var range = Cut(0.0, 1.0, 0u, 0u);
+        if (clip & CLIP_HORIZON) != 0u {
+            range = cut(range, q[k].z, q[j].z, 1u);
+        }
+        if (clip & CLIP_TRANSFORMED) != 0u {
+            range = cut(range, mapped[k].z, mapped[j].z, 2u);
+        }
+        if range.t0 <= range.t1 {
+            let a = mapped[k];
+            let b = mapped[j];
+            let x0 = a + (b - a) * range.t0;
+            let x1 = a + (b - a) * range.t1;
+            if range.t0 > 0.0 {
+                if left.w > 0.0 {
+                    sum += along(left.xyz, u32(left.w), x0, range.plane0, meet);
+                    left.w = 0.0;
+                } else {
+                    first_back = vec4<f32>(x0, f32(range.plane0));
+                }
+            }
+            sum += edge_vector(x0, x1);
+            if range.t1 < 1.0 {
+                left = vec4<f32>(x1, f32(range.plane1));
+            }
+        }
+    }
+    if left.w > 0.0 && first_back.w > 0.0 {
+        sum += along(left.xyz, u32(left.w), first_back.xyz, u32(first_back.w), meet);
+    }
+    let turn = sign(determinant(m));
+    var integral = -turn * sum.z / (2.0 * PI);
     // Clipped, the integral is ≥ 0: what rounding leaves below it is 0.
     if (clip & CLIP_TRANSFORMED) != 0u {
         integral = max(integral, 0.0);
@@ -159,8 +264,8 @@ fn ltc_polygon(ltc: Ltc, poly_in: Polygon, clip: u32, normalization: u32) -> f32
 }
 
 // mapped_form_factor: the vector form factor of M⁻¹P, turned back over where M⁻¹ turns it.
-fn mapped_form_factor(ltc: Ltc, poly: Polygon) -> vec3<f32> {
-    return sign(determinant(ltc.cos_from_brdf)) * vector_form_factor(map_polygon(ltc.cos_from_brdf, poly));
+fn mapped_form_factor(ltc: Ltc, q: Quad) -> vec3<f32> {
+    return sign(determinant(ltc.cos_from_brdf)) * vector_form_factor(map_quad(ltc.cos_from_brdf, q));
 }
 
 // proxy_sphere: the cap of the same vector form factor, clipped at the horizon (Heitz & Hill 2017).
@@ -179,8 +284,8 @@ fn proxy_sphere_fast(f: vec3<f32>) -> f32 {
 }
 
 // ltc_proxy: the unclipped vector form factor of M⁻¹P through proxy_sphere (case 2), or its z.
-fn ltc_proxy(ltc: Ltc, poly: Polygon, clip: u32, normalization: u32) -> f32 {
-    let f = mapped_form_factor(ltc, poly);
+fn ltc_proxy(ltc: Ltc, q: Quad, clip: u32, normalization: u32) -> f32 {
+    let f = mapped_form_factor(ltc, q);
     var integral = f.z;
     if (clip & CLIP_TRANSFORMED) != 0u {
         integral = proxy_sphere(f);
@@ -189,8 +294,8 @@ fn ltc_proxy(ltc: Ltc, poly: Polygon, clip: u32, normalization: u32) -> f32 {
 }
 
 // ltc_proxy_fast: ltc_proxy with proxy_sphere_fast.
-fn ltc_proxy_fast(ltc: Ltc, poly: Polygon, clip: u32, normalization: u32) -> f32 {
-    let f = mapped_form_factor(ltc, poly);
+fn ltc_proxy_fast(ltc: Ltc, q: Quad, clip: u32, normalization: u32) -> f32 {
+    let f = mapped_form_factor(ltc, q);
     var integral = f.z;
     if (clip & CLIP_TRANSFORMED) != 0u {
         integral = proxy_sphere_fast(f);
@@ -311,8 +416,8 @@ fn rect_exact(s: RectShading) -> vec2<f32> {
     return sum;
 }
 
-// rect_light: both lobes of a rect of unit radiance by `method` (RECT_* of plane.wgsl): 0 facing away, its point light below
-// RECT_POINT_LIMIT.
+// rect_light: both lobes of a rect of unit radiance by `method` (RECT_* of plane.wgsl): 0
+// facing away, its point light below RECT_POINT_LIMIT.
 fn rect_light(method: u32, s: RectShading, pair: LtcPair) -> vec2<f32> {
     if !rect_faces_origin(s.rect) {
         return vec2<f32>(0.0);
@@ -320,7 +425,7 @@ fn rect_light(method: u32, s: RectShading, pair: LtcPair) -> vec2<f32> {
     if rect_angular_size(s.rect) < RECT_POINT_LIMIT {
         return rect_point(s, pair, method == RECT_EXACT);
     }
-    let corners = rect_corners(s.rect);
+    let corners = rect_quad(s.rect);
     switch method {
         case RECT_EXACT: { return rect_exact(s); }
         case RECT_LTC_POLYGON: {

@@ -72,28 +72,68 @@ pub fn polygon_form_factor(poly: &[DVec3]) -> f64 {
     vector_form_factor(poly).z
 }
 
-/// `∫ D(ω) dω` of one LTC lobe over the polygon `poly` (a facing `Rect`'s corners): the
-/// polygon clipped at the surface's horizon first where `clip.case1` (off: the light below
+/// `∫ D(ω) dω` of one LTC lobe over the convex polygon `poly` (a facing `Rect`'s corners):
+/// the polygon clipped at the surface's horizon first where `clip.case1` (off: the light below
 /// the surface is lifted by `M⁻¹`, ltc_code's leak), its corners mapped by `M⁻¹`, then the
 /// clamped cosine's integral where `clip.case2` (the clipped polygon's form factor), or the
 /// signed one where not.
+///
+/// Both clips are made edge by edge, with no clipped polygon built (a shader's list of a
+/// changing length is slow): `M⁻¹` keeps an edge's parameter, so each edge is cut to the part
+/// `t ∈ [t₀, t₁]` above both horizons, the surface's read from the corners' own heights, the
+/// cosine's from the mapped ones. The clipped polygon's boundary is those parts and, from
+/// each point where the polygon leaves the region above both horizons to the next where it
+/// comes back, a path along the horizon it left by: straight where it comes back by the same
+/// one, else through the line where the two meet. tests/rect_light.rs holds it to
+/// Sutherland–Hodgman's clipped polygon (`clip_horizon`).
 pub fn ltc_polygon(ltc: &Ltc, poly: &[DVec3], clip: Clipping, normalization: Normalization) -> f64 {
-    let above;
-    let poly = if clip.case1 {
-        above = clip_horizon(poly);
-        &above[..]
-    } else {
-        poly
+    let n = poly.len();
+    if n < 3 {
+        return 0.0;
+    }
+    let m = ltc.cos_from_brdf;
+    let mapped: Vec<DVec3> = poly.iter().map(|&p| m * p).collect();
+    let meet = horizons_meet(m, &mapped, clip);
+    // A path along the horizons from a point where the polygon leaves (on horizon `from`)
+    // to one where it comes back (on `to`).
+    let along = |(e, from): (DVec3, u8), (s, to): (DVec3, u8)| match meet {
+        Some(c) if from != to => edge_vector(e, c) + edge_vector(c, s),
+        _ => edge_vector(e, s),
     };
-    let mapped: Vec<DVec3> = poly.iter().map(|&p| ltc.cos_from_brdf * p).collect();
-    let mapped = if clip.case2 {
-        clip_horizon(&mapped)
-    } else {
-        mapped
-    };
+    let mut sum = DVec3::ZERO;
+    // The point where the polygon last left, and where it first came back before leaving.
+    let (mut left, mut first_back) = (None, None);
+    for k in 0..n {
+        let (p, q) = (poly[k], poly[(k + 1) % n]);
+        let (a, b) = (mapped[k], mapped[(k + 1) % n]);
+        let mut range = Cut::WHOLE;
+        if clip.case1 {
+            range = range.cut(p.z, q.z, 1);
+        }
+        if clip.case2 {
+            range = range.cut(a.z, b.z, 2);
+        }
+        if range.t0 > range.t1 {
+            continue;
+        }
+        let (x0, x1) = (a + (b - a) * range.t0, a + (b - a) * range.t1);
+        if range.t0 > 0.0 {
+            match left.take() {
+                Some(exit) => sum += along(exit, (x0, range.plane0)),
+                None => first_back = Some((x0, range.plane0)),
+            }
+        }
+        sum += edge_vector(x0, x1);
+        if range.t1 < 1.0 {
+            left = Some((x1, range.plane1));
+        }
+    }
+    if let (Some(exit), Some(back)) = (left, first_back) {
+        sum += along(exit, back);
+    }
     // M⁻¹ with a negative determinant turns the polygon over: its form factor's sign with it.
-    let sign = ltc.cos_from_brdf.determinant().signum();
-    let integral = sign * polygon_form_factor(&mapped);
+    let sign = m.determinant().signum();
+    let integral = -sign * sum.z / (2.0 * PI);
     // Clipped, the integral is ≥ 0: what rounding leaves below it is 0.
     let integral = if clip.case2 {
         integral.max(0.0)
@@ -101,6 +141,72 @@ pub fn ltc_polygon(ltc: &Ltc, poly: &[DVec3], clip: Clipping, normalization: Nor
         integral
     };
     paper_scale(integral, normalization)
+}
+
+/// The part `t ∈ [t0, t1]` of an edge that is kept, and the horizon (1 the surface's, 2 the
+/// cosine's, 0 none) that cut each end.
+#[derive(Clone, Copy, Debug)]
+pub struct Cut {
+    pub t0: f64,
+    pub t1: f64,
+    pub plane0: u8,
+    pub plane1: u8,
+}
+
+impl Cut {
+    pub const WHOLE: Self = Self {
+        t0: 0.0,
+        t1: 1.0,
+        plane0: 0,
+        plane1: 0,
+    };
+
+    /// What of `self` keeps a height going from `f0` to `f1` (linearly in `t`) at or above
+    /// 0, cut by horizon `plane`; `t0 > t1` where nothing is.
+    pub fn cut(self, f0: f64, f1: f64, plane: u8) -> Self {
+        match (f0 < 0.0, f1 < 0.0) {
+            (true, true) => Self {
+                t0: 1.0,
+                t1: 0.0,
+                ..self
+            },
+            (true, false) if f0 / (f0 - f1) > self.t0 => Self {
+                t0: f0 / (f0 - f1),
+                plane0: plane,
+                ..self
+            },
+            (false, true) if f0 / (f0 - f1) < self.t1 => Self {
+                t1: f0 / (f0 - f1),
+                plane1: plane,
+                ..self
+            },
+            _ => self,
+        }
+    }
+}
+
+/// Where both horizons are clipped at, the direction (in the mapped space) where they meet
+/// that the mapped polygon `mapped` holds: the original `ẑ × r` (`r` the last row of `M⁻¹`,
+/// so that both `p.z` and `(M⁻¹p).z` are 0), mapped, or its opposite.
+pub fn horizons_meet(m: glam::DMat3, mapped: &[DVec3], clip: Clipping) -> Option<DVec3> {
+    if !(clip.case1 && clip.case2) {
+        return None;
+    }
+    let r = m.row(2);
+    let line = m * DVec3::new(-r.y, r.x, 0.0);
+    if line == DVec3::ZERO {
+        return None;
+    }
+    // Inside: on the side of each edge that the polygon's own centre is on.
+    let n = mapped.len();
+    let centre: DVec3 = mapped.iter().sum();
+    let inside = |c: DVec3| {
+        (0..n).all(|k| {
+            let normal = mapped[k].cross(mapped[(k + 1) % n]);
+            normal.dot(c) * normal.dot(centre) >= 0.0
+        })
+    };
+    [line, -line].into_iter().find(|&c| inside(c))
 }
 
 /// Heitz & Hill 2017's proxy for one lobe: the unclipped vector form factor `f` of `M⁻¹P`,
