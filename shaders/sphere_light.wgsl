@@ -87,6 +87,9 @@ fn acos_precise(y: f32) -> f32 {
     return 2.0 * atan_precise(sqrt(max(1.0 - y, 0.0) / (1.0 + y)));
 }
 
+// f32's machine epsilon, 2⁻²³.
+const F32_EPSILON: f32 = 1.1920929e-7;
+
 // negative_eigenvalue: the root of f(e) = det(q − eI) = det − c₁e + tr·e² − e³ in
 // [−‖q‖, 0], by Newton's method from det/c₁ with bisection where a step would leave the
 // bracket (src/light/sphere/disk.rs; no trigonometry, whose WGSL error bounds are too loose here).
@@ -104,6 +107,14 @@ fn negative_eigenvalue(q: mat3x3<f32>, det: f32) -> f32 {
     // From det/c₁ Newton settles in a few steps; 24 bound a bisection in f32.
     for (var k = 0; k < 24; k++) {
         let fx = det - x * (c1 - x * (trace - x));
+        // f(x) within its own rounding (a few ε of its terms' sizes): f32 holds no better
+        // root. Waiting for a step of 0 instead takes 3 to 32 steps (over 14 for one cap in
+        // seven) where rounding keeps f(x) from settling; this test, 2 to 9
+        // (examples/newton_steps.rs, the benchmark's caps).
+        let noise = 4.0 * F32_EPSILON * (abs(det) + abs(x * c1) + abs(x * x * trace) + abs(x * x * x));
+        if abs(fx) <= noise {
+            break;
+        }
         if fx > 0.0 {
             lo = x;
         } else {
@@ -122,6 +133,43 @@ fn negative_eigenvalue(q: mat3x3<f32>, det: f32) -> f32 {
     return x;
 }
 
+// negative_eigenvalue of two matrices at once, lane by lane the same steps: a lane stops
+// where the scalar search would, and stays.
+fn negative_eigenvalues(q0: mat3x3<f32>, q1: mat3x3<f32>, det: vec2<f32>) -> vec2<f32> {
+    let trace = vec2<f32>(q0[0][0] + q0[1][1] + q0[2][2], q1[0][0] + q1[1][1] + q1[2][2]);
+    let c1 = vec2<f32>(
+        q0[0][0] * q0[1][1] - q0[1][0] * q0[0][1] + q0[0][0] * q0[2][2] - q0[2][0] * q0[0][2]
+            + q0[1][1] * q0[2][2] - q0[2][1] * q0[1][2],
+        q1[0][0] * q1[1][1] - q1[1][0] * q1[0][1] + q1[0][0] * q1[2][2] - q1[2][0] * q1[0][2]
+            + q1[1][1] * q1[2][2] - q1[2][1] * q1[1][2],
+    );
+    let norm = sqrt(vec2<f32>(
+        dot(q0[0], q0[0]) + dot(q0[1], q0[1]) + dot(q0[2], q0[2]),
+        dot(q1[0], q1[0]) + dot(q1[1], q1[1]) + dot(q1[2], q1[2]),
+    ));
+    var lo = -norm;
+    var hi = vec2<f32>(0.0);
+    let guess = det / c1;
+    var x = select(0.5 * lo, guess, c1 > vec2<f32>(0.0) & guess > lo & guess < hi);
+    var done = vec2<bool>(false);
+    for (var k = 0; k < 24; k++) {
+        let fx = det - x * (c1 - x * (trace - x));
+        let noise = 4.0 * F32_EPSILON * (abs(det) + abs(x * c1) + abs(x * x * trace) + abs(x * x * x));
+        done = done | (abs(fx) <= noise);
+        if all(done) {
+            break;
+        }
+        lo = select(lo, x, fx > vec2<f32>(0.0) & !done);
+        hi = select(hi, x, fx <= vec2<f32>(0.0) & !done);
+        let step = x - fx / (-c1 + x * (2.0 * trace - 3.0 * x));
+        var next = select(0.5 * (lo + hi), step, step > lo & step < hi);
+        next = select(next, x, done);
+        done = done | (next == x);
+        x = next;
+    }
+    return x;
+}
+
 // The adjugate of m (m⁻¹ · det m): M up to a positive or negative scale, which the cone's
 // quadratic form does not see (src/light/sphere/disk.rs takes M itself; the table holds M⁻¹ only).
 fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
@@ -133,22 +181,54 @@ fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
 // transformed_cone: the axis (xyz) and form factor (w) of the cap's image under M⁻¹: the cone
 // over the ellipse of B = M⁻¹ [sin σ t₁, sin σ t₂, cos σ a], Q = B⁻ᵀ diag(1, 1, −1) B⁻¹,
 // det Q = −1/det(B)², and (e₁ − e₃)(e₂ − e₃) = det/e₃ − e₃(tr − e₃) + e₃² (src/light/sphere/disk.rs).
-// M⁻¹ is first scaled to entries of at most 1 (the cone does not see its scale).
-fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
+// The shader makes both lobes' at once (`transformed_cones`).
+fn transformed_cone(ltc: Ltc, cap: Cap, basis: mat3x3<f32>) -> vec4<f32> {
+    let quadric = cone_quadric(ltc, basis);
+    let e3 = negative_eigenvalue(quadric.q, quadric.det);
+    return cone_of(quadric, e3, ltc.cos_from_brdf, cap.axis);
+}
+
+// Both lobes' transformed_cone, their Newton iterations in one loop (the lanes of a vec2): a
+// light costs the longer of the two searches, not their sum.
+fn transformed_cones(pair: LtcPair, cap: Cap, basis: mat3x3<f32>) -> array<vec4<f32>, 2> {
+    let spec = cone_quadric(pair.spec, basis);
+    let diff = cone_quadric(pair.diff, basis);
+    let e3 = negative_eigenvalues(spec.q, diff.q, vec2<f32>(spec.det, diff.det));
+    return array<vec4<f32>, 2>(
+        cone_of(spec, e3.x, pair.spec.cos_from_brdf, cap.axis),
+        cone_of(diff, e3.y, pair.diff.cos_from_brdf, cap.axis),
+    );
+}
+
+// A cone's quadratic form Q and det Q.
+struct Quadric {
+    q: mat3x3<f32>,
+    det: f32,
+}
+
+// The cap's image's Q. M⁻¹ is first scaled to entries of at most 1 (the cone does not see its
+// scale). Q is summed from B⁻¹'s rows, xᵢ = (b₁ × b₂, b₂ × b₀, b₀ × b₁)ᵢ / det B, as
+// x₀x₀ᵀ + x₁x₁ᵀ − x₂x₂ᵀ: the same matrix for a third of the products of B⁻ᵀ diag(1, 1, −1) B⁻¹.
+fn cone_quadric(ltc: Ltc, basis: mat3x3<f32>) -> Quadric {
     let m_inv = ltc.cos_from_brdf;
     let corners = abs(vec4<f32>(m_inv[0].x, m_inv[0].z, m_inv[2].x, m_inv[2].z));
     let big = max(max(max(corners.x, corners.y), max(corners.z, corners.w)), abs(m_inv[1].y));
-    let a = cap.axis;
-    let frame = orthonormal_pair(a);
-    let s = cap.sin_sigma;
-    let b = (m_inv * (1.0 / big)) * mat3x3<f32>(frame[0] * s, frame[1] * s, a * cap.cos_sigma);
-    let det_b = determinant(b);
-    let b_inv = adjugate(b) * (1.0 / det_b);
-    let q = transpose(b_inv) * mat3x3<f32>(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0) * b_inv;
-    let det = -1.0 / (det_b * det_b);
-    let e3 = negative_eigenvalue(q, det);
+    let b = (m_inv * (1.0 / big)) * basis;
+    let r0 = cross(b[1], b[2]);
+    let inv_det = 1.0 / dot(b[0], r0);
+    let x0 = r0 * inv_det;
+    let x1 = cross(b[2], b[0]) * inv_det;
+    let x2 = cross(b[0], b[1]) * inv_det;
+    let q = mat3x3<f32>(x0 * x0.x + x1 * x1.x - x2 * x2.x, x0 * x0.y + x1 * x1.y - x2 * x2.y,
+        x0 * x0.z + x1 * x1.z - x2 * x2.z);
+    return Quadric(q, -(inv_det * inv_det));
+}
+
+// The cone's axis (oriented as M⁻¹a) and form factor, from Q and its negative eigenvalue.
+fn cone_of(quadric: Quadric, e3: f32, m_inv: mat3x3<f32>, a: vec3<f32>) -> vec4<f32> {
+    let q = quadric.q;
     let trace = q[0][0] + q[1][1] + q[2][2];
-    let spread = det / e3 - e3 * (trace - e3) + e3 * e3;
+    let spread = quadric.det / e3 - e3 * (trace - e3) + e3 * e3;
     var axis = null_vector(q - mat3x3<f32>(e3, 0.0, 0.0, 0.0, e3, 0.0, 0.0, 0.0, e3));
     if dot(axis, m_inv * a) < 0.0 {
         axis = -axis;
@@ -185,17 +265,26 @@ fn orthonormal_pair(n: vec3<f32>) -> mat2x3<f32> {
     );
 }
 
+// The cap's cone as its disc's half-axes and centre, [sin σ t₁, sin σ t₂, cos σ a] (the
+// columns of B before M⁻¹; any t₁, t₂ serve, the cap being round): shared by both lobes.
+fn cap_basis(cap: Cap) -> mat3x3<f32> {
+    let frame = orthonormal_pair(cap.axis);
+    return mat3x3<f32>(frame[0] * cap.sin_sigma, frame[1] * cap.sin_sigma, cap.axis * cap.cos_sigma);
+}
+
 // ltc_disk: ∫ D(ω) dω over the cap (Heitz & Hill 2017), case 2 through the sphere of the same
 // vector form factor; the hemisphere about Mᵀz inside the sphere or where the cone is
 // degenerate.
-fn ltc_disk(ltc: Ltc, cap: Cap, case2: bool, normalization: u32) -> f32 {
+// The shader passes the cap's transformed cone, made for both lobes at once
+// (`transformed_cones`; unread where the cap encloses the point).
+fn ltc_disk(ltc: Ltc, cap: Cap, transformed: vec4<f32>, case2: bool, normalization: u32) -> f32 {
     // The hemisphere about p maps to the one about Mᵀp, of form factor 1: the upper hemisphere
     // inside the sphere, the one about the axis where the cone opened too far for its algebra.
     var cone = vec4<f32>(0.0);
     var pole = vec3<f32>(0.0, 0.0, 1.0);
     var ok = false;
     if !cap_encloses(cap) {
-        cone = transformed_cone(ltc, cap);
+        cone = transformed;
         pole = cap.axis;
         ok = all(abs(cone) < vec4<f32>(3.4e38)) && cone.w == cone.w;
     }
@@ -284,9 +373,13 @@ fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
         weights = vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
     }
     let case2 = (s.clip & CLIP_TRANSFORMED) != 0u;
+    var cones = array<vec4<f32>, 2>(vec4<f32>(0.0), vec4<f32>(0.0));
+    if !cap_encloses(cap) {
+        cones = transformed_cones(pair, cap, cap_basis(cap));
+    }
     let lobes = vec2<f32>(
-        ltc_disk(pair.spec, cap, case2, s.normalization),
-        ltc_disk(pair.diff, cap, case2, s.normalization),
+        ltc_disk(pair.spec, cap, cones[0], case2, s.normalization),
+        ltc_disk(pair.diff, cap, cones[1], case2, s.normalization),
     );
     return scale * weights * lobes;
 }

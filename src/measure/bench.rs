@@ -245,6 +245,8 @@ pub struct BenchSettings {
     /// Also every light as a square rect of this half-edge facing the plane, by each rect
     /// method.
     pub rect_half_edge: Option<f64>,
+    /// Leave out the sized lights' exact methods (the reference, not a real-time method).
+    pub skip_exact: bool,
 }
 
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
@@ -291,7 +293,17 @@ fn all_runs(ctx: &GpuContext, s: &BenchSettings) -> Vec<Run> {
         .rect_half_edge
         .iter()
         .flat_map(|_| RectMethod::ALL.map(|m| sized(Sizing::Rect(m))));
-    points.chain(spheres).chain(rects).collect()
+    let exact = |r: &Run| {
+        matches!(
+            r.2,
+            Sizing::Sphere(SphereMethod::Exact) | Sizing::Rect(RectMethod::Exact)
+        )
+    };
+    points
+        .chain(spheres)
+        .chain(rects)
+        .filter(|r| !(s.skip_exact && exact(r)))
+        .collect()
 }
 
 /// `scene` with every light a square rect of half-edge `h` facing down onto the plane.
