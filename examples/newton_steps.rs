@@ -17,7 +17,10 @@ fn steps(q: DMat3, det: f64) -> (usize, usize) {
     let c1 = e(0, 0) * e(1, 1) - e(0, 1) * e(1, 0) + e(0, 0) * e(2, 2) - e(0, 2) * e(2, 0)
         + e(1, 1) * e(2, 2)
         - e(1, 2) * e(2, 1);
-    let norm = (0..3).map(|c| q.col(c).length_squared()).sum::<f64>().sqrt() as f32;
+    let norm = (0..3)
+        .map(|c| q.col(c).length_squared())
+        .sum::<f64>()
+        .sqrt() as f32;
     let (mut lo, mut hi) = (-norm, 0.0f32);
     let mut x = if c1 > 0.0 { det / c1 } else { 0.5 * lo };
     if !(x > lo && x < hi) {

@@ -117,9 +117,17 @@ mod exactly_option {
     pub fn deserialize<'de, D: Deserializer<'de>, const N: usize>(
         d: D,
     ) -> Result<Option<[f64; N]>, D::Error> {
-        #[derive(Deserialize)]
-        struct Exactly<const M: usize>(#[serde(with = "super::exactly")] [f64; M]);
-        Ok(Option::<Exactly<N>>::deserialize(d)?.map(|e| e.0))
+        // A list read as itself (not through a newtype, which RON writes differently).
+        let Some(v) = Option::<Vec<f64>>::deserialize(d)? else {
+            return Ok(None);
+        };
+        let len = v.len();
+        v.try_into().map(Some).map_err(|_| {
+            serde::de::Error::invalid_length(
+                len,
+                &format!("a list of exactly {N} numbers").as_str(),
+            )
+        })
     }
 }
 

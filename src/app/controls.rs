@@ -180,9 +180,6 @@ fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
     egui::CollapsingHeader::new("lights with a size")
         .id_salt("sized lights")
         .show(ui, |ui| sized_lights(ui, lab));
-    egui::CollapsingHeader::new("rect lights")
-        .id_salt("rect lights")
-        .show(ui, |ui| rect_lights(ui, lab));
 }
 
 /// How each side shades a rect light, and the rects' failure presets (docs/design.md §1.11).
@@ -225,7 +222,7 @@ fn rect_lights(ui: &mut egui::Ui, lab: &mut Lab) {
 }
 
 /// Every light's radius, how each side shades a light with one, and the failure presets
-/// (docs/design.md §1.10).
+/// (docs/design.md §1.10); then the same for rects (§1.11).
 fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     lab.edit(|o: &mut Overrides| {
         ui.add(
@@ -275,6 +272,8 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
         &SPHERE_PRESETS,
         "Load this failure case of lights with a size",
     );
+    ui.separator();
+    rect_lights(ui, lab);
 }
 
 fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {

@@ -14,5 +14,6 @@ mod lobe;
 mod matrix;
 mod parts;
 mod plane;
+mod rects;
 mod spheres;
 mod window;

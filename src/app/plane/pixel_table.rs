@@ -327,7 +327,7 @@ fn sized_rows(ui: &mut egui::Ui, rows: &[&LightTerm]) {
         .collect();
     let methods = SphereMethod::ALL.map(|m| (m.name(), m.describe()));
     let exact_at = SphereMethod::Exact.index();
-    method_rows(ui, "spheres", (&methods, exact_at), &spheres);
+    method_rows(ui, "lights with a size", (&methods, exact_at), &spheres);
     let rects: Vec<(usize, Vec<DVec3>)> = rows
         .iter()
         .filter_map(|l| l.rects.map(|r| (l.index, r.to_vec())))
@@ -335,14 +335,14 @@ fn sized_rows(ui: &mut egui::Ui, rows: &[&LightTerm]) {
         .collect();
     let methods = RectMethod::ALL.map(|m| (m.name(), m.describe()));
     let exact_at = RectMethod::Exact.index();
-    method_rows(ui, "rects", (&methods, exact_at), &rects);
+    method_rows(ui, "rect lights", (&methods, exact_at), &rects);
 }
 
-/// One grid of `sized_rows`: a light a row, a method (name, description) a column, each
-/// value's error against the column `exact_at`'s.
+/// One grid of `sized_rows`, titled `title`: a light a row, a method (name,
+/// description) a column, each value's error against the column `exact_at`'s.
 fn method_rows(
     ui: &mut egui::Ui,
-    shape: &str,
+    title: &str,
     (methods, exact_at): (&[(&str, &str)], usize),
     lights: &[(usize, Vec<DVec3>)],
 ) {
@@ -350,9 +350,9 @@ fn method_rows(
         return;
     }
     ui.small(format!(
-        "{shape}, by each method (luminance; error against exact):"
+        "{title}, by each method (luminance; error against exact):"
     ));
-    egui::Grid::new(format!("pixel {shape}"))
+    egui::Grid::new(("pixel sized lights", title))
         .striped(true)
         .spacing([10.0, 2.0])
         .show(ui, |ui| {
