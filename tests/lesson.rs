@@ -10,15 +10,34 @@ fn paper() -> Lesson {
     Lesson::shipped("paper").expect("the shipped lesson reads")
 }
 
+/// Every shipped lesson, by name.
+fn shipped() -> Vec<(&'static str, Lesson)> {
+    ltc_lab::app::lesson::SHIPPED
+        .iter()
+        .map(|(name, _)| {
+            (
+                *name,
+                Lesson::shipped(name).expect("a shipped lesson reads"),
+            )
+        })
+        .collect()
+}
+
 #[test]
-fn the_shipped_lesson_reads_and_every_view_opens() {
-    let lesson = paper();
-    // The issue asks for about 10–12 steps following the paper.
-    assert!(
-        (10..=12).contains(&lesson.steps.len()),
-        "{} steps",
-        lesson.steps.len()
-    );
+fn the_shipped_lessons_read_and_every_view_opens() {
+    for (name, lesson) in shipped() {
+        // The paper's derivation in about 10–12 steps; the polygon's in four to six.
+        let steps = if name == "paper" { 10..=12 } else { 4..=6 };
+        assert!(
+            steps.contains(&lesson.steps.len()),
+            "{name}: {} steps",
+            lesson.steps.len()
+        );
+        check_steps(&lesson);
+    }
+}
+
+fn check_steps(lesson: &Lesson) {
     for (k, step) in lesson.steps.iter().enumerate() {
         // Every view is the table a person reads, not a share-view string.
         assert!(
@@ -55,7 +74,7 @@ fn the_shipped_lesson_reads_and_every_view_opens() {
     assert!(asks + 1 >= lesson.steps.len(), "{asks} steps ask something");
 }
 
-/// Every character the shipped lesson shows has a glyph in egui's fonts (a missing one is drawn
+/// Every character the shipped lessons show has a glyph in egui's fonts (a missing one is drawn
 /// as a box: `M⁻¹` and `‖ω‖` were, before the lesson wrote `M^-1` and `|ω|`).
 #[test]
 fn every_character_of_the_shipped_lesson_has_a_glyph() {
@@ -69,16 +88,18 @@ fn every_character_of_the_shipped_lesson_has_a_glyph() {
     let mut out = ctx.run_ui(egui::RawInput::default(), |_| {});
     out.textures_delta.clear();
     let font = egui::FontId::proportional(20.0);
-    let lesson = paper();
-    // The bar's own marks with the lesson's words.
-    let mut shown = format!("… {}", lesson.title);
-    for s in &lesson.steps {
-        shown.push_str(&s.title);
-        shown.push_str(&s.text);
-        shown.push_str(&s.control);
-        shown.extend(s.equations.iter().map(String::as_str));
-        if let Some(t) = &s.try_this {
-            shown.push_str(&t.task);
+    // The bar's own marks with the lessons' words.
+    let mut shown = String::from("…");
+    for (_, lesson) in shipped() {
+        shown.push_str(&lesson.title);
+        for s in &lesson.steps {
+            shown.push_str(&s.title);
+            shown.push_str(&s.text);
+            shown.push_str(&s.control);
+            shown.extend(s.equations.iter().map(String::as_str));
+            if let Some(t) = &s.try_this {
+                shown.push_str(&t.task);
+            }
         }
     }
     let missing: std::collections::BTreeSet<char> = shown

@@ -337,6 +337,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
                 "POINT_LIMIT_SIN_SIGMA",
                 f32s(&[ltc_lab::light::sphere::POINT_LIMIT_SIN_SIGMA]),
             ),
+            ("F32_EPSILON", vec![f64::from(f32::EPSILON)]),
             (
                 "RECT_POINT_LIMIT",
                 f32s(&[ltc_lab::light::rect::RECT_POINT_LIMIT]),

@@ -30,7 +30,8 @@ pub const MAX_LEN: usize = 1 << 20;
 #[serde(default, deny_unknown_fields)]
 struct Link {
     /// The scene's lights are the lab's generator's `count` (from the lights' seed), and
-    /// the lights' list is left empty: a link of 20 000 lights stays short.
+    /// the lights' list is left empty: a link of 20 000 lights stays short. A list that is
+    /// not empty wins (a lesson's view names its lights over the defaults' count).
     generated: Option<usize>,
     lab: Shared,
     lobe: LobeState,
@@ -104,7 +105,7 @@ pub fn decode(text: &str, state: &LabState) -> Result<LabState, String> {
 
 /// `state` with the view `link` in place of its own.
 fn state_with(mut link: Link, state: &LabState) -> Result<LabState, String> {
-    if let Some(count) = link.generated {
+    if let Some(count) = link.generated.filter(|_| link.lab.lights.list.is_empty()) {
         // Refused before they are made: a count beyond the limit is not a view of the lab.
         if count > crate::scene::MAX_LIGHTS {
             return Err(format!(

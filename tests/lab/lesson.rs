@@ -412,3 +412,47 @@ fn every_step_opens_with_its_words_at_the_top() {
     settle(&mut h);
     assert_eq!(title(&h, 1).top(), top, "step 2 opened scrolled");
 }
+
+/// The polygon lesson (`#lesson=polygon`) walked by a student at 1280×720: every step arrives
+/// with its view, panels and words in view, and its two last tasks tick as the student does
+/// them — the leak shown by unticking clip case 1, a proxy picked for the rects.
+#[test]
+fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
+    let lesson = Lesson::shipped("polygon").expect("the shipped lesson");
+    let mut state = LabState::default();
+    state.plane.show_gpu_times = false;
+    let Some(mut h) = lab((1280.0, 720.0), state) else {
+        return;
+    };
+    h.state_mut().open_lesson(lesson.clone(), "polygon", 0);
+    for k in 0..lesson.steps.len() {
+        settle(&mut h);
+        check_arrival(&h, &lesson, k);
+        // Every step's light is a rect, shaded by the paper's polygon against the exact one.
+        let lab_ = h.state().lab();
+        assert!(
+            lab_.lights()
+                .list
+                .iter()
+                .all(|l| matches!(l.shape, ltc_lab::light::Shape::Rect { .. })),
+            "step {}",
+            k + 1
+        );
+        if k == 3 {
+            h.get_by_label("clip case 1 (n·l ≤ 0)").click();
+            h.run_steps(2);
+            assert_eq!(at(&h), (k + 1, true), "the leak shown");
+        }
+        if k == 4 {
+            h.get_by_label("lights with a size").click();
+            h.run_steps(2);
+            h.get_by_label("rect LTC side").click();
+            h.run_steps(2);
+            h.get_by_label("ltc-proxy-fast").click();
+            h.run_steps(2);
+            assert_eq!(at(&h), (k + 1, true), "a proxy picked");
+        }
+        h.key_press(egui::Key::ArrowRight);
+        h.run_steps(2);
+    }
+}

@@ -9,6 +9,7 @@ use crate::app::chart::measure::Measurement;
 use crate::app::lab::Lab;
 use crate::app::lobe::LobeState;
 use crate::app::plane::PlaneState;
+use crate::light::rect::RectMethod;
 use crate::ltc::{ClipCase, Normalization};
 use crate::named::named_enum;
 use crate::pixel::PixelTerms;
@@ -49,6 +50,7 @@ named_enum! {
         Difference = "difference",
         Divider = "divider",
         Measured = "measured",
+        RectProxy = "rect_proxy",
     }
 }
 
@@ -72,6 +74,9 @@ impl Quantity {
             Self::Difference => "the plane shows the difference map: 1, else 0",
             Self::Divider => "the plane's divider, 0 (left) to 1 (right)",
             Self::Measured => "measurements the chart finished since the step opened",
+            Self::RectProxy => {
+                "the LTC side shades rects by a proxy (ltc-proxy or ltc-proxy-fast): 1, else 0"
+            }
         }
     }
 
@@ -102,6 +107,10 @@ impl Quantity {
             Self::Difference => switch(now.plane.view == View::Diff),
             Self::Divider => Some(now.plane.divider),
             Self::Measured => switch(now.measurements > 0),
+            Self::RectProxy => switch(matches!(
+                lab.rects().ltc,
+                RectMethod::LtcProxy | RectMethod::LtcProxyFast
+            )),
         }
     }
 }

@@ -18,10 +18,16 @@ use crate::app::panel::PanelId;
 pub use condition::{Condition, Now};
 
 /// The lessons that ship with the lab, by the name `--lesson` and `#lesson=` take.
-pub const SHIPPED: [(&str, &str); 1] = [(
-    "paper",
-    include_str!("../../../assets/lessons/paper.lesson.toml"),
-)];
+pub const SHIPPED: [(&str, &str); 2] = [
+    (
+        "paper",
+        include_str!("../../../assets/lessons/paper.lesson.toml"),
+    ),
+    (
+        "polygon",
+        include_str!("../../../assets/lessons/polygon.lesson.toml"),
+    ),
+];
 
 /// What a lesson's link starts with: `#lesson=paper&step=5`.
 pub const LINK_KEY: &str = "lesson=";

@@ -592,11 +592,11 @@ fn side_names(side_b: SideB) -> (&'static str, &'static str) {
     }
 }
 
-/// Whether some light of the lab's scene, as shaded, has a size.
+/// Whether some light of the lab's scene, as shaded, is a sphere (whose cases the map shows).
 fn sized(lab: &Lab) -> bool {
     let o = lab.overrides();
     lab.lights()
         .list
         .iter()
-        .any(|l| o.shaded_shape(l) != Shape::Point)
+        .any(|l| matches!(o.shaded_shape(l), Shape::Sphere { .. }))
 }
