@@ -1,5 +1,5 @@
 // The scene on the GPU: the uniforms of a render, one light, and the camera's rays onto the
-// plane z = 0 (src/scene.rs camera_ray, surface_point). Composed first into both the plane
+// plane z = 0 (src/scene/mod.rs camera_ray, surface_point). Composed first into both the plane
 // shader and the binning shader; its Rust side is src/gpu/scene.rs.
 
 // Must match src/gpu/scene.rs Params (checked by tests/shaders.rs).

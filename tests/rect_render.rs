@@ -1,4 +1,4 @@
-//! Rect lights in scenes and renders (src/scene.rs, the CPU reference): bad rects refused by
+//! Rect lights in scenes and renders (src/scene/, the CPU reference): bad rects refused by
 //! name, a saved rect read back as it was, points and spheres written as before, the failure
 //! presets finite and non-negative by every method without black spots, and ltc_code's leak
 //! of a rect behind the surface shown only with case 1 off.

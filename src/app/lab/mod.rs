@@ -4,6 +4,7 @@
 //! Work made from parts keys on the parts it reads (`app::work::cache`). A panel's own settings are
 //! its own.
 
+mod light_check;
 pub mod part;
 pub mod parts;
 pub mod refit_result;
