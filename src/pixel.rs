@@ -51,6 +51,8 @@ pub struct LightTerm {
     pub spheres: Option<[DVec3; 4]>,
     /// A rect: its radiance by each of `RectMethod::ALL` (table A).
     pub rects: Option<[DVec3; 5]>,
+    /// A rect: its corners' directions in the shading frame, unit.
+    pub corners: Option<[DVec3; 4]>,
 }
 
 impl LightTerm {
@@ -180,6 +182,7 @@ pub fn pixel_terms(
                     term.exact = all[rects[1].index()];
                     term.ltc_b = px_b.map(|b| rect_term(scene, &b, p, rect, rules, rects[0]));
                     term.rects = Some(all);
+                    term.corners = Some(rect_corners(&px, p, (light, half_u, half_v)));
                 }
             }
             term
@@ -236,5 +239,21 @@ fn light_term(
         ltc_b: None,
         spheres: None,
         rects: None,
+        corners: None,
     }
+}
+
+/// A rect's corners seen from `p`: their directions in the pixel's shading frame.
+fn rect_corners(
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    (light, half_u, half_v): (&Light, DVec3, DVec3),
+) -> [DVec3; 4] {
+    let rect = crate::light::rect::Rect {
+        centre: DVec3::from(light.position) - p.position,
+        u: half_u,
+        v: half_v,
+    };
+    rect.corners()
+        .map(|c| px.frame.tangent_from_world(c).normalize_or_zero())
 }

@@ -1,6 +1,7 @@
 //! Rect lights in the lab (docs/design.md §1.11): a failure preset loaded from the side panel,
 //! each side's rect method chosen there and rendered, the pinned pixel's rects by every rect
-//! method, and a rect's width dragged, checked where it enters.
+//! method with the corners the lobe panel draws, and a rect's width dragged, checked where it
+//! enters.
 
 use egui::accesskit::Role;
 use egui_kittest::Harness;
@@ -83,6 +84,13 @@ fn the_pinned_pixel_gives_each_rect_by_every_method() {
         100.0 * (polygon - exact) / exact
     );
     assert!(h.query_all_by_label(&cell).count() > 0, "no cell '{cell}'");
+    // What the row's number hands the lobe panel (the paper's Figure 1: P over the lobe,
+    // M^-1 P over the cosine): the rect's corners as the pixel sees them, unit directions in
+    // its shading frame, whose centre is the row's ω.
+    let corners = t.terms[0].corners.expect("a rect's corners");
+    let mean: glam::DVec3 = corners.iter().sum();
+    assert!(corners.iter().all(|c| (c.length() - 1.0).abs() < 1e-12));
+    assert!(mean.normalize().dot(t.terms[0].omega) > 0.9, "{corners:?}");
 }
 
 #[test]

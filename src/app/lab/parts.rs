@@ -190,6 +190,9 @@ pub struct LobeView {
     pub lobe: Lobe,
     /// ω in the shading frame, unit.
     pub light: Option<[f64; 3]>,
+    /// Where that light is a rect: its corners' directions in the shading frame, unit (the
+    /// spherical polygon P drawn over the lobe, and M^-1 P over the cosine's hemisphere).
+    pub polygon: Option<[[f64; 3]; 4]>,
 }
 
 impl Default for LobeView {
@@ -198,6 +201,7 @@ impl Default for LobeView {
             theta_o_deg: 45.0,
             lobe: Lobe::Specular,
             light: None,
+            polygon: None,
         }
     }
 }
@@ -212,6 +216,17 @@ impl Checked for LobeView {
                 previous.theta_o_deg,
                 [0.0, 90.0],
             );
+            // A polygon's corners are directions, each: one that is not refuses the polygon.
+            if let Some(corners) = self.polygon {
+                let units: Option<Vec<[f64; 3]>> = corners
+                    .iter()
+                    .map(|&c| glam::DVec3::from(c).try_normalize().map(|u| u.to_array()))
+                    .collect();
+                self.polygon = units.and_then(|u| u.try_into().ok());
+                if self.polygon.is_none() {
+                    n.say("the lobe panel's rect: a corner is not a direction, refused".into());
+                }
+            }
             let Some(w) = self.light else {
                 return;
             };

@@ -102,7 +102,7 @@ impl Panel for LobePanel {
         );
         let (rect, response) = ui.allocate_exact_size(size, egui::Sense::drag());
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "lobe view"));
-        let response = response.on_hover_text("Drag to orbit. Orange: the exact lobe f·cos; blue: the LTC n·D. White: the normal, yellow: the view, red/green/blue: the LTC's frame (columns of M)");
+        let response = response.on_hover_text("Drag to orbit. Orange: the exact lobe f·cos; blue: the LTC n·D. White: the normal, yellow: the view, red/green/blue: the LTC's frame (columns of M); magenta and cyan: the pinned pixel's light ω (or rect P) and its image under M^-1");
         if response.dragged() {
             let d = response.drag_delta();
             self.state.orbit_yaw += d.x * 0.01;
@@ -246,6 +246,7 @@ fn drawn((material, view, tables, refit): DrawnFrom<'_>, st: &LobeState) -> Draw
             .overlay_table_b
             .then(|| morphed_ltc(pair(&tables.b().lut).lobe(view.lobe), st.morph)),
         light: view.light.map(DVec3::from),
+        polygon: view.polygon.map(|c| c.map(DVec3::from)),
     }
 }
 

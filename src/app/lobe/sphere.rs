@@ -31,6 +31,8 @@ pub struct Drawn {
     pub ltc: Ltc,
     pub other: Option<Ltc>,
     pub light: Option<DVec3>,
+    /// That light's corners where it is a rect (unit directions).
+    pub polygon: Option<[DVec3; 4]>,
 }
 
 /// The sphere's surfaces as shapes, their projection, and the difference's colour scale.
@@ -360,6 +362,22 @@ fn paint_frame(
         let image = (ltc.cos_from_brdf * w).normalize_or_zero();
         arrow(image, Color32::from_rgb(80, 230, 230), "ω' = M^-1 ω");
     }
+    // A rect's spherical polygon P over the lobe, and M^-1 P, where the clamped cosine
+    // integrates what D does over P (the paper's Figure 1).
+    if let Some(corners) = d.polygon {
+        let mapped = corners.map(|c| (ltc.cos_from_brdf * c).normalize_or_zero());
+        for (poly, c, name) in [
+            (corners, Color32::from_rgb(255, 90, 220), "P (rect)"),
+            (mapped, Color32::from_rgb(80, 230, 230), "M^-1 P"),
+        ] {
+            painter.add(egui::Shape::line(
+                spherical_polygon(&poly, reach, project),
+                egui::Stroke::new(2.0, c),
+            ));
+            let centre: DVec3 = poly.iter().sum::<DVec3>().normalize_or_zero();
+            labels.push((project(centre * reach).0, c, name));
+        }
+    }
     let mut placed: Vec<egui::Rect> = Vec::new();
     for (tip, c, name) in labels {
         let galley = painter.layout_no_wrap(name.to_string(), font.clone(), c);
@@ -373,6 +391,24 @@ fn paint_frame(
         painter.galley(at.min, galley, c);
         placed.push(at);
     }
+}
+
+/// A spherical polygon's outline at radius `reach`: each edge along its great circle (16
+/// steps of normalized linear interpolation), closed.
+fn spherical_polygon(
+    corners: &[DVec3],
+    reach: f64,
+    project: &dyn Fn(DVec3) -> (Pos2, f64),
+) -> Vec<Pos2> {
+    let n = corners.len();
+    (0..n)
+        .flat_map(|k| {
+            let (a, b) = (corners[k], corners[(k + 1) % n]);
+            (0..16).map(move |i| a.lerp(b, i as f64 / 16.0).normalize_or_zero())
+        })
+        .chain(corners.first().copied())
+        .map(|w| project(w * reach).0)
+        .collect()
 }
 
 /// The point on the segment from `origin` to `tip` nearest `tip` that lies in `area` (the

@@ -312,7 +312,10 @@ fn readout(ui: &mut egui::Ui, (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab), 
         }
         if ui.small_button("unpin").clicked() {
             *pinned = None;
-            lab.edit(|v: &mut LobeView| v.light = None);
+            lab.edit(|v: &mut LobeView| {
+                v.light = None;
+                v.polygon = None;
+            });
         }
     });
 }
@@ -415,6 +418,10 @@ fn row(ui: &mut egui::Ui, lab: &mut Lab, t: &PixelTerms, l: &LightTerm) {
         });
         lab.edit(|v: &mut LobeView| {
             v.light = (!shown).then_some(l.omega.to_array());
+            v.polygon = l
+                .corners
+                .filter(|_| !shown)
+                .map(|c| c.map(|w| w.to_array()));
             v.theta_o_deg = t.theta_o.to_degrees();
         });
     }
