@@ -30,8 +30,7 @@ pub const MAX_LEN: usize = 1 << 20;
 #[serde(default, deny_unknown_fields)]
 struct Link {
     /// The scene's lights are the lab's generator's `count` (from the lights' seed), and
-    /// the lights' list is left empty: a link of 20 000 lights stays short. A list that is
-    /// not empty wins (a lesson's view names its lights over the defaults' count).
+    /// the lights' list is left empty: a link of 20 000 lights stays short.
     generated: Option<usize>,
     lab: Shared,
     lobe: LobeState,
@@ -105,7 +104,7 @@ pub fn decode(text: &str, state: &LabState) -> Result<LabState, String> {
 
 /// `state` with the view `link` in place of its own.
 fn state_with(mut link: Link, state: &LabState) -> Result<LabState, String> {
-    if let Some(count) = link.generated.filter(|_| link.lab.lights.list.is_empty()) {
+    if let Some(count) = link.generated {
         // Refused before they are made: a count beyond the limit is not a view of the lab.
         if count > crate::scene::MAX_LIGHTS {
             return Err(format!(
@@ -173,6 +172,15 @@ pub fn table(view: &toml::Table, state: &LabState) -> Result<LabState, String> {
     let defaults = toml::Table::try_from(link_of(&LabState::default()))
         .map_err(|e| format!("the view does not write: {e}"))?;
     let mut merged = defaults;
+    // A view that names its lights names them all: not the defaults' generated count.
+    let names_lights = view
+        .get("lab")
+        .and_then(|lab| lab.get("lights"))
+        .and_then(|lights| lights.get("list"))
+        .is_some();
+    if names_lights {
+        merged.remove("generated");
+    }
     merge(&mut merged, view);
     let link: Link = merged
         .try_into()
