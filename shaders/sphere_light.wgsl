@@ -150,7 +150,7 @@ fn negative_eigenvalues(q0: mat3x3<f32>, q1: mat3x3<f32>, det: vec2<f32>) -> vec
     var lo = -norm;
     var hi = vec2<f32>(0.0);
     let guess = det / c1;
-    var x = select(0.5 * lo, guess, c1 > vec2<f32>(0.0) & guess > lo & guess < hi);
+    var x = select(0.5 * lo, guess, (c1 > vec2<f32>(0.0)) & (guess > lo) & (guess < hi));
     var done = vec2<bool>(false);
     for (var k = 0; k < 24; k++) {
         let fx = det - x * (c1 - x * (trace - x));
@@ -159,10 +159,10 @@ fn negative_eigenvalues(q0: mat3x3<f32>, q1: mat3x3<f32>, det: vec2<f32>) -> vec
         if all(done) {
             break;
         }
-        lo = select(lo, x, fx > vec2<f32>(0.0) & !done);
-        hi = select(hi, x, fx <= vec2<f32>(0.0) & !done);
+        lo = select(lo, x, (fx > vec2<f32>(0.0)) & !done);
+        hi = select(hi, x, (fx <= vec2<f32>(0.0)) & !done);
         let step = x - fx / (-c1 + x * (2.0 * trace - 3.0 * x));
-        var next = select(0.5 * (lo + hi), step, step > lo & step < hi);
+        var next = select(0.5 * (lo + hi), step, (step > lo) & (step < hi));
         next = select(next, x, done);
         done = done | (next == x);
         x = next;
