@@ -3,13 +3,16 @@
 //! presets finite and non-negative by every method without black spots, and ltc_code's leak
 //! of a rect behind the surface shown only with case 1 off.
 
+mod common;
+
+use common::black_spots;
 use ltc_lab::cpu::render;
 use ltc_lab::light::Shape;
 use ltc_lab::light::rect::RectMethod;
 use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::luminance;
-use ltc_lab::render::{Frame, Method, RenderSettings, ShapeMethods};
+use ltc_lab::render::{Method, RenderSettings, ShapeMethods};
 use ltc_lab::scene::{PRESETS, RECT_PRESETS, SPHERE_PRESETS, Scene, preset};
 
 const W: usize = 48;
@@ -89,18 +92,6 @@ fn a_saved_rect_reads_back_and_old_scenes_write_as_before() {
     for (name, _) in PRESETS.iter().chain(&SPHERE_PRESETS) {
         assert!(!preset(name).to_toml().contains("half_u"), "{name}");
     }
-}
-
-/// A black spot: a pixel the exact integral lights (above 5% of the image's mean) that a
-/// method leaves at under 1e-3 of that.
-fn black_spots(frame: &Frame, exact: &Frame) -> usize {
-    let mean = exact.pixels.iter().map(|&p| luminance(p)).sum::<f64>() / exact.pixels.len() as f64;
-    frame
-        .pixels
-        .iter()
-        .zip(&exact.pixels)
-        .filter(|(f, e)| luminance(**e) > 0.05 * mean && luminance(**f) < 5e-5 * mean)
-        .count()
 }
 
 /// Every rect method on every failure preset (across the horizon, edge-on, facing away,

@@ -2,6 +2,9 @@
 //! nothing, a shrinking sphere becomes its point light in every method, bad radii are refused
 //! by name, and the failure presets give finite, non-negative images without black spots.
 
+mod common;
+
+use common::black_spots;
 use ltc_lab::cpu::render;
 use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::lut::Lut;
@@ -120,20 +123,6 @@ fn bad_radii_are_refused_by_name() {
         let e = Scene::from_toml(&text, "s.toml").unwrap_err().to_string();
         assert!(e.contains("random_lights.radius"), "{bad}: {e}");
     }
-}
-
-/// A black spot: a pixel the exact integral lights (above 5% of the image's mean) that a method
-/// leaves at under 1e-3 of that — ltc_code's artifact, where its cubic's NaN turned a lit pixel
-/// black. None of the methods here comes near: where they are wrong they are wrong by tens of
-/// percent (docs/design.md §1.10's table), not by a factor of a thousand.
-fn black_spots(frame: &Frame, exact: &Frame) -> usize {
-    let mean = exact.pixels.iter().map(|&p| luminance(p)).sum::<f64>() / exact.pixels.len() as f64;
-    frame
-        .pixels
-        .iter()
-        .zip(&exact.pixels)
-        .filter(|&(&x, &y)| luminance(y) > 0.05 * mean && luminance(x) < 1e-3 * luminance(y))
-        .count()
 }
 
 #[test]

@@ -43,3 +43,18 @@ pub fn view(theta_degrees: f64) -> DVec3 {
     let t = theta_degrees.to_radians();
     DVec3::new(t.sin(), 0.0, t.cos())
 }
+
+/// A black spot: a pixel the exact integral lights (above 5% of the image's mean) that a
+/// method leaves at under 1e-3 of that — ltc_code's artifact, where its cubic's NaN turned a
+/// lit pixel black. Where the lab's methods are wrong they are wrong by tens of percent
+/// (docs/design.md §1.10's and §1.11's tables), not by a factor of a thousand.
+pub fn black_spots(frame: &ltc_lab::render::Frame, exact: &ltc_lab::render::Frame) -> usize {
+    use ltc_lab::metrics::luminance;
+    let mean = exact.pixels.iter().map(|&p| luminance(p)).sum::<f64>() / exact.pixels.len() as f64;
+    frame
+        .pixels
+        .iter()
+        .zip(&exact.pixels)
+        .filter(|&(&x, &y)| luminance(y) > 0.05 * mean && luminance(x) < 1e-3 * luminance(y))
+        .count()
+}

@@ -4,7 +4,7 @@
 //! rects: across the horizon, below it, facing away, from 0.1° to some 90° across; then
 //! renders of the failure preset by every method, GPU against CPU.
 
-use crate::gpu_common::{gpu, run_probe};
+use crate::gpu_common::{condition, gpu, gpu_frame, run_probe};
 use glam::{DMat3, DVec3};
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::gpu::{brdf, ltc, rect_light, sphere_light};
@@ -130,12 +130,6 @@ fn pack(c: &Case) -> Vec<[f32; 4]> {
     out
 }
 
-/// An upper bound on the condition number of `M⁻¹`: `‖M⁻¹‖·‖M‖` in Frobenius norms.
-fn condition(lobe: &Ltc) -> f64 {
-    let norm = |m: DMat3| m.to_cols_array().iter().map(|x| x * x).sum::<f64>().sqrt();
-    norm(lobe.cos_from_brdf) * norm(lobe.brdf_from_cos)
-}
-
 #[test]
 fn gpu_rect_lights_match_the_cpu_methods() {
     if gpu().is_none() {
@@ -237,20 +231,6 @@ fn gpu_rect_lights_match_the_cpu_methods() {
             eprintln!("{name}: worst {:.2e} (case {})", worst.0, worst.1);
         }
     }
-}
-
-/// `s` rendered on the tests' device.
-fn gpu_frame(
-    scene: &ltc_lab::scene::Scene,
-    s: &ltc_lab::render::RenderSettings,
-) -> ltc_lab::render::Frame {
-    let g = gpu().expect("an adapter");
-    g.renderer
-        .lock()
-        .unwrap()
-        .render(&g.ctx, scene, s)
-        .unwrap()
-        .0
 }
 
 /// The rect failure presets (leaning over the horizon, crossing the plane, edge-on, facing

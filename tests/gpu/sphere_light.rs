@@ -3,7 +3,7 @@
 //! representative point — measured directly on random spheres: cut by the horizon, below it,
 //! enclosing the point, from a tenth of a degree to 60°.
 
-use crate::gpu_common::{gpu, run_probe};
+use crate::gpu_common::{condition, gpu, gpu_frame, run_probe};
 use glam::{DMat3, DVec3};
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::gpu::{brdf, ltc, sphere_light};
@@ -212,12 +212,6 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
     }
 }
 
-/// An upper bound on the condition number of `M⁻¹`: `‖M⁻¹‖·‖M‖` in Frobenius norms.
-fn condition(lobe: &Ltc) -> f64 {
-    let norm = |m: DMat3| m.to_cols_array().iter().map(|x| x * x).sum::<f64>().sqrt();
-    norm(lobe.cos_from_brdf) * norm(lobe.brdf_from_cos)
-}
-
 const ARC_PROBE: &str = "
 @group(0) @binding(0) var<storage, read> probe_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> probe_out: array<vec4<f32>>;
@@ -322,20 +316,6 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
     let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
     let gpu = gpu_frame(&scene, &s);
     crate::gpu_common::assert_close("split", &gpu, &cpu);
-}
-
-/// `s` rendered on the tests' device.
-fn gpu_frame(
-    scene: &ltc_lab::scene::Scene,
-    s: &ltc_lab::render::RenderSettings,
-) -> ltc_lab::render::Frame {
-    let g = gpu().expect("an adapter");
-    g.renderer
-        .lock()
-        .unwrap()
-        .render(&g.ctx, scene, s)
-        .unwrap()
-        .0
 }
 
 /// The failure presets (a sphere cut by the horizon, one touching the plane, discs seen

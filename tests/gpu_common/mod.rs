@@ -168,3 +168,23 @@ pub fn run_probe(
     let data = read.slice(..).get_mapped_range().unwrap();
     bytemuck::cast_slice(&data).to_vec()
 }
+
+/// `s` rendered on the tests' device.
+pub fn gpu_frame(
+    scene: &ltc_lab::scene::Scene,
+    s: &ltc_lab::render::RenderSettings,
+) -> ltc_lab::render::Frame {
+    let g = gpu().expect("an adapter");
+    g.renderer
+        .lock()
+        .unwrap()
+        .render(&g.ctx, scene, s)
+        .unwrap()
+        .0
+}
+
+/// An upper bound on the condition number of `M⁻¹`: `‖M⁻¹‖·‖M‖` in Frobenius norms.
+pub fn condition(lobe: &ltc_lab::ltc::Ltc) -> f64 {
+    let norm = |m: glam::DMat3| m.to_cols_array().iter().map(|x| x * x).sum::<f64>().sqrt();
+    norm(lobe.cos_from_brdf) * norm(lobe.brdf_from_cos)
+}
