@@ -1,6 +1,6 @@
 //! Rect lights in the lab (docs/design.md §1.11): a failure preset loaded from the side panel,
 //! each side's rect method chosen there and rendered, the pinned pixel's rects by every rect
-//! method with the corners the lobe panel draws, and a rect's width dragged, checked where it
+//! method and one shown on the lobe panel from its row, and a rect's width dragged, checked where it
 //! enters.
 
 use egui::accesskit::Role;
@@ -91,6 +91,21 @@ fn the_pinned_pixel_gives_each_rect_by_every_method() {
     let mean: glam::DVec3 = corners.iter().sum();
     assert!(corners.iter().all(|c| (c.length() - 1.0).abs() < 1e-12));
     assert!(mean.normalize().dot(t.terms[0].omega) > 0.9, "{corners:?}");
+    // The row's number hands them over, and again takes them off.
+    h.get_by_role_and_label(Role::Button, "0").click();
+    h.run_steps(2);
+    let shown = h
+        .state()
+        .lab()
+        .lobe_view()
+        .polygon
+        .expect("the rect on the lobe");
+    for (shown, seen) in shown.iter().zip(corners) {
+        assert!(glam::DVec3::from(*shown).distance(seen) < 1e-12);
+    }
+    h.get_by_role_and_label(Role::Button, "0").click();
+    h.run_steps(2);
+    assert_eq!(h.state().lab().lobe_view().polygon, None);
 }
 
 #[test]

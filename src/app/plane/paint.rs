@@ -295,17 +295,37 @@ pub fn inspect(
     })
 }
 
-/// The hovered pixel's reading, or what the image answers to.
+/// The hovered pixel's reading, or what the image answers to, in the hint's height either
+/// way: the hint wraps to more lines than the reading, and the table under them jumped when
+/// the pointer left the image for it (a click aimed at a row landed on the next).
 pub fn reading_line(ui: &mut egui::Ui, reading: Option<&PixelReading>, (a, b): (&str, &str)) {
-    match reading {
-        Some(r) => ui.label(format!(
+    let hint = "hover a pixel to read it, click to pin it and open its lights; drag a light's marker to move it (Shift: its height), drag the divider";
+    let text = match reading {
+        Some(r) => format!(
             "pixel: {a} {:.4} | {b} {:.4} (luminance), relative difference {:.2}%; lights in case 1: {}, case 2: {}",
             luminance(r.a),
             luminance(r.b),
             100.0 * r.relative_error,
             r.case1,
             r.case2
-        )),
-        None => ui.label("hover a pixel to read it, click to pin it and open its lights; drag a light's marker to move it (Shift: its height), drag the divider"),
+        ),
+        None => hint.to_string(),
     };
+    let width = ui.available_width();
+    let height = |t: &str| {
+        egui::WidgetText::from(t)
+            .into_galley(
+                ui,
+                Some(egui::TextWrapMode::Wrap),
+                width,
+                egui::TextStyle::Body,
+            )
+            .size()
+            .y
+    };
+    let tallest = height(hint).max(height(&text));
+    ui.allocate_ui(egui::vec2(width, tallest), |ui| {
+        ui.set_min_height(tallest);
+        ui.label(text);
+    });
 }
