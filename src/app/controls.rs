@@ -182,6 +182,28 @@ fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
         .show(ui, |ui| sized_lights(ui, lab));
 }
 
+/// A shape's methods: all of them, each one's name and its description.
+type Methods<M> = (&'static [M], fn(M) -> &'static str, fn(M) -> &'static str);
+
+/// A side's method for a light shape, picked from `all` (each described on hover).
+fn method_combo<M: Copy + PartialEq>(
+    ui: &mut egui::Ui,
+    (label, hover): (&str, &str),
+    method: &mut M,
+    (all, name, describe): Methods<M>,
+) {
+    egui::ComboBox::from_label(label)
+        .selected_text(name(*method))
+        .show_ui(ui, |ui| {
+            for &m in all {
+                ui.selectable_value(method, m, name(m))
+                    .on_hover_text(describe(m));
+            }
+        })
+        .response
+        .on_hover_text(hover);
+}
+
 /// How each side shades a rect light, and the rects' failure presets (docs/design.md §1.11).
 fn rect_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     lab.edit(|f: &mut RectForms| {
@@ -197,16 +219,12 @@ fn rect_lights(ui: &mut egui::Ui, lab: &mut Lab) {
                 "How the BRDF side shades a rect light",
             ),
         ] {
-            egui::ComboBox::from_label(label)
-                .selected_text(method.name())
-                .show_ui(ui, |ui| {
-                    for m in RectMethod::ALL {
-                        ui.selectable_value(method, m, m.name())
-                            .on_hover_text(m.describe());
-                    }
-                })
-                .response
-                .on_hover_text(hover);
+            method_combo(
+                ui,
+                (label, hover),
+                method,
+                (&RectMethod::ALL, RectMethod::name, RectMethod::describe),
+            );
         }
     });
     explain(
@@ -254,16 +272,16 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
                 "How the BRDF side shades a light with a size",
             ),
         ] {
-            egui::ComboBox::from_label(label)
-                .selected_text(method.name())
-                .show_ui(ui, |ui| {
-                    for m in SphereMethod::ALL {
-                        ui.selectable_value(method, m, m.name())
-                            .on_hover_text(m.describe());
-                    }
-                })
-                .response
-                .on_hover_text(hover);
+            method_combo(
+                ui,
+                (label, hover),
+                method,
+                (
+                    &SphereMethod::ALL,
+                    SphereMethod::name,
+                    SphereMethod::describe,
+                ),
+            );
         }
     });
     preset_buttons(
