@@ -28,6 +28,11 @@ const RECT_LTC_PROXY: u32 = 2u;      // Heitz & Hill 2017: the sphere of the sam
 const RECT_LTC_PROXY_FAST: u32 = 3u; // three.js's closed form of the proxy
 const RECT_LTC_POINT: u32 = 4u;      // the centre as an oriented point light
 
+// How a side shades a disk (src/light/disk/mod.rs DiskMethod; src/gpu/plane.rs disk_constant).
+const DISK_EXACT: u32 = 0u;     // the BRDF over the disk above the surface (disk_light.wgsl)
+const DISK_LTC_DISK: u32 = 1u;  // Heitz & Hill 2017: the disk's cone mapped by M⁻¹
+const DISK_LTC_POINT: u32 = 2u; // the centre as an oriented point light
+
 // What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
 const VIEW_SPLIT: u32 = 1u;  // A left of the divider, B right of it
@@ -52,6 +57,10 @@ override SPHERE_B: u32 = SPHERE_EXACT;
 override RECTS: bool = false;
 override RECT_A: u32 = RECT_LTC_POLYGON;
 override RECT_B: u32 = RECT_EXACT;
+// Some light is a disk, and how A and B shade disks.
+override DISKS: bool = false;
+override DISK_A: u32 = DISK_LTC_DISK;
+override DISK_B: u32 = DISK_EXACT;
 
 @group(0) @binding(3) var output: texture_storage_2d<rgba32float, write>;
 // Per pixel, the sums so far, kept between chunks: A's specular rgb and diffuse r; A's diffuse
@@ -347,13 +356,44 @@ fn add_rect(
     (*s).diff += light.intensity.rgb * lobes.y;
 }
 
+// A disk by the side's disk method (src/cpu.rs disk_term): its radiance I/(π r²) times the
+// unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
+fn add_disk(
+    method: u32,
+    disk: u32,
+    s: ptr<function, Sums>,
+    p: Pixel,
+    ltc: LtcShading,
+    light: GpuLight,
+) {
+    let normal_radius = disk_normal_radius(light);
+    let centre = light.position_range.xyz - p.x;
+    let shading = DiskShading(
+        p.v_tangent,
+        Disk(p.tangent_from_world * centre, p.tangent_from_world * normal_radius.xyz, normal_radius.w),
+        params.alpha,
+        params.f0,
+        params.clip,
+        params.normalization,
+    );
+    var lobes = disk_light(disk, shading, ltc.pair);
+    let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / disk_area(shading.disk);
+    lobes *= scale;
+    if is_factored(method) {
+        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
+    }
+    (*s).spec += light.intensity.rgb * lobes.x;
+    (*s).diff += light.intensity.rgb * lobes.y;
+}
+
 // One light by one side: by the side's method for the light's shape, one arm per shape
 // (src/cpu.rs light_term). Where every light is a point (SIZED off) the loop has no test of
-// the shape at all; without a rect (RECTS off), no rect arm.
+// the shape at all; without a rect (RECTS off), no rect arm, and without a disk no disk arm.
 fn add_light(
     method: u32,
     sphere: u32,
     rect: u32,
+    disk: u32,
     s: ptr<function, Sums>,
     p: Pixel,
     ltc: LtcShading,
@@ -368,6 +408,11 @@ fn add_light(
         case SHAPE_RECT: {
             if RECTS {
                 add_rect(method, rect, s, p, ltc, light);
+            }
+        }
+        case SHAPE_DISK: {
+            if DISKS {
+                add_disk(method, disk, s, p, ltc, light);
             }
         }
         default: { add_point(method, s, p, ltc, light); }
@@ -519,10 +564,10 @@ fn shade(
             }
             for (; j < n; j++) {
                 if use_a {
-                    add_light(METHOD_A, SPHERE_A, RECT_A, &a, p, p.ltc_a, shared_lights[j]);
+                    add_light(METHOD_A, SPHERE_A, RECT_A, DISK_A, &a, p, p.ltc_a, shared_lights[j]);
                 }
                 if use_b {
-                    add_light(METHOD_B, SPHERE_B, RECT_B, &b, p, p.ltc_b, shared_lights[j]);
+                    add_light(METHOD_B, SPHERE_B, RECT_B, DISK_B, &b, p, p.ltc_b, shared_lights[j]);
                 }
             }
         }

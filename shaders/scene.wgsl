@@ -47,23 +47,37 @@ struct GpuLight {
 const SHAPE_POINT: u32 = 0u;
 const SHAPE_SPHERE: u32 = 1u;
 const SHAPE_RECT: u32 = 2u;
+const SHAPE_DISK: u32 = 3u;
 
-// The shape light_elements wrote: a sphere's radius in w, 0 for a point, a rect's slot
-// below 0.
+// The shape light_elements wrote: a sphere's radius in w, 0 for a point, the slot of a rect's
+// or a disk's second element below 0 (a disk's holds 1 in its last w).
 fn light_shape(light: GpuLight) -> u32 {
     if light.intensity.w > 0.0 {
         return SHAPE_SPHERE;
     }
     if light.intensity.w < 0.0 {
+        if extra_element(light).intensity.w > 0.0 {
+            return SHAPE_DISK;
+        }
         return SHAPE_RECT;
     }
     return SHAPE_POINT;
 }
 
-// A rect's half-edges, from its element after the lights (light_elements).
+// A rect's or a disk's second element, after the lights (light_elements).
+fn extra_element(light: GpuLight) -> GpuLight {
+    return lights[params.light_count + u32(-light.intensity.w) - 1u];
+}
+
+// A rect's half-edges, from its second element.
 fn rect_half_edges(light: GpuLight) -> mat2x3<f32> {
-    let extra = lights[params.light_count + u32(-light.intensity.w) - 1u];
+    let extra = extra_element(light);
     return mat2x3<f32>(extra.position_range.xyz, extra.intensity.xyz);
+}
+
+// A disk's unit normal (xyz) and radius (w), from its second element.
+fn disk_normal_radius(light: GpuLight) -> vec4<f32> {
+    return extra_element(light).position_range;
 }
 
 @group(0) @binding(0) var<uniform> params: Params;

@@ -178,25 +178,31 @@ fn adjugate(m: mat3x3<f32>) -> mat3x3<f32> {
     return mat3x3<f32>(cross(r[1], r[2]), cross(r[2], r[0]), cross(r[0], r[1]));
 }
 
-// transformed_cone: the axis (xyz) and form factor (w) of the cap's image under M⁻¹: the cone
-// over the ellipse of B = M⁻¹ [sin σ t₁, sin σ t₂, cos σ a], Q = B⁻ᵀ diag(1, 1, −1) B⁻¹,
-// det Q = −1/det(B)², and (e₁ − e₃)(e₂ − e₃) = det/e₃ − e₃(tr − e₃) + e₃² (src/light/sphere/disk.rs).
-// The shader makes both lobes' at once (`transformed_cones`).
-fn transformed_cone(ltc: Ltc, cap: Cap, basis: mat3x3<f32>) -> vec4<f32> {
-    let quadric = cone_quadric(ltc, basis);
-    let e3 = negative_eigenvalue(quadric.q, quadric.det);
-    return cone_of(quadric, e3, ltc.cos_from_brdf, cap.axis);
+// transformed_cone: the axis (xyz) and form factor (w) of the cap's image under M⁻¹
+// (src/light/sphere/disk.rs), the cone over the ellipse of B = M⁻¹ [sin σ t₁, sin σ t₂, cos σ a].
+fn transformed_cone(ltc: Ltc, cap: Cap) -> vec4<f32> {
+    return cone_image(ltc, cap_basis(cap), cap.axis);
 }
 
-// Both lobes' transformed_cone, their Newton iterations in one loop (the lanes of a vec2): a
-// light costs the longer of the two searches, not their sum.
-fn transformed_cones(pair: LtcPair, cap: Cap, basis: mat3x3<f32>) -> array<vec4<f32>, 2> {
+// cone_image: the axis (xyz, oriented as M⁻¹ towards) and form factor (w) of the image under
+// M⁻¹ of the cone over the ellipse [V₁ V₂ C] of `basis`: Q = B⁻ᵀ diag(1, 1, −1) B⁻¹ with
+// B = M⁻¹ basis, det Q = −1/det(B)², and (e₁ − e₃)(e₂ − e₃) = det/e₃ − e₃(tr − e₃) + e₃²
+// (src/light/sphere/disk.rs). The shader makes both lobes' at once (`cone_images`).
+fn cone_image(ltc: Ltc, basis: mat3x3<f32>, towards: vec3<f32>) -> vec4<f32> {
+    let quadric = cone_quadric(ltc, basis);
+    let e3 = negative_eigenvalue(quadric.q, quadric.det);
+    return cone_of(quadric, e3, ltc.cos_from_brdf, towards);
+}
+
+// Both lobes' cone_image, their Newton iterations in one loop (the lanes of a vec2): a light
+// costs the longer of the two searches, not their sum.
+fn cone_images(pair: LtcPair, basis: mat3x3<f32>, towards: vec3<f32>) -> array<vec4<f32>, 2> {
     let spec = cone_quadric(pair.spec, basis);
     let diff = cone_quadric(pair.diff, basis);
     let e3 = negative_eigenvalues(spec.q, diff.q, vec2<f32>(spec.det, diff.det));
     return array<vec4<f32>, 2>(
-        cone_of(spec, e3.x, pair.spec.cos_from_brdf, cap.axis),
-        cone_of(diff, e3.y, pair.diff.cos_from_brdf, cap.axis),
+        cone_of(spec, e3.x, pair.spec.cos_from_brdf, towards),
+        cone_of(diff, e3.y, pair.diff.cos_from_brdf, towards),
     );
 }
 
@@ -276,23 +282,35 @@ fn cap_basis(cap: Cap) -> mat3x3<f32> {
 // vector form factor; the hemisphere about Mᵀz inside the sphere or where the cone is
 // degenerate.
 // The shader passes the cap's transformed cone, made for both lobes at once
-// (`transformed_cones`; unread where the cap encloses the point).
+// (`cone_images`; unread where the cap encloses the point).
 fn ltc_disk(ltc: Ltc, cap: Cap, transformed: vec4<f32>, case2: bool, normalization: u32) -> f32 {
     // The hemisphere about p maps to the one about Mᵀp, of form factor 1: the upper hemisphere
     // inside the sphere, the one about the axis where the cone opened too far for its algebra.
-    var cone = vec4<f32>(0.0);
-    var pole = vec3<f32>(0.0, 0.0, 1.0);
-    var ok = false;
-    if !cap_encloses(cap) {
-        cone = transformed;
-        pole = cap.axis;
-        ok = all(abs(cone) < vec4<f32>(3.4e38)) && cone.w == cone.w;
+    var cone = transformed;
+    if cap_encloses(cap) {
+        cone = hemisphere(ltc, vec3<f32>(0.0, 0.0, 1.0));
+    } else if !cone_usable(cone) {
+        cone = hemisphere(ltc, cap.axis);
     }
-    if !ok {
-        // adj(M⁻¹) = det(M⁻¹) M: the sign of the determinant restores Mᵀp's direction.
-        let m_t = transpose(adjugate(ltc.cos_from_brdf)) * sign(determinant(ltc.cos_from_brdf));
-        cone = vec4<f32>(normalize(m_t * pole), 1.0);
-    }
+    return cone_integral(cone, case2, normalization);
+}
+
+// Whether a cone's axis and form factor are finite numbers (its algebra did not break down).
+fn cone_usable(cone: vec4<f32>) -> bool {
+    return all(abs(cone) < vec4<f32>(3.4e38)) && cone.w == cone.w;
+}
+
+// hemisphere: the image under M⁻¹ of the hemisphere about p, the one about Mᵀp of form
+// factor 1 (src/light/sphere/disk.rs).
+fn hemisphere(ltc: Ltc, p: vec3<f32>) -> vec4<f32> {
+    // adj(M⁻¹) = det(M⁻¹) M: the sign of the determinant restores Mᵀp's direction.
+    let m_t = transpose(adjugate(ltc.cos_from_brdf)) * sign(determinant(ltc.cos_from_brdf));
+    return vec4<f32>(normalize(m_t * p), 1.0);
+}
+
+// cone_integral: the clamped cosine over a cone of this axis (xyz) and form factor (w), case 2
+// through the sphere of the same vector form factor, else the signed F·z.
+fn cone_integral(cone: vec4<f32>, case2: bool, normalization: u32) -> f32 {
     var integral = cone.w * cone.z;
     if case2 {
         integral = illuminance_sphere(cone.z, clamp(cone.w, 0.0, 1.0)) / PI;
@@ -375,7 +393,7 @@ fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
     let case2 = (s.clip & CLIP_TRANSFORMED) != 0u;
     var cones = array<vec4<f32>, 2>(vec4<f32>(0.0), vec4<f32>(0.0));
     if !cap_encloses(cap) {
-        cones = transformed_cones(pair, cap, cap_basis(cap));
+        cones = cone_images(pair, cap_basis(cap), cap.axis);
     }
     let lobes = vec2<f32>(
         ltc_disk(pair.spec, cap, cones[0], case2, s.normalization),

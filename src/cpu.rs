@@ -9,6 +9,9 @@ use rayon::prelude::*;
 
 use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact, window_falloff};
 use crate::light::Shape;
+use crate::light::disk::{
+    Disk, DiskMethod, DiskShading, GPU_EXACT_NODES as DISK_GPU_EXACT_NODES, disk_light_with,
+};
 use crate::light::rect::{
     GPU_EXACT_NODES as RECT_GPU_EXACT_NODES, Rect, RectMethod, RectShading, rect_light_with,
 };
@@ -214,6 +217,38 @@ pub fn rect_term(
     light.radiant_intensity() * scale * combine(lobes, m.base_color)
 }
 
+/// One disk light's radiance toward the camera by `method` (docs/design.md §1.12): its
+/// radiance `I/(π r²)` times the unit-radiance lobes, windowed at the centre's distance as a
+/// rect is, with the renderers' rule for the exact method.
+pub fn disk_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    (light, normal, radius): (&Light, DVec3, f64),
+    rules: &LtcRules,
+    method: DiskMethod,
+) -> DVec3 {
+    let m = &scene.material;
+    let centre = DVec3::from(light.position) - p.position;
+    let disk = Disk {
+        centre: px.frame.tangent_from_world(centre),
+        normal: px.frame.tangent_from_world(normal.normalize()),
+        radius,
+    };
+    let shading = DiskShading {
+        v: px.frame.tangent_from_world(p.view),
+        disk,
+        alpha: m.alpha,
+        f0: m.f0,
+        ltc: &px.pair,
+        clip: rules.clipping,
+        normalization: rules.normalization,
+    };
+    let lobes = disk_light_with(method, &shading, DISK_GPU_EXACT_NODES);
+    let scale = window_falloff(centre.length(), light.range_or_infinity()) / disk.area();
+    light.radiant_intensity() * scale * combine(lobes, m.base_color)
+}
+
 /// One side of a render: its method for each light shape, and the table its LTC methods
 /// read.
 #[derive(Clone, Copy, Debug)]
@@ -263,6 +298,14 @@ pub fn light_term(
             (light, half_u, half_v),
             rules,
             side.methods.rect,
+        ),
+        Shape::Disk { normal, radius } => disk_term(
+            scene,
+            px,
+            p,
+            (light, normal, radius),
+            rules,
+            side.methods.disk,
         ),
     }
 }

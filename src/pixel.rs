@@ -9,8 +9,9 @@
 use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
-use crate::cpu::{LtcPixel, exact_term, ltc_term, rect_term, sphere_term};
+use crate::cpu::{LtcPixel, disk_term, exact_term, ltc_term, rect_term, sphere_term};
 use crate::light::Shape;
+use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::ClipCase;
@@ -53,6 +54,8 @@ pub struct LightTerm {
     pub rects: Option<[DVec3; 5]>,
     /// A rect: its corners' directions in the shading frame, unit.
     pub corners: Option<[DVec3; 4]>,
+    /// A disk: its radiance by each of `DiskMethod::ALL` (table A).
+    pub disks: Option<[DVec3; 3]>,
 }
 
 impl LightTerm {
@@ -140,7 +143,8 @@ pub fn elevation_azimuth(w: DVec3) -> (f64, f64) {
 
 /// Every light of `scene` at `p`, LTC with table A and the given rules against the exact
 /// BRDF, and with table B too where there is one (`tables.1`); lights with a size by
-/// `spheres` and rects by `rects` (the LTC side's method, then the exact side's); `None` where
+/// `spheres`, rects by `rects` and disks by `disks` (the LTC side's method, then the exact
+/// side's); `None` where
 /// the camera sees the plane from below.
 pub fn pixel_terms(
     scene: &Scene,
@@ -149,6 +153,7 @@ pub fn pixel_terms(
     rules: &LtcRules,
     spheres: [SphereMethod; 2],
     rects: [RectMethod; 2],
+    disks: [DiskMethod; 2],
 ) -> Option<PixelTerms> {
     if p.view.z <= 0.0 {
         return None;
@@ -183,6 +188,14 @@ pub fn pixel_terms(
                     term.ltc_b = px_b.map(|b| rect_term(scene, &b, p, rect, rules, rects[0]));
                     term.rects = Some(all);
                     term.corners = Some(rect_corners(&px, p, (light, half_u, half_v)));
+                }
+                Shape::Disk { normal, radius } => {
+                    let disk = (light, normal, radius);
+                    let all = DiskMethod::ALL.map(|m| disk_term(scene, &px, p, disk, rules, m));
+                    term.ltc = all[disks[0].index()];
+                    term.exact = all[disks[1].index()];
+                    term.ltc_b = px_b.map(|b| disk_term(scene, &b, p, disk, rules, disks[0]));
+                    term.disks = Some(all);
                 }
             }
             term
@@ -240,6 +253,7 @@ fn light_term(
         spheres: None,
         rects: None,
         corners: None,
+        disks: None,
     }
 }
 

@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lut::Lut;
@@ -87,6 +88,8 @@ pub struct ShapeMethods {
     pub sphere: SphereMethod,
     /// How rects are shaded.
     pub rect: RectMethod,
+    /// How disks are shaded.
+    pub disk: DiskMethod,
 }
 
 /// Everything about a render that is not the scene or the table.
@@ -137,11 +140,13 @@ impl RenderSettings {
                 sphere: SphereMethod::LtcDisk,
                 // Rects: the paper's own method against the reference.
                 rect: RectMethod::LtcPolygon,
+                disk: DiskMethod::LtcDisk,
             },
             b: ShapeMethods {
                 point: Method::Brdf,
                 sphere: SphereMethod::Exact,
                 rect: RectMethod::Exact,
+                disk: DiskMethod::Exact,
             },
             view: View::A,
             rules: LtcRules::default(),

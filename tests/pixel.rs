@@ -18,6 +18,10 @@ use ltc_lab::scene::{SPHERE_PRESETS, preset};
 /// The lab's sphere methods (the LTC side's, the exact side's): point scenes never read them.
 const SPHERES: [SphereMethod; 2] = [SphereMethod::LtcDisk, SphereMethod::Exact];
 const RECTS: [RectMethod; 2] = [RectMethod::LtcPolygon, RectMethod::Exact];
+const DISKS: [ltc_lab::light::disk::DiskMethod; 2] = [
+    ltc_lab::light::disk::DiskMethod::LtcDisk,
+    ltc_lab::light::disk::DiskMethod::Exact,
+];
 
 #[test]
 fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
@@ -35,7 +39,16 @@ fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
                 continue;
             };
             let n = Normalization::Corrected;
-            let t = pixel_terms(&scene, (lut, None), &p, &rules(clip, n), SPHERES, RECTS).unwrap();
+            let t = pixel_terms(
+                &scene,
+                (lut, None),
+                &p,
+                &rules(clip, n),
+                SPHERES,
+                RECTS,
+                DISKS,
+            )
+            .unwrap();
             let ltc = shade_ltc(&scene, lut, &p, &scene.lights, &rules(clip, n));
             let exact = shade_exact(&scene, &p, &scene.lights);
             let sum_ltc = t.terms.iter().fold(glam::DVec3::ZERO, |a, l| a + l.ltc);
@@ -103,6 +116,7 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
                 point: Method::Ltc,
                 sphere: SphereMethod::Exact,
                 rect: ltc_lab::light::rect::RectMethod::Exact,
+                disk: ltc_lab::light::disk::DiskMethod::Exact,
             },
             rules: LtcRules {
                 clipping: clip,
@@ -117,7 +131,16 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
             let Some(p) = scene.surface_point(x, y, w, h) else {
                 continue;
             };
-            let t = pixel_terms(&scene, (a, Some(b)), &p, &rules(clip, n), SPHERES, RECTS).unwrap();
+            let t = pixel_terms(
+                &scene,
+                (a, Some(b)),
+                &p,
+                &rules(clip, n),
+                SPHERES,
+                RECTS,
+                DISKS,
+            )
+            .unwrap();
             let k = y * w + x;
             let sum_b = t
                 .terms
@@ -194,6 +217,7 @@ fn without_table_b_side_b_is_the_exact_brdf() {
         &rules(Clipping::BOTH, n),
         SPHERES,
         RECTS,
+        DISKS,
     )
     .unwrap();
     assert!(t.ltc_b.is_none() && t.terms.iter().all(|l| l.ltc_b.is_none()));
@@ -269,11 +293,13 @@ fn sized_lights_sum_to_each_sides_render_by_its_sphere_method() {
                     point: Method::Ltc,
                     sphere: spheres[0],
                     rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
+                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
                 },
                 b: ltc_lab::render::ShapeMethods {
                     point: method,
                     sphere: spheres[1],
                     rect: ltc_lab::light::rect::RectMethod::Exact,
+                    disk: ltc_lab::light::disk::DiskMethod::Exact,
                 },
                 view: View::B,
                 ..RenderSettings::single(w, h, Method::Ltc)
@@ -292,7 +318,8 @@ fn sized_lights_sum_to_each_sides_render_by_its_sphere_method() {
                     continue;
                 };
                 let rules = LtcRules::default();
-                let t = pixel_terms(&scene, (lut, None), &p, &rules, spheres, RECTS).unwrap();
+                let t =
+                    pixel_terms(&scene, (lut, None), &p, &rules, spheres, RECTS, DISKS).unwrap();
                 let k = y * w + x;
                 // A handful of terms in f64: 1e-13 relative.
                 let close = |u: DVec3, v: DVec3| {

@@ -228,6 +228,70 @@ fn sphere_light_functions_have_the_rust_names() {
     }
 }
 
+/// The disk lights' functions carry their Rust names (a method `Disk::f` as `disk_f`,
+/// `Segment::f` as `segment_f`).
+#[test]
+fn disk_light_functions_have_the_rust_names() {
+    use ltc_lab::gpu::{disk_light, rect_light};
+    let source = [
+        brdf::SOURCE,
+        ltc::SOURCE,
+        sphere_light::SOURCE,
+        rect_light::SOURCE,
+        disk_light::SOURCE,
+        // The method codes plane.wgsl defines.
+        "const RECT_EXACT: u32 = 0u; const RECT_LTC_POLYGON: u32 = 1u; const RECT_LTC_PROXY: u32 = 2u; const RECT_LTC_PROXY_FAST: u32 = 3u; const DISK_EXACT: u32 = 0u; const DISK_LTC_DISK: u32 = 1u;",
+    ]
+    .join("\n");
+    let module = validate("disk_light", &source);
+    let wgsl = function_names(&module);
+    // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
+    #[allow(unused_imports)]
+    use ltc_lab::light::disk::quadrature::Segment;
+    #[allow(unused_imports)]
+    use ltc_lab::light::disk::{
+        Disk, disk_exact, disk_light, disk_ltc, disk_point, ltc_disk_light,
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::light::sphere::disk::{cone_image, cone_integral, hemisphere};
+    let _ = (
+        Disk::area,
+        Disk::faces_origin,
+        Disk::angular_size,
+        Disk::below_horizon,
+        Disk::point_irradiance,
+        Disk::half_axes,
+        Segment::above,
+        Segment::point,
+        Segment::hit_inside,
+        Segment::pieces,
+        Segment::reach,
+    );
+    for f in [
+        "disk_area",
+        "disk_faces_origin",
+        "disk_angular_size",
+        "disk_below_horizon",
+        "disk_point_irradiance",
+        "disk_half_axes",
+        "segment_above",
+        "segment_point",
+        "segment_hit_inside",
+        "segment_pieces",
+        "segment_reach",
+        "disk_point",
+        "disk_exact",
+        "disk_ltc",
+        "ltc_disk_light",
+        "disk_light",
+        "cone_image",
+        "cone_integral",
+        "hemisphere",
+    ] {
+        assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
+
 /// A WGSL constant's value, its components flattened (a scalar is one number, a vector or
 /// an array its components in order), as naga's constant evaluation left it.
 fn constant_value(module: &naga::Module, name: &str) -> Vec<f64> {
@@ -288,6 +352,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         .into_iter()
         .chain(SphereMethod::ALL.map(sphere_constant))
         .chain(ltc_lab::light::rect::RectMethod::ALL.map(ltc_lab::gpu::plane::rect_constant))
+        .chain(ltc_lab::light::disk::DiskMethod::ALL.map(ltc_lab::gpu::plane::disk_constant))
         .chain(ViewConstant::ALL.map(ViewConstant::constant))
         .chain(
             [
@@ -305,6 +370,10 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
                 Shape::Rect {
                     half_u: glam::DVec3::X,
                     half_v: glam::DVec3::Y,
+                },
+                Shape::Disk {
+                    normal: glam::DVec3::Z,
+                    radius: 1.0,
                 },
             ]
             .map(ltc_lab::gpu::scene::shape_constant),
@@ -341,6 +410,10 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             (
                 "RECT_POINT_LIMIT",
                 f32s(&[ltc_lab::light::rect::RECT_POINT_LIMIT]),
+            ),
+            (
+                "DISK_POINT_LIMIT",
+                f32s(&[ltc_lab::light::disk::DISK_POINT_LIMIT]),
             ),
             ("GL8_NODES", half(|&(x, _)| x)),
             ("GL8_WEIGHTS", half(|&(_, w)| w)),

@@ -21,6 +21,7 @@ fn side(method: Method, sphere: SphereMethod) -> RenderSettings {
             point: method,
             sphere,
             rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
+            disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
         },
         ..RenderSettings::single(W, H, method)
     }

@@ -9,17 +9,22 @@ use serde::{Deserialize, Serialize};
 
 use crate::app::files::Purpose;
 use crate::app::lab::parts::{BRDF_FORMS, LTC_FORMS, RADIUS_RANGE, RANGE_RANGE};
-use crate::app::lab::{Forms, Lab, LobeView, Overrides, RectForms, Request, SphereForms};
+use crate::app::lab::{
+    DiskForms, Forms, Lab, LobeView, Overrides, RectForms, Request, SphereForms,
+};
 use crate::app::panel::Panel;
 use crate::app::ui::widgets::{clipping_rules, explain, name};
 use crate::light::Shape;
+use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::Normalization;
 use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::ltc::remedy::Horizon;
 use crate::render::LtcRules;
-use crate::scene::{Light, MIN_RADIUS, Material, PRESETS, RECT_PRESETS, SPHERE_PRESETS, preset};
+use crate::scene::{
+    DISK_PRESETS, Light, MIN_RADIUS, Material, PRESETS, RECT_PRESETS, SPHERE_PRESETS, preset,
+};
 use crate::tables::Source;
 
 /// The light counts the slider offers, at most (and at most what the adapter shades).
@@ -239,8 +244,43 @@ fn rect_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     );
 }
 
+/// How each side shades a disk light, and the disks' failure preset (docs/design.md §1.12).
+fn disk_lights(ui: &mut egui::Ui, lab: &mut Lab) {
+    lab.edit(|f: &mut DiskForms| {
+        for (label, method, hover) in [
+            (
+                "disk LTC side",
+                &mut f.ltc,
+                "How the LTC side (and table B) shades a disk light",
+            ),
+            (
+                "disk reference side",
+                &mut f.brdf,
+                "How the BRDF side shades a disk light",
+            ),
+        ] {
+            method_combo(
+                ui,
+                (label, hover),
+                method,
+                (&DiskMethod::ALL, DiskMethod::name, DiskMethod::describe),
+            );
+        }
+    });
+    explain(
+        ui,
+        "A disk emits toward its normal with radiance I/(π r²): far away it is the oriented point light of intensity I cos θe",
+    );
+    preset_buttons(
+        ui,
+        lab,
+        &DISK_PRESETS,
+        "Load this failure case of disk lights",
+    );
+}
+
 /// Every light's radius, how each side shades a light with one, and the failure presets
-/// (docs/design.md §1.10); then the same for rects (§1.11).
+/// (docs/design.md §1.10); then the same for rects (§1.11) and disks (§1.12).
 fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     lab.edit(|o: &mut Overrides| {
         ui.add(
@@ -292,6 +332,8 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     );
     ui.separator();
     rect_lights(ui, lab);
+    ui.separator();
+    disk_lights(ui, lab);
 }
 
 fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
@@ -389,6 +431,14 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
         }
         if let Shape::Rect { half_u, half_v } = &mut light.shape {
             rect_size(ui, half_u, half_v);
+            return;
+        }
+        if let Shape::Disk { radius, .. } = &mut light.shape {
+            // A disk keeps its size: its radius from the scene's least, never 0.
+            let label = ui.label("r");
+            ui.add(egui::DragValue::new(radius).speed(0.001).range(RADIUS_RANGE[0]..=RADIUS_RANGE[1]).max_decimals(4))
+                .labelled_by(label.id)
+                .on_hover_text("The disk's radius: it keeps its normal and its radiance I/(π r²), so a larger disk is as bright far away and dimmer per area");
             return;
         }
         // The shape by its radius: 0 a point, more a sphere.

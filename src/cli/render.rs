@@ -10,6 +10,7 @@ use ltc_lab::files::{Claim, check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::plane::ShaderChecks;
 use ltc_lab::gpu::renderer::PlaneRenderer;
+use ltc_lab::light::disk::DiskMethod;
 use ltc_lab::light::rect::RectMethod;
 use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::formats;
@@ -121,6 +122,13 @@ pub struct Args {
     /// The same, right of a split (the reference).
     #[arg(long, value_parser = one_of(&RectMethod::ALL, RectMethod::name), default_value = "exact")]
     rect_b: RectMethod,
+    /// How disk lights (`radius` and `normal` in the scene) are shaded by the method alone,
+    /// or left of a split (docs/design.md §1.12): exact, ltc-disk or ltc-point
+    #[arg(long, value_parser = one_of(&DiskMethod::ALL, DiskMethod::name), default_value = "ltc-disk")]
+    disk_a: DiskMethod,
+    /// The same, right of a split (the reference)
+    #[arg(long, value_parser = one_of(&DiskMethod::ALL, DiskMethod::name), default_value = "exact")]
+    disk_b: DiskMethod,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -140,6 +148,8 @@ pub fn run(a: &Args) -> Result<()> {
     settings.b.sphere = a.sphere_b;
     settings.a.rect = a.rect_a;
     settings.b.rect = a.rect_b;
+    settings.a.disk = a.disk_a;
+    settings.b.disk = a.disk_b;
     a.lut.check_horizon(a.horizon)?;
     let out = a
         .out

@@ -6,6 +6,7 @@
 pub mod bin;
 pub mod binding;
 pub mod brdf;
+pub mod disk_light;
 pub mod display;
 pub mod driver_output;
 pub mod keep_driver;
@@ -27,7 +28,7 @@ pub mod work;
 use crate::error::Error;
 
 /// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, sphere_light.wgsl, rect_light.wgsl,
-/// scene.wgsl, plane.wgsl and
+/// disk_light.wgsl, scene.wgsl, plane.wgsl and
 /// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last.
 pub fn plane_module_source(f16: bool) -> String {
     let (enable, last) = if f16 {
@@ -41,6 +42,7 @@ pub fn plane_module_source(f16: bool) -> String {
         ltc::SOURCE,
         sphere_light::SOURCE,
         rect_light::SOURCE,
+        disk_light::SOURCE,
         scene::SOURCE,
         plane::SOURCE,
         last,

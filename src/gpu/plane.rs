@@ -11,6 +11,7 @@ use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::target::OUTPUT_FORMAT;
 use crate::light::Shape;
+use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::remedy::HorizonRule;
@@ -50,6 +51,15 @@ pub fn rect_constant(m: RectMethod) -> (u32, &'static str) {
         RectMethod::LtcProxy => (2, "RECT_LTC_PROXY"),
         RectMethod::LtcProxyFast => (3, "RECT_LTC_PROXY_FAST"),
         RectMethod::LtcPoint => (4, "RECT_LTC_POINT"),
+    }
+}
+
+/// `DISK_*` of plane.wgsl: its value and its name there.
+pub fn disk_constant(m: DiskMethod) -> (u32, &'static str) {
+    match m {
+        DiskMethod::Exact => (0, "DISK_EXACT"),
+        DiskMethod::LtcDisk => (1, "DISK_LTC_DISK"),
+        DiskMethod::LtcPoint => (2, "DISK_LTC_POINT"),
     }
 }
 
@@ -111,6 +121,7 @@ pub type PipelineKey = (
     HorizonRule,
     Option<(SphereMethod, SphereMethod)>,
     Option<(RectMethod, RectMethod)>,
+    Option<(DiskMethod, DiskMethod)>,
 );
 
 /// The pipeline's methods and view: `View::B` is B shaded as the single A (with B's table,
@@ -122,17 +133,26 @@ pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
         View::Split => (s.a.point, s.b.point, ViewConstant::Split, s.b_reads_table_b),
         View::Diff => (s.a.point, s.b.point, ViewConstant::Diff, s.b_reads_table_b),
     };
-    let (spheres, rects) = match s.view {
-        View::B => ((s.b.sphere, s.b.sphere), (s.b.rect, s.b.rect)),
-        _ => ((s.a.sphere, s.b.sphere), (s.a.rect, s.b.rect)),
+    let (spheres, rects, disks) = match s.view {
+        View::B => (
+            (s.b.sphere, s.b.sphere),
+            (s.b.rect, s.b.rect),
+            (s.b.disk, s.b.disk),
+        ),
+        _ => (
+            (s.a.sphere, s.b.sphere),
+            (s.a.rect, s.b.rect),
+            (s.a.disk, s.b.disk),
+        ),
     };
     let sized = scene
         .lights
         .iter()
         .any(|l| l.shape != Shape::Point)
         .then_some(spheres);
-    let any_rect = scene.lights.iter().any(|l| l.shape.half_edges().is_some());
-    let rects = any_rect.then_some(rects);
+    let any = |shape: fn(&Shape) -> bool| scene.lights.iter().any(|l| shape(&l.shape));
+    let rects = any(|s| matches!(s, Shape::Rect { .. })).then_some(rects);
+    let disks = any(|s| matches!(s, Shape::Disk { .. })).then_some(disks);
     (
         a,
         b,
@@ -142,6 +162,7 @@ pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
         s.rules.horizon,
         sized,
         rects,
+        disks,
     )
 }
 
@@ -222,9 +243,10 @@ fn compile(
     layout: &wgpu::PipelineLayout,
     key: PipelineKey,
 ) -> Pipelines {
-    let (a, b, view, filter, table_b, horizon, sized, rects) = key;
+    let (a, b, view, filter, table_b, horizon, sized, rects, disks) = key;
     let spheres = sized.unwrap_or((SphereMethod::LtcDisk, SphereMethod::Exact));
     let rect_methods = rects.unwrap_or((RectMethod::LtcPolygon, RectMethod::Exact));
+    let disk_methods = disks.unwrap_or((DiskMethod::LtcDisk, DiskMethod::Exact));
     let constants = [
         ("METHOD_A", f64::from(method_constant(a).0)),
         ("METHOD_B", f64::from(method_constant(b).0)),
@@ -241,6 +263,9 @@ fn compile(
         ("RECTS", f64::from(u8::from(rects.is_some()))),
         ("RECT_A", f64::from(rect_constant(rect_methods.0).0)),
         ("RECT_B", f64::from(rect_constant(rect_methods.1).0)),
+        ("DISKS", f64::from(u8::from(disks.is_some()))),
+        ("DISK_A", f64::from(disk_constant(disk_methods.0).0)),
+        ("DISK_B", f64::from(disk_constant(disk_methods.1).0)),
     ];
     let pipeline = |entry_point| {
         ctx.device

@@ -71,12 +71,14 @@ pub fn shape_constant(shape: Shape) -> (u32, &'static str) {
         Shape::Point => (0, "SHAPE_POINT"),
         Shape::Sphere { .. } => (1, "SHAPE_SPHERE"),
         Shape::Rect { .. } => (2, "SHAPE_RECT"),
+        Shape::Disk { .. } => (3, "SHAPE_DISK"),
     }
 }
 
 /// The light buffer of `lights`: one element per light, in order, then one per rect holding
-/// its half-edges (xyz of each vec4), which the rect's element names by its w,
-/// `−(slot + 1)` (exact in f32 for up to 2²⁴ rects, far above `scene::MAX_LIGHTS`).
+/// its half-edges (xyz of each vec4) and one per disk holding its unit normal and radius (and
+/// 1 in the last w, where a rect's holds 0), which the light's element names by its w,
+/// `−(slot + 1)` (exact in f32 for up to 2²⁴ of them, far above `scene::MAX_LIGHTS`).
 pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
     let mut head = Vec::with_capacity(lights.len());
     let mut tail = Vec::new();
@@ -98,6 +100,15 @@ pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
                 });
                 -(tail.len() as f32)
             }
+            Shape::Disk { normal, radius } => {
+                let n = normal.normalize().as_vec3();
+                // w = 1 tells it from a rect's (`light_shape`).
+                tail.push(GpuLight {
+                    position_range: [n.x, n.y, n.z, radius as f32],
+                    intensity: [0.0, 0.0, 0.0, 1.0],
+                });
+                -(tail.len() as f32)
+            }
         };
         head.push(GpuLight {
             position_range: [p[0], p[1], p[2], range],
@@ -108,12 +119,12 @@ pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
     head
 }
 
-/// The elements `light_elements` makes of `lights`: a rect takes two.
+/// The elements `light_elements` makes of `lights`: a rect or a disk takes two.
 pub fn element_count(lights: &[Light]) -> usize {
     lights.len()
         + lights
             .iter()
-            .filter(|l| l.shape.half_edges().is_some())
+            .filter(|l| matches!(l.shape, Shape::Rect { .. } | Shape::Disk { .. }))
             .count()
 }
 

@@ -1,11 +1,13 @@
 //! A light's shape and the ways each shape is shaded (docs/design.md §1.10, §5.12): the
-//! paper's point light, and a sphere (`sphere`: its methods, the cap it covers, the LTC over
+//! paper's point light, a sphere (`sphere`: its methods, the cap it covers, the LTC over
 //! that cap, and the Gauss–Legendre rule over it that the exact method integrates by), and a
-//! rect (`rect`: the polygon it covers, the LTC over a polygon and the rule over it). Adding
-//! a shape is a module here, a variant of `Shape`, and one arm in each dispatch: the CPU's
-//! `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
+//! rect (`rect`: the polygon it covers, the LTC over a polygon and the rule over it), and a
+//! disk (`disk`: the segment of it above the surface and the rule over it; its LTC is the
+//! sphere's cone algebra). Adding a shape is a module here, a variant of `Shape`, and one arm
+//! in each dispatch: the CPU's `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
 //! `gpu::scene::light_elements` and plane.wgsl's `add_light`.
 
+pub mod disk;
 pub mod rect;
 pub mod sphere;
 
@@ -24,6 +26,10 @@ pub enum Shape {
     /// emitting toward `half_u × half_v` with radiance `I/A` (`A = 4 |half_u × half_v|`), so
     /// that far away it lights as the oriented point light of intensity `I cos θe` (§1.11).
     Rect { half_u: DVec3, half_v: DVec3 },
+    /// A one-sided disk about the light's position of `normal` (the side it emits toward; its
+    /// length is not read, so that a file's vector reads back as written) and `radius`, of radiance `I/(π r²)`: far away, the oriented point light of
+    /// intensity `I cos θe`, as a rect (§1.12).
+    Disk { normal: DVec3, radius: f64 },
 }
 
 impl Shape {
@@ -40,7 +46,15 @@ impl Shape {
     pub fn radius(self) -> f64 {
         match self {
             Self::Point | Self::Rect { .. } => 0.0,
-            Self::Sphere { radius } => radius,
+            Self::Sphere { radius } | Self::Disk { radius, .. } => radius,
+        }
+    }
+
+    /// A disk's normal, `None` for the other shapes.
+    pub fn normal(self) -> Option<DVec3> {
+        match self {
+            Self::Disk { normal, .. } => Some(normal),
+            _ => None,
         }
     }
 

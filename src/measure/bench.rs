@@ -10,6 +10,7 @@ use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::timing::FrameTimes;
 use crate::light::Shape;
+use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lut::Lut;
@@ -365,6 +366,7 @@ pub fn run(
                             Sizing::Rect(m) => m,
                             _ => RectMethod::LtcPoint,
                         },
+                        disk: DiskMethod::LtcPoint,
                     },
                     ..RenderSettings::single(width, height, method)
                 };

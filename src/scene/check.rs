@@ -78,7 +78,29 @@ pub(super) fn check_light(what: &str, l: &Light) -> std::result::Result<(), Stri
         Shape::Point => Ok(()),
         Shape::Sphere { radius } => check_radius(&format!("{what}.radius"), radius),
         Shape::Rect { half_u, half_v } => check_rect(what, half_u, half_v),
+        Shape::Disk { normal, radius } => {
+            check_radius(&format!("{what}.radius"), radius)?;
+            check_normal(&format!("{what}.normal"), normal)
+        }
     }
+}
+
+/// The smallest length of a disk's normal: it is only a direction, but one of no length (or
+/// one whose square underflows) has none.
+pub const MIN_NORMAL: f64 = 1e-6;
+
+/// A disk's normal is finite, within `MAX_COORDINATE` and of length at least `MIN_NORMAL`.
+fn check_normal(what: &str, normal: DVec3) -> std::result::Result<(), String> {
+    within(what, &normal.to_array(), -MAX_COORDINATE, MAX_COORDINATE)?;
+    let length = normal.length();
+    if length < MIN_NORMAL {
+        return Err(format!(
+            "{what} must have length ≥ {} (the direction the disk emits toward), got {}",
+            number(MIN_NORMAL),
+            number(length)
+        ));
+    }
+    Ok(())
 }
 
 /// A rect's half-edges are finite, each within `MAX_COORDINATE`, and span a quarter-area

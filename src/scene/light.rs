@@ -9,8 +9,8 @@ use crate::scene::lists::{exactly, exactly_option};
 
 /// A light: RGB `color × intensity` (W/sr-like units: irradiance `I/d²` at distance d) from
 /// `position`, of a shape (a point; a sphere whose radiance `I/(π r²)` lights a distant point
-/// as the point light does, docs/design.md §1.10; a rect whose radiance `I/A` lights it as
-/// the oriented point light of intensity `I cos θe`, §1.11).
+/// as the point light does, docs/design.md §1.10; a rect or a disk whose radiance `I/A` lights
+/// it as the oriented point light of intensity `I cos θe`, §1.11 and §1.12).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(try_from = "LightFile", into = "LightFile")]
 pub struct Light {
@@ -23,7 +23,8 @@ pub struct Light {
 }
 
 /// A light as a scene file (and a link) writes it: the shape by its fields, `radius` for a
-/// sphere (0 or absent: a point), `half_u` and `half_v` for a rect centred on `position`.
+/// sphere (0 or absent: a point), `half_u` and `half_v` for a rect centred on `position`,
+/// `radius` and `normal` for a disk.
 #[derive(Clone, Copy, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct LightFile {
@@ -50,15 +51,37 @@ struct LightFile {
         with = "exactly_option"
     )]
     half_v: Option<[f64; 3]>,
+    /// A disk's normal (world): it emits toward it. Its length is not read.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        with = "exactly_option"
+    )]
+    normal: Option<[f64; 3]>,
 }
 
 impl TryFrom<LightFile> for Light {
     type Error = String;
 
-    /// The shape its fields name: a rect needs both half-edges and no radius.
+    /// The shape its fields name: a rect needs both half-edges and no radius, a disk a
+    /// radius and a normal.
     fn try_from(f: LightFile) -> std::result::Result<Self, String> {
         let shape = match (f.half_u, f.half_v) {
-            (None, None) => Shape::of_radius(f.radius),
+            (None, None) => match f.normal {
+                None => Shape::of_radius(f.radius),
+                Some(_) if f.radius == 0.0 => {
+                    return Err("a disk light (a normal) needs a radius".into());
+                }
+                Some(n) => Shape::Disk {
+                    normal: DVec3::from(n),
+                    radius: f.radius,
+                },
+            },
+            (Some(_), Some(_)) if f.normal.is_some() => {
+                return Err(
+                    "a light has half_u and half_v (a rect) or a normal (a disk), not both".into(),
+                );
+            }
             (Some(u), Some(v)) if f.radius == 0.0 => Shape::Rect {
                 half_u: DVec3::from(u),
                 half_v: DVec3::from(v),
@@ -91,6 +114,7 @@ impl From<Light> for LightFile {
             radius: l.shape.radius(),
             half_u: l.shape.half_edges().map(|(u, _)| u.to_array()),
             half_v: l.shape.half_edges().map(|(_, v)| v.to_array()),
+            normal: l.shape.normal().map(|n| n.to_array()),
         }
     }
 }

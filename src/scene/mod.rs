@@ -14,6 +14,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result, number};
 use crate::render::SurfacePoint;
+pub use check::MIN_NORMAL;
 use check::{check_light, check_radius, check_range, finite, within};
 pub use light::{Light, MIN_RADIUS, RandomLights, SplitMix64, generate_lights};
 use lists::exactly as exact_list;
@@ -77,12 +78,20 @@ pub const RECT_PRESETS: [(&str, &str); 3] = [
     ),
 ];
 
-/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`, `RECT_PRESETS`).
+/// The failure cases of disk lights (docs/design.md §1.12): across the horizon, behind the
+/// surface, edge-on, filling the sky and tiny, in one scene.
+pub const DISK_PRESETS: [(&str, &str); 1] = [(
+    "disk-limits",
+    include_str!("../../assets/scenes/disk-limits.toml"),
+)];
+
+/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`, `RECT_PRESETS`, `DISK_PRESETS`).
 pub fn preset(name: &str) -> Scene {
     let (_, text) = PRESETS
         .iter()
         .chain(&SPHERE_PRESETS)
         .chain(&RECT_PRESETS)
+        .chain(&DISK_PRESETS)
         .find(|(n, _)| *n == name)
         .expect("a shipped preset");
     Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")
@@ -204,6 +213,10 @@ impl Scene {
                 Shape::Rect { half_u, half_v } => Shape::Rect {
                     half_u: half_u.to_array().map(significant).into(),
                     half_v: half_v.to_array().map(significant).into(),
+                },
+                Shape::Disk { normal, radius } => Shape::Disk {
+                    normal: normal.to_array().map(significant).into(),
+                    radius: significant(radius),
                 },
                 shape => Shape::of_radius(significant(shape.radius())),
             };

@@ -300,6 +300,7 @@ fn render_shades_lights_with_a_size_by_the_method_asked() {
                 point: ltc_lab::render::Method::Ltc,
                 sphere: ltc_lab::light::sphere::SphereMethod::from_name(sphere).unwrap(),
                 rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
+                disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
             },
             ..ltc_lab::render::RenderSettings::single(48, 32, ltc_lab::render::Method::Ltc)
         };

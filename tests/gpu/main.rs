@@ -6,6 +6,7 @@
 #[path = "../gpu_common/mod.rs"]
 mod gpu_common;
 
+mod disk_light;
 mod lut;
 mod parity;
 mod rect_light;

@@ -299,6 +299,7 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
                     point: method,
                     sphere,
                     rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
+                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
                 },
                 ..RenderSettings::single(w, h, method)
             };
@@ -337,6 +338,7 @@ fn gpu_failure_presets_are_finite_and_match_the_cpu() {
                     point: Method::LtcFast,
                     sphere,
                     rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
+                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
                 },
                 ..RenderSettings::single(48, 40, Method::LtcFast)
             };
@@ -378,6 +380,7 @@ fn a_far_tiny_sphere_renders_as_its_point_light() {
                     point: method,
                     sphere,
                     rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
+                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
                 },
                 ..RenderSettings::single(32, 24, method)
             };

@@ -256,6 +256,7 @@ fn pinned_terms(
         lab.rules(),
         spheres,
         [lab.rects().ltc, lab.rects().brdf],
+        [lab.disks().ltc, lab.disks().brdf],
     )
     .unwrap();
     (terms, [u, v], p)

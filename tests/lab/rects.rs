@@ -68,6 +68,7 @@ fn the_pinned_pixel_gives_each_rect_by_every_method() {
         lab_.rules(),
         [lab_.spheres().ltc, lab_.spheres().brdf],
         [lab_.rects().ltc, lab_.rects().brdf],
+        [lab_.disks().ltc, lab_.disks().brdf],
     )
     .unwrap();
     // The ceiling's cell by the clipped polygon: its value and its error against the exact

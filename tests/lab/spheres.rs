@@ -94,6 +94,7 @@ fn the_pinned_pixel_gives_each_sized_light_by_every_method() {
         lab_.rules(),
         spheres,
         [lab_.rects().ltc, lab_.rects().brdf],
+        [lab_.disks().ltc, lab_.disks().brdf],
     )
     .unwrap();
     for l in &t.terms {

@@ -5,7 +5,7 @@ use glam::DVec3;
 
 use crate::app::lab::part::Notes;
 use crate::light::Shape;
-use crate::scene::{Light, MAX_COORDINATE, MAX_INTENSITY, MIN_RADIUS};
+use crate::scene::{Light, MAX_COORDINATE, MAX_INTENSITY, MIN_NORMAL, MIN_RADIUS};
 
 /// A light's radius in the lab, where it has one: the scene's smallest (a tenth of a
 /// millimetre) to 1 (half the default plane's half-size; larger spheres swallow the view).
@@ -19,10 +19,12 @@ pub fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light
         .shape
         .half_edges()
         .map_or([0.0; 6], |(u, v)| [u.x, u.y, u.z, v.x, v.y, v.z]);
+    let normal = l.shape.normal().map_or([0.0; 3], |n| n.to_array());
     let finite = values
         .chain(l.range)
         .chain([l.shape.radius()])
         .chain(edges)
+        .chain(normal)
         .all(f64::is_finite);
     let before = match (before, finite) {
         (Some(b), _) => *b,
@@ -55,13 +57,17 @@ pub fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light
         let previous = before.range.unwrap_or(*r);
         n.number(&name("range"), r, previous, [1e-6, 2.0 * MAX_COORDINATE]);
     }
-    // A sphere's radius is at least `MIN_RADIUS` (docs/design.md §3).
+    // A sphere's or a disk's radius is at least `MIN_RADIUS` (docs/design.md §3).
     match &mut l.shape {
         Shape::Point => {}
         Shape::Sphere { radius } => {
             n.number(&name("radius"), radius, before.shape.radius(), RADIUS_RANGE);
         }
         Shape::Rect { half_u, half_v } => check_rect(n, &name, (half_u, half_v), &before),
+        Shape::Disk { normal, radius } => {
+            n.number(&name("radius"), radius, before.shape.radius(), RADIUS_RANGE);
+            check_normal(n, &name("normal"), normal, &before);
+        }
     }
     if !has_area(l.shape) {
         let shape = if has_area(before.shape) {
@@ -81,6 +87,28 @@ pub fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light
         l.shape = shape;
     }
     true
+}
+
+/// A disk's normal within the coordinates' limits and of some length (`scene::MIN_NORMAL`):
+/// one of none takes the normal of the disk it replaces, or faces down (−z, toward the plane).
+fn check_normal(n: &mut Notes, name: &str, normal: &mut DVec3, before: &Light) {
+    let coordinate = [-MAX_COORDINATE, MAX_COORDINATE];
+    let previous = before.shape.normal().unwrap_or(*normal);
+    let mut xs = normal.to_array();
+    n.numbers(name, &mut xs, &previous.to_array(), coordinate);
+    *normal = DVec3::from(xs);
+    if normal.length() < MIN_NORMAL {
+        let kept = before
+            .shape
+            .normal()
+            .filter(|b| b.length() >= MIN_NORMAL)
+            .unwrap_or(DVec3::NEG_Z);
+        n.say(format!(
+            "{name}: of length under {MIN_NORMAL:e}, no direction: kept as {:?}",
+            kept.to_array()
+        ));
+        *normal = kept;
+    }
 }
 
 /// Whether a rect spans `scene::check_rect`'s least area (other shapes do).

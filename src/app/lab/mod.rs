@@ -14,8 +14,8 @@ use serde::{Deserialize, Serialize};
 
 pub use part::{Checked, Part, Stamp};
 pub use parts::{
-    Exposure, Forms, LastRefit, Lights, LobeView, Overrides, RectForms, Selection, SideB,
-    SphereForms, Stage, TableId, TableSources, Tables,
+    DiskForms, Exposure, Forms, LastRefit, Lights, LobeView, Overrides, RectForms, Selection,
+    SideB, SphereForms, Stage, TableId, TableSources, Tables,
 };
 
 use crate::gpu::GpuContext;
@@ -165,6 +165,7 @@ parts! {
     forms: Forms;
     spheres: SphereForms;
     rects: RectForms;
+    disks: DiskForms;
     side_b: SideB;
     overrides: Overrides;
     rules: LtcRules;

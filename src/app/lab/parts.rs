@@ -10,6 +10,7 @@ use crate::app::lab::light_check::check_light;
 use crate::app::lab::part::{Checked, notes};
 use crate::app::lab::refit_result::RefitResult;
 use crate::light::Shape;
+use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lobe::Lobe;
@@ -338,6 +339,33 @@ impl Default for RectForms {
 
 /// A choice among the rect methods holds no number.
 impl Checked for RectForms {
+    fn check(&mut self, _: &Self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
+/// How each side of the plane shades disk lights (docs/design.md §1.12).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct DiskForms {
+    /// The LTC side's (and table B's, where two tables are compared).
+    pub ltc: DiskMethod,
+    /// The reference side's.
+    pub brdf: DiskMethod,
+}
+
+impl Default for DiskForms {
+    /// What engines ship (Unity HDRP, EEVEE) against the reference.
+    fn default() -> Self {
+        Self {
+            ltc: DiskMethod::LtcDisk,
+            brdf: DiskMethod::Exact,
+        }
+    }
+}
+
+/// A choice among the disk methods holds no number.
+impl Checked for DiskForms {
     fn check(&mut self, _: &Self) -> Vec<String> {
         Vec::new()
     }

@@ -479,16 +479,19 @@ pub fn render_settings(
     let forms = **lab.forms();
     let spheres = **lab.spheres();
     let rects = **lab.rects();
+    let disks = **lab.disks();
     let tables = **lab.side_b() == SideB::TableB;
     let ltc = ShapeMethods {
         point: forms.ltc,
         sphere: spheres.ltc,
         rect: rects.ltc,
+        disk: disks.ltc,
     };
     let brdf = ShapeMethods {
         point: forms.brdf,
         sphere: spheres.brdf,
         rect: rects.brdf,
+        disk: disks.brdf,
     };
     RenderSettings {
         a: ltc,

@@ -230,6 +230,25 @@ pub fn paint_outlines(
                     painter.line_segment([*p, placed.to_screen(t)], stroke);
                 }
             }
+            Shape::Disk { normal, radius } => {
+                let normal = normal.normalize();
+                let (e1, e2) = normal.any_orthonormal_pair();
+                // 48 chords: under a pixel from the circle for a disk 200 pixels across.
+                let rim: Option<Vec<Pos2>> = (0..=48)
+                    .map(|k| {
+                        let t = std::f64::consts::TAU * k as f64 / 48.0;
+                        let c = centre + (e1 * t.cos() + e2 * t.sin()) * radius;
+                        scene.project(c, width, height).map(|q| placed.to_screen(q))
+                    })
+                    .collect();
+                let Some(rim) = rim else {
+                    continue;
+                };
+                painter.add(egui::Shape::line(rim, stroke));
+                if let Some(t) = scene.project(centre + normal * (0.5 * radius), width, height) {
+                    painter.line_segment([*p, placed.to_screen(t)], stroke);
+                }
+            }
         }
     }
 }

@@ -66,7 +66,7 @@ impl PinnedLights {
             lab.side_b(),
             lab.rules(),
             lab.tables(),
-            (lab.spheres(), lab.rects()),
+            (lab.spheres(), lab.rects(), lab.disks()),
             Own((pinned, size)),
         );
         self.terms.get(
@@ -79,7 +79,7 @@ impl PinnedLights {
                 side_b,
                 rules,
                 tables,
-                (spheres, rects),
+                (spheres, rects, disks),
                 Own((pinned, (width, height))),
             )| {
                 let [u, v] = pinned?;
@@ -90,7 +90,16 @@ impl PinnedLights {
                 let b = (**side_b == SideB::TableB).then_some(&tables.b().lut);
                 let spheres = [spheres.ltc, spheres.brdf];
                 let rects = [rects.ltc, rects.brdf];
-                pixel_terms(&scene, (&tables.a().lut, b), &p, rules, spheres, rects)
+                let disks = [disks.ltc, disks.brdf];
+                pixel_terms(
+                    &scene,
+                    (&tables.a().lut, b),
+                    &p,
+                    rules,
+                    spheres,
+                    rects,
+                    disks,
+                )
             },
         );
     }

@@ -19,17 +19,33 @@ use crate::ltc::{Ltc, Normalization};
 /// sphere). `case2` clips the transformed cone at the clamped cosine's horizon (eq. 30's
 /// second rule); off, the integral is the signed one, and negative where the cone lies below.
 pub fn ltc_disk(ltc: &Ltc, cap: &Cap, case2: bool, normalization: Normalization) -> f64 {
-    // The hemisphere about `p` maps to the one about `Mᵀp` (`(Mω')·p > 0`), of form factor 1:
-    // the upper hemisphere is the cap of a point inside the sphere, and the hemisphere about
-    // the axis the limit of a cap opened too far for its cone's algebra (`cos σ` near 0).
-    let hemisphere = |p: DVec3| ((ltc.brdf_from_cos.transpose() * p).normalize(), 1.0);
     let (axis, form_factor) = if cap.encloses() {
-        hemisphere(DVec3::Z)
+        hemisphere(ltc, DVec3::Z)
     } else {
         Some(transformed_cone(ltc, cap))
             .filter(|(axis, ff)| axis.is_finite() && ff.is_finite())
-            .unwrap_or_else(|| hemisphere(cap.axis))
+            .unwrap_or_else(|| hemisphere(ltc, cap.axis))
     };
+    cone_integral(axis, form_factor, case2, normalization)
+}
+
+/// The image under `M⁻¹` of the hemisphere about `p`, as a cone's axis and form factor: the
+/// one about `Mᵀp` (`(Mω')·p > 0`), of form factor 1. The upper hemisphere is the cap of a
+/// point inside the sphere, and the hemisphere about the axis the limit of a cap (or a disk
+/// light's cone) opened too far for its cone's algebra.
+pub fn hemisphere(ltc: &Ltc, p: DVec3) -> (DVec3, f64) {
+    ((ltc.brdf_from_cos.transpose() * p).normalize(), 1.0)
+}
+
+/// The clamped cosine's integral over a cone of this unit axis and form factor (the cone's
+/// image under `M⁻¹`): `case2` clips it at the cosine's horizon as the sphere of the same
+/// vector form factor (eq. 30's second rule); off, the signed `F·z`, negative below.
+pub fn cone_integral(
+    axis: DVec3,
+    form_factor: f64,
+    case2: bool,
+    normalization: Normalization,
+) -> f64 {
     let integral = if case2 {
         illuminance_sphere(axis.z, form_factor.clamp(0.0, 1.0)) / PI
     } else {
@@ -55,7 +71,15 @@ pub fn transformed_cone(ltc: &Ltc, cap: &Cap) -> (DVec3, f64) {
     let a = cap.axis;
     let (t1, t2) = a.any_orthonormal_pair();
     let (s, c) = (cap.sin_sigma, cap.cos_sigma);
-    let b = ltc.cos_from_brdf * DMat3::from_cols(t1 * s, t2 * s, a * c);
+    cone_image(ltc, DMat3::from_cols(t1 * s, t2 * s, a * c), a)
+}
+
+/// The axis (oriented as `M⁻¹ towards`) and form factor of the image under `M⁻¹` of the cone
+/// over the ellipse `C + x V₁ + y V₂` (`x² + y² ≤ 1`), `basis = [V₁ V₂ C]`: a sphere's cap
+/// (`transformed_cone`) or a disk light (`light::disk`), whose half-axes and centre it is.
+pub fn cone_image(ltc: &Ltc, basis: DMat3, towards: DVec3) -> (DVec3, f64) {
+    let a = towards;
+    let b = ltc.cos_from_brdf * basis;
     let b_inv = b.inverse();
     let q = b_inv.transpose() * DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0)) * b_inv;
     let det = -1.0 / b.determinant().powi(2);
