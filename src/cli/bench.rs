@@ -45,7 +45,11 @@ pub struct Args {
     /// units, ≥ 1e-4), by each rect method, in the same run (docs/design.md §1.11).
     #[arg(long)]
     rect_half_edge: Option<f64>,
-    /// Leave out the exact method of spheres and rects: the reference, whose 64 to 320 BRDF
+    /// Also time every light as a disk of this radius facing the plane (scene units, ≥ 1e-4),
+    /// by each disk method, in the same run (docs/design.md §1.12).
+    #[arg(long)]
+    disk_radius: Option<f64>,
+    /// Leave out the exact method of spheres, rects and disks: the reference, whose 64 to 320 BRDF
     /// evaluations per light take seconds a frame on a CPU adapter.
     #[arg(long)]
     skip_exact: bool,
@@ -58,6 +62,9 @@ pub fn run(a: &Args) -> Result<()> {
     }
     if let Some(h) = a.rect_half_edge {
         check_size("--rect-half-edge", h)?;
+    }
+    if let Some(r) = a.disk_radius {
+        check_size("--disk-radius", r)?;
     }
     if let Some(p) = &a.csv {
         // Refuse a bad path before minutes of measuring.
@@ -88,6 +95,7 @@ pub fn run(a: &Args) -> Result<()> {
         horizons: a.horizon.clone(),
         sphere_radius: a.sphere_radius,
         rect_half_edge: a.rect_half_edge,
+        disk_radius: a.disk_radius,
         skip_exact: a.skip_exact,
     };
     let rows = ltc_lab::measure::bench::run(&ctx, &lut, &settings, |r| {

@@ -35,6 +35,7 @@ pub enum Sizing {
     Point,
     Sphere(SphereMethod),
     Rect(RectMethod),
+    Disk(DiskMethod),
 }
 
 impl Sizing {
@@ -44,6 +45,7 @@ impl Sizing {
             Self::Point => "point",
             Self::Sphere(_) => "sphere",
             Self::Rect(_) => "rect",
+            Self::Disk(_) => "disk",
         }
     }
 
@@ -54,6 +56,7 @@ impl Sizing {
             Self::Point => "",
             Self::Sphere(m) => m.name(),
             Self::Rect(m) => m.name(),
+            Self::Disk(m) => m.name(),
         }
     }
 }
@@ -129,6 +132,7 @@ impl BenchRow {
         match (self.sizing, self.horizon) {
             (Sizing::Sphere(m), _) => format!("{} (r = {})", m.name(), self.size),
             (Sizing::Rect(m), _) => format!("rect {} (h = {})", m.name(), self.size),
+            (Sizing::Disk(m), _) => format!("disk {} (r = {})", m.name(), self.size),
             (Sizing::Point, Horizon::Eq30) => self.method.name().to_string(),
             (Sizing::Point, h) => format!("{} ({})", self.method.name(), h.name()),
         }
@@ -246,6 +250,8 @@ pub struct BenchSettings {
     /// Also every light as a square rect of this half-edge facing the plane, by each rect
     /// method.
     pub rect_half_edge: Option<f64>,
+    /// Also every light as a disk of this radius facing the plane, by each disk method.
+    pub disk_radius: Option<f64>,
     /// Leave out the sized lights' exact methods (the reference, not a real-time method).
     pub skip_exact: bool,
 }
@@ -294,15 +300,22 @@ fn all_runs(ctx: &GpuContext, s: &BenchSettings) -> Vec<Run> {
         .rect_half_edge
         .iter()
         .flat_map(|_| RectMethod::ALL.map(|m| sized(Sizing::Rect(m))));
+    let disks = s
+        .disk_radius
+        .iter()
+        .flat_map(|_| DiskMethod::ALL.map(|m| sized(Sizing::Disk(m))));
     let exact = |r: &Run| {
         matches!(
             r.2,
-            Sizing::Sphere(SphereMethod::Exact) | Sizing::Rect(RectMethod::Exact)
+            Sizing::Sphere(SphereMethod::Exact)
+                | Sizing::Rect(RectMethod::Exact)
+                | Sizing::Disk(DiskMethod::Exact)
         )
     };
     points
         .chain(spheres)
         .chain(rects)
+        .chain(disks)
         .filter(|r| !(s.skip_exact && exact(r)))
         .collect()
 }
@@ -318,6 +331,18 @@ pub fn as_rects(scene: &Scene, h: f64) -> Scene {
         };
     }
     rects
+}
+
+/// `scene` with every light a disk of radius `r` facing down onto the plane.
+pub fn as_disks(scene: &Scene, r: f64) -> Scene {
+    let mut disks = scene.clone();
+    for l in &mut disks.lights {
+        l.shape = Shape::Disk {
+            normal: DVec3::NEG_Z,
+            radius: r,
+        };
+    }
+    disks
 }
 
 /// Measures every method (and remedy) at every light count and culling: `frames` timed
@@ -341,12 +366,14 @@ pub fn run(
             l.shape = Shape::of_radius(s.sphere_radius.unwrap_or(0.0));
         }
         let rects = as_rects(&points, s.rect_half_edge.unwrap_or(0.0));
+        let disks = as_disks(&points, s.disk_radius.unwrap_or(1.0));
         for &cull in &s.culls {
             for (method, horizon, sizing) in all_runs(ctx, s) {
                 let (scene, size) = match sizing {
                     Sizing::Point => (&points, 0.0),
                     Sizing::Sphere(_) => (&spheres, s.sphere_radius.unwrap_or(0.0)),
                     Sizing::Rect(_) => (&rects, s.rect_half_edge.unwrap_or(0.0)),
+                    Sizing::Disk(_) => (&disks, s.disk_radius.unwrap_or(0.0)),
                 };
                 let table = horizon.table().map_or(lut, |t| Lut::shipped(t));
                 renderer.set_tables(ctx, table, None)?;
@@ -366,7 +393,10 @@ pub fn run(
                             Sizing::Rect(m) => m,
                             _ => RectMethod::LtcPoint,
                         },
-                        disk: DiskMethod::LtcPoint,
+                        disk: match sizing {
+                            Sizing::Disk(m) => m,
+                            _ => DiskMethod::LtcPoint,
+                        },
                     },
                     ..RenderSettings::single(width, height, method)
                 };
@@ -524,6 +554,20 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
         let pair = (
             Sizing::Rect(RectMethod::LtcPolygon),
             Sizing::Rect(RectMethod::LtcPoint),
+        );
+        out.push_str(&sized_markdown(
+            rows,
+            (&keys, &title),
+            (&methods, pair),
+            &ms,
+        ));
+    }
+    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Disk(_))) {
+        let methods = DiskMethod::ALL.map(Sizing::Disk);
+        let title = format!("every light a disk of radius {}, facing the plane", r.size);
+        let pair = (
+            Sizing::Disk(DiskMethod::LtcDisk),
+            Sizing::Disk(DiskMethod::LtcPoint),
         );
         out.push_str(&sized_markdown(
             rows,

@@ -255,3 +255,60 @@ fn the_horizon_choice_shades_with_a_remedy() {
     assert!(h.state().lab().tables().a().name.contains("classic"));
     assert_eq!(h.state().lab().horizon_remedy(), Horizon::Eq30);
 }
+
+/// The rect view under the pictures: a rect across the horizon clipped at the surface's
+/// horizon and, mapped by M^-1, at the cosine's, with ∫ D over it by the lab's rules as the
+/// library computes it; turning case 1 off lets part of the rect below the surface through
+/// (ltc_code's leak), which the view reads out and the rules' value then includes.
+#[test]
+fn the_clipping_panel_clips_a_rect_at_both_horizons() {
+    use ltc_lab::app::clipping::polygon::{readings, shown_lobe, shown_polygon};
+    use ltc_lab::app::lab::TableId;
+    let Some(mut h) = lab((1200.0, 1100.0), maximised(PanelId::Clipping)) else {
+        return;
+    };
+    // Below the pictures: scrolled to, as a user does, then opened.
+    h.get_by_label("rect clipping: P and M^-1 P").scroll_to_me();
+    h.run_steps(4);
+    h.get_by_label("rect clipping: P and M^-1 P").click();
+    settle(&mut h);
+    h.run_steps(4);
+    h.query_all_by_label_contains("by the lab's rules")
+        .next()
+        .expect("the view opened")
+        .scroll_to_me();
+    h.run_steps(2);
+    let said = |h: &Harness<'static, LabApp>| {
+        let lab = h.state().lab();
+        let (corners, pinned) = shown_polygon(lab.lobe_view());
+        assert!(!pinned, "no pixel is pinned: the leaning rect");
+        let ltc = shown_lobe(lab, TableId::A);
+        let r = readings(&ltc, &corners, lab.rules().clipping);
+        let first = h
+            .query_all_by_label_contains(&format!("{:.4} by the lab's rules", r[0]))
+            .next()
+            .is_some();
+        let second = shows(
+            h,
+            &format!(
+                "unclipped (signed): {:.4} · proxy (ltc-proxy): {:.4} · case 1 off adds {:.4} (the leak)",
+                r[1], r[2], r[3]
+            ),
+        );
+        (first && second, r)
+    };
+    let (ok, on) = said(&h);
+    assert!(ok, "the readings with both rules on are not shown");
+    assert!(
+        on[3] > 0.0,
+        "the rect across the horizon leaks with case 1 off: {on:?}"
+    );
+    h.get_by_label_contains("case 1 rule").click();
+    settle(&mut h);
+    let (ok, off) = said(&h);
+    assert!(ok, "the readings with case 1 off are not shown");
+    assert!(
+        (off[0] - (on[0] + on[3])).abs() <= 1e-12 * off[0],
+        "case 1 off: the rules' value is the clipped one plus the leak"
+    );
+}

@@ -14,11 +14,15 @@ use crate::gpu::plane::ShaderChecks;
 use crate::gpu::plane_render::{Kept, PlaneRender};
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::target::PendingRead;
+use crate::light::Shape;
+use crate::light::disk::DiskMethod;
+use crate::light::rect::RectMethod;
+use crate::light::sphere::SphereMethod;
 use crate::ltc::Normalization;
 use crate::ltc::lut::Lut;
 use crate::measure::bench::{DEFAULT_RANGE, PAPER_LIGHTS, bench_scene};
 use crate::metrics::image_error;
-use crate::render::{Frame, LtcRules, Method, RenderSettings};
+use crate::render::{Frame, LtcRules, Method, RenderSettings, ShapeMethods};
 use crate::scene::Scene;
 
 /// Size of the measured frames: small enough for a CPU driver to finish in seconds.
@@ -187,6 +191,9 @@ fn study_scaling(rows: &[crate::measure::study::StudyRow]) -> Vec<(Method, Vec<[
 /// One render to time: a point of the error chart, or of the fps curves.
 struct Task {
     label: String,
+    /// The point form the point stands for (`None`: a shape's method, whose points are
+    /// ltc-fast's).
+    method: Option<Method>,
     scene: Scene,
     settings: RenderSettings,
     /// (method, lights) of an fps curve; `None` for an error point.
@@ -238,6 +245,14 @@ impl MeasureJob {
             PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
         let (w, h) = MEASURE_SIZE;
         let mut tasks = Vec::new();
+        // The reference shades every light exactly, whatever its shape; the LTC forms shade
+        // lights with a size by the lab's defaults (ltc-disk, ltc-polygon, ltc-disk).
+        let exact = ShapeMethods {
+            point: Method::Brdf,
+            sphere: SphereMethod::Exact,
+            rect: RectMethod::Exact,
+            disk: DiskMethod::Exact,
+        };
         for (label, method, normalization) in [
             ("brdf", Method::Brdf, Normalization::Corrected),
             ("brdf-fast", Method::BrdfFast, Normalization::Corrected),
@@ -245,23 +260,72 @@ impl MeasureJob {
             ("ltc-fast", Method::LtcFast, Normalization::Corrected),
             ("ltc-paper", Method::Ltc, Normalization::PaperLiteral),
         ] {
+            let single = RenderSettings::single(w, h, method);
+            let a = if method.is_ltc() {
+                single.a
+            } else {
+                ShapeMethods {
+                    point: method,
+                    ..exact
+                }
+            };
             tasks.push(Task {
                 label: label.into(),
+                method: Some(method),
                 scene: scene.clone(),
                 settings: RenderSettings {
                     rules: LtcRules {
                         normalization,
                         ..LtcRules::default()
                     },
-                    ..RenderSettings::single(w, h, method)
+                    a,
+                    ..single
                 },
                 curve: None,
             });
+        }
+        // Each method of each shape the scene holds, its points by ltc-fast and its other
+        // sized lights by the defaults: what that shape's method costs and misses.
+        let fast = RenderSettings::single(w, h, Method::LtcFast);
+        let has = |shape: fn(&Shape) -> bool| scene.lights.iter().any(|l| shape(&l.shape));
+        let mut sized = |label: String, a: ShapeMethods| {
+            tasks.push(Task {
+                label,
+                method: None,
+                scene: scene.clone(),
+                settings: RenderSettings { a, ..fast },
+                curve: None,
+            });
+        };
+        if has(|s| matches!(s, Shape::Sphere { .. })) {
+            for sphere in SphereMethod::ALL.into_iter().skip(1) {
+                sized(
+                    format!("sphere {}", sphere.name()),
+                    ShapeMethods { sphere, ..fast.a },
+                );
+            }
+        }
+        if has(|s| matches!(s, Shape::Rect { .. })) {
+            for rect in RectMethod::ALL.into_iter().skip(1) {
+                sized(
+                    format!("rect {}", rect.name()),
+                    ShapeMethods { rect, ..fast.a },
+                );
+            }
+        }
+        if has(|s| matches!(s, Shape::Disk { .. })) {
+            for disk in DiskMethod::ALL.into_iter().skip(1) {
+                sized(
+                    format!("disk {}", disk.name()),
+                    ShapeMethods { disk, ..fast.a },
+                );
+            }
         }
         for method in Method::F32 {
             for &n in &PAPER_LIGHTS {
                 tasks.push(Task {
                     label: format!("{} at {n} lights", method.name()),
+                    method: Some(method),
                     scene: bench_scene(n, Some(DEFAULT_RANGE)),
                     settings: RenderSettings::single(w, h, method),
                     curve: Some((method, n)),
@@ -417,14 +481,14 @@ impl MeasureJob {
     }
 
     /// An error point from its image, read back: its error against the first image (the
-    /// exact BRDF's).
+    /// exact BRDF's, every light with a size by its exact integral).
     fn error_point(&mut self, frame: &Frame, median: f64, range: [f64; 2]) -> Option<Measurement> {
         let exact = self.exact.get_or_insert_with(|| frame.clone());
         let rel_rmse = image_error(frame, exact).rel_rmse;
         let task = &self.tasks[self.next];
         self.result.points.push(Point {
             label: task.label.clone(),
-            method: Some(task.settings.a.point),
+            method: task.method,
             ms: median,
             rel_rmse,
             ms_range: Some(range),

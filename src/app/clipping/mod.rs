@@ -3,10 +3,12 @@
 //! each picture exposed to its own content with its factor printed, negative light in the
 //! diverging map; each case's four-class case map with a legend and counts; and a profile
 //! along a line dragged on any picture (by default through the case's strongest artifact) on
-//! a symmetric log axis. The rules are the lab's own; α, the light and the table are edited
-//! here.
+//! a symmetric log axis; below, a rect's polygon clipped at the surface's horizon and its
+//! image under M^-1 at the cosine's (`polygon`). The rules are the lab's own; α, the light and
+//! the table are edited here.
 
 pub mod elevation;
+pub mod polygon;
 pub mod rows;
 pub mod setup;
 
@@ -64,6 +66,9 @@ impl Panel for ClippingPanel {
                     ui.separator();
                     self.elevation.show(ui, lab, self.state.setup.table);
                 }
+                ui.separator();
+                egui::CollapsingHeader::new("rect clipping: P and M^-1 P")
+                    .show(ui, |ui| polygon::show(ui, lab, self.state.setup.table));
             });
     }
 
