@@ -58,13 +58,13 @@ pub struct Args {
 pub fn run(a: &Args) -> Result<()> {
     check_frames_and_lights(a.frames, &a.lights)?;
     if let Some(r) = a.sphere_radius {
-        check_size("--sphere-radius", r)?;
+        super::check_size("--sphere-radius", r)?;
     }
     if let Some(h) = a.rect_half_edge {
-        check_size("--rect-half-edge", h)?;
+        super::check_size("--rect-half-edge", h)?;
     }
     if let Some(r) = a.disk_radius {
-        check_size("--disk-radius", r)?;
+        super::check_size("--disk-radius", r)?;
     }
     if let Some(p) = &a.csv {
         // Refuse a bad path before minutes of measuring.
@@ -116,18 +116,4 @@ pub fn run(a: &Args) -> Result<()> {
         write_atomically(p, text.as_bytes())?;
     }
     print(&ltc_lab::measure::bench::markdown(&rows, &device))
-}
-
-/// `--sphere-radius` and `--rect-half-edge`: a size a scene's light may have, and not 0 (that
-/// is the point rows): a radius of at least `MIN_RADIUS`, a square of half-edge at least
-/// `MIN_RADIUS` (so `|half_u × half_v| ≥ MIN_RADIUS²`, as a scene requires).
-fn check_size(flag: &str, r: f64) -> Result<()> {
-    let (lo, hi) = (ltc_lab::scene::MIN_RADIUS, ltc_lab::scene::MAX_COORDINATE);
-    if (lo..=hi).contains(&r) {
-        return Ok(());
-    }
-    Err(ltc_lab::error::Error::input(
-        flag,
-        format!("must be in [{lo}, {hi}] scene units, got {r}"),
-    ))
 }

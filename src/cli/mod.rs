@@ -294,3 +294,18 @@ pub fn print(text: &str) -> Result<()> {
         Ok(()) => Ok(()),
     }
 }
+
+/// `--sphere-radius`, `--rect-half-edge` and `--disk-radius` (bench, study): a size a scene's
+/// light may have, and not 0 (that is the point rows): a radius of at least `MIN_RADIUS`, a
+/// square of half-edge at least `MIN_RADIUS` (so `|half_u × half_v| ≥ MIN_RADIUS²`, as a
+/// scene requires).
+pub(crate) fn check_size(flag: &str, r: f64) -> Result<()> {
+    let (lo, hi) = (ltc_lab::scene::MIN_RADIUS, ltc_lab::scene::MAX_COORDINATE);
+    if (lo..=hi).contains(&r) {
+        return Ok(());
+    }
+    Err(ltc_lab::error::Error::input(
+        flag,
+        format!("must be in [{lo}, {hi}] scene units, got {r}"),
+    ))
+}

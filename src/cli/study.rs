@@ -54,10 +54,25 @@ pub struct Args {
     /// 0.02–0.15 above it, most of them within 15° of the horizon where they shade.
     #[arg(long, default_value = "paper-100", value_parser = ["paper-100", "low-lights"])]
     scene: String,
+    /// Also every light a square rect of this half-edge facing the plane (scene units, ≥ 1e-4),
+    /// by each rect method against the rects' exact integral: variants rect-<method>
+    /// (docs/design.md §1.11).
+    #[arg(long)]
+    rect_half_edge: Option<f64>,
+    /// Also every light a disk of this radius facing the plane (scene units, ≥ 1e-4), by each
+    /// disk method against the disks' exact integral: variants disk-<method> (§1.12).
+    #[arg(long)]
+    disk_radius: Option<f64>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
     check_frames_and_lights(a.frames, &a.lights)?;
+    if let Some(h) = a.rect_half_edge {
+        super::check_size("--rect-half-edge", h)?;
+    }
+    if let Some(r) = a.disk_radius {
+        super::check_size("--disk-radius", r)?;
+    }
     // The scene's range: a material below α_min is refused everywhere else.
     let alphas = ALPHA_MIN..=1.0;
     if let Some(&alpha) = a.alpha.iter().find(|x| !alphas.contains(*x)) {
@@ -94,6 +109,8 @@ pub fn run(a: &Args) -> Result<()> {
         } else {
             ltc_lab::measure::bench::PAPER_HEIGHTS
         },
+        rect_half_edge: a.rect_half_edge,
+        disk_radius: a.disk_radius,
     };
     let rows = study::run(&ctx, &lut, &settings, |r| {
         eprintln!(

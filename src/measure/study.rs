@@ -6,12 +6,15 @@ use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
+use crate::light::disk::DiskMethod;
+use crate::light::rect::RectMethod;
 use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::{Lut, Table};
 use crate::ltc::remedy::Horizon;
 use crate::ltc::{Clipping, Normalization};
+use crate::measure::bench::{as_disks, as_rects};
 use crate::metrics::image_error;
-use crate::render::{LtcRules, LutFilter, Method, RenderSettings};
+use crate::render::{Frame, LtcRules, LutFilter, Method, RenderSettings, ShapeMethods};
 use crate::scene::Scene;
 
 /// Which table a variant shades with.
@@ -251,6 +254,33 @@ pub struct StudySettings {
     pub horizons: Vec<Horizon>,
     /// The lights' heights above the plane (paper-100's, or a scene whose lights sit low).
     pub heights: [f64; 2],
+    /// Also every light a square rect of this half-edge facing the plane, by each rect method
+    /// against the rects' exact integral (variants `rect-<method>`).
+    pub rect_half_edge: Option<f64>,
+    /// Also every light a disk of this radius facing the plane, by each disk method against
+    /// the disks' exact integral (variants `disk-<method>`).
+    pub disk_radius: Option<f64>,
+}
+
+/// The sized variants of a study: each shape asked for, its scene (the study's lights as that
+/// shape) and its methods by name, the exact one first (each shape's reference, error 0), the
+/// points by ltc-fast.
+fn sized_variants(s: &StudySettings, scene: &Scene) -> Vec<(Scene, Vec<(String, ShapeMethods)>)> {
+    let a = RenderSettings::single(1, 1, Method::LtcFast).a;
+    let mut out = Vec::new();
+    if let Some(h) = s.rect_half_edge {
+        let methods = RectMethod::ALL
+            .map(|rect| (format!("rect-{}", rect.name()), ShapeMethods { rect, ..a }))
+            .to_vec();
+        out.push((as_rects(scene, h), methods));
+    }
+    if let Some(r) = s.disk_radius {
+        let methods = DiskMethod::ALL
+            .map(|disk| (format!("disk-{}", disk.name()), ShapeMethods { disk, ..a }))
+            .to_vec();
+        out.push((as_disks(scene, r), methods));
+    }
+    out
 }
 
 /// The heights of the study's scene whose lights sit low: most pixels see most of their
@@ -317,35 +347,79 @@ pub fn run(
                         cull,
                         ..RenderSettings::single(width, height, v.method)
                     };
-                    let mut render = renderer.begin(ctx, &scene, &settings, None)?;
-                    render.run(ctx);
-                    let mut ms: Vec<f64> = (0..s.frames.max(1))
-                        .map(|_| render.run(ctx).total_ms())
-                        .collect();
-                    ms.sort_by(f64::total_cmp);
-                    let image = render.read(ctx)?;
+                    let (ms, image) = timed(ctx, renderer, &scene, &settings, s.frames)?;
                     let reference = exact.get_or_insert_with(|| image.clone());
-                    let e = image_error(&image, reference);
-                    let row = StudyRow {
-                        variant: v.name.into(),
-                        alpha,
-                        lights,
-                        width,
-                        height,
-                        cull,
-                        range: s.range,
-                        ms_median: ms[ms.len() / 2],
-                        rel_rmse: e.rel_rmse,
-                        max_rel_err: e.max_rel,
-                        p99_rel_err: e.p99_rel,
-                    };
+                    let row = row(v.name, (alpha, lights, cull), s, ms, &image, reference);
                     progress(&row);
                     rows.push(row);
+                }
+                // The lights with a size, each shape against its own exact image.
+                let shipped = renderers
+                    .iter()
+                    .position(|(c, _)| *c == LutChoice::Shipped)
+                    .expect("brdf shades with the shipped table");
+                for (shaped, methods) in sized_variants(s, &scene) {
+                    let mut exact = None;
+                    for (name, a) in methods {
+                        let settings = RenderSettings {
+                            cull,
+                            a,
+                            ..RenderSettings::single(width, height, Method::LtcFast)
+                        };
+                        let renderer = &mut renderers[shipped].1;
+                        let (ms, image) = timed(ctx, renderer, &shaped, &settings, s.frames)?;
+                        let reference = exact.get_or_insert_with(|| image.clone());
+                        let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
+                        progress(&row);
+                        rows.push(row);
+                    }
                 }
             }
         }
     }
     Ok(rows)
+}
+
+/// One render of `scene` timed: the median GPU ms of `frames` after one warm-up, and its image.
+fn timed(
+    ctx: &GpuContext,
+    renderer: &mut PlaneRenderer,
+    scene: &Scene,
+    settings: &RenderSettings,
+    frames: usize,
+) -> Result<(f64, Frame)> {
+    let mut render = renderer.begin(ctx, scene, settings, None)?;
+    render.run(ctx);
+    let mut ms: Vec<f64> = (0..frames.max(1))
+        .map(|_| render.run(ctx).total_ms())
+        .collect();
+    ms.sort_by(f64::total_cmp);
+    Ok((ms[ms.len() / 2], render.read(ctx)?))
+}
+
+/// The row of a variant's render: its time and its image's error against `reference`.
+fn row(
+    variant: &str,
+    (alpha, lights, cull): (f64, usize, bool),
+    s: &StudySettings,
+    ms_median: f64,
+    image: &Frame,
+    reference: &Frame,
+) -> StudyRow {
+    let e = image_error(image, reference);
+    StudyRow {
+        variant: variant.into(),
+        alpha,
+        lights,
+        width: s.size.0,
+        height: s.size.1,
+        cull,
+        range: s.range,
+        ms_median,
+        rel_rmse: e.rel_rmse,
+        max_rel_err: e.max_rel,
+        p99_rel_err: e.p99_rel,
+    }
 }
 
 /// The rows as CSV text.

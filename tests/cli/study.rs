@@ -94,6 +94,51 @@ fn study_writes_every_variant_and_the_pareto_chart() {
     );
 }
 
+/// With `--rect-half-edge` and `--disk-radius` every light is also a rect, then a disk, by
+/// each of the shape's methods against the shape's own exact image: its `exact` variant is
+/// the reference (error 0), the others differ from it, and the point limit by far the most
+/// on rects this close to the plane (the lights sit 0.05–0.6 above it, the rects 0.1 wide).
+#[test]
+fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
+    if gpu().is_none() {
+        return;
+    }
+    let root = tempfile::tempdir().unwrap();
+    let dir = root.path().join("sized");
+    let mut args = vec!["study", "--out", dir.to_str().unwrap(), "--horizon", "eq30"];
+    args.extend(SMALL);
+    args.extend(["--rect-half-edge", "0.05", "--disk-radius", "0.05"]);
+    let o = ltc_lab(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows = ltc_lab::measure::study::read_csv(&dir.join("study.csv")).unwrap();
+    let sized: Vec<&str> = rows
+        .iter()
+        .map(|r| r.variant.as_str())
+        .filter(|v| v.starts_with("rect-") || v.starts_with("disk-"))
+        .collect();
+    assert_eq!(
+        sized,
+        [
+            "rect-exact",
+            "rect-ltc-polygon",
+            "rect-ltc-proxy",
+            "rect-ltc-proxy-fast",
+            "rect-ltc-point",
+            "disk-exact",
+            "disk-ltc-disk",
+            "disk-ltc-point",
+        ]
+    );
+    let err = |v: &str| rows.iter().find(|r| r.variant == v).unwrap().rel_rmse;
+    assert_eq!(err("rect-exact"), 0.0);
+    assert_eq!(err("disk-exact"), 0.0);
+    for v in sized.iter().filter(|v| !v.ends_with("-exact")) {
+        assert!(err(v).is_finite() && err(v) > 0.0, "{v}: {}", err(v));
+    }
+    assert!(err("rect-ltc-point") > 2.0 * err("rect-ltc-polygon"));
+    assert!(err("disk-ltc-point") > 2.0 * err("disk-ltc-disk"));
+}
+
 #[test]
 fn study_refuses_bad_arguments() {
     for (args, what) in [
@@ -104,6 +149,8 @@ fn study_refuses_bad_arguments() {
         (vec!["--lights", "0"], "--lights"),
         (vec!["--frames", "0"], "--frames"),
         (vec!["--frames", "10000000000"], "--frames"),
+        (vec!["--rect-half-edge", "0"], "--rect-half-edge"),
+        (vec!["--disk-radius", "nan"], "--disk-radius"),
     ] {
         let mut all = vec!["study", "--out", "/tmp/never-study"];
         all.extend(args);
