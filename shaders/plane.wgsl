@@ -3,8 +3,9 @@
 // of each pixel's light list (all lights, or the tile's list when culling), the sums kept per
 // pixel between chunks, so that the lab can spread a render over frames; `resolve` turns the
 // sums into the image. Composed after brdf.wgsl, ltc.wgsl, sphere_light.wgsl,
-// rect_light.wgsl and scene.wgsl. The CPU reference is
-// src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
+// rect_light.wgsl, disk_light.wgsl, scene.wgsl and light_shape.wgsl (each light by its
+// shape: add_light). The CPU reference is src/cpu.rs; the Rust side of this file is
+// src/gpu/plane.rs.
 
 // Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
 const METHOD_BRDF: u32 = 0u;      // the exact BRDF as docs/design.md §1 writes it
@@ -13,25 +14,6 @@ const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻�
 const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnormalized u, eq. 27
 const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
 const METHOD_LTC_F16_PAIRS: u32 = 5u; // the same, two lights per vec2<f16> (ltc_f16.wgsl)
-
-// How a side shades a light with a size (src/light/sphere/mod.rs SphereMethod; src/gpu/plane.rs
-// sphere_constant).
-const SPHERE_EXACT: u32 = 0u;                // the BRDF over the cap (sphere_light.wgsl)
-const SPHERE_LTC_POINT: u32 = 1u;            // the paper's point formula at the centre
-const SPHERE_LTC_DISK: u32 = 2u;             // Heitz & Hill 2017's LTC disk
-const SPHERE_REPRESENTATIVE_POINT: u32 = 3u; // Karis 2013
-
-// How a side shades a rect (src/light/rect/mod.rs RectMethod; src/gpu/plane.rs rect_constant).
-const RECT_EXACT: u32 = 0u;          // the BRDF over the rect above the surface (rect_light.wgsl)
-const RECT_LTC_POLYGON: u32 = 1u;    // Heitz et al. 2016: clipped, M⁻¹, Lambert's edge formula
-const RECT_LTC_PROXY: u32 = 2u;      // Heitz & Hill 2017: the sphere of the same form factor
-const RECT_LTC_PROXY_FAST: u32 = 3u; // three.js's closed form of the proxy
-const RECT_LTC_POINT: u32 = 4u;      // the centre as an oriented point light
-
-// How a side shades a disk (src/light/disk/mod.rs DiskMethod; src/gpu/plane.rs disk_constant).
-const DISK_EXACT: u32 = 0u;     // the BRDF over the disk above the surface (disk_light.wgsl)
-const DISK_LTC_DISK: u32 = 1u;  // Heitz & Hill 2017: the disk's cone mapped by M⁻¹
-const DISK_LTC_POINT: u32 = 2u; // the centre as an oriented point light
 
 // What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
@@ -47,21 +29,6 @@ override VIEW: u32 = VIEW_SINGLE;
 override TABLE_B: bool = false;
 // What the LTC methods do for lights near the horizon (HORIZON_* of ltc.wgsl).
 override HORIZON: u32 = HORIZON_EQ30;
-// Some light is not a point: without one, the light loop has no test of the shape at all.
-override SIZED: bool = false;
-// How A and B shade the lights with a size: constants too, so that a pipeline holds only the
-// sphere methods it uses (the exact one's loops would weigh on every other's registers).
-override SPHERE_A: u32 = SPHERE_LTC_DISK;
-override SPHERE_B: u32 = SPHERE_EXACT;
-// Some light is a rect, and how A and B shade rects (constants for the same reason).
-override RECTS: bool = false;
-override RECT_A: u32 = RECT_LTC_POLYGON;
-override RECT_B: u32 = RECT_EXACT;
-// Some light is a disk, and how A and B shade disks.
-override DISKS: bool = false;
-override DISK_A: u32 = DISK_LTC_DISK;
-override DISK_B: u32 = DISK_EXACT;
-
 @group(0) @binding(3) var output: texture_storage_2d<rgba32float, write>;
 // Per pixel, the sums so far, kept between chunks: A's specular rgb and diffuse r; A's diffuse
 // gb and B's specular rg; B's specular b and diffuse rgb (three buffers, so that each stays
@@ -283,140 +250,6 @@ fn add_brdf_factored(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, light: G
 // Whether a method sums ltc-fast's factored terms, which `finish` multiplies by the pixel's factors.
 fn is_factored(method: u32) -> bool {
     return method == METHOD_LTC_FAST || method == METHOD_LTC_F16 || method == METHOD_LTC_F16_PAIRS;
-}
-
-// A light with a size by the side's sphere method (src/cpu.rs sphere_term), in the shading
-// frame; into factored sums divided by the factors, as add_brdf_factored does.
-fn add_sphere(
-    method: u32,
-    sphere: u32,
-    s: ptr<function, Sums>,
-    p: Pixel,
-    ltc: LtcShading,
-    light: GpuLight,
-) {
-    let shading = SphereShading(
-        p.v_tangent,
-        p.tangent_from_world * (light.position_range.xyz - p.x),
-        1.0,
-        light.position_range.w,
-        light.intensity.w,
-        params.alpha,
-        params.f0,
-        params.clip,
-        params.normalization,
-    );
-    let cap = cap_of_sphere(shading.u, shading.radius);
-    var lobes: vec2<f32>;
-    if cap.sin_sigma < POINT_LIMIT_SIN_SIGMA {
-        let exact = sphere == SPHERE_EXACT || sphere == SPHERE_REPRESENTATIVE_POINT;
-        lobes = sphere_point(shading, ltc.pair, exact);
-    } else {
-        switch sphere {
-            case SPHERE_EXACT: { lobes = sphere_exact(shading, cap); }
-            case SPHERE_LTC_DISK: { lobes = sphere_ltc_disk(shading, ltc.pair, cap); }
-            case SPHERE_REPRESENTATIVE_POINT: { lobes = sphere_representative_point(shading, cap); }
-            default: { lobes = sphere_ltc_point(shading, ltc.pair); }
-        }
-    }
-    if is_factored(method) {
-        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
-    }
-    (*s).spec += light.intensity.rgb * lobes.x;
-    (*s).diff += light.intensity.rgb * lobes.y;
-}
-
-// A rect by the side's rect method (src/cpu.rs rect_term): its radiance I/A times the
-// unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
-fn add_rect(
-    method: u32,
-    rect: u32,
-    s: ptr<function, Sums>,
-    p: Pixel,
-    ltc: LtcShading,
-    light: GpuLight,
-) {
-    let edges = rect_half_edges(light);
-    let centre = light.position_range.xyz - p.x;
-    let shading = RectShading(
-        p.v_tangent,
-        Rect(p.tangent_from_world * centre, p.tangent_from_world * edges[0], p.tangent_from_world * edges[1]),
-        params.alpha,
-        params.f0,
-        params.clip,
-        params.normalization,
-    );
-    var lobes = rect_light(rect, shading, ltc.pair);
-    let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / rect_area(shading.rect);
-    lobes *= scale;
-    if is_factored(method) {
-        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
-    }
-    (*s).spec += light.intensity.rgb * lobes.x;
-    (*s).diff += light.intensity.rgb * lobes.y;
-}
-
-// A disk by the side's disk method (src/cpu.rs disk_term): its radiance I/(π r²) times the
-// unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
-fn add_disk(
-    method: u32,
-    disk: u32,
-    s: ptr<function, Sums>,
-    p: Pixel,
-    ltc: LtcShading,
-    light: GpuLight,
-) {
-    let normal_radius = disk_normal_radius(light);
-    let centre = light.position_range.xyz - p.x;
-    let shading = DiskShading(
-        p.v_tangent,
-        Disk(p.tangent_from_world * centre, p.tangent_from_world * normal_radius.xyz, normal_radius.w),
-        params.alpha,
-        params.f0,
-        params.clip,
-        params.normalization,
-    );
-    var lobes = disk_light(disk, shading, ltc.pair);
-    let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / disk_area(shading.disk);
-    lobes *= scale;
-    if is_factored(method) {
-        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
-    }
-    (*s).spec += light.intensity.rgb * lobes.x;
-    (*s).diff += light.intensity.rgb * lobes.y;
-}
-
-// One light by one side: by the side's method for the light's shape, one arm per shape
-// (src/cpu.rs light_term). Where every light is a point (SIZED off) the loop has no test of
-// the shape at all; without a rect (RECTS off), no rect arm, and without a disk no disk arm.
-fn add_light(
-    method: u32,
-    sphere: u32,
-    rect: u32,
-    disk: u32,
-    s: ptr<function, Sums>,
-    p: Pixel,
-    ltc: LtcShading,
-    light: GpuLight,
-) {
-    var shape = SHAPE_POINT;
-    if SIZED {
-        shape = light_shape(light);
-    }
-    switch shape {
-        case SHAPE_SPHERE: { add_sphere(method, sphere, s, p, ltc, light); }
-        case SHAPE_RECT: {
-            if RECTS {
-                add_rect(method, rect, s, p, ltc, light);
-            }
-        }
-        case SHAPE_DISK: {
-            if DISKS {
-                add_disk(method, disk, s, p, ltc, light);
-            }
-        }
-        default: { add_point(method, s, p, ltc, light); }
-    }
 }
 
 // A point light by the side's method.

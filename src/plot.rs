@@ -237,6 +237,12 @@ pub fn line_panels_png(
                 .configure_mesh()
                 .x_desc(x_desc)
                 .y_desc(if k == 0 { y_desc } else { "" })
+                // Integer ticks on a short axis (no label drawn twice by rounding).
+                .x_labels(if x1 <= 10.0 {
+                    x1.ceil() as usize + 1
+                } else {
+                    10
+                })
                 .x_label_formatter(&|v| format!("{v:.0}"))
                 .y_label_formatter(&|v| format!("{v:.0}"))
                 .light_line_style(WHITE)
@@ -254,13 +260,14 @@ pub fn line_panels_png(
                         colour.stroke_width(2),
                     ))
                     .map_err(|e| plot_error(name, e))?;
-                if k == 0 {
+                // The legend in the last panel: the highest band, whose errors are the lowest.
+                if k + 1 == panels.len() {
                     drawn.label(s.label.clone()).legend(move |(x, y)| {
                         PathElement::new(vec![(x, y), (x + 16, y)], colour.stroke_width(2))
                     });
                 }
             }
-            if k == 0 {
+            if k + 1 == panels.len() {
                 chart
                     .configure_series_labels()
                     .position(SeriesLabelPosition::UpperLeft)

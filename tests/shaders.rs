@@ -333,12 +333,13 @@ const SHADER_ONLY: [(&str, &str); 2] = [
 
 /// Every constant the WGSL and Rust share, as Rust has it: `(name in the WGSL, value)`.
 fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
+    use ltc_lab::gpu::light_shape::{disk_constant, rect_constant, sphere_constant};
     use ltc_lab::gpu::limits::LOAD;
     use ltc_lab::gpu::ltc::{
         CLIP_HORIZON, CLIP_TRANSFORMED, LUT_VEC4S_PER_CELL, horizon_constant,
         normalization_constant,
     };
-    use ltc_lab::gpu::plane::{ViewConstant, method_constant, sphere_constant};
+    use ltc_lab::gpu::plane::{ViewConstant, method_constant};
     use ltc_lab::gpu::scene::TILE_SIDE;
     use ltc_lab::light::Shape;
     use ltc_lab::light::sphere::SphereMethod;
@@ -351,8 +352,8 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         .map(method_constant)
         .into_iter()
         .chain(SphereMethod::ALL.map(sphere_constant))
-        .chain(ltc_lab::light::rect::RectMethod::ALL.map(ltc_lab::gpu::plane::rect_constant))
-        .chain(ltc_lab::light::disk::DiskMethod::ALL.map(ltc_lab::gpu::plane::disk_constant))
+        .chain(ltc_lab::light::rect::RectMethod::ALL.map(rect_constant))
+        .chain(ltc_lab::light::disk::DiskMethod::ALL.map(disk_constant))
         .chain(ViewConstant::ALL.map(ViewConstant::constant))
         .chain(
             [

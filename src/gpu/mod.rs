@@ -6,29 +6,29 @@
 pub mod bin;
 pub mod binding;
 pub mod brdf;
-pub mod disk_light;
 pub mod display;
 pub mod driver_output;
 pub mod keep_driver;
+pub mod light;
 pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
 pub mod plane;
 pub mod plane_render;
-pub mod rect_light;
 pub mod renderer;
 pub mod scene;
 pub mod selfcheck;
-pub mod sphere_light;
 pub mod target;
 pub mod timing;
 pub mod work;
+
+pub use light::{disk_light, light_shape, rect_light, sphere_light};
 
 #[cfg(not(target_arch = "wasm32"))]
 use crate::error::Error;
 
 /// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, sphere_light.wgsl, rect_light.wgsl,
-/// disk_light.wgsl, scene.wgsl, plane.wgsl and
+/// disk_light.wgsl, scene.wgsl, light_shape.wgsl, plane.wgsl and
 /// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last.
 pub fn plane_module_source(f16: bool) -> String {
     let (enable, last) = if f16 {
@@ -44,6 +44,7 @@ pub fn plane_module_source(f16: bool) -> String {
         rect_light::SOURCE,
         disk_light::SOURCE,
         scene::SOURCE,
+        light_shape::SOURCE,
         plane::SOURCE,
         last,
     ]

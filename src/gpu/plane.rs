@@ -8,6 +8,7 @@ use std::collections::HashMap;
 
 use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
+use crate::gpu::light::light_shape::{disk_constant, rect_constant, sphere_constant};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::target::OUTPUT_FORMAT;
 use crate::light::Shape;
@@ -30,36 +31,6 @@ pub fn method_constant(m: Method) -> (u32, &'static str) {
         Method::LtcFast => (3, "METHOD_LTC_FAST"),
         Method::LtcF16 => (4, "METHOD_LTC_F16"),
         Method::LtcF16Pairs => (5, "METHOD_LTC_F16_PAIRS"),
-    }
-}
-
-/// `SPHERE_*` of plane.wgsl: its value and its name there.
-pub fn sphere_constant(m: SphereMethod) -> (u32, &'static str) {
-    match m {
-        SphereMethod::Exact => (0, "SPHERE_EXACT"),
-        SphereMethod::LtcPoint => (1, "SPHERE_LTC_POINT"),
-        SphereMethod::LtcDisk => (2, "SPHERE_LTC_DISK"),
-        SphereMethod::RepresentativePoint => (3, "SPHERE_REPRESENTATIVE_POINT"),
-    }
-}
-
-/// `RECT_*` of plane.wgsl: its value and its name there.
-pub fn rect_constant(m: RectMethod) -> (u32, &'static str) {
-    match m {
-        RectMethod::Exact => (0, "RECT_EXACT"),
-        RectMethod::LtcPolygon => (1, "RECT_LTC_POLYGON"),
-        RectMethod::LtcProxy => (2, "RECT_LTC_PROXY"),
-        RectMethod::LtcProxyFast => (3, "RECT_LTC_PROXY_FAST"),
-        RectMethod::LtcPoint => (4, "RECT_LTC_POINT"),
-    }
-}
-
-/// `DISK_*` of plane.wgsl: its value and its name there.
-pub fn disk_constant(m: DiskMethod) -> (u32, &'static str) {
-    match m {
-        DiskMethod::Exact => (0, "DISK_EXACT"),
-        DiskMethod::LtcDisk => (1, "DISK_LTC_DISK"),
-        DiskMethod::LtcPoint => (2, "DISK_LTC_POINT"),
     }
 }
 

@@ -5,7 +5,7 @@
 //! disk (`disk`: the segment of it above the surface and the rule over it; its LTC is the
 //! sphere's cone algebra). Adding a shape is a module here, a variant of `Shape`, and one arm
 //! in each dispatch: the CPU's `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
-//! `gpu::scene::light_elements` and plane.wgsl's `add_light`.
+//! `gpu::scene::light_elements` and light_shape.wgsl's `add_light`.
 
 pub mod disk;
 pub mod rect;

@@ -108,6 +108,8 @@ pub fn atlas_files() -> Vec<String> {
         "horizon.csv",
         "spheres.csv",
         "spheres.png",
+        "shapes.csv",
+        "shapes.png",
     ]
     .map(String::from)
     .into();
@@ -124,9 +126,19 @@ fn orbit_file(theta: f64, alpha: f64) -> String {
 /// table takes 40 000.
 pub const SPHERE_CASES: usize = 2_000;
 
+/// Cases per (solid angle, band) of the atlas's rect and disk measure: 300, the design notes'
+/// tables' count (docs/design.md §1.11, §1.12), with the exact rules at `SHAPE_NODES`.
+pub const SHAPE_CASES: usize = 300;
+
+/// Nodes of the exact rules in the atlas's rect and disk measure: 32 a triangle (a piece) keep
+/// their error far under the methods' (64 against 128 differ by 1e-5 of a cell's sum, §1.11),
+/// at a quarter of 64's cost.
+pub const SHAPE_NODES: usize = 32;
+
 /// Writes `spec_err.png`, `diff_err.png`, `cells.csv`, per orbit `orbit_T_A.png` plus
-/// `orbits.csv`, the error by light elevation `horizon.csv`, and the sphere lights' errors by
-/// angular radius and band `spheres.csv` and `spheres.png` into `dir` (made if missing), all of
+/// `orbits.csv`, the error by light elevation `horizon.csv`, the sphere lights' errors by
+/// angular radius and band `spheres.csv` and `spheres.png`, and the rect and disk lights' by
+/// solid angle and band `shapes.csv` and `shapes.png` into `dir` (made if missing), all of
 /// them or none.
 pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
     let names = atlas_files();
@@ -244,6 +256,10 @@ pub fn write_atlas(lut: &Lut, dir: &Path) -> Result<AtlasSummary> {
     out.stage("spheres.csv", csv.as_bytes())?;
     out.stage("spheres.png", &png)?;
     lines.extend(sphere_lines);
+    let (csv, png, shape_lines) = shapes(lut)?;
+    out.stage("shapes.csv", csv.as_bytes())?;
+    out.stage("shapes.png", &png)?;
+    lines.extend(shape_lines);
     out.commit()?;
     Ok(AtlasSummary { lines })
 }
@@ -300,6 +316,75 @@ fn spheres(lut: &Lut) -> Result<(String, Vec<u8>, Vec<String>)> {
                 100.0 * e.specular[0],
                 100.0 * e.specular[1],
                 100.0 * e.specular[2]
+            )
+        })
+        .collect();
+    Ok((csv, png, lines))
+}
+
+/// The rect and disk lights' errors (`shape_error`): the CSV, a chart of the specular error
+/// against the solid angle per band with a line per (shape, method), and the summary's lines
+/// (across the horizon, where the methods part).
+fn shapes(lut: &Lut) -> Result<(String, Vec<u8>, Vec<String>)> {
+    use crate::measure::shape_error::{DISK_METHODS, RECT_METHODS, csv_rows, shape_errors};
+    let errors = shape_errors(lut, SHAPE_CASES, horizon::SEED, SHAPE_NODES, false);
+    let csv = format!(
+        "solid_angle_sr,band,cases,shape,method,specular,diffuse\n{}",
+        csv_rows(&errors)
+    );
+    let names: Vec<String> = RECT_METHODS
+        .iter()
+        .map(|m| format!("rect {}", m.name()))
+        .chain(DISK_METHODS.iter().map(|m| format!("disk {}", m.name())))
+        .collect();
+    let bands = crate::measure::shape_error::BANDS;
+    let panels: Vec<(String, Vec<crate::plot::Series>)> = bands
+        .iter()
+        .map(|band| {
+            let series = names
+                .iter()
+                .enumerate()
+                .map(|(m, name)| crate::plot::Series {
+                    label: name.clone(),
+                    points: errors
+                        .iter()
+                        .filter(|e| e.band == *band)
+                        .map(|e| {
+                            let figures = e.rects.iter().chain(&e.disks).nth(m).expect("a column");
+                            // 1e-3 sr at 1 … 1 sr at 4: the sizes are decades apart.
+                            (e.solid_angle.log10() + 4.0, 100.0 * figures[0])
+                        })
+                        .collect(),
+                })
+                .collect();
+            (
+                format!("centre {}–{}° above the surface", band[0], band[1]),
+                series,
+            )
+        })
+        .collect();
+    let png = crate::plot::line_panels_png(
+        "shapes.png",
+        &format!(
+            "rect and disk lights: specular Σ|method − exact| / Σ exact ({SHAPE_CASES} cases a point)"
+        ),
+        (
+            "solid angle, log10(sr) + 4 (1: 0.001 sr … 4: 1 sr)",
+            "specular error (%)",
+        ),
+        &panels,
+    )?;
+    let lines = errors
+        .iter()
+        .filter(|e| e.solid_angle == 0.1)
+        .map(|e| {
+            format!(
+                "  rects and disks of 0.1 sr, centre {:>2}–{:<2}° up: specular ltc-polygon {:5.1}%, ltc-proxy {:5.1}%, ltc-disk {:5.1}%",
+                e.band[0],
+                e.band[1],
+                100.0 * e.rects[0][0],
+                100.0 * e.rects[1][0],
+                100.0 * e.disks[0][0]
             )
         })
         .collect();

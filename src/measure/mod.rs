@@ -8,5 +8,6 @@ pub mod bench;
 pub mod eval;
 pub mod horizon;
 pub mod parity;
+pub mod shape_error;
 pub mod sphere_error;
 pub mod study;

@@ -4,4 +4,4 @@
 //! Composed after `brdf`, `ltc` and `sphere_light`.
 
 /// The shader text, embedded so the binary runs from anywhere.
-pub const SOURCE: &str = include_str!("../../shaders/rect_light.wgsl");
+pub const SOURCE: &str = include_str!("../../../shaders/rect_light.wgsl");

@@ -3,4 +3,4 @@
 //! `crate::ltc::sphere` by name (docs/design.md §1.10). Composed after `brdf` and `ltc`.
 
 /// The shader text, embedded so the binary runs from anywhere.
-pub const SOURCE: &str = include_str!("../../shaders/sphere_light.wgsl");
+pub const SOURCE: &str = include_str!("../../../shaders/sphere_light.wgsl");

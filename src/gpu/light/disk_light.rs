@@ -4,4 +4,4 @@
 //! `ltc`, `sphere_light` (the cone's algebra) and `rect_light` (`atan2_precise`).
 
 /// The shader text, embedded so the binary runs from anywhere.
-pub const SOURCE: &str = include_str!("../../shaders/disk_light.wgsl");
+pub const SOURCE: &str = include_str!("../../../shaders/disk_light.wgsl");
