@@ -186,6 +186,9 @@ def main():
     # 8. The lesson, from a link.
     lessons(url, out)
 
+    # 9. Rect and disk lights, from the polygon lesson's steps.
+    shaped_lights(url, out)
+
     # 5. Files dropped on the window.
     drops(url, out)
 
@@ -273,6 +276,28 @@ def lessons(url, out):
         print(f"web/browser_test.py: ok: #lesson=paper&step=7 opened step 7 ({first['title']}) "
               f"on {state['shading'].upper()} shading, and next walked to step "
               f"{walked['last']['step']} of {first['steps']}")
+
+
+def shaped_lights(url, out):
+    """Opens the polygon lesson's clipping step (three rects across and below the horizon) and
+    its disk step, on WebGPU (shaded on the GPU, every light to the last) and on WebGL2 (the CPU
+    plane): each plane finishes, the view holds the lights' shapes, and the page is not blank."""
+    for step, shape, title in [(4, "half_u", "Clipping a polygon"), (6, "normal", "A disk")]:
+        for name, flags, shading in [("webgpu", WEBGPU, "gpu"), ("webgl2", WEBGL2, "cpu")]:
+            tag = f"lesson-polygon-{step}-{name}"
+            state, shot = lab(url + "?texts", tag, out, flags,
+                              fragment=f"#lesson=polygon&step={step}")
+            lesson = state.get("lesson") or {}
+            if state["shading"] != shading or state["plane"][0] != state["plane"][1]:
+                fail(f"{tag}: {state['shading']} plane {state['plane']}")
+            if not lesson.get("title", "").startswith(title):
+                fail(f"{tag}: opened {lesson!r}")
+            if shape not in view_text(state["view"]):
+                fail(f"{tag}: the view lacks the lights' {shape}")
+            if name == "webgl2" and os.path.getsize(shot) < 100_000:
+                fail(f"{tag}: the screenshot is {os.path.getsize(shot)} bytes: blank?")
+        print(f"web/browser_test.py: ok: #lesson=polygon&step={step} ({title}…) shaded its "
+              f"lights ({shape}) to the last on WebGPU and on the CPU under WebGL2")
 
 
 def picks_downloads_and_refit(url, out):

@@ -62,6 +62,17 @@ impl LabApp {
                 let rows = crate::measure::study::read_csv(Path::new(path));
                 self.panels.use_study(rows, path)
             }
+            // A shipped lesson's name (where no file has it) opens that lesson.
+            (Purpose::Lesson, name)
+                if !Path::new(name).exists()
+                    && crate::app::lesson::SHIPPED.iter().any(|(n, _)| *n == name) =>
+            {
+                let (_, text) = crate::app::lesson::SHIPPED
+                    .iter()
+                    .find(|(n, _)| *n == name)
+                    .expect("matched above");
+                self.take_lesson(text, name)
+            }
             (Purpose::Lesson, _) => {
                 match crate::files::read_text(Path::new(path), Purpose::Lesson.max_bytes()) {
                     Ok(text) => self.take_lesson(&text, path),

@@ -67,16 +67,27 @@ impl LabApp {
         {
             self.window.controls_hidden = !self.window.controls_hidden;
         }
-        let asked = self.lesson().is_none()
-            && ui
-                .small_button("lesson")
-                .on_hover_text("Walk the paper's derivation step by step (the shipped lesson): each step opens its view, outlines its panel and says what to try")
-                .clicked();
-        if let Some(lesson) = asked
-            .then(|| crate::app::lesson::Lesson::shipped("paper"))
-            .flatten()
-        {
-            self.open_lesson(lesson, "paper", 0);
+        // The shipped lessons by title: each step opens its view, outlines its panel and
+        // says what to try.
+        let mut chosen = None;
+        if self.lesson().is_none() {
+            ui.menu_button("lesson", |ui| {
+                for (name, _) in crate::app::lesson::SHIPPED {
+                    let Some(lesson) = crate::app::lesson::Lesson::shipped(name) else {
+                        continue;
+                    };
+                    let link = format!("#lesson={name}, or ltc-lab lab --lesson {name}");
+                    if ui.button(&lesson.title).on_hover_text(link).clicked() {
+                        chosen = Some((lesson, name));
+                        ui.close();
+                    }
+                }
+            })
+            .response
+            .on_hover_text("Walk a shipped lesson step by step: the paper's derivation, or the polygon lights it is about");
+        }
+        if let Some((lesson, name)) = chosen {
+            self.open_lesson(lesson, name, 0);
         }
         if tabs && self.window.maximised.is_none() && self.lesson().is_none() {
             for id in PanelId::GRID {

@@ -57,7 +57,7 @@ pub struct Args {
     /// `#view=…` part).
     #[arg(long)]
     view: Option<String>,
-    /// Walk a lesson: a shipped one's name (paper) or a lesson file (.lesson.toml).
+    /// Walk a lesson: a shipped one's name (paper, polygon) or a lesson file (.lesson.toml).
     #[arg(long, conflicts_with_all = ["view", "scene", "lights", "panel"])]
     lesson: Option<String>,
     /// With --lesson: the step to open it at, from 1.
@@ -93,6 +93,11 @@ pub fn run(a: &Args) -> Result<()> {
         broken_view,
     } = check(a)?;
     let options = window_options(a);
+    // eframe restores the last session's window size even where `persist_window` is off: a
+    // size asked for (or a screenshot's) is set again once the window is open.
+    let asked = (a.size.is_some() || a.screenshot.is_some())
+        .then_some(options.viewport.inner_size)
+        .flatten();
     // Drivers print while eframe opens the window's adapter (gpu::driver_output says what):
     // held back until the app is made, then dropped; handed to the error if the window
     // cannot open, or closes before the app is made.
@@ -104,7 +109,7 @@ pub fn run(a: &Args) -> Result<()> {
                 a.frame_log.as_deref(),
                 a.view.clone(),
                 options,
-                startup,
+                (startup, asked),
             )?;
             broken_view.map_or(Ok(()), Err)
         }
@@ -116,6 +121,7 @@ pub fn run(a: &Args) -> Result<()> {
                 Box::new(move |cc| {
                     window_opened();
                     keep_driver_loaded(cc);
+                    keep_asked_size(cc, asked);
                     let mut app = LabApp::from_creation_context(cc, view.as_deref());
                     app.start_with(startup);
                     Ok(Box::new(app))
@@ -212,6 +218,15 @@ fn window_options(a: &Args) -> eframe::NativeOptions {
     }
 }
 
+/// The window at the size asked for: eframe 0.37 applies the last session's stored size
+/// whatever `persist_window` says, so the size is asked again once the window exists.
+fn keep_asked_size(cc: &eframe::CreationContext<'_>, asked: Option<egui::Vec2>) {
+    if let Some(size) = asked {
+        cc.egui_ctx
+            .send_viewport_cmd(egui::ViewportCommand::InnerSize(size));
+    }
+}
+
 /// The window opened: what the drivers said while it did is dropped.
 fn window_opened() {
     drop(driver_output::give_back());
@@ -229,7 +244,7 @@ fn screenshot(
     frame_log: Option<&Path>,
     view: Option<String>,
     options: eframe::NativeOptions,
-    startup: Startup,
+    (startup, asked): (Startup, Option<egui::Vec2>),
 ) -> Result<()> {
     let result = Arc::new(Mutex::new(None));
     let frames = Arc::new(Mutex::new(Vec::new()));
@@ -240,6 +255,7 @@ fn screenshot(
         Box::new(move |cc| {
             window_opened();
             keep_driver_loaded(cc);
+            keep_asked_size(cc, asked);
             // A screenshot shows the defaults (or the view, checked above), not whatever the
             // last session kept.
             let defaults = LabState::default();

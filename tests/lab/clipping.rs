@@ -262,7 +262,7 @@ fn the_horizon_choice_shades_with_a_remedy() {
 /// (ltc_code's leak), which the view reads out and the rules' value then includes.
 #[test]
 fn the_clipping_panel_clips_a_rect_at_both_horizons() {
-    use ltc_lab::app::clipping::polygon::{readings, shown_lobe, shown_polygon};
+    use ltc_lab::app::clipping::polygon::{radiances, readings, shown_lobe, shown_polygon};
     use ltc_lab::app::lab::TableId;
     let Some(mut h) = lab((1200.0, 1100.0), maximised(PanelId::Clipping)) else {
         return;
@@ -299,6 +299,18 @@ fn the_clipping_panel_clips_a_rect_at_both_horizons() {
     };
     let (ok, on) = said(&h);
     assert!(ok, "the readings with both rules on are not shown");
+    // The lobe's radiance from the rect by the exact integral and each method, as the library
+    // computes it: finite, the exact one lit, and said.
+    let shown_radiances = |h: &Harness<'static, LabApp>| {
+        let lab = h.state().lab();
+        let (corners, _) = shown_polygon(lab.lobe_view());
+        let r = radiances(lab, TableId::A, &corners);
+        assert!(r.iter().all(|x| x.is_finite()) && r[0] > 0.0, "{r:?}");
+        let text = format!("exact {:.4} · ltc-polygon {:.4}", r[0], r[1]);
+        assert!(shows(h, &text), "not shown: {text}");
+        r
+    };
+    let with_case1 = shown_radiances(&h);
     assert!(
         on[3] > 0.0,
         "the rect across the horizon leaks with case 1 off: {on:?}"
@@ -311,4 +323,8 @@ fn the_clipping_panel_clips_a_rect_at_both_horizons() {
         (off[0] - (on[0] + on[3])).abs() <= 1e-12 * off[0],
         "case 1 off: the rules' value is the clipped one plus the leak"
     );
+    // The exact integral does not see the rules; ltc-polygon gains the leak.
+    let without = shown_radiances(&h);
+    assert_eq!(without[0], with_case1[0]);
+    assert!(without[1] > with_case1[1]);
 }

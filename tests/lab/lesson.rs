@@ -152,6 +152,9 @@ fn the_paper_lesson_walks_from_the_first_step_to_the_last() {
     };
     let lesson = paper();
     press(&mut h, "lesson");
+    h.run_steps(2);
+    h.get_by_label(&lesson.title).click();
+    h.run_steps(2);
     let mut snapshots = egui_kittest::SnapshotResults::new();
     for k in 0..lesson.steps.len() {
         settle(&mut h);
@@ -414,8 +417,9 @@ fn every_step_opens_with_its_words_at_the_top() {
 }
 
 /// The polygon lesson (`#lesson=polygon`) walked by a student at 1280×720: every step arrives
-/// with its view, panels and words in view, and its two last tasks tick as the student does
-/// them — the leak shown by unticking clip case 1, a proxy picked for the rects.
+/// with its view, panels and words in view, and its tasks from the fourth tick as the student
+/// does them — the leak shown by unticking clip case 1, a proxy picked for the rects, a glossy
+/// surface under the disks.
 #[test]
 fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
     let lesson = Lesson::shipped("polygon").expect("the shipped lesson");
@@ -428,13 +432,16 @@ fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
     for k in 0..lesson.steps.len() {
         settle(&mut h);
         check_arrival(&h, &lesson, k);
-        // Every step's light is a rect, shaded by the paper's polygon against the exact one.
+        // Every step's light is a rect, shaded by the paper's polygon against the exact one;
+        // the last step's are disks.
         let lab_ = h.state().lab();
+        let last = k + 1 == lesson.steps.len();
         assert!(
-            lab_.lights()
-                .list
-                .iter()
-                .all(|l| matches!(l.shape, ltc_lab::light::Shape::Rect { .. })),
+            lab_.lights().list.iter().all(|l| if last {
+                matches!(l.shape, ltc_lab::light::Shape::Disk { .. })
+            } else {
+                matches!(l.shape, ltc_lab::light::Shape::Rect { .. })
+            }),
             "step {}",
             k + 1
         );
@@ -451,6 +458,11 @@ fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
             h.get_by_label("ltc-proxy-fast").click();
             h.run_steps(2);
             assert_eq!(at(&h), (k + 1, true), "a proxy picked");
+        }
+        if k == 5 {
+            slide(&mut h, "α", 0.05);
+            h.run_steps(2);
+            assert_eq!(at(&h), (k + 1, true), "the surface made glossy");
         }
         h.key_press(egui::Key::ArrowRight);
         h.run_steps(2);

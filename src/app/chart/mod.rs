@@ -19,6 +19,9 @@ use crate::app::plane::shading::FRAME_BUDGET_MS;
 use crate::app::ui::axes::log_axis;
 use crate::colormap::{round_sig, short_number};
 use crate::gpu::work::{Work, work_per_light};
+use crate::light::disk::DiskMethod;
+use crate::light::rect::RectMethod;
+use crate::light::sphere::SphereMethod;
 use crate::measure::bench::{PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS};
 use crate::measure::study::StudyRow;
 use crate::render::Method;
@@ -237,8 +240,8 @@ fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
     let entries: Vec<Entry> = names
         .iter()
         .map(|&n| {
-            let shape = variant_shape(n, method(n));
-            (n.to_string(), method_colour(method(n)), Some(shape))
+            let (colour, shape) = point_marker(n, method(n));
+            (n.to_string(), colour, Some(shape))
         })
         .collect();
     let error = |p: &Point| p.rel_rmse.max(crate::plot::ERROR_FLOOR).log10();
@@ -264,7 +267,7 @@ fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
                     let bar = vec![[lo.log10(), y], [hi.log10(), y]];
                     p.line(
                         egui_plot::Line::new(name.to_string(), bar)
-                            .color(method_colour(method(name))),
+                            .color(point_marker(name, method(name)).0),
                     );
                 }
             }
@@ -272,8 +275,8 @@ fn time_error_plot(ui: &mut egui::Ui, m: &Measurement, height: f32) {
             p.points(
                 egui_plot::Points::new(name.to_string(), series)
                     .radius(5.0)
-                    .shape(variant_shape(name, method(name)))
-                    .color(method_colour(method(name))),
+                    .shape(point_marker(name, method(name)).1)
+                    .color(point_marker(name, method(name)).0),
             );
         }
     });
@@ -505,6 +508,38 @@ pub fn method_colour(method: Option<Method>) -> Color32 {
     ];
     let index = method.map(Method::index);
     index.map_or(Color32::from_gray(180), |k| PALETTE[k % PALETTE.len()])
+}
+
+/// A point's colour and marker: a shape's method ("rect ltc-proxy", a study's
+/// "rect-ltc-proxy") in its shape's colour with a marker of its own among that shape's methods;
+/// any other by its point method's colour and its variant's marker.
+fn point_marker(label: &str, method: Option<Method>) -> (Color32, egui_plot::MarkerShape) {
+    sized_marker(label).unwrap_or((method_colour(method), variant_shape(label, method)))
+}
+
+/// The colour of a light shape's methods and each method's marker, by its place among the
+/// shape's methods; `None` for a label that names no shape's method.
+fn sized_marker(label: &str) -> Option<(Color32, egui_plot::MarkerShape)> {
+    use egui_plot::MarkerShape::*;
+    const SHAPES: [egui_plot::MarkerShape; 5] = [Circle, Diamond, Square, Cross, Up];
+    let (family, method) = label.split_once([' ', '-'])?;
+    let (colour, names): (Color32, Vec<&str>) = match family {
+        "sphere" => (
+            Color32::from_rgb(150, 200, 255),
+            SphereMethod::ALL.map(SphereMethod::name).to_vec(),
+        ),
+        "rect" => (
+            Color32::from_rgb(250, 210, 80),
+            RectMethod::ALL.map(RectMethod::name).to_vec(),
+        ),
+        "disk" => (
+            Color32::from_rgb(255, 120, 180),
+            DiskMethod::ALL.map(DiskMethod::name).to_vec(),
+        ),
+        _ => return None,
+    };
+    let k = names.iter().position(|n| *n == method)?;
+    Some((colour, SHAPES[k % SHAPES.len()]))
 }
 
 /// The marker of a method's variant ("ltc-lut16" of ltc): a circle for the method itself,

@@ -3,15 +3,18 @@
 //! case 2), each seen from the side along the plane of incidence (the horizon a line, the
 //! mirror side on the left), and what the lab's rules make of it: ∫ D over P by ltc-polygon,
 //! the signed integral unclipped, the proxy, and what turning case 1 off adds (ltc_code's
-//! leak). The rect is the pinned pixel's where one is pinned (the lobe view's polygon), else
+//! leak); and the lobe's radiance from P by the exact integral and by each rect method, with
+//! each one's error. The rect is the pinned pixel's where one is pinned (the lobe view's polygon), else
 //! one leaning across the horizon on the mirror side.
 
 use egui::{Color32, Pos2, Stroke, Vec2};
 use glam::DVec3;
 
 use crate::app::lab::{Lab, LobeView, TableId};
-use crate::brdf::view_from_theta;
-use crate::light::rect::{Rect, clip_horizon, ltc_polygon, ltc_proxy};
+use crate::brdf::{brdf_cos, view_from_theta};
+use crate::light::rect::{
+    Rect, RectMethod, clip_horizon, ltc_polygon, ltc_proxy, ltc_proxy_fast, polygon_integral_about,
+};
 use crate::ltc::lobe::Lobe;
 use crate::ltc::{Clipping, Ltc, Normalization};
 
@@ -74,10 +77,11 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, which: TableId) {
     let clip = lab.rules().clipping;
     ui.strong("rect clipping: P at the surface's horizon, then M^-1 P at the cosine's");
     ui.small(if pinned {
-        "the pinned pixel's rect (pin another in the plane's table)"
+        "the rect of the plane's pinned pixel (click another rect's row in the plane's pixel table)"
     } else {
-        "a rect leaning across the horizon on the mirror side (pin a pixel lit by a rect to see its own)"
+        "a rect leaning across the horizon on the mirror side (to see one of the plane's: pin a pixel, then click a rect's row in its table)"
     });
+    ui.small("bright: what the rules keep · faint: the whole polygon · seen from the side, the mirror direction to the left");
     // Case 1 on: P is cut at the surface's horizon before M^-1; case 2 on: M^-1 P at the
     // cosine's. Each picture draws the whole polygon faint and what is kept bright.
     let above = if clip.case1 {
@@ -126,59 +130,116 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, which: TableId) {
     ui.label(format!(
         "unclipped (signed): {unclipped:.4} · proxy (ltc-proxy): {proxy:.4} · case 1 off adds {leak:.4} (the leak)"
     ));
+    let [exact, methods @ ..] = radiances(lab, which, &corners);
+    let errors: Vec<String> = [
+        RectMethod::LtcPolygon,
+        RectMethod::LtcProxy,
+        RectMethod::LtcProxyFast,
+    ]
+    .iter()
+    .zip(methods)
+    .map(|(m, x)| format!("{} {x:.4} ({:+.1}%)", m.name(), 100.0 * (x / exact - 1.0)))
+    .collect();
+    ui.label(format!(
+        "radiance at unit radiance ({lobe}): exact {exact:.4} · {}",
+        errors.join(" · ")
+    ));
 }
 
-/// One side view: the unit circle, the horizon, `whole` faint and `kept` bright (each edge
-/// along its great circle), and a caption saying whether the rule cuts.
+/// The shown lobe's radiance from P at unit radiance (the lab's F0, its rules): the exact
+/// integral of the BRDF over P above the surface (the rect rule, 32 nodes a triangle, over
+/// the cone of the corners' directions), then ltc-polygon's, ltc-proxy's and ltc-proxy-fast's
+/// (each lobe's integral times its magnitude).
+pub fn radiances(lab: &Lab, which: TableId, corners: &[DVec3]) -> [f64; 4] {
+    let view = lab.lobe_view();
+    let v = DVec3::from(view_from_theta(view.theta_o_deg.to_radians()));
+    let (alpha, f0) = (lab.alpha(), lab.material().f0);
+    let pair = lab.tables().get(which).lut.ltc_pair(alpha, v);
+    let (ltc, weight, k) = match view.lobe {
+        Lobe::Specular => (&pair.spec, pair.spec_magnitude(f0), 0),
+        Lobe::Diffuse => (&pair.diff, pair.diff.magnitude(), 1),
+    };
+    let mirror = DVec3::new(-v.x, -v.y, v.z);
+    let exact = polygon_integral_about(&clip_horizon(corners), 32, Some(mirror), |l| {
+        let f = brdf_cos(v.to_array(), l.to_array(), alpha, f0);
+        [f.specular, f.diffuse]
+    })[k];
+    let (clip, n) = (lab.rules().clipping, Normalization::Corrected);
+    [
+        exact,
+        weight * ltc_polygon(ltc, corners, clip, n),
+        weight * ltc_proxy(ltc, corners, clip, n),
+        weight * ltc_proxy_fast(ltc, corners, clip, n),
+    ]
+}
+
+/// One side view, zoomed to the polygon and the shading point: the unit circle, the horizon
+/// and the normal (labelled), `whole` faint and `kept` bright (each edge along its great
+/// circle), and a caption saying whether the rule cuts.
 fn side_view(
     ui: &mut egui::Ui,
     side: f32,
     (title, whole, kept): (&str, &[DVec3], &[DVec3]),
     rule_on: bool,
 ) {
+    let arcs = |poly: &[DVec3]| -> Vec<DVec3> {
+        let n = poly.len();
+        (0..n)
+            .flat_map(|k| {
+                let (a, b) = (poly[k], poly[(k + 1) % n]);
+                (0..16).map(move |i| a.lerp(b, i as f64 / 16.0).normalize_or_zero())
+            })
+            .chain(poly.first().copied())
+            .collect()
+    };
+    let (whole, kept) = (arcs(whole), arcs(kept));
     ui.vertical(|ui| {
         let (response, painter) = ui.allocate_painter(Vec2::splat(side), egui::Sense::hover());
         let r = response.rect;
-        let centre = r.center();
-        let radius = 0.45 * side;
-        // Seen along −y: x to the right, z up.
-        let project = |w: DVec3| centre + Vec2::new(w.x as f32, -w.z as f32) * radius;
+        // Seen along −y: x to the right, z up. The view spans the polygon and the shading point
+        // (the origin), with a margin; a small polygon is magnified, up to 8× the unit sphere.
+        let flat = |w: DVec3| Vec2::new(w.x as f32, -w.z as f32);
+        let points = whole.iter().chain(&kept).map(|&w| flat(w));
+        let (lo, hi) = points.fold((Vec2::ZERO, Vec2::ZERO), |(lo, hi), p| {
+            (lo.min(p), hi.max(p))
+        });
+        let span = (hi - lo).max_elem().max(0.125);
+        let scale = 0.8 * side / span;
+        let mid = r.center() - (lo + hi) * 0.5 * scale;
+        let project = |w: DVec3| mid + flat(w) * scale;
         painter.rect_filled(r, 2.0, Color32::from_gray(18));
-        painter.circle_stroke(centre, radius, Stroke::new(1.0, Color32::from_gray(90)));
+        painter.circle_stroke(mid, scale, Stroke::new(1.0, Color32::from_gray(90)));
+        let grey = Color32::from_gray(200);
         painter.line_segment(
-            [
-                centre - Vec2::new(radius * 1.05, 0.0),
-                centre + Vec2::new(radius * 1.05, 0.0),
-            ],
-            Stroke::new(1.5, Color32::from_gray(200)),
+            [Pos2::new(r.left(), mid.y), Pos2::new(r.right(), mid.y)],
+            Stroke::new(1.5, grey),
         );
-        let outline = |poly: &[DVec3]| -> Vec<Pos2> {
-            let n = poly.len();
-            (0..n)
-                .flat_map(|k| {
-                    let (a, b) = (poly[k], poly[(k + 1) % n]);
-                    (0..16).map(move |i| a.lerp(b, i as f64 / 16.0).normalize_or_zero())
-                })
-                .chain(poly.first().copied())
-                .map(project)
-                .collect()
+        let font = egui::FontId::proportional(11.0);
+        let labelled = |at: Pos2, text: &str, anchor: egui::Align2| {
+            painter.text(at, anchor, text, font.clone(), grey);
         };
-        if whole.len() >= 3 {
-            painter.add(egui::Shape::line(
-                outline(whole),
-                Stroke::new(1.0, Color32::from_rgb(120, 70, 110)),
-            ));
-        }
-        if kept.len() >= 3 {
-            painter.add(egui::Shape::line(
-                outline(kept),
-                Stroke::new(2.5, Color32::from_rgb(255, 90, 220)),
-            ));
-        }
+        labelled(
+            Pos2::new(r.right() - 4.0, mid.y - 2.0),
+            "horizon",
+            egui::Align2::RIGHT_BOTTOM,
+        );
+        let tip = project(DVec3::Z * (0.25 * span as f64));
+        painter.arrow(mid, tip - mid, Stroke::new(1.5, grey));
+        labelled(tip + Vec2::new(4.0, 0.0), "n", egui::Align2::LEFT_CENTER);
+        let line = |poly: Vec<DVec3>, stroke| {
+            if poly.len() > 3 {
+                painter.add(egui::Shape::line(
+                    poly.into_iter().map(project).collect(),
+                    stroke,
+                ));
+            }
+        };
+        line(whole, Stroke::new(1.0, Color32::from_rgb(120, 70, 110)));
+        line(kept, Stroke::new(2.5, Color32::from_rgb(255, 90, 220)));
         let rule = if rule_on {
-            "cut here"
+            "the rule cuts at the horizon"
         } else {
-            "rule off: not cut"
+            "rule off: nothing cut"
         };
         ui.small(format!("{title}: {rule}"));
     });

@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 use crate::app::lab::{Lab, LobeView, Selection, SideB, parts};
 use crate::app::work::cache::{Cached, Own};
 use crate::colormap::short_number;
+use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::ClipCase;
@@ -348,6 +349,14 @@ fn sized_rows(ui: &mut egui::Ui, rows: &[&LightTerm]) {
     let methods = RectMethod::ALL.map(|m| (m.name(), m.describe()));
     let exact_at = RectMethod::Exact.index();
     method_rows(ui, "rect lights", (&methods, exact_at), &rects);
+    let disks: Vec<(usize, Vec<DVec3>)> = rows
+        .iter()
+        .filter_map(|l| l.disks.map(|d| (l.index, d.to_vec())))
+        .take(MAX_ROWS)
+        .collect();
+    let methods = DiskMethod::ALL.map(|m| (m.name(), m.describe()));
+    let exact_at = DiskMethod::Exact.index();
+    method_rows(ui, "disk lights", (&methods, exact_at), &disks);
 }
 
 /// One grid of `sized_rows`, titled `title`: a light a row, a method (name,
