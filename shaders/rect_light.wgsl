@@ -365,53 +365,105 @@ fn hit_inside(poly: Polygon, dir: vec3<f32>) -> vec4<f32> {
     return vec4<f32>(x, select(0.0, 1.0, all_in || all_out));
 }
 
+// nearest_point: the point of the convex planar polygon nearest the origin (xyz) — the foot of
+// the perpendicular where it falls inside (w = 1), else the nearest point of its edges (w = 0)
+// (src/light/rect/quadrature.rs).
+fn nearest_point(poly: Polygon) -> vec4<f32> {
+    let normal = cross(poly.p[1] - poly.p[0], poly.p[2] - poly.p[0]);
+    let n2 = dot(normal, normal);
+    if n2 > 0.0 {
+        let foot = normal * (dot(poly.p[0], normal) / n2);
+        var all_in = true;
+        var all_out = true;
+        for (var k = 0u; k < poly.n; k++) {
+            let a = poly.p[k];
+            let side = dot(cross(poly.p[(k + 1u) % poly.n] - a, foot - a), normal);
+            all_in = all_in && side >= 0.0;
+            all_out = all_out && side <= 0.0;
+        }
+        if all_in || all_out {
+            return vec4<f32>(foot, 1.0);
+        }
+    }
+    var best = poly.p[0];
+    for (var k = 0u; k < poly.n; k++) {
+        let a = poly.p[k];
+        let e = poly.p[(k + 1u) % poly.n] - a;
+        let e2 = dot(e, e);
+        var t = 0.0;
+        if e2 > 0.0 {
+            t = clamp(-dot(a, e) / e2, 0.0, 1.0);
+        }
+        let x = a + e * t;
+        if dot(x, x) < dot(best, best) {
+            best = x;
+        }
+    }
+    return vec4<f32>(best, 0.0);
+}
+
+// One triangle's both lobes at unit radiance, 8 × 8 nodes collapsed onto its first corner
+// p0 (Duffy): p0 + s e1 + s t (e2 − e1), Jacobian s |e1 × e2|.
+fn exact_triangle(s: RectShading, p0: vec3<f32>, a: vec3<f32>, b: vec3<f32>) -> vec2<f32> {
+    let e1 = a - p0;
+    let e2 = b - p0;
+    let normal = cross(e1, e2);
+    let twice_area = length(normal);
+    if twice_area == 0.0 {
+        return vec2<f32>(0.0);
+    }
+    let unit = normal / twice_area;
+    var sum = vec2<f32>(0.0);
+    for (var i = 0u; i < 8u; i++) {
+        let ns = gl8(i);
+        let sx = 0.5 * (ns.x + 1.0);
+        for (var j = 0u; j < 8u; j++) {
+            let nt = gl8(j);
+            let tx = 0.5 * (nt.x + 1.0);
+            let x = p0 + e1 * sx + (e2 - e1) * (sx * tx);
+            let r2 = dot(x, x);
+            if r2 > 0.0 {
+                let r = sqrt(r2);
+                let l = x / r;
+                if l.z > 0.0 {
+                    let weight = 0.25 * ns.y * nt.y * sx * twice_area * abs(dot(x, unit)) / (r * r2);
+                    let d = dots_new(s.v, l);
+                    sum += weight * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
+                }
+            }
+        }
+    }
+    return sum;
+}
+
 // rect_exact: ∫ f cos dω over the rect above the surface at unit radiance, by
 // polygon_integral_about's rule with 8 nodes per dimension and triangle (src/light/rect/mod.rs
-// GPU_EXACT_NODES): a fan from the mirror direction's hit where it is inside, else from the
-// first corner, each triangle's nodes collapsed onto it (Duffy).
+// GPU_EXACT_NODES): a fan from the mirror direction's hit where it is inside (else from the
+// polygon's point nearest the shading point), each fan triangle split into three at its own
+// point nearest the shading point, each triangle's nodes collapsed onto its apex (Duffy).
 fn rect_exact(s: RectShading) -> vec2<f32> {
     let poly = clip_horizon(rect_corners(s.rect));
     if poly.n < 3u {
         return vec2<f32>(0.0);
     }
     let hit = hit_inside(poly, mirror(s.v));
-    var apex = poly.p[0];
-    var first = 1u;
-    var last = poly.n - 1u;
+    var apex = nearest_point(poly).xyz;
     if hit.w > 0.0 {
         apex = hit.xyz;
-        first = 0u;
-        last = poly.n;
     }
     var sum = vec2<f32>(0.0);
-    for (var k = first; k < last; k++) {
-        let e1 = poly.p[k] - apex;
-        let e2 = poly.p[(k + 1u) % poly.n] - apex;
-        let normal = cross(e1, e2);
-        let twice_area = length(normal);
-        if twice_area == 0.0 {
-            continue;
-        }
-        let unit = normal / twice_area;
-        for (var i = 0u; i < 8u; i++) {
-            let ns = gl8(i);
-            let sx = 0.5 * (ns.x + 1.0);
-            for (var j = 0u; j < 8u; j++) {
-                let nt = gl8(j);
-                let tx = 0.5 * (nt.x + 1.0);
-                let x = apex + e1 * sx + (e2 - e1) * (sx * tx);
-                let r2 = dot(x, x);
-                if r2 > 0.0 {
-                    let r = sqrt(r2);
-                    let l = x / r;
-                    if l.z > 0.0 {
-                        let weight = 0.25 * ns.y * nt.y * sx * twice_area * abs(dot(x, unit)) / (r * r2);
-                        let d = dots_new(s.v, l);
-                        sum += weight * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
-                    }
-                }
-            }
-        }
+    for (var k = 0u; k < poly.n; k++) {
+        let a = poly.p[k];
+        let b = poly.p[(k + 1u) % poly.n];
+        var fan = poly;
+        fan.n = 3u;
+        fan.p[0] = apex;
+        fan.p[1] = a;
+        fan.p[2] = b;
+        let x = nearest_point(fan).xyz;
+        sum += exact_triangle(s, x, apex, a);
+        sum += exact_triangle(s, x, a, b);
+        sum += exact_triangle(s, x, b, apex);
     }
     return sum;
 }

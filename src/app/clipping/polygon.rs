@@ -160,7 +160,11 @@ pub fn radiances(lab: &Lab, which: TableId, corners: &[DVec3]) -> [f64; 4] {
         Lobe::Diffuse => (&pair.diff, pair.diff.magnitude(), 1),
     };
     let mirror = DVec3::new(-v.x, -v.y, v.z);
-    let exact = polygon_integral_about(&clip_horizon(corners), 32, Some(mirror), |l| {
+    // The corners are directions: the rule wants a planar polygon with the same cone, their
+    // points on the plane at unit distance along their mean direction.
+    let mean = corners.iter().sum::<DVec3>().normalize_or_zero();
+    let planar: Vec<DVec3> = corners.iter().map(|&c| c / c.dot(mean)).collect();
+    let exact = polygon_integral_about(&clip_horizon(&planar), 32, Some(mirror), |l| {
         let f = brdf_cos(v.to_array(), l.to_array(), alpha, f0);
         [f.specular, f.diffuse]
     })[k];

@@ -111,8 +111,9 @@ impl RectMethod {
 pub const EXACT_NODES: usize = 64;
 
 /// Nodes per dimension and triangle of the renders' exact method, on the CPU and in
-/// shaders/rect_light.wgsl alike (the sphere's `GPU_EXACT_NODES`): at most 5 triangles of 64
-/// BRDF evaluations per light.
+/// shaders/rect_light.wgsl alike (the sphere's `GPU_EXACT_NODES`): at most 15 triangles of 64
+/// BRDF evaluations per light (the clipped polygon's fan of up to 5, each split in three at
+/// its point nearest the shading point).
 pub const GPU_EXACT_NODES: usize = 8;
 
 /// Below this `angular_size` every method shades a rect as its oriented point light. The
