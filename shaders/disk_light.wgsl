@@ -139,14 +139,6 @@ struct DiskShading {
     normalization: u32,
 }
 
-// The lobes' magnitudes (none for the paper-literal normalization).
-fn disk_weights(s: DiskShading, pair: LtcPair) -> vec2<f32> {
-    if s.normalization == NORMALIZATION_PAPER_LITERAL {
-        return vec2<f32>(1.0);
-    }
-    return vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
-}
-
 // disk_point: the oriented point light at the centre — the exact point light for the exact
 // method, the paper's point formula for the LTC ones.
 fn disk_point(s: DiskShading, pair: LtcPair, exact: bool) -> vec2<f32> {
@@ -163,7 +155,7 @@ fn disk_point(s: DiskShading, pair: LtcPair, exact: bool) -> vec2<f32> {
         ltc_eval(pair.spec, l, s.clip, s.normalization),
         ltc_eval(pair.diff, l, s.clip, s.normalization),
     );
-    return e * disk_weights(s, pair) * lobes;
+    return e * lobe_weights(pair, s.f0, s.normalization) * lobes;
 }
 
 // disk_exact: ∫ f cos dω over the disk above the surface at unit radiance, by
@@ -231,7 +223,7 @@ fn disk_ltc(s: DiskShading, pair: LtcPair) -> vec2<f32> {
         ltc_disk_light(pair.spec, s.disk, cones[0], case2, s.normalization),
         ltc_disk_light(pair.diff, s.disk, cones[1], case2, s.normalization),
     );
-    return disk_weights(s, pair) * lobes;
+    return lobe_weights(pair, s.f0, s.normalization) * lobes;
 }
 
 // ltc_disk_light: ∫ D(ω) dω over a disk's cone, given its image under M⁻¹; the hemisphere

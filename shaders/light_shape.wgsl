@@ -37,6 +37,17 @@ override DISKS: bool = false;
 override DISK_A: u32 = DISK_LTC_DISK;
 override DISK_B: u32 = DISK_EXACT;
 
+// A light's lobes (specular, diffuse; at unit intensity) times its colour × intensity into the
+// side's sums; into factored sums divided by the pixel's factors, as add_brdf_factored does.
+fn add_lobes(method: u32, s: ptr<function, Sums>, ltc: LtcShading, light: GpuLight, lobes: vec2<f32>) {
+    var l = lobes;
+    if is_factored(method) {
+        l /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
+    }
+    (*s).spec += light.intensity.rgb * l.x;
+    (*s).diff += light.intensity.rgb * l.y;
+}
+
 // A light with a size by the side's sphere method (src/cpu.rs sphere_term), in the shading
 // frame; into factored sums divided by the factors, as add_brdf_factored does.
 fn add_sphere(
@@ -71,11 +82,7 @@ fn add_sphere(
             default: { lobes = sphere_ltc_point(shading, ltc.pair); }
         }
     }
-    if is_factored(method) {
-        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
-    }
-    (*s).spec += light.intensity.rgb * lobes.x;
-    (*s).diff += light.intensity.rgb * lobes.y;
+    add_lobes(method, s, ltc, light, lobes);
 }
 
 // A rect by the side's rect method (src/cpu.rs rect_term): its radiance I/A times the
@@ -101,11 +108,7 @@ fn add_rect(
     var lobes = rect_light(rect, shading, ltc.pair);
     let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / rect_area(shading.rect);
     lobes *= scale;
-    if is_factored(method) {
-        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
-    }
-    (*s).spec += light.intensity.rgb * lobes.x;
-    (*s).diff += light.intensity.rgb * lobes.y;
+    add_lobes(method, s, ltc, light, lobes);
 }
 
 // A disk by the side's disk method (src/cpu.rs disk_term): its radiance I/(π r²) times the
@@ -131,11 +134,7 @@ fn add_disk(
     var lobes = disk_light(disk, shading, ltc.pair);
     let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / disk_area(shading.disk);
     lobes *= scale;
-    if is_factored(method) {
-        lobes /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
-    }
-    (*s).spec += light.intensity.rgb * lobes.x;
-    (*s).diff += light.intensity.rgb * lobes.y;
+    add_lobes(method, s, ltc, light, lobes);
 }
 
 // One light by one side: by the side's method for the light's shape, one arm per shape

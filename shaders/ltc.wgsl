@@ -198,3 +198,13 @@ fn spec_magnitude(pair: LtcPair, f0: f32) -> f32 {
 fn magnitude(ltc: Ltc) -> f32 {
     return ltc.scale * ltc.norm;
 }
+
+// lobe_weights: each lobe's magnitude (specular, diffuse), by which a light with a size
+// scales its integrals of D — none under the paper-literal normalization (src/ltc/mod.rs
+// LtcPair::lobe_weights).
+fn lobe_weights(pair: LtcPair, f0: f32, normalization: u32) -> vec2<f32> {
+    if normalization == NORMALIZATION_PAPER_LITERAL {
+        return vec2<f32>(1.0);
+    }
+    return vec2<f32>(spec_magnitude(pair, f0), magnitude(pair.diff));
+}

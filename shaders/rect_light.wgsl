@@ -313,14 +313,6 @@ struct RectShading {
     normalization: u32,
 }
 
-// The lobes' magnitudes (none for the paper-literal normalization).
-fn rect_weights(s: RectShading, pair: LtcPair) -> vec2<f32> {
-    if s.normalization == NORMALIZATION_PAPER_LITERAL {
-        return vec2<f32>(1.0);
-    }
-    return vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
-}
-
 // rect_point: the oriented point light at the centre — the exact point light for the exact
 // method, the paper's point formula for the LTC ones.
 fn rect_point(s: RectShading, pair: LtcPair, exact: bool) -> vec2<f32> {
@@ -337,7 +329,7 @@ fn rect_point(s: RectShading, pair: LtcPair, exact: bool) -> vec2<f32> {
         ltc_eval(pair.spec, l, s.clip, s.normalization),
         ltc_eval(pair.diff, l, s.clip, s.normalization),
     );
-    return e * rect_weights(s, pair) * lobes;
+    return e * lobe_weights(pair, s.f0, s.normalization) * lobes;
 }
 
 // hit_inside: where the ray from the origin along `dir` meets the polygon's plane, w = 1 if
@@ -481,19 +473,19 @@ fn rect_light(method: u32, s: RectShading, pair: LtcPair) -> vec2<f32> {
     switch method {
         case RECT_EXACT: { return rect_exact(s); }
         case RECT_LTC_POLYGON: {
-            return rect_weights(s, pair) * vec2<f32>(
+            return lobe_weights(pair, s.f0, s.normalization) * vec2<f32>(
                 ltc_polygon(pair.spec, corners, s.clip, s.normalization),
                 ltc_polygon(pair.diff, corners, s.clip, s.normalization),
             );
         }
         case RECT_LTC_PROXY: {
-            return rect_weights(s, pair) * vec2<f32>(
+            return lobe_weights(pair, s.f0, s.normalization) * vec2<f32>(
                 ltc_proxy(pair.spec, corners, s.clip, s.normalization),
                 ltc_proxy(pair.diff, corners, s.clip, s.normalization),
             );
         }
         case RECT_LTC_PROXY_FAST: {
-            return rect_weights(s, pair) * vec2<f32>(
+            return lobe_weights(pair, s.f0, s.normalization) * vec2<f32>(
                 ltc_proxy_fast(pair.spec, corners, s.clip, s.normalization),
                 ltc_proxy_fast(pair.diff, corners, s.clip, s.normalization),
             );

@@ -347,10 +347,7 @@ fn sphere_ltc_point(s: SphereShading, pair: LtcPair) -> vec2<f32> {
     if e <= 0.0 {
         return vec2<f32>(0.0);
     }
-    var weights = vec2<f32>(1.0);
-    if s.normalization != NORMALIZATION_PAPER_LITERAL {
-        weights = vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
-    }
+    let weights = lobe_weights(pair, s.f0, s.normalization);
     let l = s.u / d;
     let lobes = vec2<f32>(
         ltc_eval(pair.spec, l, s.clip, s.normalization),
@@ -386,10 +383,7 @@ fn sphere_ltc_disk(s: SphereShading, pair: LtcPair, cap: Cap) -> vec2<f32> {
     }
     let d2 = dot(s.u, s.u);
     let scale = window_falloff_d2(d2, s.range) * sphere_radiance(s.intensity, s.radius);
-    var weights = vec2<f32>(1.0);
-    if s.normalization != NORMALIZATION_PAPER_LITERAL {
-        weights = vec2<f32>(spec_magnitude(pair, s.f0), magnitude(pair.diff));
-    }
+    let weights = lobe_weights(pair, s.f0, s.normalization);
     let case2 = (s.clip & CLIP_TRANSFORMED) != 0u;
     var cones = array<vec4<f32>, 2>(vec4<f32>(0.0), vec4<f32>(0.0));
     if !cap_encloses(cap) {

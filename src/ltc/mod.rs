@@ -213,6 +213,15 @@ impl LtcPair {
         self.spec.scale * (f0 * self.spec.norm + (1.0 - f0) * self.spec.fresnel)
     }
 
+    /// Each lobe's magnitude (specular, diffuse), by which a light with a size scales its
+    /// integrals of D: none under the paper-literal normalization (eq. 25 as printed).
+    pub fn lobe_weights(&self, f0: f64, normalization: Normalization) -> (f64, f64) {
+        match normalization {
+            Normalization::Corrected => (self.spec_magnitude(f0), self.diff.magnitude()),
+            Normalization::PaperLiteral => (1.0, 1.0),
+        }
+    }
+
     /// The LTC approximation of both cosine-weighted lobes for a unit-irradiance light in
     /// direction `l` (unit, shading frame), base colour 1 (eq. 30 with the corrections of docs/design.md §1).
     pub fn ltc_lobes(

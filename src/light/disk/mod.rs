@@ -180,10 +180,7 @@ pub fn disk_ltc(s: &DiskShading<'_>) -> Lobes<f64> {
     if s.clip.case1 && s.disk.below_horizon() {
         return Lobes::default();
     }
-    let (spec_weight, diff_weight) = match s.normalization {
-        Normalization::Corrected => (s.ltc.spec_magnitude(s.f0), s.ltc.diff.magnitude()),
-        Normalization::PaperLiteral => (1.0, 1.0),
-    };
+    let (spec_weight, diff_weight) = s.ltc.lobe_weights(s.f0, s.normalization);
     let lobe = |ltc| ltc_disk_light(ltc, &s.disk, s.clip.case2, s.normalization);
     Lobes {
         specular: spec_weight * lobe(&s.ltc.spec),

@@ -166,10 +166,7 @@ pub fn rect_light_with(method: RectMethod, s: &RectShading<'_>, exact_nodes: usi
 
 /// Each lobe's integral times its magnitude (none for the paper-literal normalization).
 fn by_lobe(s: &RectShading<'_>, integral: &dyn Fn(&crate::ltc::Ltc) -> f64) -> Lobes<f64> {
-    let (spec_weight, diff_weight) = match s.normalization {
-        Normalization::Corrected => (s.ltc.spec_magnitude(s.f0), s.ltc.diff.magnitude()),
-        Normalization::PaperLiteral => (1.0, 1.0),
-    };
+    let (spec_weight, diff_weight) = s.ltc.lobe_weights(s.f0, s.normalization);
     Lobes {
         specular: spec_weight * integral(&s.ltc.spec),
         diffuse: diff_weight * integral(&s.ltc.diff),

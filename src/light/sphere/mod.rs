@@ -195,10 +195,7 @@ pub fn sphere_ltc_disk(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
         return Lobes::default();
     }
     let scale = window(s) * sphere_radiance(s.intensity, s.radius);
-    let (spec_weight, diff_weight) = match s.normalization {
-        Normalization::Corrected => (s.ltc.spec_magnitude(s.f0), s.ltc.diff.magnitude()),
-        Normalization::PaperLiteral => (1.0, 1.0),
-    };
+    let (spec_weight, diff_weight) = s.ltc.lobe_weights(s.f0, s.normalization);
     let lobe = |ltc| crate::light::sphere::disk::ltc_disk(ltc, cap, s.clip.case2, s.normalization);
     Lobes {
         specular: scale * spec_weight * lobe(&s.ltc.spec),
