@@ -208,3 +208,35 @@ fn lobe_weights(pair: LtcPair, f0: f32, normalization: u32) -> vec2<f32> {
     }
     return vec2<f32>(spec_magnitude(pair, f0), magnitude(pair.diff));
 }
+
+// LtcPair::ltc_lobes: both lobes' LTC toward unit l at unit irradiance, each times its
+// magnitude (none under the paper-literal normalization).
+fn ltc_lobes(pair: LtcPair, l: vec3<f32>, f0: f32, clip: u32, normalization: u32) -> vec2<f32> {
+    let lobes = vec2<f32>(
+        ltc_eval(pair.spec, l, clip, normalization),
+        ltc_eval(pair.diff, l, clip, normalization),
+    );
+    return lobe_weights(pair, f0, normalization) * lobes;
+}
+
+// point_lobes: a point light's lobes toward unit l at unit irradiance — the exact BRDF (0
+// below the surface) or the LTC — the limit of every light with a size (src/light/mod.rs).
+fn point_lobes(
+    v: vec3<f32>,
+    l: vec3<f32>,
+    alpha: f32,
+    f0: f32,
+    pair: LtcPair,
+    clip: u32,
+    normalization: u32,
+    exact: bool,
+) -> vec2<f32> {
+    if !exact {
+        return ltc_lobes(pair, l, f0, clip, normalization);
+    }
+    if l.z <= 0.0 {
+        return vec2<f32>(0.0);
+    }
+    let d = dots_new(v, l);
+    return vec2<f32>(specular_cos(d, alpha, f0), diffuse_cos(d, alpha));
+}

@@ -316,20 +316,9 @@ struct RectShading {
 // rect_point: the oriented point light at the centre — the exact point light for the exact
 // method, the paper's point formula for the LTC ones.
 fn rect_point(s: RectShading, pair: LtcPair, exact: bool) -> vec2<f32> {
-    let e = rect_point_irradiance(s.rect);
     let l = normalize(s.rect.centre);
-    if exact {
-        if l.z <= 0.0 {
-            return vec2<f32>(0.0);
-        }
-        let d = dots_new(s.v, l);
-        return e * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
-    }
-    let lobes = vec2<f32>(
-        ltc_eval(pair.spec, l, s.clip, s.normalization),
-        ltc_eval(pair.diff, l, s.clip, s.normalization),
-    );
-    return e * lobe_weights(pair, s.f0, s.normalization) * lobes;
+    let lobes = point_lobes(s.v, l, s.alpha, s.f0, pair, s.clip, s.normalization, exact);
+    return rect_point_irradiance(s.rect) * lobes;
 }
 
 // hit_inside: where the ray from the origin along `dir` meets the polygon's plane, w = 1 if

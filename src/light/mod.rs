@@ -13,6 +13,9 @@ pub mod sphere;
 
 use glam::DVec3;
 
+use crate::brdf::{self, Lobes};
+use crate::ltc::{Clipping, LtcPair, Normalization};
+
 /// Where a light's light comes from.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Shape {
@@ -64,5 +67,23 @@ impl Shape {
             Self::Rect { half_u, half_v } => Some((half_u, half_v)),
             _ => None,
         }
+    }
+}
+
+/// A point light's lobes toward unit `l` at unit irradiance, base colour 1: the exact BRDF
+/// (0 below the surface) or the LTC (`LtcPair::ltc_lobes`). The limit every light with a size
+/// meets far away, which the rect's and the disk's methods shade them as when they are tiny.
+pub fn point_lobes(
+    exact: bool,
+    (v, l): (DVec3, DVec3),
+    (alpha, f0): (f64, f64),
+    ltc: &LtcPair,
+    clip: Clipping,
+    normalization: Normalization,
+) -> Lobes<f64> {
+    match exact {
+        true if l.z > 0.0 => brdf::brdf_cos(v.to_array(), l.to_array(), alpha, f0),
+        true => Lobes::default(),
+        false => ltc.ltc_lobes(l, f0, clip, normalization),
     }
 }

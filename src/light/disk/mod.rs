@@ -10,6 +10,7 @@ use std::f64::consts::PI;
 use glam::{DMat3, DVec3};
 
 use crate::brdf::{self, Lobes};
+use crate::light::point_lobes;
 use crate::light::sphere::disk::{cone_image, cone_integral, hemisphere};
 use crate::ltc::{Clipping, Ltc, LtcPair, Normalization};
 use crate::named::named_enum;
@@ -145,13 +146,15 @@ pub fn disk_light_with(method: DiskMethod, s: &DiskShading<'_>, exact_nodes: usi
 pub fn disk_point(method: DiskMethod, s: &DiskShading<'_>) -> Lobes<f64> {
     let e = s.disk.point_irradiance();
     let l = s.disk.centre.normalize();
-    let lobes = match method {
-        DiskMethod::Exact if l.z > 0.0 => {
-            brdf::brdf_cos(s.v.to_array(), l.to_array(), s.alpha, s.f0)
-        }
-        DiskMethod::Exact => Lobes::default(),
-        _ => s.ltc.ltc_lobes(l, s.f0, s.clip, s.normalization),
-    };
+    let exact = method == DiskMethod::Exact;
+    let lobes = point_lobes(
+        exact,
+        (s.v, l),
+        (s.alpha, s.f0),
+        s.ltc,
+        s.clip,
+        s.normalization,
+    );
     Lobes {
         specular: e * lobes.specular,
         diffuse: e * lobes.diffuse,

@@ -10,6 +10,7 @@ pub mod quadrature;
 use glam::DVec3;
 
 use crate::brdf::{self, Lobes};
+use crate::light::point_lobes;
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
 
@@ -178,13 +179,15 @@ fn by_lobe(s: &RectShading<'_>, integral: &dyn Fn(&crate::ltc::Ltc) -> f64) -> L
 pub fn rect_point(method: RectMethod, s: &RectShading<'_>) -> Lobes<f64> {
     let e = s.rect.point_irradiance();
     let l = s.rect.centre.normalize();
-    let lobes = match method {
-        RectMethod::Exact if l.z > 0.0 => {
-            brdf::brdf_cos(s.v.to_array(), l.to_array(), s.alpha, s.f0)
-        }
-        RectMethod::Exact => Lobes::default(),
-        _ => s.ltc.ltc_lobes(l, s.f0, s.clip, s.normalization),
-    };
+    let exact = method == RectMethod::Exact;
+    let lobes = point_lobes(
+        exact,
+        (s.v, l),
+        (s.alpha, s.f0),
+        s.ltc,
+        s.clip,
+        s.normalization,
+    );
     Lobes {
         specular: e * lobes.specular,
         diffuse: e * lobes.diffuse,
