@@ -436,9 +436,9 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
         if let Shape::Disk { radius, .. } = &mut light.shape {
             // A disk keeps its size: its radius from the scene's least, never 0.
             let label = ui.label("r");
-            ui.add(egui::DragValue::new(radius).speed(0.001).range(RADIUS_RANGE[0]..=RADIUS_RANGE[1]).max_decimals(4))
+            ui.add(egui::DragValue::new(radius).speed(0.004).range(RADIUS_RANGE[0]..=RADIUS_RANGE[1]).max_decimals(4))
                 .labelled_by(label.id)
-                .on_hover_text("The disk's radius: it keeps its normal and its radiance I/(π r²), so a larger disk is as bright far away and dimmer per area");
+                .on_hover_text("The disk's radius, 0.0001 to 1 (a value typed beyond is brought into that range): it keeps its normal and its intensity, so a larger disk lights a distant point alike and is dimmer per area");
             return;
         }
         // The shape by its radius: 0 a point, more a sphere.

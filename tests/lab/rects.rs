@@ -42,6 +42,19 @@ fn a_rect_preset_is_shaded_by_each_sides_rect_method() {
     h.get_by_label(RectMethod::LtcProxyFast.name()).click();
     settle(&mut h);
     assert_eq!(h.state().lab().rects().ltc, RectMethod::LtcProxyFast);
+    // The split names each side's rect method under its name (spheres and disks: none here).
+    let names = ltc_lab::app::plane::sized_side_names(
+        h.state().lab(),
+        &h.state().state().plane,
+        ("LTC", "BRDF"),
+    );
+    assert_eq!(
+        names,
+        (
+            "LTC\nrect: ltc-proxy-fast".to_string(),
+            "BRDF\nrect: exact".to_string()
+        )
+    );
 }
 
 #[test]

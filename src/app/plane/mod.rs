@@ -258,7 +258,8 @@ impl PlanePanel {
         }
         preview_label(ui, rect, self.shading.progress());
         if self.state.view == View::Split {
-            paint_divider(&painter, rect, self.divider_x(rect), sides);
+            let (a, b) = sized_side_names(lab, &self.state, sides);
+            paint_divider(&painter, rect, self.divider_x(rect), (&a, &b));
         }
         let markers = markers(lab, placed);
         paint_outlines(&painter, lab, placed, &markers);
@@ -593,6 +594,34 @@ fn side_names(side_b: SideB) -> (&'static str, &'static str) {
         SideB::Brdf => ("LTC", "BRDF"),
         SideB::TableB => ("A", "B"),
     }
+}
+
+/// The split's side names with, under each, how each side shades each shape with a size the
+/// scene holds ("rect: ltc-polygon"): the plane's two sides differ by those methods too.
+pub fn sized_side_names(lab: &Lab, state: &PlaneState, (a, b): (&str, &str)) -> (String, String) {
+    let settings = render_settings(lab, state, (1, 1));
+    let o = lab.overrides();
+    let shapes: Vec<Shape> = lab
+        .lights()
+        .list
+        .iter()
+        .map(|l| o.shaded_shape(l))
+        .collect();
+    let has = |f: fn(&Shape) -> bool| shapes.iter().any(f);
+    let name = |side: &str, m: ShapeMethods| {
+        let mut out = side.to_string();
+        if has(|s| matches!(s, Shape::Sphere { .. })) {
+            out += &format!("\nsphere: {}", m.sphere.name());
+        }
+        if has(|s| matches!(s, Shape::Rect { .. })) {
+            out += &format!("\nrect: {}", m.rect.name());
+        }
+        if has(|s| matches!(s, Shape::Disk { .. })) {
+            out += &format!("\ndisk: {}", m.disk.name());
+        }
+        out
+    };
+    (name(a, settings.a), name(b, settings.b))
 }
 
 /// Whether some light of the lab's scene, as shaded, is a sphere (whose cases the map shows).
