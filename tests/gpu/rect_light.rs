@@ -4,7 +4,7 @@
 //! rects: across the horizon, below it, facing away, from 0.1° to some 90° across; then
 //! renders of the failure preset by every method, GPU against CPU.
 
-use crate::gpu_common::{condition, gpu, gpu_frame, run_probe};
+use crate::gpu_common::{condition, gpu, run_probe};
 use glam::{DMat3, DVec3};
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::gpu::{brdf, ltc, rect_light, sphere_light};
@@ -240,34 +240,13 @@ fn gpu_rect_lights_match_the_cpu_methods() {
 /// sizes, s/d above 0.1).
 #[test]
 fn gpu_renders_of_rect_lights_match_the_cpu() {
-    use ltc_lab::render::{Method, RenderSettings, ShapeMethods, View};
-    use ltc_lab::scene::{RECT_PRESETS, preset};
     if gpu().is_none() {
         return;
     }
-    for (name, _) in RECT_PRESETS {
-        let scene = preset(name);
-        for method in [Method::Brdf, Method::LtcFast] {
-            for rect in RectMethod::ALL {
-                let s = RenderSettings {
-                    a: ShapeMethods {
-                        point: method,
-                        rect,
-                        ..RenderSettings::single(1, 1, method).a
-                    },
-                    ..RenderSettings::single(48, 40, method)
-                };
-                let what = format!("{name} {} {}", method.name(), rect.name());
-                let gpu = gpu_frame(&scene, &s);
-                assert_eq!(gpu.first_invalid(s.rules.clipping), None, "{what}");
-                let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
-                crate::gpu_common::assert_close(&what, &gpu, &cpu);
-            }
-        }
-        // The split the lab opens with: the LTC polygon against the exact integral.
-        let s = RenderSettings::compare(48, 40, View::Split);
-        let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
-        let gpu = gpu_frame(&scene, &s);
-        crate::gpu_common::assert_close(&format!("{name} split"), &gpu, &cpu);
-    }
+    crate::gpu_common::assert_shape_presets_match(
+        &ltc_lab::scene::RECT_PRESETS,
+        &RectMethod::ALL,
+        RectMethod::name,
+        |a, rect| ltc_lab::render::ShapeMethods { rect, ..a },
+    );
 }

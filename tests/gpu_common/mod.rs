@@ -188,3 +188,37 @@ pub fn condition(lobe: &ltc_lab::ltc::Ltc) -> f64 {
     let norm = |m: glam::DMat3| m.to_cols_array().iter().map(|x| x * x).sum::<f64>().sqrt();
     norm(lobe.cos_from_brdf) * norm(lobe.brdf_from_cos)
 }
+
+/// Each preset of `presets` rendered with each of `methods` (named by `name`) as side A's
+/// method for its shape (`with` puts it in), beside each point form, then the lab's opening
+/// split: the GPU against the CPU, finite, never negative, within the renders' parity
+/// tolerance. The shapes' preset tests (rects, disks) are this loop.
+pub fn assert_shape_presets_match<M: Copy>(
+    presets: &[(&str, &str)],
+    methods: &[M],
+    name: fn(M) -> &'static str,
+    with: fn(ltc_lab::render::ShapeMethods, M) -> ltc_lab::render::ShapeMethods,
+) {
+    use ltc_lab::render::{Method, RenderSettings, View};
+    for (preset, _) in presets {
+        let scene = ltc_lab::scene::preset(preset);
+        for method in [Method::Brdf, Method::LtcFast] {
+            for &m in methods {
+                let single = RenderSettings::single(48, 40, method);
+                let s = RenderSettings {
+                    a: with(single.a, m),
+                    ..single
+                };
+                let what = format!("{preset} {} {}", method.name(), name(m));
+                let gpu = gpu_frame(&scene, &s);
+                assert_eq!(gpu.first_invalid(s.rules.clipping), None, "{what}");
+                let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
+                assert_close(&what, &gpu, &cpu);
+            }
+        }
+        let s = RenderSettings::compare(48, 40, View::Split);
+        let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
+        let gpu = gpu_frame(&scene, &s);
+        assert_close(&format!("{preset} split"), &gpu, &cpu);
+    }
+}
