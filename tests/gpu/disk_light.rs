@@ -4,13 +4,13 @@
 //! edge-on, from 0.1° to some 90° across; then renders of the failure preset by every
 //! method, GPU against CPU.
 
-use crate::gpu_common::{condition, gpu, run_probe};
-use glam::{DMat3, DVec3};
+use crate::gpu_common::{PROBE_LTC, condition, gpu, pack_pair, run_probe};
+use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::gpu::{brdf, disk_light, ltc, rect_light, sphere_light};
 use ltc_lab::light::disk::{Disk, DiskMethod, DiskShading, GPU_EXACT_NODES, disk_light_with};
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::ltc::{Clipping, Ltc, LtcPair, Normalization};
+use ltc_lab::ltc::{Clipping, LtcPair, Normalization};
 use ltc_lab::measure::parity::RADIANCE_TOLERANCE;
 use ltc_lab::scene::SplitMix64;
 
@@ -25,11 +25,6 @@ const RECT_EXACT: u32 = 0u;
 const RECT_LTC_POLYGON: u32 = 1u;
 const RECT_LTC_PROXY: u32 = 2u;
 const RECT_LTC_PROXY_FAST: u32 = 3u;
-fn probe_ltc(k: u32) -> Ltc {
-    let m = mat3x3<f32>(probe_in[k].xyz, probe_in[k + 1u].xyz, probe_in[k + 2u].xyz);
-    let c = probe_in[k + 3u];
-    return Ltc(m, c.x, c.y, c.z, c.w);
-}
 @compute @workgroup_size(64)
 fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x;
@@ -107,22 +102,12 @@ fn draw(rng: &mut SplitMix64, lut: &Lut) -> Case {
 fn pack(c: &Case) -> Vec<[f32; 4]> {
     let f = |x: f64| x as f32;
     let v4 = |v: DVec3, w: f64| [f(v.x), f(v.y), f(v.z), f(w)];
-    let lobe = |l: &Ltc| {
-        let m: DMat3 = l.cos_from_brdf;
-        [
-            v4(m.x_axis, 0.0),
-            v4(m.y_axis, 0.0),
-            v4(m.z_axis, 0.0),
-            [f(l.det_cos_from_brdf), f(l.norm), f(l.fresnel), f(l.scale)],
-        ]
-    };
     let mut out = vec![
         v4(c.v, c.alpha),
         v4(c.disk.centre, c.f0),
         v4(c.disk.normal, c.disk.radius),
     ];
-    out.extend(lobe(&c.pair.spec));
-    out.extend(lobe(&c.pair.diff));
+    out.extend(pack_pair(&c.pair));
     out
 }
 
@@ -142,6 +127,7 @@ fn gpu_disk_lights_match_the_cpu_methods() {
         rect_light::SOURCE,
         disk_light::SOURCE,
         PROBE,
+        PROBE_LTC,
     ]
     .join("\n");
     let got = run_probe(

@@ -4,13 +4,13 @@
 //! rects: across the horizon, below it, facing away, from 0.1° to some 90° across; then
 //! renders of the failure preset by every method, GPU against CPU.
 
-use crate::gpu_common::{condition, gpu, run_probe};
-use glam::{DMat3, DVec3};
+use crate::gpu_common::{PROBE_LTC, condition, gpu, pack_pair, run_probe};
+use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::gpu::{brdf, ltc, rect_light, sphere_light};
 use ltc_lab::light::rect::{GPU_EXACT_NODES, Rect, RectMethod, RectShading, rect_light_with};
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::ltc::{Clipping, Ltc, LtcPair, Normalization};
+use ltc_lab::ltc::{Clipping, LtcPair, Normalization};
 use ltc_lab::measure::parity::RADIANCE_TOLERANCE;
 use ltc_lab::scene::SplitMix64;
 
@@ -22,11 +22,6 @@ const RECT_EXACT: u32 = 0u;
 const RECT_LTC_POLYGON: u32 = 1u;
 const RECT_LTC_PROXY: u32 = 2u;
 const RECT_LTC_PROXY_FAST: u32 = 3u;
-fn probe_ltc(k: u32) -> Ltc {
-    let m = mat3x3<f32>(probe_in[k].xyz, probe_in[k + 1u].xyz, probe_in[k + 2u].xyz);
-    let c = probe_in[k + 3u];
-    return Ltc(m, c.x, c.y, c.z, c.w);
-}
 @compute @workgroup_size(64)
 fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x;
@@ -110,23 +105,13 @@ fn draw(rng: &mut SplitMix64, lut: &Lut) -> Case {
 fn pack(c: &Case) -> Vec<[f32; 4]> {
     let f = |x: f64| x as f32;
     let v4 = |v: DVec3, w: f64| [f(v.x), f(v.y), f(v.z), f(w)];
-    let lobe = |l: &Ltc| {
-        let m: DMat3 = l.cos_from_brdf;
-        [
-            v4(m.x_axis, 0.0),
-            v4(m.y_axis, 0.0),
-            v4(m.z_axis, 0.0),
-            [f(l.det_cos_from_brdf), f(l.norm), f(l.fresnel), f(l.scale)],
-        ]
-    };
     let mut out = vec![
         v4(c.v, c.alpha),
         v4(c.rect.centre, c.f0),
         v4(c.rect.u, 0.0),
         v4(c.rect.v, 0.0),
     ];
-    out.extend(lobe(&c.pair.spec));
-    out.extend(lobe(&c.pair.diff));
+    out.extend(pack_pair(&c.pair));
     out
 }
 
@@ -145,6 +130,7 @@ fn gpu_rect_lights_match_the_cpu_methods() {
         sphere_light::SOURCE,
         rect_light::SOURCE,
         PROBE,
+        PROBE_LTC,
     ]
     .join("\n");
     let got = run_probe(

@@ -3,8 +3,8 @@
 //! representative point — measured directly on random spheres: cut by the horizon, below it,
 //! enclosing the point, from a tenth of a degree to 60°.
 
-use crate::gpu_common::{condition, gpu, gpu_frame, run_probe};
-use glam::{DMat3, DVec3};
+use crate::gpu_common::{PROBE_LTC, condition, gpu, gpu_frame, pack_pair, run_probe};
+use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::gpu::{brdf, ltc, sphere_light};
 use ltc_lab::light::sphere::cap::Cap;
@@ -12,7 +12,7 @@ use ltc_lab::light::sphere::{
     GPU_EXACT_NODES, SphereShading, sphere_exact, sphere_ltc_disk, sphere_representative_point,
 };
 use ltc_lab::ltc::lut::Lut;
-use ltc_lab::ltc::{Clipping, Ltc, LtcPair, Normalization};
+use ltc_lab::ltc::{Clipping, LtcPair, Normalization};
 use ltc_lab::measure::parity::RADIANCE_TOLERANCE;
 use ltc_lab::scene::SplitMix64;
 
@@ -20,11 +20,6 @@ const PROBE: &str = "
 @group(0) @binding(0) var<storage, read> probe_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> probe_out: array<vec4<f32>>;
 const PER_CASE: u32 = 11u;
-fn probe_ltc(k: u32) -> Ltc {
-    let m = mat3x3<f32>(probe_in[k].xyz, probe_in[k + 1u].xyz, probe_in[k + 2u].xyz);
-    let c = probe_in[k + 3u];
-    return Ltc(m, c.x, c.y, c.z, c.w);
-}
 @compute @workgroup_size(64)
 fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x;
@@ -87,23 +82,12 @@ fn draw(rng: &mut SplitMix64, lut: &Lut) -> Case {
 /// The case as the probe reads it: 11 vec4s.
 fn pack(c: &Case) -> Vec<[f32; 4]> {
     let f = |x: f64| x as f32;
-    let lobe = |l: &Ltc| {
-        let m: DMat3 = l.cos_from_brdf;
-        let col = |v: DVec3| [f(v.x), f(v.y), f(v.z), 0.0];
-        [
-            col(m.x_axis),
-            col(m.y_axis),
-            col(m.z_axis),
-            [f(l.det_cos_from_brdf), f(l.norm), f(l.fresnel), f(l.scale)],
-        ]
-    };
     let mut out = vec![
         [f(c.v.x), f(c.v.y), f(c.v.z), f(c.radius)],
         [f(c.u.x), f(c.u.y), f(c.u.z), f(c.alpha)],
         [f(c.f0), 0.0, 0.0, 0.0],
     ];
-    out.extend(lobe(&c.pair.spec));
-    out.extend(lobe(&c.pair.diff));
+    out.extend(pack_pair(&c.pair));
     out
 }
 
@@ -122,7 +106,7 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
     let mut rng = SplitMix64(32);
     let cases: Vec<Case> = (0..4096).map(|_| draw(&mut rng, lut)).collect();
     let input: Vec<[f32; 4]> = cases.iter().flat_map(pack).collect();
-    let got = probe(PROBE, &input, 2 * cases.len());
+    let got = probe(&[PROBE, PROBE_LTC].concat(), &input, 2 * cases.len());
     let want: Vec<[f64; 6]> = cases
         .iter()
         .map(|c| {

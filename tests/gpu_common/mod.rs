@@ -222,3 +222,32 @@ pub fn assert_shape_presets_match<M: Copy>(
         assert_close(&format!("{preset} split"), &gpu, &cpu);
     }
 }
+
+/// A probe's reader of an LTC lobe packed by `pack_pair` (four vec4s from `probe_in[k]`):
+/// composed into the probe shaders after their `probe_in` binding.
+pub const PROBE_LTC: &str = "
+fn probe_ltc(k: u32) -> Ltc {
+    let m = mat3x3<f32>(probe_in[k].xyz, probe_in[k + 1u].xyz, probe_in[k + 2u].xyz);
+    let c = probe_in[k + 3u];
+    return Ltc(m, c.x, c.y, c.z, c.w);
+}
+";
+
+/// Both lobes of `pair` as `PROBE_LTC` reads them: per lobe M⁻¹'s columns, then
+/// (det M⁻¹, norm, fresnel, scale); the specular lobe first.
+pub fn pack_pair(pair: &ltc_lab::ltc::LtcPair) -> Vec<[f32; 4]> {
+    let f = |x: f64| x as f32;
+    [&pair.spec, &pair.diff]
+        .into_iter()
+        .flat_map(|l| {
+            let m = l.cos_from_brdf;
+            let col = |v: glam::DVec3| [f(v.x), f(v.y), f(v.z), 0.0];
+            [
+                col(m.x_axis),
+                col(m.y_axis),
+                col(m.z_axis),
+                [f(l.det_cos_from_brdf), f(l.norm), f(l.fresnel), f(l.scale)],
+            ]
+        })
+        .collect()
+}
