@@ -45,7 +45,12 @@ fn add_lobes(method: u32, s: ptr<function, Sums>, ltc: LtcShading, light: GpuLig
         l /= vec2<f32>(ltc.spec_factor, ltc.diff_factor);
     }
     (*s).spec += light.intensity.rgb * l.x;
-    (*s).diff += light.intensity.rgb * l.y;
+    if method == METHOD_FILE {
+        // A file's diffuse sum holds the base colour (method_file.wgsl).
+        (*s).diff += params.base_color.rgb * light.intensity.rgb * l.y;
+    } else {
+        (*s).diff += light.intensity.rgb * l.y;
+    }
 }
 
 // A light with a size by the side's sphere method (src/cpu.rs sphere_term), in the shading
@@ -153,6 +158,11 @@ fn add_light(
     var shape = SHAPE_POINT;
     if SIZED {
         shape = light_shape(light);
+    }
+    // A method file's function for the shape, where it has one (method_file.wgsl).
+    if method == METHOD_FILE && method_file_shades(shape) {
+        add_method_light(shape, s, p, ltc, light);
+        return;
     }
     switch shape {
         case SHAPE_SPHERE: { add_sphere(method, sphere, s, p, ltc, light); }

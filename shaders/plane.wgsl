@@ -4,8 +4,8 @@
 // pixel between chunks, so that the lab can spread a render over frames; `resolve` turns the
 // sums into the image. Composed after brdf.wgsl, ltc.wgsl, sphere_light.wgsl,
 // rect_light.wgsl, disk_light.wgsl, scene.wgsl and light_shape.wgsl (each light by its
-// shape: add_light). The CPU reference is src/cpu.rs; the Rust side of this file is
-// src/gpu/plane.rs.
+// shape: add_light), and followed by method_file.wgsl and a method file's text. The CPU
+// reference is src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
 
 // Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
 const METHOD_BRDF: u32 = 0u;      // the exact BRDF as docs/design.md §1 writes it
@@ -14,6 +14,7 @@ const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻�
 const METHOD_LTC_FAST: u32 = 3u;  // per-pixel M⁻¹·tangent_from_world, unnormalized u, eq. 27
 const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16.wgsl)
 const METHOD_LTC_F16_PAIRS: u32 = 5u; // the same, two lights per vec2<f16> (ltc_f16.wgsl)
+const METHOD_FILE: u32 = 6u;      // a method loaded from a file (method_file.wgsl)
 
 // What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
@@ -259,6 +260,7 @@ fn add_point(method: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, lig
         case METHOD_BRDF_FAST: { add_brdf_fast(s, p, light); }
         case METHOD_LTC: { add_ltc(s, p, ltc, light); }
         case METHOD_LTC_F16, METHOD_LTC_F16_PAIRS: { add_ltc_f16(s, p, ltc, light); }
+        case METHOD_FILE: { add_method_fallback_point(s, p, ltc, light); }
         default: { add_ltc_fast(s, p, ltc, light); }
     }
 }
@@ -279,6 +281,10 @@ fn finish(method: u32, sums: Sums, ltc: LtcShading) -> vec3<f32> {
     let s = Sums(saturate_finite(sums.spec), saturate_finite(sums.diff));
     if is_factored(method) {
         return saturate_finite(ltc.spec_factor * s.spec + params.base_color.rgb * (ltc.diff_factor * s.diff));
+    }
+    // A file's diffuse holds its base colour already.
+    if method == METHOD_FILE {
+        return saturate_finite(s.spec + s.diff);
     }
     return saturate_finite(s.spec + params.base_color.rgb * s.diff);
 }
@@ -466,7 +472,8 @@ fn floor_of_means(@builtin(local_invocation_index) li: u32) {
         let count = max(s.z, 1.0);
         let mean = select(s.x / count, s.y / count, s.y > 0.0);
         // RELATIVE_FLOOR of src/metrics.rs, never below f32's smallest normal.
-        partials[tiles] = vec4<f32>(max(0.01 * mean, 0x1p-126f));
+        // y: the mark of a method file stopped (add_method_radiance), kept.
+        partials[tiles] = vec4<f32>(max(0.01 * mean, 0x1p-126f), partials[tiles].y, 0.0, 0.0);
     }
 }
 
@@ -486,6 +493,10 @@ fn resolve(@builtin(global_invocation_id) gid: vec3<u32>) {
             out = vec4<f32>(rel, rel, rel, 1.0);
         } else {
             out = vec4<f32>(select(l[1], l[0], uses_a(gid.xy)), 1.0);
+        }
+        // Alpha 2: a method file's loops were stopped somewhere (method_file.wgsl).
+        if method_file_was_stopped() {
+            out.w = 2.0;
         }
     }
     textureStore(output, vec2<i32>(gid.xy), out);

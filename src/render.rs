@@ -31,10 +31,23 @@ named_enum! {
         /// `LtcF16` with two lights per `vec2<f16>` lane pair, light positions relative to the
         /// workgroup's centre (GPUs with `SHADER_F16` only).
         LtcF16Pairs = "ltc-f16-pairs",
+        /// The method loaded from a WGSL file (`--method-file`; docs/design.md §5.13): the GPU
+        /// only, one file at a time.
+        File = "file",
     }
 }
 
 impl Method {
+    /// The lab's own methods (all but `File`).
+    pub const OWN: [Self; 6] = [
+        Self::Brdf,
+        Self::BrdfFast,
+        Self::Ltc,
+        Self::LtcFast,
+        Self::LtcF16,
+        Self::LtcF16Pairs,
+    ];
+
     /// The methods every adapter runs.
     pub const F32: [Self; 4] = [Self::Brdf, Self::BrdfFast, Self::Ltc, Self::LtcFast];
 

@@ -324,9 +324,21 @@ fn expression_value(
 }
 
 /// The shaders' constants that only the shaders read, each with why Rust has no twin.
-const SHADER_ONLY: [(&str, &str); 2] = [
+const SHADER_ONLY: [(&str, &str); 6] = [
     // bin.wgsl's workgroup: Rust dispatches its passes by tile, not by it.
     ("WORKGROUP", "bin.wgsl's workgroup size"),
+    // Which shapes a method file shades: written by Rust as it composes the file
+    // (method_file::MethodFile::composed, checked by tests/method_file.rs).
+    (
+        "METHOD_FILE_POINT",
+        "written when a method file is composed",
+    ),
+    (
+        "METHOD_FILE_SPHERE",
+        "written when a method file is composed",
+    ),
+    ("METHOD_FILE_RECT", "written when a method file is composed"),
+    ("METHOD_FILE_DISK", "written when a method file is composed"),
     // plane.wgsl's largest finite f32, the floor of an empty min.
     ("F32_MAX", "a bound inside plane.wgsl"),
 ];
@@ -419,6 +431,10 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             ("GL8_NODES", half(|&(x, _)| x)),
             ("GL8_WEIGHTS", half(|&(_, w)| w)),
             ("BACKGROUND", f32s(&background)),
+            (
+                "METHOD_FILE_STEPS",
+                vec![f64::from(ltc_lab::gpu::method_file::STEPS)],
+            ),
         ])
         .collect()
 }

@@ -53,6 +53,10 @@ pub struct Args {
     /// evaluations per light take seconds a frame on a CPU adapter.
     #[arg(long)]
     skip_exact: bool,
+    /// Also time the method in this WGSL file (docs/design.md §5.13) on every shape of the
+    /// run it shades, in the same run; every method is then timed with runtime checks.
+    #[arg(long)]
+    method_file: Option<PathBuf>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -70,6 +74,11 @@ pub fn run(a: &Args) -> Result<()> {
         // Refuse a bad path before minutes of measuring.
         check_writable(p)?;
     }
+    let method_file = a
+        .method_file
+        .as_deref()
+        .map(ltc_lab::gpu::method_file::MethodFile::read)
+        .transpose()?;
     let lut = a.lut.load()?;
     let ctx = GpuContext::new()?;
     ltc_lab::measure::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
@@ -80,7 +89,12 @@ pub fn run(a: &Args) -> Result<()> {
             "warning: the adapter has no timestamp queries; times are wall clock (submit to done) and include driver overhead"
         );
     }
-    let checks = if a.checked {
+    if method_file.is_some() && !a.checked {
+        eprintln!(
+            "note: with a method file every method is timed with wgpu's runtime checks (as --checked)"
+        );
+    }
+    let checks = if a.checked || method_file.is_some() {
         ShaderChecks::Checked
     } else {
         ShaderChecks::Trusted
@@ -97,6 +111,7 @@ pub fn run(a: &Args) -> Result<()> {
         rect_half_edge: a.rect_half_edge,
         disk_radius: a.disk_radius,
         skip_exact: a.skip_exact,
+        method_file,
     };
     let rows = ltc_lab::measure::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(
@@ -115,5 +130,5 @@ pub fn run(a: &Args) -> Result<()> {
         }
         write_atomically(p, text.as_bytes())?;
     }
-    print(&ltc_lab::measure::bench::markdown(&rows, &device))
+    print(&ltc_lab::measure::bench_table::markdown(&rows, &device))
 }

@@ -8,6 +8,7 @@ use ltc_lab::cpu;
 use ltc_lab::error::{Error, Result, number};
 use ltc_lab::files::{Claim, check_writable, write_atomically};
 use ltc_lab::gpu::GpuContext;
+use ltc_lab::gpu::method_file::MethodFile;
 use ltc_lab::gpu::plane::ShaderChecks;
 use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::light::disk::DiskMethod;
@@ -32,13 +33,14 @@ pub enum Shown {
 }
 
 impl Shown {
-    const ALL: [Self; 8] = [
+    const ALL: [Self; 9] = [
         Self::Alone(Method::Brdf),
         Self::Alone(Method::BrdfFast),
         Self::Alone(Method::Ltc),
         Self::Alone(Method::LtcFast),
         Self::Alone(Method::LtcF16),
         Self::Alone(Method::LtcF16Pairs),
+        Self::Alone(Method::File),
         Self::Compared(View::Split),
         Self::Compared(View::Diff),
     ];
@@ -65,9 +67,10 @@ pub struct Args {
     /// The scene, a TOML file (the presets are in assets/scenes/).
     #[arg(long)]
     scene: PathBuf,
-    /// brdf, brdf-fast, ltc, ltc-fast, ltc-f16, ltc-f16-pairs, split (LTC | BRDF) or diff
-    /// (|LTC − BRDF| / BRDF); with --table-b or --lut-b, split and diff compare two tables.
-    /// On the CPU the fast forms are the same math as their literal twins.
+    /// brdf, brdf-fast, ltc, ltc-fast, ltc-f16, ltc-f16-pairs, file (--method-file), split
+    /// (LTC | BRDF) or diff (|LTC − BRDF| / BRDF); with --table-b or --lut-b, split and diff
+    /// compare two tables; --point-a and --point-b pick other sides. On the CPU the fast
+    /// forms are the same math as their literal twins.
     #[arg(long, value_parser = one_of(&Shown::ALL, Shown::name))]
     method: Shown,
     /// Image size, WxH.
@@ -129,6 +132,18 @@ pub struct Args {
     /// The same, right of a split (the reference)
     #[arg(long, value_parser = one_of(&DiskMethod::ALL, DiskMethod::name), default_value = "exact")]
     disk_b: DiskMethod,
+    /// A method of your own: a WGSL file of functions under the interface of
+    /// docs/design.md §5.13, the method `file` (GPU only). With split or diff it is the left
+    /// side unless --point-a or --point-b says otherwise.
+    #[arg(long)]
+    method_file: Option<PathBuf>,
+    /// The point method left of a split (the numerator of a diff): ltc unless --method-file
+    /// makes it file.
+    #[arg(long, value_parser = one_of(&Method::ALL, Method::name))]
+    point_a: Option<Method>,
+    /// The point method right of a split (the reference of a diff): brdf by default.
+    #[arg(long, value_parser = one_of(&Method::ALL, Method::name))]
+    point_b: Option<Method>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -150,11 +165,12 @@ pub fn run(a: &Args) -> Result<()> {
     settings.b.rect = a.rect_b;
     settings.a.disk = a.disk_a;
     settings.b.disk = a.disk_b;
+    let method_file = sides(a, &mut settings)?;
     a.lut.check_horizon(a.horizon)?;
     let out = a
         .out
         .clone()
-        .unwrap_or_else(|| default_name(&a.scene, a.method, a.horizon));
+        .unwrap_or_else(|| default_name(&a.scene, a.method, a.horizon, method_file.as_ref()));
     let format = ImageFormat::of(&out)?;
     check_writable(&out)?;
     // Taken before any work: a file that appears meanwhile, or another run, gets another
@@ -194,10 +210,22 @@ pub fn run(a: &Args) -> Result<()> {
         let threads = rayon::current_num_threads();
         (frame, format!("the CPU ({threads} threads)"))
     } else {
-        render_gpu(&scene, &tables, &settings)?
+        render_gpu(&scene, &tables, &settings, method_file.as_ref())?
     };
     let seconds = start.elapsed().as_secs_f64();
-    if let Some((k, p)) = frame.first_invalid(settings.rules.clipping) {
+    if let Some(file) = &method_file {
+        // A file's light may be negative (a port's artifact, shown as it is), never NaN.
+        if let Some((k, p)) = frame.first_invalid(Clipping::NONE) {
+            return Err(Error::input(
+                &file.name,
+                format!(
+                    "pixel ({}, {}) came out {p}; nothing was written",
+                    k % frame.width,
+                    k / frame.width
+                ),
+            ));
+        }
+    } else if let Some((k, p)) = frame.first_invalid(settings.rules.clipping) {
         return Err(Error::machine(
             "render",
             format!(
@@ -227,7 +255,12 @@ pub fn run(a: &Args) -> Result<()> {
 
 /// `<scene stem>-<method>.png` in the current directory, `<scene stem>-<method>-<remedy>.png`
 /// with a horizon remedy.
-fn default_name(scene: &Path, shown: Shown, horizon: Horizon) -> PathBuf {
+fn default_name(
+    scene: &Path,
+    shown: Shown,
+    horizon: Horizon,
+    file: Option<&MethodFile>,
+) -> PathBuf {
     let stem = scene
         .file_stem()
         .map_or("render".into(), |s| s.to_string_lossy());
@@ -235,7 +268,54 @@ fn default_name(scene: &Path, shown: Shown, horizon: Horizon) -> PathBuf {
         Horizon::Eq30 => String::new(),
         h => format!("-{}", h.name()),
     };
-    PathBuf::from(format!("{stem}-{}{remedy}.png", shown.name()))
+    // A file's render names the file: `paper-100-split-no-case2.png`.
+    let file = file.map_or(String::new(), |f| {
+        let name = Path::new(&f.name)
+            .file_stem()
+            .map_or(String::new(), |s| s.to_string_lossy().into_owned());
+        format!("-{name}")
+    });
+    PathBuf::from(format!("{stem}-{}{remedy}{file}.png", shown.name()))
+}
+
+/// The point methods of the sides (`--point-a`, `--point-b`; with a method file and neither,
+/// the file on the left), and the method file, read and checked. Refused: the method `file`
+/// without a file, a file no side shades, a file on the CPU.
+fn sides(a: &Args, settings: &mut RenderSettings) -> Result<Option<MethodFile>> {
+    let file = a.method_file.as_deref().map(MethodFile::read).transpose()?;
+    if let Shown::Compared(_) = a.method {
+        let default_a = if file.is_some() && a.point_b != Some(Method::File) {
+            Method::File
+        } else {
+            Method::Ltc
+        };
+        settings.a.point = a.point_a.unwrap_or(default_a);
+        settings.b.point = a.point_b.unwrap_or(Method::Brdf);
+    } else if a.point_a.is_some() || a.point_b.is_some() {
+        return Err(Error::input(
+            "--point-a",
+            "--point-a and --point-b pick the sides of split and diff",
+        ));
+    }
+    let uses_file = settings.methods().contains(&Method::File);
+    match (&file, uses_file) {
+        (None, true) => Err(Error::input(
+            "--method-file",
+            "the method `file` needs --method-file (a WGSL file, docs/design.md §5.13)",
+        )),
+        (Some(f), false) => Err(Error::input(
+            "--method-file",
+            format!(
+                "no side shades with {}: pick --method file, split or diff",
+                f.name
+            ),
+        )),
+        (Some(f), true) if a.cpu => Err(Error::input(
+            "--cpu",
+            format!("{} is WGSL: a method file runs on the GPU only", f.name),
+        )),
+        _ => Ok(file),
+    }
 }
 
 /// The second table of a comparison, if one is asked for.
@@ -263,7 +343,12 @@ fn table_b(a: &Args) -> Result<Option<NamedTable>> {
 }
 
 /// The GPU render, checked against the adapter's limits before any work.
-fn render_gpu(scene: &Scene, tables: &NamedTables, s: &RenderSettings) -> Result<(Frame, String)> {
+fn render_gpu(
+    scene: &Scene,
+    tables: &NamedTables,
+    s: &RenderSettings,
+    file: Option<&MethodFile>,
+) -> Result<(Frame, String)> {
     let ctx = GpuContext::new().map_err(|e| Error {
         message: format!("{} (--cpu)", e.message),
         ..e
@@ -273,6 +358,7 @@ fn render_gpu(scene: &Scene, tables: &NamedTables, s: &RenderSettings) -> Result
     if s.b_reads_table_b {
         renderer.set_tables(&ctx, &tables.a.lut, Some(&tables.b.lut))?;
     }
+    renderer.set_method_file(&ctx, file.cloned());
     let (frame, ms) = renderer.render(&ctx, scene, s)?;
     Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))
 }

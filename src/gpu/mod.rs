@@ -13,6 +13,7 @@ pub mod light;
 pub mod limits;
 pub mod ltc;
 pub mod ltc_f16;
+pub mod method_file;
 pub mod plane;
 pub mod plane_render;
 pub mod renderer;
@@ -27,16 +28,22 @@ pub use light::{disk_light, light_shape, rect_light, sphere_light};
 #[cfg(not(target_arch = "wasm32"))]
 use crate::error::Error;
 
-/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, sphere_light.wgsl, rect_light.wgsl,
-/// disk_light.wgsl, scene.wgsl, light_shape.wgsl, plane.wgsl and
-/// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last.
+/// The WGSL of the plane shader without a method file (`plane_module_source_with`).
 pub fn plane_module_source(f16: bool) -> String {
+    plane_module_source_with(f16, None)
+}
+
+/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, sphere_light.wgsl, rect_light.wgsl,
+/// disk_light.wgsl, scene.wgsl, light_shape.wgsl, plane.wgsl, method_file.wgsl and
+/// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last — and
+/// then `file` as composed after them (or, without one, the stubs of its functions).
+pub fn plane_module_source_with(f16: bool, file: Option<&method_file::MethodFile>) -> String {
     let (enable, last) = if f16 {
         (ltc_f16::ENABLE, ltc_f16::SOURCE)
     } else {
         ("", ltc_f16::STUB)
     };
-    [
+    let lab = [
         enable,
         brdf::SOURCE,
         ltc::SOURCE,
@@ -46,9 +53,12 @@ pub fn plane_module_source(f16: bool) -> String {
         scene::SOURCE,
         light_shape::SOURCE,
         plane::SOURCE,
+        method_file::SOURCE,
         last,
     ]
-    .join("\n")
+    .join("\n");
+    let after = file.map_or_else(method_file::no_file, |f| f.composed(&lab));
+    format!("{lab}\n{after}")
 }
 
 /// The WGSL of the binning shader: scene.wgsl and bin.wgsl.

@@ -10,6 +10,7 @@ use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::light::light_shape::{disk_constant, rect_constant, sphere_constant};
 use crate::gpu::ltc::horizon_constant;
+use crate::gpu::method_file::MethodFile;
 use crate::gpu::target::OUTPUT_FORMAT;
 use crate::light::Shape;
 use crate::light::disk::DiskMethod;
@@ -31,6 +32,7 @@ pub fn method_constant(m: Method) -> (u32, &'static str) {
         Method::LtcFast => (3, "METHOD_LTC_FAST"),
         Method::LtcF16 => (4, "METHOD_LTC_F16"),
         Method::LtcF16Pairs => (5, "METHOD_LTC_F16_PAIRS"),
+        Method::File => (6, "METHOD_FILE"),
     }
 }
 
@@ -158,6 +160,8 @@ pub struct Pipelines {
 
 /// The plane shader's module and layouts, and every specialization compiled so far.
 pub struct PlanePipelines {
+    /// The method file composed into the module, if any.
+    pub file: Option<MethodFile>,
     module: wgpu::ShaderModule,
     pub layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
@@ -166,14 +170,26 @@ pub struct PlanePipelines {
 
 impl PlanePipelines {
     pub fn new(ctx: &GpuContext, checks: ShaderChecks) -> Self {
+        Self::with_file(ctx, checks, None)
+    }
+
+    /// The module with `file` composed into it: always with wgpu's runtime checks, whatever
+    /// `checks` says (the text is the user's, not ours).
+    pub fn with_file(ctx: &GpuContext, checks: ShaderChecks, file: Option<MethodFile>) -> Self {
         let device = &ctx.device;
+        let source = super::plane_module_source_with(ctx.has_f16(), file.as_ref());
         let desc = wgpu::ShaderModuleDescriptor {
             label: Some("plane.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(super::plane_module_source(ctx.has_f16()).into()),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        };
+        let checks = if file.is_some() {
+            ShaderChecks::Checked
+        } else {
+            checks
         };
         let module = match checks {
             ShaderChecks::Checked => device.create_shader_module(desc),
-            // SAFETY: the module is our own embedded WGSL, validated by naga in
+            // SAFETY: the module is our own embedded WGSL (never a method file's), validated by naga in
             // tests/shaders.rs; every buffer index in it is bounded by construction (lights
             // by light_count ≤ the buffer's length, tile lists by their total ≤ the capacity,
             // LUT cells clamped into the table, sums and texture writes guarded by the image
@@ -190,6 +206,7 @@ impl PlanePipelines {
             immediate_size: 0,
         });
         Self {
+            file,
             module,
             layout,
             pipeline_layout,

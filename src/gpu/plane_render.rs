@@ -45,6 +45,8 @@ pub struct PlaneRender {
     /// How far the tile lists are made: the next band of tile rows to count or to write
     /// (`None`: made, or no culling).
     bin_stage: Option<BinStage>,
+    /// The method file its pipelines hold, by name (what a stopped render names).
+    file: Option<String>,
 }
 
 /// What `PlaneRenderer::begin` hands a new render: the pipelines of its specialization and
@@ -54,6 +56,8 @@ pub struct Begun<'a> {
     pub layout: &'a wgpu::BindGroupLayout,
     pub binning: &'a Binning,
     pub tables: &'a LutBuffer,
+    /// The name of the method file the pipelines hold, if any.
+    pub file: Option<String>,
 }
 
 impl PlaneRender {
@@ -101,6 +105,7 @@ impl PlaneRender {
             settings: *settings,
             light_count: scene.lights.len(),
             bin_stage: cull.then_some(BinStage::Count(0)),
+            file: begun.file,
         }
     }
 
@@ -139,6 +144,11 @@ impl PlaneRender {
             t.clear();
         }
         let tiles = self.tiles();
+        if range.start == 0 {
+            // The mark of a method file stopped (after the floor in `partials`) begins clear.
+            let floor = u64::from(tiles.0 * tiles.1) * 16;
+            encoder.clear_buffer(&self.kept.target.partials, floor, Some(16));
+        }
         if self.bin_stage.take().is_some() {
             // Lists not (all) made band by band: made whole here, in one pass from row 0.
             self.binning
@@ -297,9 +307,25 @@ impl PlaneRender {
         self.kept.target.poison(ctx);
     }
 
-    /// The image, read back (blocks).
+    /// The image, read back (blocks); refused where a method file's loops were stopped.
     pub fn read(&self, ctx: &GpuContext) -> crate::error::Result<Frame> {
-        self.kept.target.read(ctx, &self.settings)
+        let (frame, stopped) = self.kept.target.read(ctx, &self.settings)?;
+        self.check_stopped(stopped)?;
+        Ok(frame)
+    }
+
+    /// An error naming the method file where `stopped` (the image's mark, `Target::read`).
+    fn check_stopped(&self, stopped: bool) -> crate::error::Result<()> {
+        match (&self.file, stopped) {
+            (Some(name), true) => Err(crate::error::Error::input(
+                name,
+                format!(
+                    "stopped: its loops ran past {} steps for one light (docs/design.md §5.13)",
+                    crate::gpu::method_file::STEPS
+                ),
+            )),
+            _ => Ok(()),
+        }
     }
 
     /// Starts reading the image back without waiting (the browser cannot wait):
@@ -312,6 +338,11 @@ impl PlaneRender {
     /// The frame of texels that `start_read` fetched.
     pub fn frame_of(&self, texels: &[u8]) -> Frame {
         self.kept.target.frame_of(texels, &self.settings)
+    }
+
+    /// Refused where the texels `start_read` fetched carry a method file's stop.
+    pub fn check_texels(&self, texels: &[u8]) -> crate::error::Result<()> {
+        self.check_stopped(crate::gpu::target::stopped(texels))
     }
 
     /// The entries of its tile lists, read back (blocks): how much culling kept of

@@ -8,6 +8,7 @@ use crate::gpu::GpuContext;
 use crate::gpu::bin::Binning;
 use crate::gpu::limits;
 use crate::gpu::ltc::LutBuffer;
+use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::{PlanePipelines, ShaderChecks, pipeline_key};
 use crate::gpu::plane_render::{Begun, Kept, PlaneRender};
 use crate::gpu::scene::GpuLight;
@@ -19,6 +20,8 @@ use crate::scene::Scene;
 
 pub struct PlaneRenderer {
     pipelines: PlanePipelines,
+    /// Whether its module (without a method file) is built with runtime checks.
+    checks: ShaderChecks,
     binning: Binning,
     tables: LutBuffer,
     /// Whether the module has the f16 methods (the device has `SHADER_F16`).
@@ -33,6 +36,7 @@ impl PlaneRenderer {
     pub fn new(ctx: &GpuContext, lut: &Lut, checks: ShaderChecks) -> Result<Self> {
         Ok(Self {
             pipelines: PlanePipelines::new(ctx, checks),
+            checks,
             binning: Binning::new(ctx),
             tables: LutBuffer::new(ctx, lut, None)?,
             f16: ctx.has_f16(),
@@ -46,6 +50,20 @@ impl PlaneRenderer {
     pub fn set_tables(&mut self, ctx: &GpuContext, a: &Lut, b: Option<&Lut>) -> Result<()> {
         self.tables = LutBuffer::new(ctx, a, b)?;
         Ok(())
+    }
+
+    /// Renders begun from now on shade the method `file` by `file`: the module is built again
+    /// with it composed in (with runtime checks), or without one. The same file keeps the
+    /// module.
+    pub fn set_method_file(&mut self, ctx: &GpuContext, file: Option<MethodFile>) {
+        if self.pipelines.file != file {
+            self.pipelines = PlanePipelines::with_file(ctx, self.checks, file);
+        }
+    }
+
+    /// The method file its module holds.
+    pub fn method_file(&self) -> Option<&MethodFile> {
+        self.pipelines.file.as_ref()
     }
 
     /// Whether this device can run `method` (`LtcF16` and `LtcF16Pairs` need `SHADER_F16`).
@@ -73,6 +91,12 @@ impl PlaneRenderer {
             return Err(Error::input(
                 m.name(),
                 format!("{} has no f16 shaders (SHADER_F16)", ctx.info.name),
+            ));
+        }
+        if settings.methods().contains(&Method::File) && self.pipelines.file.is_none() {
+            return Err(Error::input(
+                "the method file",
+                "the method `file` needs a method file (--method-file)",
             ));
         }
         if settings.b_reads_table_b && self.tables.b.is_none() {
@@ -109,6 +133,7 @@ impl PlaneRenderer {
             layout: &self.pipelines.layout,
             binning: &self.binning,
             tables: &self.tables,
+            file: self.pipelines.file.as_ref().map(|f| f.name.clone()),
         };
         Ok(PlaneRender::new(ctx, begun, (scene, settings), kept))
     }

@@ -108,7 +108,13 @@ impl Target {
             ),
             tile_lights: storage(ctx, "tile lights", tile_capacity * 4, none),
             tile_capacity,
-            partials: storage(ctx, "partials", (tile_count + 1) * 16, none),
+            // Cleared after the floor at a render's start (a method file's stop mark).
+            partials: storage(
+                ctx,
+                "partials",
+                (tile_count + 1) * 16,
+                wgpu::BufferUsages::COPY_DST,
+            ),
         }
     }
 
@@ -156,12 +162,12 @@ impl Target {
         );
     }
 
-    /// Reads the output back as a frame of `settings` (alpha marks the plane's pixels); waits
-    /// for the GPU.
-    pub fn read(&self, ctx: &GpuContext, settings: &RenderSettings) -> Result<Frame> {
+    /// Reads the output back as a frame of `settings` (alpha marks the plane's pixels), and
+    /// whether a method file was stopped in it (`stopped`); waits for the GPU.
+    pub fn read(&self, ctx: &GpuContext, settings: &RenderSettings) -> Result<(Frame, bool)> {
         let (w, h) = (self.width as u32, self.height as u32);
         let data = read_texels(ctx, &self.texture, (w, h), TEXEL_BYTES)?;
-        Ok(self.frame_of(&data, settings))
+        Ok((self.frame_of(&data, settings), stopped(&data)))
     }
 
     /// Starts reading the output back, for a caller that cannot wait (the browser): the
@@ -199,6 +205,14 @@ impl Target {
             divider: (settings.view == View::Split).then(|| settings.divider_column()),
         }
     }
+}
+
+/// Whether the output's texels carry the mark of a method file stopped (alpha 2, plane.wgsl
+/// `resolve`).
+pub fn stopped(data: &[u8]) -> bool {
+    data.chunks_exact(TEXEL_BYTES as usize)
+        .map(bytemuck::pod_read_unaligned::<[f32; 4]>)
+        .any(|t| t[3] > 1.5)
 }
 
 /// A texture of `size` read back, `texel_bytes` per texel, rows packed tightly (the copy's

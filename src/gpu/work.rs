@@ -52,13 +52,15 @@ pub fn light_function(method: Method) -> (&'static str, u32) {
         Method::LtcFast => ("add_ltc_fast", 1),
         Method::LtcF16 => ("add_ltc_f16", 1),
         Method::LtcF16Pairs => ("add_ltc_f16_pair", 2),
+        // The file's own function for a point (method_file.wgsl calls it for each light).
+        Method::File => ("method_point", 1),
     }
 }
 
 /// Each method's work per light in the plane shader (with the f16 forms: its f16 module).
 pub fn work_per_light() -> Result<Vec<(Method, Work)>, String> {
     let source = super::plane_module_source(true);
-    Method::ALL
+    Method::OWN
         .into_iter()
         .map(|m| {
             let (name, lights) = light_function(m);

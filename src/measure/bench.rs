@@ -6,6 +6,7 @@ use glam::DVec3;
 
 use crate::error::Result;
 use crate::gpu::GpuContext;
+use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::timing::FrameTimes;
@@ -36,6 +37,8 @@ pub enum Sizing {
     Sphere(SphereMethod),
     Rect(RectMethod),
     Disk(DiskMethod),
+    /// Every light of this shape (sphere, rect or disk), shaded by the method file.
+    File(&'static str),
 }
 
 impl Sizing {
@@ -46,6 +49,7 @@ impl Sizing {
             Self::Sphere(_) => "sphere",
             Self::Rect(_) => "rect",
             Self::Disk(_) => "disk",
+            Self::File(shape) => shape,
         }
     }
 
@@ -57,6 +61,7 @@ impl Sizing {
             Self::Sphere(m) => m.name(),
             Self::Rect(m) => m.name(),
             Self::Disk(m) => m.name(),
+            Self::File(_) => "file",
         }
     }
 }
@@ -133,6 +138,7 @@ impl BenchRow {
             (Sizing::Sphere(m), _) => format!("{} (r = {})", m.name(), self.size),
             (Sizing::Rect(m), _) => format!("rect {} (h = {})", m.name(), self.size),
             (Sizing::Disk(m), _) => format!("disk {} (r = {})", m.name(), self.size),
+            (Sizing::File(shape), _) => format!("{shape} file (size {})", self.size),
             (Sizing::Point, Horizon::Eq30) => self.method.name().to_string(),
             (Sizing::Point, h) => format!("{} ({})", self.method.name(), h.name()),
         }
@@ -254,6 +260,9 @@ pub struct BenchSettings {
     pub disk_radius: Option<f64>,
     /// Leave out the sized lights' exact methods (the reference, not a real-time method).
     pub skip_exact: bool,
+    /// Also time this method file, on every shape of the run it shades; every method of
+    /// the run is then timed with wgpu's runtime checks (a file is not trusted).
+    pub method_file: Option<MethodFile>,
 }
 
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
@@ -312,10 +321,25 @@ fn all_runs(ctx: &GpuContext, s: &BenchSettings) -> Vec<Run> {
                 | Sizing::Disk(DiskMethod::Exact)
         )
     };
+    let file = s.method_file.iter().flat_map(|f| {
+        let sizes = [Some(0.0), s.sphere_radius, s.rect_half_edge, s.disk_radius];
+        let shapes = ["point", "sphere", "rect", "disk"];
+        (0..4)
+            .filter(move |&k| f.shades[k] && sizes[k].is_some())
+            .map(move |k| {
+                let sizing = if k == 0 {
+                    Sizing::Point
+                } else {
+                    Sizing::File(shapes[k])
+                };
+                (Method::File, Horizon::Eq30, sizing)
+            })
+    });
     points
         .chain(spheres)
         .chain(rects)
         .chain(disks)
+        .chain(file)
         .filter(|r| !(s.skip_exact && exact(r)))
         .collect()
 }
@@ -356,6 +380,7 @@ pub fn run(
     check(ctx, &s.lights, s.size)?;
     let (width, height) = s.size;
     let mut renderer = PlaneRenderer::new(ctx, lut, s.checks)?;
+    renderer.set_method_file(ctx, s.method_file.clone());
     let mut rows = Vec::new();
     let mut kept = None;
     for &lights in &s.lights {
@@ -371,9 +396,15 @@ pub fn run(
             for (method, horizon, sizing) in all_runs(ctx, s) {
                 let (scene, size) = match sizing {
                     Sizing::Point => (&points, 0.0),
-                    Sizing::Sphere(_) => (&spheres, s.sphere_radius.unwrap_or(0.0)),
-                    Sizing::Rect(_) => (&rects, s.rect_half_edge.unwrap_or(0.0)),
-                    Sizing::Disk(_) => (&disks, s.disk_radius.unwrap_or(0.0)),
+                    Sizing::Rect(_) | Sizing::File("rect") => {
+                        (&rects, s.rect_half_edge.unwrap_or(0.0))
+                    }
+                    Sizing::Disk(_) | Sizing::File("disk") => {
+                        (&disks, s.disk_radius.unwrap_or(0.0))
+                    }
+                    Sizing::Sphere(_) | Sizing::File(_) => {
+                        (&spheres, s.sphere_radius.unwrap_or(0.0))
+                    }
                 };
                 let table = horizon.table().map_or(lut, |t| Lut::shipped(t));
                 renderer.set_tables(ctx, table, None)?;
@@ -431,207 +462,4 @@ pub fn run(
         }
     }
     Ok(rows)
-}
-
-/// The table in Markdown: one row per method, light count and culling, then the speed-ups of
-/// each LTC form over each BRDF form and of culling, and the paper's figures for reference.
-pub fn markdown(rows: &[BenchRow], device: &str) -> String {
-    let mut out = format!(
-        "GPU: {device}\n\n| method | lights | size | cull | range | in range | ms (median) | ms (min–max) | bin ms | fps | G light-px/s |\n|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n"
-    );
-    for r in rows {
-        let method = r.label();
-        out.push_str(&format!(
-            "| {method} | {} | {}×{} | {} | {} | {:.1}% | {:.3} | {:.3}–{:.3} | {} | {:.1} | {:.2} |\n",
-            r.lights,
-            r.width,
-            r.height,
-            if r.cull { "on" } else { "off" },
-            range_text(r.range),
-            100.0 * r.in_range_fraction,
-            r.ms_median,
-            r.ms_min,
-            r.ms_max,
-            r.bin_ms_median.map_or("–".into(), |b| format!("{b:.3}")),
-            r.fps(),
-            r.glightpx_per_s()
-        ));
-    }
-    let ms_with = |n: usize, cull: bool, m: Method, h: Horizon| {
-        rows.iter()
-            .find(|r| {
-                r.lights == n
-                    && r.cull == cull
-                    && r.method == m
-                    && r.horizon == h
-                    && r.sizing == Sizing::Point
-            })
-            .map(|r| r.ms_median)
-    };
-    let ms = |n: usize, cull: bool, m: Method| ms_with(n, cull, m, Horizon::Eq30);
-    let ratio = |slow: Option<f64>, fast: Option<f64>| match (slow, fast) {
-        (Some(s), Some(f)) => format!("{:.2}×", s / f),
-        _ => "–".into(),
-    };
-    let mut keys: Vec<(usize, bool)> = rows.iter().map(|r| (r.lights, r.cull)).collect();
-    keys.dedup();
-    out.push_str("\nSpeed-up (ms of the slower / ms of the faster, same run):\n\n| lights | cull | ltc / brdf | ltc-fast / brdf | ltc / brdf-fast | ltc-fast / brdf-fast | ltc-f16-pairs / ltc-fast |\n|---:|---|---:|---:|---:|---:|---:|\n");
-    for &(n, cull) in &keys {
-        let m = |method| ms(n, cull, method);
-        out.push_str(&format!(
-            "| {n} | {} | {} | {} | {} | {} | {} |\n",
-            if cull { "on" } else { "off" },
-            ratio(m(Method::Brdf), m(Method::Ltc)),
-            ratio(m(Method::Brdf), m(Method::LtcFast)),
-            ratio(m(Method::BrdfFast), m(Method::Ltc)),
-            ratio(m(Method::BrdfFast), m(Method::LtcFast)),
-            ratio(m(Method::LtcFast), m(Method::LtcF16Pairs)),
-        ));
-    }
-    let counts: Vec<usize> = keys.iter().map(|k| k.0).collect();
-    if rows.iter().any(|r| r.cull) && rows.iter().any(|r| !r.cull) {
-        out.push_str("\nCulling (unculled ms / culled ms, same run):\n\n| lights | brdf | ltc-fast | ltc-f16-pairs |\n|---:|---:|---:|---:|\n");
-        let mut seen = counts.clone();
-        seen.dedup();
-        for n in seen {
-            let r = |m| ratio(ms(n, false, m), ms(n, true, m));
-            out.push_str(&format!(
-                "| {n} | {} | {} | {} |\n",
-                r(Method::Brdf),
-                r(Method::LtcFast),
-                r(Method::LtcF16Pairs)
-            ));
-        }
-    }
-    let mut remedies: Vec<Horizon> = Vec::new();
-    for r in rows.iter().filter(|r| r.horizon != Horizon::Eq30) {
-        if !remedies.contains(&r.horizon) {
-            remedies.push(r.horizon);
-        }
-    }
-    if !remedies.is_empty() {
-        let names: Vec<&str> = remedies.iter().map(|h| h.name()).collect();
-        out.push_str(&format!(
-            "\nHorizon remedies (ms with the remedy / ms with eq30, same run):\n\n| lights | cull | method | {} |\n|---:|---|---|{}\n",
-            names.join(" | "),
-            "---:|".repeat(names.len())
-        ));
-        for &(n, cull) in &keys {
-            for m in [Method::Ltc, Method::LtcFast] {
-                let cells: Vec<String> = remedies
-                    .iter()
-                    .map(|&h| ratio(ms_with(n, cull, m, h), ms(n, cull, m)))
-                    .collect();
-                out.push_str(&format!(
-                    "| {n} | {} | {} | {} |\n",
-                    if cull { "on" } else { "off" },
-                    m.name(),
-                    cells.join(" | ")
-                ));
-            }
-        }
-    }
-    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Sphere(_))) {
-        let methods = SphereMethod::ALL.map(Sizing::Sphere);
-        let title = format!("every light a sphere of radius {}", r.size);
-        let pair = (
-            Sizing::Sphere(SphereMethod::LtcDisk),
-            Sizing::Sphere(SphereMethod::LtcPoint),
-        );
-        out.push_str(&sized_markdown(
-            rows,
-            (&keys, &title),
-            (&methods, pair),
-            &ms,
-        ));
-    }
-    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Rect(_))) {
-        let methods = RectMethod::ALL.map(Sizing::Rect);
-        let title = format!(
-            "every light a square rect of half-edge {}, facing the plane",
-            r.size
-        );
-        let pair = (
-            Sizing::Rect(RectMethod::LtcPolygon),
-            Sizing::Rect(RectMethod::LtcPoint),
-        );
-        out.push_str(&sized_markdown(
-            rows,
-            (&keys, &title),
-            (&methods, pair),
-            &ms,
-        ));
-    }
-    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Disk(_))) {
-        let methods = DiskMethod::ALL.map(Sizing::Disk);
-        let title = format!("every light a disk of radius {}, facing the plane", r.size);
-        let pair = (
-            Sizing::Disk(DiskMethod::LtcDisk),
-            Sizing::Disk(DiskMethod::LtcPoint),
-        );
-        out.push_str(&sized_markdown(
-            rows,
-            (&keys, &title),
-            (&methods, pair),
-            &ms,
-        ));
-    }
-    out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");
-    for k in 0..PAPER_LIGHTS.len() {
-        out.push_str(&format!(
-            "| {} | {} | {} | {:.2}× |\n",
-            PAPER_LIGHTS[k],
-            PAPER_BRDF_FPS[k],
-            PAPER_LTC_FPS[k],
-            PAPER_LTC_FPS[k] / PAPER_BRDF_FPS[k]
-        ));
-    }
-    out
-}
-
-/// Lights with a size: each method's ms per frame and its cost over the point formula's
-/// (ltc and ltc-fast on points, same run, same lights), and one sized method's over another
-/// (`pair`: the LTC disk's or polygon's over the centre's point formula on the same lights).
-fn sized_markdown(
-    rows: &[BenchRow],
-    (keys, title): (&[(usize, bool)], &str),
-    (methods, pair): (&[Sizing], (Sizing, Sizing)),
-    point_ms: &dyn Fn(usize, bool, Method) -> Option<f64>,
-) -> String {
-    let names: Vec<&str> = methods.iter().map(|m| m.method_name()).collect();
-    let pair_name = format!("{} / {}", pair.0.method_name(), pair.1.method_name());
-    let mut out = format!(
-        "\nLights with a size ({title}; ms, and × the point formula's ltc-fast / ltc, same run):\n\n| lights | cull | {} | {pair_name} |\n|---:|---|{}---:|\n",
-        names.join(" | "),
-        "---:|".repeat(names.len())
-    );
-    for &(n, cull) in keys {
-        let sized_ms = |sizing| {
-            rows.iter()
-                .find(|r| r.lights == n && r.cull == cull && r.sizing == sizing)
-                .map(|r| r.ms_median)
-        };
-        let point = |m| point_ms(n, cull, m);
-        let (fast, paper) = (point(Method::LtcFast), point(Method::Ltc));
-        let cells: Vec<String> = methods
-            .iter()
-            .map(|&m| match (sized_ms(m), fast, paper) {
-                (Some(ms), Some(f), Some(p)) => {
-                    format!("{ms:.3} ({:.2}× / {:.2}×)", ms / f, ms / p)
-                }
-                (Some(ms), _, _) => format!("{ms:.3}"),
-                _ => "–".into(),
-            })
-            .collect();
-        let ratio = match (sized_ms(pair.0), sized_ms(pair.1)) {
-            (Some(a), Some(b)) => format!("{:.2}×", a / b),
-            _ => "–".into(),
-        };
-        out.push_str(&format!(
-            "| {n} | {} | {} | {ratio} |\n",
-            if cull { "on" } else { "off" },
-            cells.join(" | ")
-        ));
-    }
-    out
 }

@@ -5,6 +5,7 @@
 
 pub mod atlas;
 pub mod bench;
+pub mod bench_table;
 pub mod eval;
 pub mod horizon;
 pub mod parity;

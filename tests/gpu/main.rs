@@ -8,6 +8,7 @@ mod gpu_common;
 
 mod disk_light;
 mod lut;
+mod method_file;
 mod parity;
 mod rect_light;
 mod render;

@@ -21,7 +21,7 @@ const H: usize = 40;
 /// The methods this adapter runs.
 fn methods() -> Vec<Method> {
     let f16 = gpu().is_some_and(|g| g.ctx.has_f16());
-    Method::ALL
+    Method::OWN
         .into_iter()
         .filter(|m| f16 || !m.needs_f16())
         .collect()

@@ -1,0 +1,331 @@
+//! `shaders/method_file.wgsl` and a method loaded from a WGSL file (docs/design.md §5.13):
+//! one function per light shape it shades, under the interface that file declares, checked
+//! by naga against that interface alone (its errors at the file's own line and column), then
+//! composed after the lab's plane shader — its names renamed where they meet the lab's, a
+//! step guard at the top of each of its loops — as the method `file`.
+
+pub mod wgsl_text;
+
+use wgpu::naga;
+
+use crate::error::{Error, Result};
+use wgsl_text::{first_directive, line_column, module_names, rewrite, tokens};
+
+/// The shader text (composed after `plane::SOURCE`).
+pub const SOURCE: &str = include_str!("../../../shaders/method_file.wgsl");
+
+/// The most bytes a method file may hold: a file is read up to this and refused past it
+/// (the lab's own shaders are 120 KiB together).
+pub const MAX_BYTES: usize = 256 * 1024;
+
+/// A file's functions: the name, the light's struct, and the shape's name, in the order of
+/// `MethodFile::shades` (point, sphere, rect, disk).
+pub const ENTRIES: [(&str, &str, &str); 4] = [
+    ("method_point", "MethodPoint", "point"),
+    ("method_sphere", "MethodSphere", "sphere"),
+    ("method_rect", "MethodRect", "rect"),
+    ("method_disk", "MethodDisk", "disk"),
+];
+
+/// METHOD_FILE_STEPS of method_file.wgsl: the steps a file's loops may take for one light
+/// (tests/shaders.rs checks the two agree).
+pub const STEPS: u32 = 16384;
+
+/// The constants of method_file.wgsl that say which shapes the file shades.
+const SHADES_CONSTANTS: [&str; 4] = [
+    "METHOD_FILE_POINT",
+    "METHOD_FILE_SPHERE",
+    "METHOD_FILE_RECT",
+    "METHOD_FILE_DISK",
+];
+
+/// The statement at the top of every loop body of a file (method_file.wgsl).
+const LOOP_GUARD: &str = "if method_file_over() { break; }";
+
+/// A method read from a file and checked: its name, its text as written, and the shapes it
+/// has a function for. Never stored, linked or put in a lesson: only its name travels.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MethodFile {
+    /// The file's name, as messages, charts and tables show it.
+    pub name: String,
+    source: String,
+    /// Whether it shades points, spheres, rects and disks (`ENTRIES`' order).
+    pub shades: [bool; 4],
+}
+
+impl MethodFile {
+    /// The file at `path`, read up to `MAX_BYTES` and checked (`from_source`).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn read(path: &std::path::Path) -> Result<Self> {
+        use std::io::Read;
+        let shown = path.display().to_string();
+        let file = std::fs::File::open(path)
+            .map_err(|e| Error::input(&shown, format!("cannot read it: {e}")))?;
+        let mut bytes = Vec::new();
+        file.take(MAX_BYTES as u64 + 1)
+            .read_to_end(&mut bytes)
+            .map_err(|e| Error::input(&shown, format!("cannot read it: {e}")))?;
+        let name = path
+            .file_name()
+            .map_or(shown.clone(), |n| n.to_string_lossy().into_owned());
+        Self::from_bytes(&name, &bytes).map_err(|e| Error { input: shown, ..e })
+    }
+
+    /// A method from a file's bytes (a dropped or picked file): UTF-8 and at most
+    /// `MAX_BYTES`, then checked (`from_source`).
+    pub fn from_bytes(name: &str, bytes: &[u8]) -> Result<Self> {
+        if bytes.len() > MAX_BYTES {
+            return Err(Error::input(
+                name,
+                format!("a method file holds at most {} KiB", MAX_BYTES / 1024),
+            ));
+        }
+        let text = std::str::from_utf8(bytes)
+            .map_err(|e| Error::input(name, format!("not UTF-8 text: {e}")))?;
+        Self::from_source(name, text)
+    }
+
+    /// Checks `source` as a method: WGSL that, beside the interface structs alone, parses and
+    /// validates; defines at least one of `ENTRIES` and each with its signature; holds no
+    /// directive, entry point, binding, workgroup memory or override; and composes with the
+    /// lab's shader. Each refusal names the line and column of the file.
+    pub fn from_source(name: &str, source: &str) -> Result<Self> {
+        if source.len() > MAX_BYTES {
+            return Err(Error::input(
+                name,
+                format!("a method file holds at most {} KiB", MAX_BYTES / 1024),
+            ));
+        }
+        let at = |offset: usize, message: String| {
+            let (line, column) = line_column(source, offset);
+            Error::input(name, format!("line {line}, column {column}: {message}"))
+        };
+        let toks = tokens(source);
+        if let Some((directive, offset)) = first_directive(&toks) {
+            return Err(at(
+                offset,
+                format!(
+                    "`{directive}` directives are not taken: the file is composed after the lab's shader"
+                ),
+            ));
+        }
+        let beside = format!("{source}\n{}", interface());
+        let module = check(name, source, &beside)?;
+        if let Some(ep) = module.entry_points.first() {
+            let offset = toks
+                .iter()
+                .find(|t| t.text == ep.name)
+                .map_or(0, |t| t.start);
+            return Err(at(
+                offset,
+                "a method file holds functions, not entry points".into(),
+            ));
+        }
+        for (_, var) in module.global_variables.iter() {
+            if var.space != naga::AddressSpace::Private {
+                let var_name = var.name.as_deref().unwrap_or("");
+                let offset = toks
+                    .iter()
+                    .find(|t| t.text == var_name)
+                    .map_or(0, |t| t.start);
+                return Err(at(
+                    offset,
+                    format!(
+                        "`{var_name}`: only var<private> is taken (no bindings, no workgroup memory)"
+                    ),
+                ));
+            }
+        }
+        if let Some((_, o)) = module.overrides.iter().next() {
+            let o_name = o.name.as_deref().unwrap_or("");
+            let offset = toks
+                .iter()
+                .find(|t| t.text == o_name)
+                .map_or(0, |t| t.start);
+            return Err(at(
+                offset,
+                format!("`{o_name}`: overrides are the lab's; use a const"),
+            ));
+        }
+        let defined = |f: &str| {
+            module
+                .functions
+                .iter()
+                .any(|(_, g)| g.name.as_deref() == Some(f))
+        };
+        let shades = ENTRIES.map(|(f, _, _)| defined(f));
+        if !shades.contains(&true) {
+            return Err(Error::input(
+                name,
+                format!(
+                    "defines none of {}: a method file shades at least one light shape (docs/design.md §5.13)",
+                    ENTRIES.map(|e| e.0).join(", ")
+                ),
+            ));
+        }
+        check_signatures(name, source, &beside, shades)?;
+        let file = Self {
+            name: name.to_string(),
+            source: source.to_string(),
+            shades,
+        };
+        let composed = crate::gpu::plane_module_source_with(false, Some(&file));
+        check(name, "", &composed).map_err(|e| Error {
+            message: format!(
+                "the lab could not compose it with its shader: {}",
+                e.message
+            ),
+            ..e
+        })?;
+        Ok(file)
+    }
+
+    /// The text as the file holds it.
+    pub fn source(&self) -> &str {
+        &self.source
+    }
+
+    /// The shapes it shades, by name ("point, rect").
+    pub fn shapes(&self) -> String {
+        ENTRIES
+            .iter()
+            .zip(self.shades)
+            .filter(|(_, s)| *s)
+            .map(|(e, _)| e.2)
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// What follows `lab` (the plane shader's text) in the module: the constants of the
+    /// shapes it shades, its text with every module-scope name that meets one of `lab`'s
+    /// renamed and a step guard in each loop, and a stub for each shape it does not shade.
+    pub fn composed(&self, lab: &str) -> String {
+        let lab_names: std::collections::HashSet<&str> = module_names(&tokens(lab))
+            .into_iter()
+            .map(|n| n.0)
+            .collect();
+        let own = module_names(&tokens(&self.source));
+        let taken = |n: &str| lab_names.contains(n) || own.iter().any(|o| o.0 == n);
+        let renames: Vec<(String, String)> = own
+            .iter()
+            .filter(|(n, _)| lab_names.contains(n))
+            .map(|(n, _)| {
+                let mut new = format!("file_{n}");
+                while taken(&new) {
+                    new.insert(0, 'x');
+                }
+                (n.to_string(), new)
+            })
+            .collect();
+        let body = rewrite(&self.source, &renames, LOOP_GUARD);
+        format!(
+            "// The method file {:?} (renamed: {}).\n{}\n{body}\n{}",
+            self.name,
+            if renames.is_empty() {
+                "nothing".to_string()
+            } else {
+                renames
+                    .iter()
+                    .map(|(a, b)| format!("{a} as {b}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            },
+            shade_constants(self.shades),
+            stubs(self.shades),
+        )
+    }
+}
+
+/// The text after the lab's where no file is loaded: no shape shaded, every function a stub.
+pub fn no_file() -> String {
+    format!("{}\n{}", shade_constants([false; 4]), stubs([false; 4]))
+}
+
+fn shade_constants(shades: [bool; 4]) -> String {
+    SHADES_CONSTANTS
+        .iter()
+        .zip(shades)
+        .map(|(c, s)| format!("const {c}: bool = {s};\n"))
+        .collect()
+}
+
+/// A function returning nothing for each shape not shaded (never called: the loop takes the
+/// lab's method there).
+fn stubs(shades: [bool; 4]) -> String {
+    ENTRIES
+        .iter()
+        .zip(shades)
+        .filter(|(_, s)| !*s)
+        .map(|((f, light, _), _)| {
+            format!(
+                "fn {f}(pixel: MethodPixel, light: {light}) -> MethodRadiance {{\n    return MethodRadiance(vec3<f32>(0.0), vec3<f32>(0.0));\n}}\n"
+            )
+        })
+        .collect()
+}
+
+/// The structs of method_file.wgsl, all a file sees.
+pub fn interface() -> &'static str {
+    let end = SOURCE
+        .find("// The steps a file's loops")
+        .unwrap_or(SOURCE.len());
+    &SOURCE[..end]
+}
+
+/// `text` parsed and validated by naga; an error in its first `source.len()` bytes (the
+/// file's own text) at its line and column there.
+fn check(name: &str, source: &str, text: &str) -> Result<naga::Module> {
+    let place = |offset: Option<usize>, message: String| match offset {
+        Some(o) if o < source.len() => {
+            let (line, column) = line_column(source, o);
+            Error::input(name, format!("line {line}, column {column}: {message}"))
+        }
+        _ => Error::input(name, message),
+    };
+    let module = naga::front::wgsl::parse_str(text).map_err(|e| {
+        place(
+            e.location(text).map(|l| l.offset as usize),
+            e.message().to_string(),
+        )
+    })?;
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::all(),
+    )
+    .validate(&module)
+    .map_err(|e| {
+        let mut message = e.as_inner().to_string();
+        let mut source_err = std::error::Error::source(e.as_inner());
+        while let Some(s) = source_err {
+            message.push_str(&format!(": {s}"));
+            source_err = s.source();
+        }
+        place(e.location(text).map(|l| l.offset as usize), message)
+    })?;
+    Ok(module)
+}
+
+/// Each function the file defines called as the light loop calls it: a wrong signature is
+/// refused at the function's own line.
+fn check_signatures(name: &str, source: &str, beside: &str, shades: [bool; 4]) -> Result<()> {
+    for ((f, light, _), _) in ENTRIES.iter().zip(shades).filter(|(_, s)| *s) {
+        let call = format!(
+            "{beside}\nfn method_file_call(p: MethodPixel, l: {light}) -> MethodRadiance {{ return {f}(p, l); }}\n"
+        );
+        if check(name, "", &call).is_err() {
+            let toks = tokens(source);
+            let offset = toks
+                .windows(2)
+                .find(|w| w[0].text == "fn" && w[1].text == *f)
+                .map_or(0, |w| w[1].start);
+            let (line, column) = line_column(source, offset);
+            return Err(Error::input(
+                name,
+                format!(
+                    "line {line}, column {column}: {f} must be fn(pixel: MethodPixel, light: {light}) -> MethodRadiance"
+                ),
+            ));
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,204 @@
+//! A method loaded from a WGSL file (docs/design.md §5.13) rendered on the GPU: a file equal
+//! to the lab's `ltc` gives the CPU reference's `ltc` image; the artifact example gives the
+//! image of `ltc` without case 2, negative light and all; a loop that never ends is stopped
+//! and named, and the renderer goes on; the other examples shade finite light.
+
+use crate::gpu_common::{assert_close, gpu};
+use ltc_lab::cpu;
+use ltc_lab::error::ErrorKind;
+use ltc_lab::gpu::method_file::MethodFile;
+use ltc_lab::gpu::plane::ShaderChecks;
+use ltc_lab::gpu::renderer::PlaneRenderer;
+use ltc_lab::light::rect::RectMethod;
+use ltc_lab::ltc::Clipping;
+use ltc_lab::ltc::lut::Lut;
+use ltc_lab::metrics::luminance;
+use ltc_lab::render::{Frame, Method, RenderSettings};
+use ltc_lab::scene::{Scene, preset};
+
+const SIZE: (usize, usize) = (96, 64);
+
+fn shipped(name: &str) -> MethodFile {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("assets/methods")
+        .join(name);
+    MethodFile::read(&path).unwrap()
+}
+
+/// A renderer of its own (the shared one keeps its module), holding `file`.
+fn renderer_with(file: MethodFile) -> Option<PlaneRenderer> {
+    let g = gpu()?;
+    let mut r = PlaneRenderer::new(&g.ctx, Lut::embedded(), ShaderChecks::Checked).unwrap();
+    r.set_method_file(&g.ctx, Some(file));
+    Some(r)
+}
+
+fn settings(method: Method, clipping: Clipping) -> RenderSettings {
+    let mut s = RenderSettings::single(SIZE.0, SIZE.1, method);
+    s.rules.clipping = clipping;
+    s
+}
+
+fn render(r: &mut PlaneRenderer, scene: &Scene, s: &RenderSettings) -> Frame {
+    r.render(&gpu().unwrap().ctx, scene, s).unwrap().0
+}
+
+#[test]
+fn a_file_equal_to_ltc_gives_the_labs_ltc_image() {
+    let Some(mut r) = renderer_with(shipped("ltc.wgsl")) else {
+        return;
+    };
+    for name in [
+        "paper-100",
+        "figure2-normal",
+        "figure2-case1",
+        "figure2-case2",
+    ] {
+        let scene = preset(name);
+        let file = render(&mut r, &scene, &settings(Method::File, Clipping::BOTH));
+        let reference = cpu::render(
+            &scene,
+            Lut::embedded(),
+            &settings(Method::Ltc, Clipping::BOTH),
+        );
+        assert_close(name, &file, &reference);
+    }
+}
+
+#[test]
+fn the_artifact_example_is_ltc_without_case_2() {
+    let Some(mut r) = renderer_with(shipped("no-case2.wgsl")) else {
+        return;
+    };
+    let scene = preset("figure2-case2");
+    let file = render(&mut r, &scene, &settings(Method::File, Clipping::BOTH));
+    // The file's own rules, whatever the lab's clipping says: case 1 only.
+    let without = cpu::render(
+        &scene,
+        Lut::embedded(),
+        &settings(Method::Ltc, Clipping::CASE1),
+    );
+    assert_close("no-case2.wgsl", &file, &without);
+    let with = cpu::render(
+        &scene,
+        Lut::embedded(),
+        &settings(Method::Ltc, Clipping::BOTH),
+    );
+    let negative = |f: &Frame| f.pixels.iter().filter(|p| luminance(**p) < 0.0).count();
+    assert_eq!(
+        negative(&with),
+        0,
+        "the lab's ltc never sums negative light"
+    );
+    assert!(
+        negative(&file) > SIZE.0 * SIZE.1 / 100,
+        "the artifact: negative light on {} pixels",
+        negative(&file)
+    );
+}
+
+#[test]
+fn a_loop_that_never_ends_is_stopped_and_named() {
+    let src = "fn method_point(pixel: MethodPixel, light: MethodPoint) -> MethodRadiance {\n    var x = 0.0;\n    loop { x += 1.0; }\n    return MethodRadiance(vec3<f32>(x), vec3<f32>(0.0));\n}\n";
+    let file = MethodFile::from_source("forever.wgsl", src).unwrap();
+    let Some(mut r) = renderer_with(file) else {
+        return;
+    };
+    let g = gpu().unwrap();
+    let scene = preset("figure2-normal");
+    // Matched, not expect_err: a frame's Debug would print every pixel.
+    let Err(e) = r.render(&g.ctx, &scene, &settings(Method::File, Clipping::BOTH)) else {
+        panic!("a loop that never ends was not stopped");
+    };
+    assert_eq!(
+        (e.kind, e.input.as_str()),
+        (ErrorKind::Input, "forever.wgsl")
+    );
+    assert!(e.message.contains("stopped"), "{e}");
+    // The device goes on: the lab's own method renders, unmarked, in the same buffers.
+    let ltc = render(&mut r, &scene, &settings(Method::Ltc, Clipping::BOTH));
+    let reference = cpu::render(
+        &scene,
+        Lut::embedded(),
+        &settings(Method::Ltc, Clipping::BOTH),
+    );
+    assert_close("ltc after a stop", &ltc, &reference);
+}
+
+#[test]
+fn the_disk_and_rect_examples_shade_finite_light() {
+    for (file, presets) in [
+        (
+            "ltc-disk-points.wgsl",
+            ["paper-100", "figure2-case2", "sphere-touching"],
+        ),
+        (
+            "threejs-rect.wgsl",
+            ["rect-ceiling", "rect-horizon", "rect-limits"],
+        ),
+    ] {
+        let Some(mut r) = renderer_with(shipped(file)) else {
+            return;
+        };
+        for name in presets {
+            let f = render(
+                &mut r,
+                &preset(name),
+                &settings(Method::File, Clipping::BOTH),
+            );
+            let bad = f
+                .pixels
+                .iter()
+                .find(|p| !p.is_finite() || p.min_element() < 0.0);
+            assert!(bad.is_none(), "{file} on {name}: {bad:?}");
+            assert!(
+                f.pixels.iter().any(|p| luminance(*p) > 0.0),
+                "{file} on {name}: black"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_rect_example_is_the_labs_proxy_within_its_edge_fit() {
+    let Some(mut r) = renderer_with(shipped("threejs-rect.wgsl")) else {
+        return;
+    };
+    // three.js's rational fit of θ/(2π sin θ) against the function itself, in f64.
+    let fit = |x: f64| {
+        let y = x.abs();
+        let v = (0.8543985 + (0.4965155 + 0.0145206 * y) * y) / (3.4175940 + (4.1616724 + y) * y);
+        if x > 0.0 {
+            v
+        } else {
+            0.5 / (1.0 - x * x).max(1e-7).sqrt() - v
+        }
+    };
+    let worst_fit = (1..2000)
+        .map(|k| -1.0 + f64::from(k) / 1000.0)
+        .map(|x: f64| {
+            let t = x.acos();
+            (fit(x) / (t / t.sin() / (2.0 * std::f64::consts::PI)) - 1.0).abs()
+        })
+        .fold(0.0, f64::max);
+    for name in ["rect-ceiling", "rect-horizon"] {
+        let scene = preset(name);
+        let file = render(&mut r, &scene, &settings(Method::File, Clipping::BOTH));
+        let mut s = settings(Method::Ltc, Clipping::BOTH);
+        s.a.rect = RectMethod::LtcProxyFast;
+        let lab = cpu::render(&scene, Lut::embedded(), &s);
+        let floor = ltc_lab::metrics::relative_floor(&lab, &lab);
+        let worst = (0..lab.pixels.len())
+            .filter(|&k| lab.on_plane[k] && file.on_plane[k])
+            .map(|k| {
+                (file.pixels[k] - lab.pixels[k]).abs().max_element()
+                    / luminance(lab.pixels[k]).max(floor)
+            })
+            .fold(0.0, f64::max);
+        eprintln!("{name}: fit {worst_fit:.2e}, image {worst:.2e}");
+        assert!(
+            worst > 0.0 && worst < 4.0 * worst_fit + 1e-3,
+            "{name}: {worst:.2e} against the fit's {worst_fit:.2e}"
+        );
+    }
+}
