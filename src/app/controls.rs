@@ -21,7 +21,7 @@ use crate::light::sphere::SphereMethod;
 use crate::ltc::Normalization;
 use crate::ltc::lut::{ALPHA_MIN, Table};
 use crate::ltc::remedy::Horizon;
-use crate::render::LtcRules;
+use crate::render::{LtcRules, Method};
 use crate::scene::{
     DISK_PRESETS, Light, MIN_RADIUS, Material, PRESETS, RECT_PRESETS, SPHERE_PRESETS, preset,
 };
@@ -38,6 +38,8 @@ pub struct ControlsState {
     pub screenshot_path: String,
     /// A LUT file to shade with; empty: the embedded table.
     pub lut_path: String,
+    /// A method file's path (the path alone is kept, never its code).
+    pub method_path: String,
 }
 
 impl Default for ControlsState {
@@ -46,6 +48,7 @@ impl Default for ControlsState {
             scene_path: "scene.toml".into(),
             screenshot_path: "ltc-lab.png".into(),
             lut_path: String::new(),
+            method_path: String::new(),
         }
     }
 }
@@ -88,7 +91,7 @@ impl Panel for ControlsPanel {
         ui.separator();
         lights(ui, lab);
         ui.separator();
-        shading_rules(ui, lab);
+        shading_rules(ui, lab, &mut self.state);
         ui.separator();
         ui.strong("Scene");
         scene_files(ui, lab, &mut self.state);
@@ -336,13 +339,16 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     disk_lights(ui, lab);
 }
 
-fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
+fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
     ui.strong("Shading");
+    // The method file is offered on either side once one is loaded.
+    let file = lab.method_file().map(|f| f.name.clone());
+    let offered = |forms: [Method; 2]| forms.into_iter().chain(file.iter().map(|_| Method::File));
     lab.edit(|f: &mut Forms| {
         egui::ComboBox::from_label("LTC form")
             .selected_text(f.ltc.name())
             .show_ui(ui, |ui| {
-                for m in LTC_FORMS {
+                for m in offered(LTC_FORMS) {
                     ui.selectable_value(&mut f.ltc, m, m.name());
                 }
             })
@@ -351,7 +357,7 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
         egui::ComboBox::from_label("BRDF form")
             .selected_text(f.brdf.name())
             .show_ui(ui, |ui| {
-                for m in BRDF_FORMS {
+                for m in offered(BRDF_FORMS) {
                     ui.selectable_value(&mut f.brdf, m, m.name());
                 }
             })
@@ -360,6 +366,7 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
                 "brdf: eq. 28 as docs/design.md §1 writes it; brdf-fast: Filament's V_SmithGGXCorrelated",
             );
     });
+    method_file(ui, lab, file, files);
     clipping_rules(
         ui,
         lab,
@@ -605,5 +612,38 @@ fn save_buttons(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
     };
     if ui.small_button("share view").on_hover_text(hover).clicked() {
         lab.request(Request::Share);
+    }
+}
+
+/// The method file: its path and a *load method* button (the browser's picker in the web
+/// build), or a .wgsl dropped on the window; the file loaded, by name. Its code runs only
+/// from here: a link, a lesson or the stored state names no file (docs/design.md §5.13).
+fn method_file(
+    ui: &mut egui::Ui,
+    lab: &mut Lab,
+    loaded: Option<String>,
+    files: &mut ControlsState,
+) {
+    ui.horizontal(|ui| {
+        if !PICKS {
+            let field = ui
+                .add(egui::TextEdit::singleline(&mut files.method_path).desired_width(120.0))
+                .on_hover_text("A method of your own: a WGSL file of functions under the interface of docs/design.md §5.13 (assets/methods/ has examples)");
+            name(ui, &field, "method file");
+        }
+        if ui
+            .small_button("load method")
+            .on_hover_text(if PICKS {
+                "Pick a method .wgsl file (or drop one on the window): it shades as the method `file`"
+            } else {
+                "Read the method .wgsl named on the left (or drop one on the window): it shades as the method `file`"
+            })
+            .clicked()
+        {
+            lab.request(Request::Open(Purpose::Method, files.method_path.clone()));
+        }
+    });
+    if let Some(name) = loaded {
+        ui.small(format!("method file: {name}"));
     }
 }

@@ -9,6 +9,7 @@ use std::path::Path;
 use crate::app::LabApp;
 use crate::app::files::{Given, Purpose, group, save};
 use crate::app::lab::{Lab, Message};
+use crate::gpu::method_file::MethodFile;
 use crate::scene::Scene;
 use crate::tables::{NamedTable, Source};
 
@@ -62,6 +63,10 @@ impl LabApp {
                 let rows = crate::measure::study::read_csv(Path::new(path));
                 self.panels.use_study(rows, path)
             }
+            (Purpose::Method, "") => {
+                Message::error("load method: name a .wgsl file in the field first")
+            }
+            (Purpose::Method, _) => use_method(&mut self.lab, MethodFile::read(Path::new(path))),
             // A shipped lesson's name (where no file has it) opens that lesson.
             (Purpose::Lesson, name)
                 if !Path::new(name).exists()
@@ -196,6 +201,13 @@ impl LabApp {
                 .panels
                 .use_study(crate::measure::study::parse_csv(&text(), name), name),
             Purpose::Lesson => self.take_lesson(&text(), name),
+            Purpose::Method => {
+                // A dropped file comes with its path: the method is named by its file name.
+                let short = Path::new(name)
+                    .file_name()
+                    .map_or(name.clone(), |n| n.to_string_lossy().into_owned());
+                use_method(&mut self.lab, MethodFile::from_bytes(&short, bytes))
+            }
         };
         self.lab.say(message);
     }
@@ -214,6 +226,15 @@ fn use_scene(lab: &mut Lab, loaded: crate::error::Result<Scene>, name: &str) -> 
     match lab.message() {
         Some(m) if m.is_error => Message::error(format!("loaded {name}; {}", m.text)),
         _ => Message::note(format!("loaded {name}")),
+    }
+}
+
+/// Shades with `loaded` from now on (on side A, unless a side already has the method file),
+/// or says why not: its error names the file's line and column; nothing else changes.
+pub(super) fn use_method(lab: &mut Lab, loaded: crate::error::Result<MethodFile>) -> Message {
+    match loaded {
+        Ok(file) => lab.use_method_file(file),
+        Err(e) => Message::error(format!("{e} — the methods stay")),
     }
 }
 

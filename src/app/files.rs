@@ -24,6 +24,9 @@ pub enum Purpose {
     Study,
     /// A lesson (`*.lesson.toml`).
     Lesson,
+    /// A method of the user's own (`*.wgsl`, docs/design.md §5.13): shader code, so only
+    /// ever a file the user picked, dropped or named.
+    Method,
 }
 
 impl Purpose {
@@ -34,17 +37,24 @@ impl Purpose {
             Self::Table | Self::TableB => crate::ltc::lut::MAX_FILE_BYTES,
             Self::Study => crate::measure::study::MAX_FILE_BYTES,
             Self::Lesson => LESSON_MAX_BYTES,
+            Self::Method => crate::gpu::method_file::MAX_BYTES as u64,
         }
     }
 
     /// The most bytes of any file the lab reads (a dropped file's, before its name says what
     /// it is for).
     pub fn largest_max_bytes() -> u64 {
-        [Self::Scene, Self::Table, Self::Study, Self::Lesson]
-            .map(Self::max_bytes)
-            .into_iter()
-            .max()
-            .unwrap_or(0)
+        [
+            Self::Scene,
+            Self::Table,
+            Self::Study,
+            Self::Lesson,
+            Self::Method,
+        ]
+        .map(Self::max_bytes)
+        .into_iter()
+        .max()
+        .unwrap_or(0)
     }
 
     /// What a dropped file is for, by its extension: a lesson, a scene, a table (A) or a
@@ -61,6 +71,7 @@ impl Purpose {
             "toml" => Some(Self::Scene),
             "exr" | "js" | "dds" => Some(Self::Table),
             "csv" => Some(Self::Study),
+            "wgsl" => Some(Self::Method),
             _ => None,
         }
     }
@@ -72,6 +83,7 @@ impl Purpose {
             Self::Scene | Self::Lesson => ".toml",
             Self::Table | Self::TableB => ".exr,.js,.dds,.txt",
             Self::Study => ".csv",
+            Self::Method => ".wgsl",
         }
     }
 
@@ -96,7 +108,7 @@ pub fn group(files: Vec<Given>) -> (Vec<(Purpose, Vec<Given>)>, Vec<String>) {
                 sidecars.push((name, bytes));
             } else {
                 refused.push(format!(
-                    "{name}: not a file the lab reads (a scene .toml, a table .exr/.js/.dds, a study .csv, a lesson .lesson.toml)"
+                    "{name}: not a file the lab reads (a scene .toml, a table .exr/.js/.dds, a study .csv, a lesson .lesson.toml, a method .wgsl)"
                 ));
             }
             continue;

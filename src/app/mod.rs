@@ -77,6 +77,8 @@ pub struct Startup {
     pub measure: bool,
     /// A lesson to walk, where it came from, and the step (from 0) to open it at.
     pub lesson: Option<(lesson::Lesson, String, usize)>,
+    /// A method file to shade with (`lab --method-file`), read and checked.
+    pub method_file: Option<crate::gpu::method_file::MethodFile>,
 }
 
 /// The key eframe keeps the lab's state under.
@@ -169,6 +171,10 @@ impl LabApp {
         }
         if let Some((lesson, source, step)) = s.lesson {
             self.open_lesson(lesson, &source, step);
+        }
+        if let Some(file) = s.method_file {
+            let said = self.lab.use_method_file(file);
+            self.lab.say(said);
         }
     }
 

@@ -60,6 +60,10 @@ pub struct Args {
     /// Walk a lesson: a shipped one's name (paper, polygon) or a lesson file (.lesson.toml).
     #[arg(long, conflicts_with_all = ["view", "scene", "lights", "panel"])]
     lesson: Option<String>,
+    /// A method of your own to shade with: a WGSL file under the interface of
+    /// docs/design.md §5.13, on the plane's left side (the method `file`).
+    #[arg(long)]
+    method_file: Option<PathBuf>,
     /// With --lesson: the step to open it at, from 1.
     #[arg(long, requires = "lesson")]
     step: Option<usize>,
@@ -81,6 +85,7 @@ impl Default for Args {
             lights: None,
             view: None,
             lesson: None,
+            method_file: None,
             step: None,
             frame_log: None,
         }
@@ -189,6 +194,11 @@ fn check(a: &Args) -> Result<Checked> {
         panel: a.panel.0,
         measure: a.measure,
         lesson,
+        method_file: a
+            .method_file
+            .as_deref()
+            .map(ltc_lab::gpu::method_file::MethodFile::read)
+            .transpose()?,
     };
     Ok(Checked {
         startup,

@@ -12,6 +12,7 @@ mod harness;
 mod lesson;
 mod lobe;
 mod matrix;
+mod method_file;
 mod parts;
 mod plane;
 mod rects;

@@ -19,10 +19,11 @@ pub use parts::{
 };
 
 use crate::gpu::GpuContext;
+use crate::gpu::method_file::MethodFile;
 use crate::ltc::lut::{THETA_MAX, Table};
 use crate::ltc::remedy::{Horizon, HorizonRule};
 use crate::ltc::{Ltc, LtcPair};
-use crate::render::LtcRules;
+use crate::render::{LtcRules, Method};
 use crate::scene::{Light, Material, Scene};
 use crate::tables::NamedTable;
 
@@ -186,6 +187,9 @@ pub struct Lab {
     max_lights: usize,
     message: Option<Message>,
     requests: Vec<Request>,
+    /// The method file the user loaded (docs/design.md §5.13): never a part, so never stored,
+    /// linked or in a lesson; a side names it as the method `file`.
+    method_file: Option<MethodFile>,
 }
 
 impl Lab {
@@ -199,8 +203,10 @@ impl Lab {
             max_lights,
             message: None,
             requests: Vec::new(),
+            method_file: None,
         };
         lab.say_notes(&notes);
+        lab.keep_method_file();
         lab.keep_lights();
         lab
     }
@@ -283,6 +289,7 @@ impl Lab {
     /// After an edit: the selection still names a light the scene has, and the notes are
     /// said.
     fn said_after_edit(&mut self, notes: &[String]) {
+        self.keep_method_file();
         let count = self.shared.lights.list.len();
         if self.shared.selection.light.is_some_and(|k| k >= count) {
             let part = &mut self.shared.selection;
@@ -295,6 +302,68 @@ impl Lab {
     fn say_notes(&mut self, notes: &[String]) {
         if !notes.is_empty() {
             self.say(Message::error(notes.join("; ")));
+        }
+    }
+
+    /// The method file loaded, if any.
+    pub fn method_file(&self) -> Option<&MethodFile> {
+        self.method_file.as_ref()
+    }
+
+    /// Shades with `file` from now on: side A takes it unless a side has it already (the
+    /// render begins again, with the new file, either way). Refused where the plane shades
+    /// on the CPU, which runs no WGSL. What was done, in words.
+    pub fn use_method_file(&mut self, file: MethodFile) -> Message {
+        if self.device().is_none() {
+            return Message::error(format!(
+                "{}: a method file runs on the GPU, and this lab shades on the CPU ({})",
+                file.name,
+                self.device_error().unwrap_or("no device")
+            ));
+        }
+        let text = format!(
+            "method file {} (shades {}; the lab's methods the rest) loaded",
+            file.name,
+            file.shapes()
+        );
+        self.method_file = Some(file);
+        let mut forms = **HasPart::<Forms>::part(self);
+        if forms.ltc != Method::File && forms.brdf != Method::File {
+            forms.ltc = Method::File;
+        }
+        // Set, not edited: stamped though it may be the same, so that the plane renders
+        // again with the new file.
+        self.set(forms);
+        Message::note(format!(
+            "{text}: {} | {}",
+            forms.ltc.name(),
+            forms.brdf.name()
+        ))
+    }
+
+    /// A side that names the method file without one loaded (from a link, a lesson or
+    /// stored state, which never carry shader code) goes back to the lab's form, and says
+    /// why.
+    fn keep_method_file(&mut self) {
+        if self.method_file.is_some() {
+            return;
+        }
+        let forms = **HasPart::<Forms>::part(self);
+        let defaults = Forms::default();
+        let mut kept = forms;
+        if kept.ltc == Method::File {
+            kept.ltc = defaults.ltc;
+        }
+        if kept.brdf == Method::File {
+            kept.brdf = defaults.brdf;
+        }
+        if kept != forms {
+            let part = HasPart::<Forms>::part_mut(self, Key(()));
+            *part.value_mut() = kept;
+            part.touch();
+            self.say(Message::error(
+                "a side named the method file `file`, which is not loaded: a link, a lesson or the stored state never carries shader code. Load it with load method (or drop the .wgsl) to shade with it".to_string(),
+            ));
         }
     }
 

@@ -277,7 +277,8 @@ impl Checked for Forms {
                 ("LTC form", &mut self.ltc, LTC_FORMS, previous.ltc),
                 ("BRDF form", &mut self.brdf, BRDF_FORMS, previous.brdf),
             ] {
-                if !offered.contains(form) {
+                // The method file: offered where one is loaded (`Lab::keep_method_file`).
+                if !offered.contains(form) && *form != Method::File {
                     n.say(format!(
                         "{field}: {} refused, kept {}",
                         form.name(),

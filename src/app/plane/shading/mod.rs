@@ -236,6 +236,9 @@ impl Shading {
                     self.error = g.set_tables(tables).err();
                 }
                 if self.error.is_none() {
+                    // The method file, where a side names it (the same file keeps the module).
+                    g.renderer
+                        .set_method_file(&g.ctx, lab.method_file().cloned());
                     self.error = g.begin(&scene, settings).err();
                 }
                 self.progress = Progress {
@@ -249,6 +252,9 @@ impl Shading {
                 if self.error.is_none() && self.progress.total == 0 {
                     g.chunk(ui, &mut self.progress, kind, exposure);
                 }
+            }
+            Path::Cpu(_) if settings.methods().contains(&crate::render::Method::File) => {
+                self.error = Some("a method file runs on the GPU only".into());
             }
             Path::Cpu(cpu) => {
                 self.progress = Progress {
