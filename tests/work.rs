@@ -76,3 +76,47 @@ fn the_design_table_is_the_shaders_count() {
         );
     }
 }
+
+/// A method file's work is counted as the lab's own: the lab's `ltc` written as a file costs
+/// what `add_ltc` costs in special functions (one root for the distance), and its arithmetic
+/// within a fifth of it (the same math; the file takes each |det M⁻¹| per light, which the lab
+/// takes once per pixel, and the lab reads its rules from the uniforms); the file without
+/// case 2's test costs no more than the file with it (an early return is not counted: a light
+/// that reaches the sum does not take it).
+#[test]
+fn a_method_files_work_is_counted_from_its_ir() {
+    use ltc_lab::gpu::method_file::MethodFile;
+    let file = |name: &str| {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("assets/methods")
+            .join(name);
+        let work = ltc_lab::gpu::work::file_work(&MethodFile::read(&path).unwrap()).unwrap();
+        assert_eq!(work.len(), 1, "{name} shades one shape");
+        work[0].1
+    };
+    let ltc = file("ltc.wgsl");
+    let no_case2 = file("no-case2.wgsl");
+    let lab = work_per_light()
+        .unwrap()
+        .into_iter()
+        .find(|(m, _)| *m == ltc_lab::render::Method::Ltc)
+        .unwrap()
+        .1;
+    assert_eq!(ltc.special, lab.special, "{ltc:?} against {lab:?}");
+    let apart = f64::from(ltc.arithmetic.abs_diff(lab.arithmetic)) / f64::from(lab.arithmetic);
+    assert!(apart < 0.2, "{ltc:?} against {lab:?}");
+    assert!(
+        no_case2.arithmetic <= ltc.arithmetic,
+        "{no_case2:?} against {ltc:?}"
+    );
+    let rect = ltc_lab::gpu::work::file_work(
+        &MethodFile::read(
+            &std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("assets/methods/threejs-rect.wgsl"),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    assert_eq!(rect[0].0, "rect");
+    assert!(rect[0].1.special > 0);
+}

@@ -79,6 +79,13 @@ pub fn run(a: &Args) -> Result<()> {
         .as_deref()
         .map(ltc_lab::gpu::method_file::MethodFile::read)
         .transpose()?;
+    if let Some(f) = &method_file {
+        eprintln!(
+            "{}: work per light from its IR: {}",
+            f.name,
+            file_work_line(f)
+        );
+    }
     let lut = a.lut.load()?;
     let ctx = GpuContext::new()?;
     ltc_lab::measure::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
@@ -131,4 +138,12 @@ pub fn run(a: &Args) -> Result<()> {
         write_atomically(p, text.as_bytes())?;
     }
     print(&ltc_lab::measure::bench_table::markdown(&rows, &device))
+}
+
+/// A method file's work per light, in words (or why it could not be counted).
+pub fn file_work_line(f: &ltc_lab::gpu::method_file::MethodFile) -> String {
+    match ltc_lab::gpu::work::file_work(f) {
+        Ok(w) => ltc_lab::gpu::work::describe(&w),
+        Err(e) => format!("not counted ({e})"),
+    }
 }

@@ -314,6 +314,14 @@ fn sides(a: &Args, settings: &mut RenderSettings) -> Result<Option<MethodFile>> 
             "--cpu",
             format!("{} is WGSL: a method file runs on the GPU only", f.name),
         )),
+        (Some(f), true) => {
+            eprintln!(
+                "{}: work per light from its IR: {}",
+                f.name,
+                super::bench::file_work_line(f)
+            );
+            Ok(file)
+        }
         _ => Ok(file),
     }
 }

@@ -63,6 +63,11 @@ pub struct Args {
     /// disk method against the disks' exact integral: variants disk-<method> (§1.12).
     #[arg(long)]
     disk_radius: Option<f64>,
+    /// Also the method in this WGSL file (docs/design.md §5.13): variants `file`, and
+    /// `rect-file`/`disk-file` where it shades the study's sized lights; timed with runtime
+    /// checks.
+    #[arg(long)]
+    method_file: Option<PathBuf>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -111,6 +116,11 @@ pub fn run(a: &Args) -> Result<()> {
         },
         rect_half_edge: a.rect_half_edge,
         disk_radius: a.disk_radius,
+        method_file: a
+            .method_file
+            .as_deref()
+            .map(ltc_lab::gpu::method_file::MethodFile::read)
+            .transpose()?,
     };
     let rows = study::run(&ctx, &lut, &settings, |r| {
         eprintln!(

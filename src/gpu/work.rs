@@ -79,6 +79,34 @@ pub fn work_per_light() -> Result<Vec<(Method, Work)>, String> {
         .collect()
 }
 
+/// A method file's work per light (docs/design.md §5.13): each function it has, counted in
+/// the plane shader as composed with it (its loop guards included: a loop's body is counted
+/// once, as for the lab's own), by shape name.
+pub fn file_work(
+    file: &crate::gpu::method_file::MethodFile,
+) -> Result<Vec<(&'static str, Work)>, String> {
+    let source = super::plane_module_source_with(false, Some(file));
+    crate::gpu::method_file::ENTRIES
+        .iter()
+        .zip(file.shades)
+        .filter(|(_, shades)| *shades)
+        .map(|((function, _, shape), _)| Ok((*shape, work_of(&source, function)?)))
+        .collect()
+}
+
+/// One line per shape: `point: 52 arithmetic, 3 divisions, 1 special, 0 reads`.
+pub fn describe(work: &[(&str, Work)]) -> String {
+    work.iter()
+        .map(|(shape, w)| {
+            format!(
+                "{shape}: {} arithmetic, {} divisions, {} special, {} reads",
+                w.arithmetic, w.divisions, w.special, w.reads
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
 /// The work of the WGSL function `name` of `source` and of everything it calls.
 pub fn work_of(source: &str, name: &str) -> Result<Work, String> {
     let module = naga::front::wgsl::parse_str(source).map_err(|e| e.emit_to_string(source))?;

@@ -4,8 +4,10 @@
 
 use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
+use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
+use crate::light::Shape;
 use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::ltc::fit::{FitSettings, fit_table};
@@ -260,6 +262,10 @@ pub struct StudySettings {
     /// Also every light a disk of this radius facing the plane, by each disk method against
     /// the disks' exact integral (variants `disk-<method>`).
     pub disk_radius: Option<f64>,
+    /// Also this method file, on the points (variant `file`) and on each sized shape of the
+    /// study it shades (`rect-file`, `disk-file`), timed with wgpu's runtime checks (its own
+    /// renderer: a file is not trusted) and measured against the same exact images.
+    pub method_file: Option<MethodFile>,
 }
 
 /// The sized variants of a study: each shape asked for, its scene (the study's lights as that
@@ -325,6 +331,14 @@ pub fn run(
         };
         renderers.push((v.lut, PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)?));
     }
+    let mut file_renderer = match &s.method_file {
+        Some(f) => {
+            let mut r = PlaneRenderer::new(ctx, shipped, ShaderChecks::Checked)?;
+            r.set_method_file(ctx, Some(f.clone()));
+            Some((f.shades, r))
+        }
+        None => None,
+    };
     let mut rows = Vec::new();
     for &alpha in &s.alphas {
         for &lights in &s.lights {
@@ -353,6 +367,18 @@ pub fn run(
                     progress(&row);
                     rows.push(row);
                 }
+                if let (Some((shades, r)), Some(reference)) = (&mut file_renderer, &exact)
+                    && shades[0]
+                {
+                    let settings = RenderSettings {
+                        cull,
+                        ..RenderSettings::single(width, height, Method::File)
+                    };
+                    let (ms, image) = timed(ctx, r, &scene, &settings, s.frames)?;
+                    let row = row("file", (alpha, lights, cull), s, ms, &image, reference);
+                    progress(&row);
+                    rows.push(row);
+                }
                 // The lights with a size, each shape against its own exact image.
                 let shipped = renderers
                     .iter()
@@ -369,6 +395,29 @@ pub fn run(
                         let renderer = &mut renderers[shipped].1;
                         let (ms, image) = timed(ctx, renderer, &shaped, &settings, s.frames)?;
                         let reference = exact.get_or_insert_with(|| image.clone());
+                        let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
+                        progress(&row);
+                        rows.push(row);
+                    }
+                    // The method file on this shape, where it shades it.
+                    let shape = if shaped
+                        .lights
+                        .iter()
+                        .any(|l| matches!(l.shape, Shape::Rect { .. }))
+                    {
+                        2
+                    } else {
+                        3
+                    };
+                    if let (Some((shades, r)), Some(reference)) = (&mut file_renderer, &exact)
+                        && shades[shape]
+                    {
+                        let settings = RenderSettings {
+                            cull,
+                            ..RenderSettings::single(width, height, Method::File)
+                        };
+                        let (ms, image) = timed(ctx, r, &shaped, &settings, s.frames)?;
+                        let name = format!("{}-file", ["", "", "rect", "disk"][shape]);
                         let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
                         progress(&row);
                         rows.push(row);
