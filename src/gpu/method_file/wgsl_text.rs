@@ -319,8 +319,8 @@ mod tests {
         let src = "fn f() { for (var i = 0; i < 3; i++) { } while (g(1)) { } loop { break; } }";
         let out = rewrite(src, &[], "G;");
         assert_eq!(out.matches("G;").count(), 3);
-        assert!(out.contains("i++) { G; }"), "{out}");
-        assert!(out.contains("loop { G; break;"), "{out}");
+        assert!(out.contains("i++) { G;  }"), "{out}");
+        assert!(out.contains("loop { G;  break;"), "{out}");
     }
 
     #[test]
