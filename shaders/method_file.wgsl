@@ -159,3 +159,25 @@ fn add_method_fallback_point(s: ptr<function, Sums>, p: Pixel, ltc: LtcShading, 
 fn method_file_was_stopped() -> bool {
     return partials[params.tiles_x * params.tiles_y].y > 0.5;
 }
+
+// The pixel inspector's values of the file (src/gpu/method_file/probe.rs): at the image point
+// (params.probe_x, probe_y), each light by the side that shades with the file, alone, its
+// radiance in accum_0[k] (w 1 where the point is on the plane and seen from above).
+@compute @workgroup_size(64)
+fn probe_file(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let k = gid.x;
+    if k >= params.light_count || k >= arrayLength(&accum_0) {
+        return;
+    }
+    let p = prepare(surface_point_at(vec2<f32>(params.probe_x, params.probe_y)));
+    var s = Sums(vec3<f32>(0.0), vec3<f32>(0.0));
+    let seen = p.on_plane && p.v.z > 0.0;
+    if seen {
+        if METHOD_A == METHOD_FILE {
+            add_light(METHOD_FILE, SPHERE_A, RECT_A, DISK_A, &s, p, p.ltc_a, lights[k]);
+        } else {
+            add_light(METHOD_FILE, SPHERE_B, RECT_B, DISK_B, &s, p, p.ltc_b, lights[k]);
+        }
+    }
+    accum_0[k] = vec4<f32>(s.spec + s.diff, select(0.0, 1.0, seen));
+}

@@ -86,9 +86,15 @@ struct Sums {
 
 // Scene::surface_point: the camera ray through the pixel centre, hit with the plane.
 fn surface_point(px: vec2<u32>) -> Pixel {
+    return surface_point_at(vec2<f32>(px) + 0.5);
+}
+
+// Scene::surface_point_at: the camera ray through the image point `pos` (pixels), hit with
+// the plane.
+fn surface_point_at(pos: vec2<f32>) -> Pixel {
     var p: Pixel;
     p.on_plane = false;
-    let hit = plane_hit(camera_ray(vec2<f32>(px) + 0.5));
+    let hit = plane_hit(camera_ray(pos));
     let x = hit.xyz;
     if hit.w == 0.0 || abs(x.x) > params.half_size || abs(x.y) > params.half_size {
         return p;

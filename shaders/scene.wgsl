@@ -15,8 +15,8 @@ struct Params {
     aspect: f32,
     half_size: f32,
     divider: f32,          // first pixel column of B in the split view
-    _pad0: f32,
-    _pad1: f32,
+    probe_x: f32,          // the pixel inspector's point, in pixels (method_file.wgsl probe_file)
+    probe_y: f32,
     width: u32,
     height: u32,
     light_count: u32,

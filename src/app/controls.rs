@@ -91,11 +91,12 @@ impl Panel for ControlsPanel {
         ui.separator();
         lights(ui, lab);
         ui.separator();
-        shading_rules(ui, lab, &mut self.state);
+        shading_rules(ui, lab);
         ui.separator();
         ui.strong("Scene");
         scene_files(ui, lab, &mut self.state);
         table(ui, lab, &mut self.state);
+        method_file(ui, lab, &mut self.state);
         save_buttons(ui, lab, &mut self.state);
     }
 }
@@ -339,7 +340,7 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     disk_lights(ui, lab);
 }
 
-fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
+fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.strong("Shading");
     // The method file is offered on either side once one is loaded.
     let file = lab.method_file().map(|f| f.name.clone());
@@ -366,7 +367,6 @@ fn shading_rules(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
                 "brdf: eq. 28 as docs/design.md §1 writes it; brdf-fast: Filament's V_SmithGGXCorrelated",
             );
     });
-    method_file(ui, lab, file, files);
     clipping_rules(
         ui,
         lab,
@@ -615,19 +615,20 @@ fn save_buttons(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
     }
 }
 
-/// The method file: its path and a *load method* button (the browser's picker in the web
-/// build), or a .wgsl dropped on the window; the file loaded, by name. Its code runs only
-/// from here: a link, a lesson or the stored state names no file (docs/design.md §5.13).
-fn method_file(
-    ui: &mut egui::Ui,
-    lab: &mut Lab,
-    loaded: Option<String>,
-    files: &mut ControlsState,
-) {
+/// The method file: its path and *load method* (the browser's picker), or a dropped .wgsl;
+/// its code runs only from here, never from a link or a lesson (docs/design.md §5.13).
+fn method_file(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState) {
+    let loaded = lab
+        .method_file()
+        .map(|f| format!("{} (shades {})", f.name, f.shapes()));
     ui.horizontal(|ui| {
         if !PICKS {
             let field = ui
-                .add(egui::TextEdit::singleline(&mut files.method_path).desired_width(120.0))
+                .add(
+                    egui::TextEdit::singleline(&mut files.method_path)
+                        .desired_width(120.0)
+                        .hint_text("your method .wgsl"),
+                )
                 .on_hover_text("A method of your own: a WGSL file of functions under the interface of docs/design.md §5.13 (assets/methods/ has examples)");
             name(ui, &field, "method file");
         }

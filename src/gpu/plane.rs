@@ -166,6 +166,8 @@ pub struct PlanePipelines {
     pub layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
     compiled: HashMap<PipelineKey, Pipelines>,
+    /// The pixel inspector's probe of the method file, per specialization, made on first use.
+    probes: HashMap<PipelineKey, wgpu::ComputePipeline>,
 }
 
 impl PlanePipelines {
@@ -211,7 +213,18 @@ impl PlanePipelines {
             layout,
             pipeline_layout,
             compiled: HashMap::new(),
+            probes: HashMap::new(),
         }
+    }
+
+    /// The method file's probe (`probe_file` of method_file.wgsl) of a specialization,
+    /// compiled on first use.
+    pub fn probe(&mut self, ctx: &GpuContext, key: PipelineKey) -> wgpu::ComputePipeline {
+        let (module, layout) = (&self.module, &self.pipeline_layout);
+        self.probes
+            .entry(key)
+            .or_insert_with(|| entry_point(ctx, (module, layout), &constants(key), "probe_file"))
+            .clone()
     }
 
     /// The pipelines of a specialization, compiled on first use.
@@ -231,11 +244,44 @@ fn compile(
     layout: &wgpu::PipelineLayout,
     key: PipelineKey,
 ) -> Pipelines {
+    let constants = constants(key);
+    let pipeline = |entry| entry_point(ctx, (module, layout), &constants, entry);
+    Pipelines {
+        shade: pipeline("shade"),
+        reduce: pipeline("reduce"),
+        floor: pipeline("floor_of_means"),
+        resolve: pipeline("resolve"),
+    }
+}
+
+/// One entry point of `module` with `constants`.
+fn entry_point(
+    ctx: &GpuContext,
+    (module, layout): (&wgpu::ShaderModule, &wgpu::PipelineLayout),
+    constants: &[(&str, f64)],
+    entry: &str,
+) -> wgpu::ComputePipeline {
+    ctx.device
+        .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(entry),
+            layout: Some(layout),
+            module,
+            entry_point: Some(entry),
+            compilation_options: wgpu::PipelineCompilationOptions {
+                constants,
+                zero_initialize_workgroup_memory: false,
+            },
+            cache: None,
+        })
+}
+
+/// The override constants of a specialization.
+fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
     let (a, b, view, filter, table_b, horizon, sized, rects, disks) = key;
     let spheres = sized.unwrap_or((SphereMethod::LtcDisk, SphereMethod::Exact));
     let rect_methods = rects.unwrap_or((RectMethod::LtcPolygon, RectMethod::Exact));
     let disk_methods = disks.unwrap_or((DiskMethod::LtcDisk, DiskMethod::Exact));
-    let constants = [
+    vec![
         ("METHOD_A", f64::from(method_constant(a).0)),
         ("METHOD_B", f64::from(method_constant(b).0)),
         ("VIEW", f64::from(view.constant().0)),
@@ -254,25 +300,5 @@ fn compile(
         ("DISKS", f64::from(u8::from(disks.is_some()))),
         ("DISK_A", f64::from(disk_constant(disk_methods.0).0)),
         ("DISK_B", f64::from(disk_constant(disk_methods.1).0)),
-    ];
-    let pipeline = |entry_point| {
-        ctx.device
-            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(entry_point),
-                layout: Some(layout),
-                module,
-                entry_point: Some(entry_point),
-                compilation_options: wgpu::PipelineCompilationOptions {
-                    constants: &constants,
-                    zero_initialize_workgroup_memory: false,
-                },
-                cache: None,
-            })
-    };
-    Pipelines {
-        shade: pipeline("shade"),
-        reduce: pipeline("reduce"),
-        floor: pipeline("floor_of_means"),
-        resolve: pipeline("resolve"),
-    }
+    ]
 }

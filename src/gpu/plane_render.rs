@@ -357,6 +357,55 @@ impl PlaneRender {
         Some((t.tile_entries(ctx)?, all))
     }
 
+    /// The method file's probe (`probe_file`): each light alone at the image point `at`
+    /// (pixels), with the camera's `aspect` in place of this image's; each light's radiance,
+    /// `None` where the point is off the plane or seen from below. Blocks.
+    pub fn probe(
+        &mut self,
+        ctx: &GpuContext,
+        pipeline: &wgpu::ComputePipeline,
+        at: [f32; 2],
+        aspect: f32,
+    ) -> crate::error::Result<Option<Vec<glam::DVec3>>> {
+        self.params.probe_x = at[0];
+        self.params.probe_y = at[1];
+        self.params.aspect = aspect;
+        self.write_params(ctx);
+        let mut encoder = ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("probe"),
+            });
+        let n = self.light_count as u32;
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("probe"),
+                timestamp_writes: None,
+            });
+            pass.set_bind_group(0, &self.plane_group, &[]);
+            pass.set_pipeline(pipeline);
+            pass.dispatch_workgroups(n.div_ceil(64).max(1), 1, 1);
+        }
+        ctx.queue.submit([encoder.finish()]);
+        let bytes = u64::from(n.max(1)) * 16;
+        let data = crate::gpu::target::read_buffer(ctx, &self.kept.target.sums[0], 0, bytes)
+            .ok_or_else(|| crate::error::Error::machine("GPU", "the probe's read-back failed"))?;
+        let values: Vec<[f32; 4]> = data
+            .chunks_exact(16)
+            .map(bytemuck::pod_read_unaligned)
+            .take(n as usize)
+            .collect();
+        if values.first().is_some_and(|v| v[3] < 0.5) {
+            return Ok(None);
+        }
+        Ok(Some(
+            values
+                .iter()
+                .map(|v| glam::DVec3::new(v[0].into(), v[1].into(), v[2].into()))
+                .collect(),
+        ))
+    }
+
     /// The output texture (for the lab to show without a read-back).
     pub fn output(&self) -> &wgpu::TextureView {
         &self.kept.target.view

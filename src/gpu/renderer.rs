@@ -61,6 +61,42 @@ impl PlaneRenderer {
         }
     }
 
+    /// The pixel inspector's values of the method file (docs/design.md §5.13): each light of
+    /// `scene` alone at the point `[u, v]` (0–1) of the image `settings` renders, by the side
+    /// that shades with the file, evaluated on the GPU; `None` where the point is off the
+    /// plane. Made on a small image of the same camera whose sums hold one entry per light.
+    /// Blocks (the desktop's inspector).
+    pub fn probe_file(
+        &mut self,
+        ctx: &GpuContext,
+        scene: &Scene,
+        settings: &RenderSettings,
+        [u, v]: [f64; 2],
+    ) -> Result<Option<Vec<glam::DVec3>>> {
+        if self.pipelines.file.is_none() || !settings.methods().contains(&Method::File) {
+            return Err(Error::input(
+                "the pixel inspector",
+                "no side shades with a method file",
+            ));
+        }
+        let n = scene.lights.len().max(1);
+        let aspect = settings.width as f64 / settings.height.max(1) as f64;
+        let w = ((n as f64 * aspect).sqrt().ceil() as usize).max(16);
+        let h = n
+            .div_ceil(w)
+            .max((w as f64 / aspect).round() as usize)
+            .max(1);
+        let small = RenderSettings {
+            width: w,
+            height: h,
+            ..*settings
+        };
+        let pipeline = self.pipelines.probe(ctx, pipeline_key(&small, scene));
+        let mut render = self.begin(ctx, scene, &small, None)?;
+        let at = [(u * w as f64) as f32, (v * h as f64) as f32];
+        render.probe(ctx, &pipeline, at, aspect as f32)
+    }
+
     /// The method file its module holds.
     pub fn method_file(&self) -> Option<&MethodFile> {
         self.pipelines.file.as_ref()

@@ -33,8 +33,10 @@ pub struct Params {
     pub aspect: f32,
     pub half_size: f32,
     pub divider: f32,
-    pub _pad0: f32,
-    pub _pad1: f32,
+    /// The pixel inspector's point, in pixels of this image (`probe_file` of method_file.wgsl;
+    /// unread elsewhere).
+    pub probe_x: f32,
+    pub probe_y: f32,
     pub width: u32,
     pub height: u32,
     pub light_count: u32,

@@ -98,7 +98,9 @@ impl Target {
             texture,
             view,
             sums: std::array::from_fn(|k| {
-                storage(ctx, &format!("plane sums {k}"), pixels * SUM_BYTES, none)
+                // Copied out by the pixel inspector's probe (accum_0).
+                let copied = wgpu::BufferUsages::COPY_SRC;
+                storage(ctx, &format!("plane sums {k}"), pixels * SUM_BYTES, copied)
             }),
             tile_offsets: storage(
                 ctx,
@@ -122,21 +124,7 @@ impl Target {
     /// `None` where the device could not map the copy (it was lost).
     pub fn tile_entries(&self, ctx: &GpuContext) -> Option<u64> {
         let tiles = (self.tiles.0 * self.tiles.1) as u64;
-        let buffer = ctx.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("tile total readback"),
-            size: 4,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let mut encoder = ctx
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-        encoder.copy_buffer_to_buffer(&self.tile_offsets, tiles * 4, &buffer, 0, 4);
-        ctx.queue.submit([encoder.finish()]);
-        let slice = buffer.slice(..);
-        slice.map_async(wgpu::MapMode::Read, |_| {});
-        let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
-        let data = slice.get_mapped_range().ok()?;
+        let data = read_buffer(ctx, &self.tile_offsets, tiles * 4, 4)?;
         Some(u64::from(u32::from_le_bytes([
             data[0], data[1], data[2], data[3],
         ])))
@@ -213,6 +201,32 @@ pub fn stopped(data: &[u8]) -> bool {
     data.chunks_exact(TEXEL_BYTES as usize)
         .map(bytemuck::pod_read_unaligned::<[f32; 4]>)
         .any(|t| t[3] > 1.5)
+}
+
+/// `bytes` of `buffer` from `offset`, read back; blocks. `None` where the device could not
+/// map the copy (it was lost).
+pub fn read_buffer(
+    ctx: &GpuContext,
+    buffer: &wgpu::Buffer,
+    offset: u64,
+    bytes: u64,
+) -> Option<Vec<u8>> {
+    let read = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("buffer readback"),
+        size: bytes,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut encoder = ctx
+        .device
+        .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+    encoder.copy_buffer_to_buffer(buffer, offset, &read, 0, bytes);
+    ctx.queue.submit([encoder.finish()]);
+    let slice = read.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
+    let data = slice.get_mapped_range().ok()?;
+    Some(data.to_vec())
 }
 
 /// A texture of `size` read back, `texel_bytes` per texel, rows packed tightly (the copy's

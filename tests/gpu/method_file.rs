@@ -202,3 +202,54 @@ fn the_rect_example_is_the_labs_proxy_within_its_edge_fit() {
         );
     }
 }
+
+/// The pixel inspector's values of a file, evaluated on the GPU at one point, are the CPU
+/// reference's LTC of each light there, for the file equal to `ltc`: to the renders' parity
+/// tolerance, relative to each light or to 1% of the mean light (where a light adds ~0, as
+/// the renders' floor).
+#[test]
+fn the_inspectors_values_of_a_file_are_each_lights_ltc() {
+    let Some(mut r) = renderer_with(shipped("ltc.wgsl")) else {
+        return;
+    };
+    let g = gpu().unwrap();
+    let scene = preset("paper-100");
+    let s = RenderSettings::single(320, 180, Method::File);
+    for at in [[0.5, 0.6], [0.2, 0.9], [0.8, 0.45]] {
+        let values = r
+            .probe_file(&g.ctx, &scene, &s, at)
+            .unwrap()
+            .expect("on the plane");
+        let p = scene
+            .surface_point_at(at[0] * 320.0, at[1] * 180.0, 320, 180)
+            .unwrap();
+        let terms = ltc_lab::pixel::pixel_terms(
+            &scene,
+            (Lut::embedded(), None),
+            &p,
+            &s.rules,
+            [s.a.sphere, s.b.sphere],
+            [s.a.rect, s.b.rect],
+            [s.a.disk, s.b.disk],
+        )
+        .unwrap();
+        assert_eq!(values.len(), terms.terms.len());
+        let mean = terms.terms.iter().map(|t| luminance(t.ltc)).sum::<f64>() / values.len() as f64;
+        for (gpu, t) in values.iter().zip(&terms.terms) {
+            let bound =
+                ltc_lab::measure::parity::RADIANCE_TOLERANCE * luminance(t.ltc).max(0.01 * mean);
+            assert!(
+                (*gpu - t.ltc).abs().max_element() <= bound,
+                "light {} at {at:?}: gpu {gpu} cpu {}",
+                t.index,
+                t.ltc
+            );
+        }
+    }
+    // Off the plane: no values.
+    assert!(
+        r.probe_file(&g.ctx, &scene, &s, [0.5, 0.01])
+            .unwrap()
+            .is_none()
+    );
+}

@@ -3,7 +3,11 @@
 //! with an error changes nothing and says where; a link naming the method file opens without
 //! it and says so.
 
-use crate::harness::{drop_file, lab, notice, plane_image, plane_state, press, settle, type_into};
+use crate::harness::{
+    click_at, drop_file, lab, maximised, notice, plane_image, plane_state, press, settle, shows,
+    type_into, with_lights,
+};
+use egui_kittest::kittest::Queryable;
 use ltc_lab::app::lab::{Forms, Part};
 use ltc_lab::render::Method;
 
@@ -93,4 +97,68 @@ fn a_link_naming_the_method_file_opens_without_it_and_says_so() {
         "{}",
         said.text
     );
+}
+
+/// The pinned pixel's table gives each light by the file, evaluated on the GPU, beside the
+/// CPU's LTC and exact values (the values themselves: tests/gpu/method_file.rs).
+#[test]
+fn the_pinned_pixel_gives_each_light_by_the_file() {
+    let Some(mut h) = lab((1000.0, 700.0), maximised(ltc_lab::app::PanelId::Plane)) else {
+        return;
+    };
+    let path = example("ltc.wgsl");
+    type_into(&mut h, "method file", &path.display().to_string());
+    press(&mut h, "load method");
+    settle(&mut h);
+    let rect = h.get_by_label("plane image").rect();
+    click_at(
+        &mut h,
+        egui::pos2(
+            rect.min.x + rect.width() * 0.2,
+            rect.min.y + rect.height() * 0.8,
+        ),
+    );
+    settle(&mut h);
+    assert!(shows(
+        &h,
+        "each light by the method file ltc.wgsl (on the GPU)"
+    ));
+    assert!(!shows(&h, "the method file's values:"), "the probe failed");
+}
+
+/// A method whose loop never ends is stopped — by its step guard, or by the lab's limit on a
+/// batch, whichever comes first — and the lab says which file and why, puts its side back to
+/// the lab's form, and goes on drawing.
+#[test]
+fn a_method_that_never_ends_is_stopped_and_named() {
+    // Three lights: each costs the guard's 16 384 steps at every pixel (a second on lavapipe).
+    let mut state = maximised(ltc_lab::app::PanelId::Plane);
+    with_lights(&mut state, 3);
+    let Some(mut h) = lab((640.0, 400.0), state) else {
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("ltc-lab-forever-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let forever = dir.join("forever.wgsl");
+    std::fs::write(
+        &forever,
+        "fn method_point(pixel: MethodPixel, light: MethodPoint) -> MethodRadiance {\n    var x = 0.0;\n    loop { x += 1.0; }\n    return MethodRadiance(vec3<f32>(x), vec3<f32>(0.0));\n}\n",
+    )
+    .unwrap();
+    drop_file(&mut h, &forever);
+    assert_eq!(h.state().lab().forms().ltc, Method::File);
+    settle(&mut h);
+    let said = notice(&h).expect("a notice");
+    assert!(said.is_error, "{}", said.text);
+    assert!(
+        said.text.contains("forever.wgsl") && said.text.contains("stopped"),
+        "{}",
+        said.text
+    );
+    assert_ne!(h.state().lab().forms().ltc, Method::File);
+    // The lab goes on: its own method renders (begun once the side went back).
+    settle(&mut h);
+    let image = plane_image(&mut h);
+    assert!(image.pixels.iter().any(|p| p.length() > 0.0));
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::app::work::pacer::Pacer;
 use crate::gpu::GpuContext;
+use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::plane_render::{Kept, PlaneRender};
 use crate::gpu::renderer::PlaneRenderer;
@@ -238,11 +239,19 @@ pub struct MeasureJob {
 }
 
 impl MeasureJob {
-    /// Every method on `scene`, then the paper's light counts, on the device of `ctx`.
-    pub fn new(ctx: &GpuContext, scene: &Scene, lut: &Lut) -> Result<Self, String> {
+    /// Every method on `scene` (the method file too, where one is loaded), then the paper's
+    /// light counts, on the device of `ctx`.
+    pub fn new(
+        ctx: &GpuContext,
+        scene: &Scene,
+        lut: &Lut,
+        file: Option<&MethodFile>,
+    ) -> Result<Self, String> {
         let ctx = GpuContext::from_parts(ctx.device.clone(), ctx.queue.clone(), ctx.info.clone());
-        let renderer =
+        let mut renderer =
             PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
+        // Checked like every method here, so its time is on the same footing.
+        renderer.set_method_file(&ctx, file.cloned());
         let (w, h) = MEASURE_SIZE;
         let mut tasks = Vec::new();
         // The reference shades every light exactly, whatever its shape; the LTC forms shade
@@ -281,6 +290,16 @@ impl MeasureJob {
                     a,
                     ..single
                 },
+                curve: None,
+            });
+        }
+        // The method file: each shape by its function where it has one, the rest as the lab.
+        if let Some(f) = file {
+            tasks.push(Task {
+                label: format!("file: {}", f.name),
+                method: Some(Method::File),
+                scene: scene.clone(),
+                settings: RenderSettings::single(w, h, Method::File),
                 curve: None,
             });
         }

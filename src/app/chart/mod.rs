@@ -212,7 +212,12 @@ impl ChartPanel {
             self.error = Some(format!("measure: {}", lab.describe_device()));
             return;
         };
-        match MeasureJob::new(ctx, &lab.shaded_scene(), &lab.tables().a().lut) {
+        match MeasureJob::new(
+            ctx,
+            &lab.shaded_scene(),
+            &lab.tables().a().lut,
+            lab.method_file(),
+        ) {
             Ok(job) => {
                 self.job = Some(job);
                 self.error = None;
@@ -506,6 +511,10 @@ pub fn method_colour(method: Option<Method>) -> Color32 {
         Color32::from_rgb(200, 110, 230),
         Color32::from_rgb(60, 210, 210),
     ];
+    // The method file in white: the one point that is not the lab's.
+    if method == Some(Method::File) {
+        return Color32::WHITE;
+    }
     let index = method.map(Method::index);
     index.map_or(Color32::from_gray(180), |k| PALETTE[k % PALETTE.len()])
 }

@@ -341,6 +341,25 @@ impl Lab {
         ))
     }
 
+    /// The method file's render was stopped (`why`): the sides that shade with it go back to
+    /// the lab's forms, the file stays loaded (pick `file` again to retry), and why is said.
+    pub fn stop_method_file(&mut self, why: &str) {
+        let forms = **HasPart::<Forms>::part(self);
+        let defaults = Forms::default();
+        let mut kept = forms;
+        if kept.ltc == Method::File {
+            kept.ltc = defaults.ltc;
+        }
+        if kept.brdf == Method::File {
+            kept.brdf = defaults.brdf;
+        }
+        self.set(kept);
+        self.say(Message::error(format!(
+            "{why} — the side is back to {}",
+            kept.ltc.name()
+        )));
+    }
+
     /// A side that names the method file without one loaded (from a link, a lesson or
     /// stored state, which never carry shader code) goes back to the lab's form, and says
     /// why.

@@ -29,7 +29,7 @@ use crate::app::ui::display::{ShownImage, colour_bar, difference_scale};
 use crate::gpu::GpuContext;
 use crate::light::Shape;
 use crate::render::ShapeMethods;
-use crate::render::{Frame, RenderSettings, View};
+use crate::render::{Frame, Method, RenderSettings, View};
 use crate::scene::Light;
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
@@ -156,7 +156,13 @@ impl Panel for PlanePanel {
         self.paint(ui, lab, placed, shown, (a, b));
         let markers = markers(lab, placed);
         self.interact(&response, lab, placed, &markers);
+        if let Some(why) = self.shading.take_stopped() {
+            lab.stop_method_file(&why);
+        }
         self.pinned.update(lab, self.state.pinned, placed.size);
+        let shading = &mut self.shading;
+        self.pinned
+            .update_file(lab, self.state.pinned, |at| shading.probe_file(lab, at));
         if self.state.view == View::Diff {
             colour_bar(ui, &difference_scale(a, b), 220.0);
         }
@@ -170,7 +176,8 @@ impl Panel for PlanePanel {
             .and_then(|pos| inspect(lab, placed, pos, &settings));
         reading_line(ui, inspected.as_ref(), (a, b));
         let table = (&mut self.state.pinned, &mut self.state.light_sort);
-        pixel_table::show(ui, table, lab, self.pinned.terms(), table_h);
+        let terms = (self.pinned.terms(), self.pinned.file());
+        pixel_table::show(ui, table, lab, terms, table_h);
     }
 
     /// Whether the render is still being summed (or its worst pixel read back).
@@ -608,16 +615,23 @@ pub fn sized_side_names(lab: &Lab, state: &PlaneState, (a, b): (&str, &str)) -> 
         .map(|l| o.shaded_shape(l))
         .collect();
     let has = |f: fn(&Shape) -> bool| shapes.iter().any(f);
+    // A side shading with the method file is named by the file, and so is each shape it shades.
+    let file = lab.method_file();
     let name = |side: &str, m: ShapeMethods| {
-        let mut out = side.to_string();
+        let by_file = |k: usize| m.point == Method::File && file.is_some_and(|f| f.shades[k]);
+        let method = |k: usize, own: &'static str| if by_file(k) { "file" } else { own };
+        let mut out = match file.filter(|_| m.point == Method::File) {
+            Some(f) => f.name.clone(),
+            None => side.to_string(),
+        };
         if has(|s| matches!(s, Shape::Sphere { .. })) {
-            out += &format!("\nsphere: {}", m.sphere.name());
+            out += &format!("\nsphere: {}", method(1, m.sphere.name()));
         }
         if has(|s| matches!(s, Shape::Rect { .. })) {
-            out += &format!("\nrect: {}", m.rect.name());
+            out += &format!("\nrect: {}", method(2, m.rect.name()));
         }
         if has(|s| matches!(s, Shape::Disk { .. })) {
-            out += &format!("\ndisk: {}", m.disk.name());
+            out += &format!("\ndisk: {}", method(3, m.disk.name()));
         }
         out
     };

@@ -44,12 +44,23 @@ pub enum LightColumn {
 /// the lab repaints every frame while the plane is summed.
 pub struct PinnedLights {
     terms: Cached<Option<PixelTerms>>,
+    /// The method file's value of each light at the pinned pixel, on the GPU, and what it was
+    /// made for (the terms' count, the file, the sides' forms).
+    file: Option<(FileKey, FileValues)>,
 }
+
+/// What the file's values were made for: the terms made (their count), the file by name and
+/// length, and the sides' point forms.
+type FileKey = (u64, Option<(String, usize)>, [crate::render::Method; 2]);
+
+/// The file's name and each light's radiance by it, or why there is none.
+pub type FileValues = Result<Option<(String, Vec<DVec3>)>, String>;
 
 impl Default for PinnedLights {
     fn default() -> Self {
         Self {
             terms: Cached::new("plane.pinned"),
+            file: None,
         }
     }
 }
@@ -103,6 +114,39 @@ impl PinnedLights {
                 )
             },
         );
+    }
+
+    /// The method file's values at the pinned pixel (`probe`: the plane's GPU probe), made
+    /// again when the pixel's terms, the file or the sides change.
+    pub fn update_file(
+        &mut self,
+        lab: &Lab,
+        pinned: Option<[f64; 2]>,
+        probe: impl FnOnce([f64; 2]) -> Option<Result<Option<Vec<DVec3>>, String>>,
+    ) {
+        let file = lab.method_file();
+        let key: FileKey = (
+            self.terms.count().1,
+            file.map(|f| (f.name.clone(), f.source().len())),
+            [lab.forms().ltc, lab.forms().brdf],
+        );
+        if self.file.as_ref().is_some_and(|(k, _)| *k == key) {
+            return;
+        }
+        let values = match (pinned, file) {
+            (Some(at), Some(f)) => match probe(at) {
+                Some(Ok(v)) => Ok(v.map(|v| (f.name.clone(), v))),
+                Some(Err(e)) => Err(e),
+                None => Ok(None),
+            },
+            _ => Ok(None),
+        };
+        self.file = Some((key, values));
+    }
+
+    /// The method file's values at the pinned pixel, as last made.
+    pub fn file(&self) -> Option<&FileValues> {
+        self.file.as_ref().map(|(_, v)| v)
     }
 
     /// The pinned pixel's lights, as last made.
@@ -235,7 +279,7 @@ pub fn show(
     ui: &mut egui::Ui,
     (pinned, sort): (&mut Option<[f64; 2]>, &mut (LightColumn, bool)),
     lab: &mut Lab,
-    terms: Option<&PixelTerms>,
+    (terms, file): (Option<&PixelTerms>, Option<&FileValues>),
     table_height: f32,
 ) {
     let Some(t) = terms else {
@@ -273,7 +317,42 @@ pub fn show(
                 ));
             }
             sized_rows(ui, &rows);
+            file_rows(ui, &rows, file);
         });
+}
+
+/// The method file's value of each light (the table's first rows), evaluated on the GPU at
+/// this pixel, beside the CPU's LTC and exact values of the same light.
+fn file_rows(ui: &mut egui::Ui, rows: &[&LightTerm], file: Option<&FileValues>) {
+    match file {
+        Some(Ok(Some((name, values)))) => {
+            let lights: Vec<(usize, Vec<DVec3>)> = rows
+                .iter()
+                .take(MAX_ROWS)
+                .filter_map(|l| Some((l.index, vec![*values.get(l.index)?, l.ltc, l.exact])))
+                .collect();
+            let title = format!("each light by the method file {name} (on the GPU)");
+            let methods = [
+                (
+                    name.as_str(),
+                    "The method file's radiance of this light alone at this pixel, evaluated on the GPU by the plane shader's probe",
+                ),
+                ("ltc", "The lab's LTC (table A) in f64 on the CPU"),
+                (
+                    "exact",
+                    "The exact BRDF (or the shape's exact integral) in f64 on the CPU",
+                ),
+            ];
+            method_rows(ui, &title, (&methods, 2), &lights);
+        }
+        Some(Err(e)) => {
+            ui.colored_label(
+                egui::Color32::LIGHT_RED,
+                format!("the method file's values: {e}"),
+            );
+        }
+        _ => {}
+    }
 }
 
 /// The pixel's sides and their difference, its magnitudes, and the unpin button.

@@ -180,6 +180,15 @@ impl MethodFile {
         Ok(file)
     }
 
+    /// Its identity: a hash of its name and text (a file loaded again with other text is
+    /// another method, and renders again).
+    pub fn id(&self) -> u64 {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        (&self.name, &self.source).hash(&mut h);
+        h.finish()
+    }
+
     /// The text as the file holds it.
     pub fn source(&self) -> &str {
         &self.source

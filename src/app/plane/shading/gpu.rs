@@ -11,7 +11,7 @@ use crate::gpu::plane::ShaderChecks;
 use crate::gpu::plane_render::PlaneRender;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::timing::FrameTimes;
-use crate::render::{FrameKind, RenderSettings};
+use crate::render::{FrameKind, Method, RenderSettings};
 use crate::scene::Scene;
 use crate::tables::NamedTables;
 
@@ -46,7 +46,14 @@ pub(super) struct GpuShading {
     pub(super) in_flight: Option<InFlight>,
     /// How the shown image was last made from the sums (a change re-encodes it).
     pub(super) shown: Option<(FrameKind, f64)>,
+    /// Why a method file's render was stopped (a batch past `METHOD_FILE_BATCH_MS`).
+    pub(super) stopped: Option<String>,
 }
+
+/// The longest a batch of a render with a method file may take before the lab stops that
+/// render (docs/design.md §5.13): the lab paces its batches to a few ms, so a batch of this
+/// long holds the window for as long; the file's loops are bounded, so its batches end.
+pub const METHOD_FILE_BATCH_MS: f64 = 2000.0;
 
 /// A chunk submitted and not yet timed.
 pub(super) struct InFlight {
@@ -80,6 +87,7 @@ impl GpuShading {
             bin_pacer: Pacer::default(),
             in_flight: None,
             shown: None,
+            stopped: None,
         })
     }
 
@@ -128,6 +136,25 @@ impl GpuShading {
             }
         }
         let wall_ms = chunk.wall_ms.unwrap_or(0.0);
+        let file = self
+            .render
+            .as_ref()
+            .is_some_and(|r| r.settings().methods().contains(&Method::File));
+        if file && chunk.work == Work::Shade && !chunk.stale && wall_ms > METHOD_FILE_BATCH_MS {
+            let name = self
+                .renderer
+                .method_file()
+                .map_or("the method file".to_string(), |f| f.name.clone());
+            self.stopped = Some(format!(
+                "{name}: one batch of {} lights took {:.1} s, past the lab's {:.0} s for a method file: stopped. Measure it in the terminal (ltc-lab study or bench --method-file)",
+                chunk.units,
+                wall_ms / 1e3,
+                METHOD_FILE_BATCH_MS / 1e3
+            ));
+            self.render = None;
+            self.in_flight = None;
+            return true;
+        }
         let by_wall_clock = match chunk.work {
             Work::Bin => FrameTimes {
                 bin_ms: Some(wall_ms),

@@ -14,6 +14,7 @@ use crate::app::lab::{Exposure, Lab, parts};
 use crate::app::ui::display::ShownImage;
 use crate::app::work::cache::{Cached, Own};
 use crate::gpu::GpuContext;
+use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane_render::PlaneRender;
 use crate::gpu::target::PendingRead;
 use crate::render::{Frame, FrameKind, RenderSettings, View};
@@ -116,6 +117,10 @@ pub struct Shading {
     error: Option<String>,
     /// The finished image's read-back, on its way (`read`).
     reading: Option<PendingRead>,
+    /// Why a method file's render was stopped, for the panel to say (`take_stopped`).
+    stopped: Option<String>,
+    /// Whether the finished render's image was checked for a method file's stop mark.
+    file_checked: bool,
 }
 
 enum Path {
@@ -139,6 +144,8 @@ impl Shading {
             progress: Progress::default(),
             error: None,
             reading: None,
+            stopped: None,
+            file_checked: false,
         };
         (shading, why)
     }
@@ -174,13 +181,16 @@ impl Shading {
             lab.lights(),
             lab.overrides(),
             lab.tables(),
-            Own(*settings),
+            // A method file loaded again, with other text, renders again.
+            Own((*settings, lab.method_file().map(MethodFile::id))),
         );
-        self.render
-            .get(inputs, |(stage, material, lights, overrides, _, Own(s))| {
+        self.render.get(
+            inputs,
+            |(stage, material, lights, overrides, _, Own((s, _)))| {
                 let scene = parts::scene(stage, material, lights, &Exposure(1.0));
                 (parts::shaded(scene, overrides), s)
-            });
+            },
+        );
         let restart = self.render.count().1 != before;
         let kind = if settings.view == View::Diff {
             FrameKind::RelativeDifference
@@ -194,6 +204,11 @@ impl Shading {
         let texture = match &mut self.path {
             Path::Gpu(g) => {
                 let ready = g.ready(&mut self.progress);
+                if let Some(why) = g.stopped.take() {
+                    self.error = Some(why.clone());
+                    self.stopped = Some(why);
+                    self.progress.done = self.progress.total;
+                }
                 if self.error.is_none() && !self.progress.complete() && ready {
                     g.chunk(ui, &mut self.progress, kind, exposure);
                 }
@@ -212,10 +227,48 @@ impl Shading {
                 cpu.texture.as_ref().map(egui::TextureHandle::id)
             }
         };
+        if !self.file_checked
+            && self.progress.complete()
+            && settings.methods().contains(&crate::render::Method::File)
+        {
+            self.check_file_mark(ui);
+        }
         ShownImage {
             texture,
             size: (settings.width, settings.height),
         }
+    }
+
+    /// Reads the finished image back over frames and says where a method file's loops were
+    /// stopped in it (its alpha mark, docs/design.md §5.13).
+    fn check_file_mark(&mut self, ui: &egui::Context) {
+        let Path::Gpu(g) = &mut self.path else {
+            self.file_checked = true;
+            return;
+        };
+        let Some(render) = g.render.as_ref() else {
+            self.file_checked = true;
+            return;
+        };
+        let pending = self
+            .reading
+            .get_or_insert_with(|| render.start_read(&g.ctx));
+        let Some(texels) = pending.try_take(&g.ctx) else {
+            ui.request_repaint();
+            return;
+        };
+        self.reading = None;
+        self.file_checked = true;
+        if let Err(e) = render.check_texels(&texels) {
+            self.error = Some(e.to_string());
+            self.stopped = Some(e.to_string());
+        }
+    }
+
+    /// Why a method file's render was stopped, once: the panel says it and takes the file
+    /// off its side.
+    pub fn take_stopped(&mut self) -> Option<String> {
+        self.stopped.take()
     }
 
     /// Starts the render afresh (the tables brought up to date first).
@@ -227,6 +280,7 @@ impl Shading {
         let settings = &settings;
         self.error = None;
         self.reading = None;
+        self.file_checked = false;
         let tables = &lab.tables().named;
         match &mut self.path {
             Path::Gpu(g) => {
@@ -265,6 +319,33 @@ impl Shading {
                 cpu.start(ui, scene, settings, tables);
             }
         }
+    }
+
+    /// The method file's value of each light at the image point `at` (0–1) of the current
+    /// render, evaluated on the GPU (the pixel inspector, docs/design.md §5.13); `None` where
+    /// no side shades with a file, on the CPU, and in the browser (which cannot wait).
+    pub fn probe_file(
+        &mut self,
+        lab: &Lab,
+        at: [f64; 2],
+    ) -> Option<Result<Option<Vec<glam::DVec3>>, String>> {
+        if cfg!(target_arch = "wasm32") {
+            return None;
+        }
+        let (scene, settings) = self.render.last()?;
+        let Path::Gpu(g) = &mut self.path else {
+            return None;
+        };
+        if !settings.methods().contains(&crate::render::Method::File) {
+            return None;
+        }
+        g.renderer
+            .set_method_file(&g.ctx, lab.method_file().cloned());
+        Some(
+            g.renderer
+                .probe_file(&g.ctx, scene, settings, at)
+                .map_err(|e| e.to_string()),
+        )
     }
 
     /// Whether the current render is still being summed.
