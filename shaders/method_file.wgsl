@@ -160,7 +160,7 @@ fn method_file_was_stopped() -> bool {
     return partials[params.tiles_x * params.tiles_y].y > 0.5;
 }
 
-// The pixel inspector's values of the file (src/gpu/method_file/probe.rs): at the image point
+// The pixel inspector's values of the file (src/gpu/renderer.rs probe_file): at the image point
 // (params.probe_x, probe_y), each light by the side that shades with the file, alone, its
 // radiance in accum_0[k] (w 1 where the point is on the plane and seen from above).
 @compute @workgroup_size(64)
