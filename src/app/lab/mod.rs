@@ -344,19 +344,12 @@ impl Lab {
     /// The method file's render was stopped (`why`): the sides that shade with it go back to
     /// the lab's forms, the file stays loaded (pick `file` again to retry), and why is said.
     pub fn stop_method_file(&mut self, why: &str) {
-        let forms = **HasPart::<Forms>::part(self);
-        let defaults = Forms::default();
-        let mut kept = forms;
-        if kept.ltc == Method::File {
-            kept.ltc = defaults.ltc;
-        }
-        if kept.brdf == Method::File {
-            kept.brdf = defaults.brdf;
-        }
+        let kept = without_file(**HasPart::<Forms>::part(self));
         self.set(kept);
         self.say(Message::error(format!(
-            "{why} — the side is back to {}",
-            kept.ltc.name()
+            "{why} — the sides are back to {} | {}",
+            kept.ltc.name(),
+            kept.brdf.name()
         )));
     }
 
@@ -368,14 +361,7 @@ impl Lab {
             return;
         }
         let forms = **HasPart::<Forms>::part(self);
-        let defaults = Forms::default();
-        let mut kept = forms;
-        if kept.ltc == Method::File {
-            kept.ltc = defaults.ltc;
-        }
-        if kept.brdf == Method::File {
-            kept.brdf = defaults.brdf;
-        }
+        let kept = without_file(forms);
         if kept != forms {
             let part = HasPart::<Forms>::part_mut(self, Key(()));
             *part.value_mut() = kept;
@@ -581,5 +567,18 @@ impl Lab {
     /// What the panels asked of the app this frame (the app's to carry out).
     pub(super) fn take_requests(&mut self) -> Vec<Request> {
         std::mem::take(&mut self.requests)
+    }
+}
+
+/// `forms` with a side that shades with the method file back to the lab's default form.
+fn without_file(forms: Forms) -> Forms {
+    let defaults = Forms::default();
+    let back = |form: Method, default: Method| {
+        if form == Method::File { default } else { form }
+    };
+    Forms {
+        ltc: back(forms.ltc, defaults.ltc),
+        brdf: back(forms.brdf, defaults.brdf),
+        ..forms
     }
 }
