@@ -77,7 +77,7 @@ fn method_file_over() -> bool {
 
 // The pixel of the side shading with table `ltc`, as MethodPixel.
 fn method_pixel(p: Pixel, ltc: LtcShading) -> MethodPixel {
-    let w = lobe_weights(ltc.pair, params.f0, NORMALIZATION_CORRECTED);
+    let w = ltc.magnitudes;
     return MethodPixel(
         p.x,
         vec3<f32>(0.0, 0.0, 1.0),

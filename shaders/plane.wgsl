@@ -60,6 +60,9 @@ struct LtcShading {
     diff_factor: f32,
     // nl-fit's correction [spec c0 c1, diff c0 c1] (zero unless HORIZON is nl-fit).
     nl: vec4<f32>,
+    // The lobes' magnitudes (specular with F0, diffuse) as a method file reads them, made
+    // once a pixel (method_file.wgsl method_pixel).
+    magnitudes: vec2<f32>,
 }
 
 // A visible point of the plane and everything per pixel that the methods need.
@@ -126,6 +129,7 @@ fn ltc_shading(p: Pixel, size: u32, base: u32) -> LtcShading {
         s.spec_factor = s.pair.spec.det_cos_from_brdf / PI * spec_magnitude(s.pair, params.f0);
         s.diff_factor = s.pair.diff.det_cos_from_brdf / PI * magnitude(s.pair.diff);
     }
+    s.magnitudes = lobe_weights(s.pair, params.f0, NORMALIZATION_CORRECTED);
     s.nl = vec4<f32>(0.0);
     if HORIZON == HORIZON_NL_FIT {
         s.nl = lut_nl_terms(params.alpha, p.v.z, size, base);

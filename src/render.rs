@@ -38,16 +38,6 @@ named_enum! {
 }
 
 impl Method {
-    /// The lab's own methods (all but `File`).
-    pub const OWN: [Self; 6] = [
-        Self::Brdf,
-        Self::BrdfFast,
-        Self::Ltc,
-        Self::LtcFast,
-        Self::LtcF16,
-        Self::LtcF16Pairs,
-    ];
-
     /// The methods every adapter runs.
     pub const F32: [Self; 4] = [Self::Brdf, Self::BrdfFast, Self::Ltc, Self::LtcFast];
 

@@ -83,7 +83,7 @@ pub fn run(a: &Args) -> Result<()> {
         eprintln!(
             "{}: work per light from its IR: {}",
             f.name,
-            file_work_line(f)
+            ltc_lab::gpu::work::file_work_line(f)
         );
     }
     let lut = a.lut.load()?;
@@ -138,12 +138,4 @@ pub fn run(a: &Args) -> Result<()> {
         write_atomically(p, text.as_bytes())?;
     }
     print(&ltc_lab::measure::bench_table::markdown(&rows, &device))
-}
-
-/// A method file's work per light, in words (or why it could not be counted).
-pub fn file_work_line(f: &ltc_lab::gpu::method_file::MethodFile) -> String {
-    match ltc_lab::gpu::work::file_work(f) {
-        Ok(w) => ltc_lab::gpu::work::describe(&w),
-        Err(e) => format!("not counted ({e})"),
-    }
 }

@@ -293,7 +293,11 @@ fn sides(a: &Args, settings: &mut RenderSettings) -> Result<Option<MethodFile>> 
         settings.b.point = a.point_b.unwrap_or(Method::Brdf);
     } else if a.point_a.is_some() || a.point_b.is_some() {
         return Err(Error::input(
-            "--point-a",
+            if a.point_a.is_some() {
+                "--point-a"
+            } else {
+                "--point-b"
+            },
             "--point-a and --point-b pick the sides of split and diff",
         ));
     }
@@ -318,7 +322,7 @@ fn sides(a: &Args, settings: &mut RenderSettings) -> Result<Option<MethodFile>> 
             eprintln!(
                 "{}: work per light from its IR: {}",
                 f.name,
-                super::bench::file_work_line(f)
+                ltc_lab::gpu::work::file_work_line(f)
             );
             Ok(file)
         }

@@ -60,8 +60,10 @@ pub fn light_function(method: Method) -> (&'static str, u32) {
 /// Each method's work per light in the plane shader (with the f16 forms: its f16 module).
 pub fn work_per_light() -> Result<Vec<(Method, Work)>, String> {
     let source = super::plane_module_source(true);
-    Method::OWN
+    // The lab's own methods: the file's work is `file_work`'s.
+    Method::F32
         .into_iter()
+        .chain(Method::F16)
         .map(|m| {
             let (name, lights) = light_function(m);
             let w = work_of(&source, name)?;
@@ -94,17 +96,22 @@ pub fn file_work(
         .collect()
 }
 
-/// One line per shape: `point: 52 arithmetic, 3 divisions, 1 special, 0 reads`.
-pub fn describe(work: &[(&str, Work)]) -> String {
-    work.iter()
-        .map(|(shape, w)| {
-            format!(
-                "{shape}: {} arithmetic, {} divisions, {} special, {} reads",
-                w.arithmetic, w.divisions, w.special, w.reads
-            )
-        })
-        .collect::<Vec<_>>()
-        .join("; ")
+/// A method file's work per light in words, a shape after another (`point: 85 arithmetic,
+/// 8 divisions, 1 special, 0 reads`), or why it could not be counted.
+pub fn file_work_line(file: &crate::gpu::method_file::MethodFile) -> String {
+    match file_work(file) {
+        Ok(work) => work
+            .iter()
+            .map(|(shape, w)| {
+                format!(
+                    "{shape}: {} arithmetic, {} divisions, {} special, {} reads",
+                    w.arithmetic, w.divisions, w.special, w.reads
+                )
+            })
+            .collect::<Vec<_>>()
+            .join("; "),
+        Err(e) => format!("not counted ({e})"),
+    }
 }
 
 /// The work of the WGSL function `name` of `source` and of everything it calls.

@@ -90,6 +90,7 @@ fn the_artifact_example_is_ltc_without_case_2() {
         0,
         "the lab's ltc never sums negative light"
     );
+    // More than a speck of rounding: the artifact covers a band of the image.
     assert!(
         negative(&file) > SIZE.0 * SIZE.1 / 100,
         "the artifact: negative light on {} pixels",
@@ -195,9 +196,15 @@ fn the_rect_example_is_the_labs_proxy_within_its_edge_fit() {
                     / luminance(lab.pixels[k]).max(floor)
             })
             .fold(0.0, f64::max);
-        eprintln!("{name}: fit {worst_fit:.2e}, image {worst:.2e}");
+        // Each edge's factor is off by at most the fit's error; the edges' sum may cancel (at
+        // most doubling that, relatively, for a rect seen from its lit side) and the clipped
+        // sphere's (l² + z)/(l + 1) moves at most twice as fast as l, relatively: 4× the fit.
+        // Beyond it, the GPU's f32 against the CPU's f64 as in every render (the parity
+        // tolerance, which says where it comes from). Measured on lavapipe: 2.1e-5 and
+        // 3.6e-5, against a bound of 2.06e-4.
+        let bound = 4.0 * worst_fit + ltc_lab::measure::parity::RADIANCE_TOLERANCE;
         assert!(
-            worst > 0.0 && worst < 4.0 * worst_fit + 1e-3,
+            worst > 0.0 && worst < bound,
             "{name}: {worst:.2e} against the fit's {worst_fit:.2e}"
         );
     }

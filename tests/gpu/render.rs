@@ -21,8 +21,9 @@ const H: usize = 40;
 /// The methods this adapter runs.
 fn methods() -> Vec<Method> {
     let f16 = gpu().is_some_and(|g| g.ctx.has_f16());
-    Method::OWN
+    Method::F32
         .into_iter()
+        .chain(Method::F16)
         .filter(|m| f16 || !m.needs_f16())
         .collect()
 }

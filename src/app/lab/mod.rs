@@ -331,8 +331,8 @@ impl Lab {
         if forms.ltc != Method::File && forms.brdf != Method::File {
             forms.ltc = Method::File;
         }
-        // Set, not edited: stamped though it may be the same, so that the plane renders
-        // again with the new file.
+        // A new file with the same forms renders again by its identity (`MethodFile::id` is
+        // in the plane's render key).
         self.set(forms);
         Message::note(format!(
             "{text}: {} | {}",

@@ -162,7 +162,7 @@ impl Panel for PlanePanel {
         self.pinned.update(lab, self.state.pinned, placed.size);
         let shading = &mut self.shading;
         self.pinned
-            .update_file(lab, self.state.pinned, |at| shading.probe_file(lab, at));
+            .update_file(lab, self.state.pinned, |at| shading.probe_file(at));
         if self.state.view == View::Diff {
             colour_bar(ui, &difference_scale(a, b), 220.0);
         }

@@ -49,9 +49,9 @@ pub struct PinnedLights {
     file: Option<(FileKey, FileValues)>,
 }
 
-/// What the file's values were made for: the terms made (their count), the file by name and
-/// length, and the sides' point forms.
-type FileKey = (u64, Option<(String, usize)>, [crate::render::Method; 2]);
+/// What the file's values were made for: the terms made (their count), the file
+/// (`MethodFile::id`), and the sides' point forms.
+type FileKey = (u64, Option<u64>, [crate::render::Method; 2]);
 
 /// The file's name and each light's radiance by it, or why there is none.
 pub type FileValues = Result<Option<(String, Vec<DVec3>)>, String>;
@@ -127,7 +127,7 @@ impl PinnedLights {
         let file = lab.method_file();
         let key: FileKey = (
             self.terms.count().1,
-            file.map(|f| (f.name.clone(), f.source().len())),
+            file.map(crate::gpu::method_file::MethodFile::id),
             [lab.forms().ltc, lab.forms().brdf],
         );
         if self.file.as_ref().is_some_and(|(k, _)| *k == key) {

@@ -111,25 +111,23 @@ impl MethodFile {
         }
         let beside = format!("{source}\n{}", interface());
         let module = check(name, source, &beside)?;
-        if let Some(ep) = module.entry_points.first() {
+        // A name's first place in the file (its declaration, where it is declared first).
+        let at_name = |wanted: &str, message: String| {
             let offset = toks
                 .iter()
-                .find(|t| t.text == ep.name)
+                .find(|t| t.text == wanted)
                 .map_or(0, |t| t.start);
-            return Err(at(
-                offset,
-                "a method file holds functions, not entry points".into(),
-            ));
+            at(offset, message)
+        };
+        if let Some(ep) = module.entry_points.first() {
+            let message = "a method file holds functions, not entry points".to_string();
+            return Err(at_name(&ep.name, message));
         }
         for (_, var) in module.global_variables.iter() {
             if var.space != naga::AddressSpace::Private {
                 let var_name = var.name.as_deref().unwrap_or("");
-                let offset = toks
-                    .iter()
-                    .find(|t| t.text == var_name)
-                    .map_or(0, |t| t.start);
-                return Err(at(
-                    offset,
+                return Err(at_name(
+                    var_name,
                     format!(
                         "`{var_name}`: only var<private> is taken (no bindings, no workgroup memory)"
                     ),
@@ -138,14 +136,8 @@ impl MethodFile {
         }
         if let Some((_, o)) = module.overrides.iter().next() {
             let o_name = o.name.as_deref().unwrap_or("");
-            let offset = toks
-                .iter()
-                .find(|t| t.text == o_name)
-                .map_or(0, |t| t.start);
-            return Err(at(
-                offset,
-                format!("`{o_name}`: overrides are the lab's; use a const"),
-            ));
+            let message = format!("`{o_name}`: overrides are the lab's; use a const");
+            return Err(at_name(o_name, message));
         }
         let defined = |f: &str| {
             module
@@ -163,7 +155,17 @@ impl MethodFile {
                 ),
             ));
         }
-        check_signatures(name, source, &beside, shades)?;
+        if let Some((f, light)) = wrong_signature(name, &beside, shades) {
+            // At the function's own declaration (`fn` then its name).
+            let offset = toks
+                .windows(2)
+                .find(|w| w[0].text == "fn" && w[1].text == f)
+                .map_or(0, |w| w[1].start);
+            return Err(at(
+                offset,
+                format!("{f} must be fn(pixel: MethodPixel, light: {light}) -> MethodRadiance"),
+            ));
+        }
         let file = Self {
             name: name.to_string(),
             source: source.to_string(),
@@ -314,27 +316,22 @@ fn check(name: &str, source: &str, text: &str) -> Result<naga::Module> {
     Ok(module)
 }
 
-/// Each function the file defines called as the light loop calls it: a wrong signature is
-/// refused at the function's own line.
-fn check_signatures(name: &str, source: &str, beside: &str, shades: [bool; 4]) -> Result<()> {
-    for ((f, light, _), _) in ENTRIES.iter().zip(shades).filter(|(_, s)| *s) {
-        let call = format!(
-            "{beside}\nfn method_file_call(p: MethodPixel, l: {light}) -> MethodRadiance {{ return {f}(p, l); }}\n"
-        );
-        if check(name, "", &call).is_err() {
-            let toks = tokens(source);
-            let offset = toks
-                .windows(2)
-                .find(|w| w[0].text == "fn" && w[1].text == *f)
-                .map_or(0, |w| w[1].start);
-            let (line, column) = line_column(source, offset);
-            return Err(Error::input(
-                name,
-                format!(
-                    "line {line}, column {column}: {f} must be fn(pixel: MethodPixel, light: {light}) -> MethodRadiance"
-                ),
-            ));
-        }
-    }
-    Ok(())
+/// The first function the file defines whose signature is not the interface's (its name and
+/// light struct): each is called as the light loop calls it.
+fn wrong_signature(
+    name: &str,
+    beside: &str,
+    shades: [bool; 4],
+) -> Option<(&'static str, &'static str)> {
+    ENTRIES
+        .iter()
+        .zip(shades)
+        .filter(|(_, s)| *s)
+        .map(|((f, light, _), _)| (*f, *light))
+        .find(|(f, light)| {
+            let call = format!(
+                "{beside}\nfn method_file_call(p: MethodPixel, l: {light}) -> MethodRadiance {{ return {f}(p, l); }}\n"
+            );
+            check(name, "", &call).is_err()
+        })
 }

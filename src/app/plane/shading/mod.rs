@@ -201,14 +201,17 @@ impl Shading {
         if restart {
             self.restart(ui, lab, kind, exposure);
         }
+        let (ready, stopped) = match &mut self.path {
+            Path::Gpu(g) => (g.ready(&mut self.progress), g.stopped.take()),
+            Path::Cpu(_) => (true, None),
+        };
+        // A method file's batch past its limit ends the render (`GpuShading::ready`).
+        if let Some(why) = stopped {
+            self.stop(why);
+            self.progress.done = self.progress.total;
+        }
         let texture = match &mut self.path {
             Path::Gpu(g) => {
-                let ready = g.ready(&mut self.progress);
-                if let Some(why) = g.stopped.take() {
-                    self.error = Some(why.clone());
-                    self.stopped = Some(why);
-                    self.progress.done = self.progress.total;
-                }
                 if self.error.is_none() && !self.progress.complete() && ready {
                     g.chunk(ui, &mut self.progress, kind, exposure);
                 }
@@ -242,27 +245,40 @@ impl Shading {
     /// Reads the finished image back over frames and says where a method file's loops were
     /// stopped in it (its alpha mark, docs/design.md §5.13).
     fn check_file_mark(&mut self, ui: &egui::Context) {
+        let checked = self
+            .texels()
+            .map(|(render, texels)| render.check_texels(&texels));
+        if checked.is_none() && self.reading.is_some() {
+            // On its way.
+            ui.request_repaint();
+            return;
+        }
+        // Read (or nothing to read: the CPU path, no render).
+        self.file_checked = true;
+        if let Some(Err(e)) = checked {
+            self.stop(e.to_string());
+        }
+    }
+
+    /// A method file's render stopped: shown over the image, and said by the panel.
+    fn stop(&mut self, why: String) {
+        self.error = Some(why.clone());
+        self.stopped = Some(why);
+    }
+
+    /// The GPU render's image as texels, read back over frames (`None` while on its way, and
+    /// on the CPU path), with the render they belong to.
+    fn texels(&mut self) -> Option<(&PlaneRender, Vec<u8>)> {
         let Path::Gpu(g) = &mut self.path else {
-            self.file_checked = true;
-            return;
+            return None;
         };
-        let Some(render) = g.render.as_ref() else {
-            self.file_checked = true;
-            return;
-        };
+        let render = g.render.as_ref()?;
         let pending = self
             .reading
             .get_or_insert_with(|| render.start_read(&g.ctx));
-        let Some(texels) = pending.try_take(&g.ctx) else {
-            ui.request_repaint();
-            return;
-        };
+        let texels = pending.try_take(&g.ctx)?;
         self.reading = None;
-        self.file_checked = true;
-        if let Err(e) = render.check_texels(&texels) {
-            self.error = Some(e.to_string());
-            self.stopped = Some(e.to_string());
-        }
+        Some((render, texels))
     }
 
     /// Why a method file's render was stopped, once: the panel says it and takes the file
@@ -324,11 +340,7 @@ impl Shading {
     /// The method file's value of each light at the image point `at` (0–1) of the current
     /// render, evaluated on the GPU (the pixel inspector, docs/design.md §5.13); `None` where
     /// no side shades with a file, on the CPU, and in the browser (which cannot wait).
-    pub fn probe_file(
-        &mut self,
-        lab: &Lab,
-        at: [f64; 2],
-    ) -> Option<Result<Option<Vec<glam::DVec3>>, String>> {
+    pub fn probe_file(&mut self, at: [f64; 2]) -> Option<Result<Option<Vec<glam::DVec3>>, String>> {
         if cfg!(target_arch = "wasm32") {
             return None;
         }
@@ -339,8 +351,7 @@ impl Shading {
         if !settings.methods().contains(&crate::render::Method::File) {
             return None;
         }
-        g.renderer
-            .set_method_file(&g.ctx, lab.method_file().cloned());
+        // The renderer holds the render's file: a file loaded since has restarted the render.
         Some(
             g.renderer
                 .probe_file(&g.ctx, scene, settings, at)
@@ -365,17 +376,10 @@ impl Shading {
         if self.in_flight() {
             return None;
         }
-        match &mut self.path {
-            Path::Gpu(g) => {
-                let render = g.render.as_ref()?;
-                let pending = self
-                    .reading
-                    .get_or_insert_with(|| render.start_read(&g.ctx));
-                let texels = pending.try_take(&g.ctx)?;
-                self.reading = None;
-                Some(render.frame_of(&texels))
-            }
-            Path::Cpu(cpu) => cpu.frame.clone(),
+        if let Path::Cpu(cpu) = &self.path {
+            return cpu.frame.clone();
         }
+        let (render, texels) = self.texels()?;
+        Some(render.frame_of(&texels))
     }
 }
