@@ -1,9 +1,9 @@
-// The exact BRDF of docs/design.md §1, mirroring src/brdf.rs function by function (same names). All
+// The exact BRDF of docs/design.md §1, mirroring src/brdf/mod.rs function by function (same names). All
 // in the shading frame's terms: n = +z, so the dot products with n are z components.
 
 const PI: f32 = 3.141592653589793;
 
-// Distance below which a light sits on the shading point (src/brdf.rs MIN_LIGHT_DISTANCE).
+// Distance below which a light sits on the shading point (src/brdf/mod.rs MIN_LIGHT_DISTANCE).
 const MIN_LIGHT_DISTANCE: f32 = 1e-6;
 
 struct Dots {
@@ -21,7 +21,7 @@ fn dots_new(v: vec3<f32>, l: vec3<f32>) -> Dots {
 }
 
 // GGX normal distribution, Walter et al. 2007 eq. 33; denominator written without the f32
-// cancellation at n·h = 1 (see src/brdf.rs).
+// cancellation at n·h = 1 (see src/brdf/mod.rs).
 fn d_ggx(n_h: f32, alpha: f32) -> f32 {
     if n_h <= 0.0 {
         return 0.0;
@@ -66,7 +66,7 @@ fn burley_scatter(f90: f32, cos_theta: f32) -> f32 {
     return 1.0 + (f90 - 1.0) * x2 * x2 * x;
 }
 
-// D F G / (4 n·v n·l) · n·l, with n·l cancelled (src/brdf.rs specular_cos).
+// D F G / (4 n·v n·l) · n·l, with n·l cancelled (src/brdf/mod.rs specular_cos).
 fn specular_cos(d: Dots, alpha: f32, f0: f32) -> f32 {
     if d.n_v <= 0.0 || d.n_l <= 0.0 || d.v_h <= 0.0 || d.l_h <= 0.0 {
         return 0.0;

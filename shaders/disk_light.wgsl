@@ -133,7 +133,7 @@ fn segment_reach(seg: Segment, apex: vec2<f32>, d: vec2<f32>, chord: bool) -> f3
 struct DiskShading {
     v: vec3<f32>,
     disk: Disk,
-    alpha: f32,
+    alpha: vec2<f32>,
     f0: f32,
     clip: u32,
     normalization: u32,
@@ -189,8 +189,7 @@ fn disk_exact(s: DiskShading) -> vec2<f32> {
                     if l.z > 0.0 {
                         let weight = 0.25 * ns.y * nt.y * width * reach * rho * r2
                             * abs(dot(x, d.normal)) / (len * len2);
-                        let dd = dots_new(s.v, l);
-                        sum += weight * vec2<f32>(specular_cos(dd, s.alpha, s.f0), diffuse_cos(dd, s.alpha));
+                        sum += weight * exact_lobes(s.v, l, s.alpha, s.f0);
                     }
                 }
             }

@@ -69,7 +69,7 @@ fn add_sphere(
         1.0,
         light.position_range.w,
         light.intensity.w,
-        params.alpha,
+        material_alpha(),
         params.f0,
         params.clip,
         params.normalization,
@@ -105,7 +105,7 @@ fn add_rect(
     let shading = RectShading(
         p.v_tangent,
         Rect(p.tangent_from_world * centre, p.tangent_from_world * edges[0], p.tangent_from_world * edges[1]),
-        params.alpha,
+        material_alpha(),
         params.f0,
         params.clip,
         params.normalization,
@@ -131,7 +131,7 @@ fn add_disk(
     let shading = DiskShading(
         p.v_tangent,
         Disk(p.tangent_from_world * centre, p.tangent_from_world * normal_radius.xyz, normal_radius.w),
-        params.alpha,
+        material_alpha(),
         params.f0,
         params.clip,
         params.normalization,

@@ -224,7 +224,7 @@ fn ltc_lobes(pair: LtcPair, l: vec3<f32>, f0: f32, clip: u32, normalization: u32
 fn point_lobes(
     v: vec3<f32>,
     l: vec3<f32>,
-    alpha: f32,
+    alpha: vec2<f32>,
     f0: f32,
     pair: LtcPair,
     clip: u32,
@@ -237,6 +237,5 @@ fn point_lobes(
     if l.z <= 0.0 {
         return vec2<f32>(0.0);
     }
-    let d = dots_new(v, l);
-    return vec2<f32>(specular_cos(d, alpha, f0), diffuse_cos(d, alpha));
+    return exact_lobes(v, l, alpha, f0);
 }

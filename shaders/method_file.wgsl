@@ -13,9 +13,10 @@ struct MethodPixel {
     position: vec3<f32>,
     n: vec3<f32>,
     v: vec3<f32>,            // unit, toward the camera
-    t1: vec3<f32>,           // the shading frame: t1 along v's tangential part, t2 = n × t1
-    t2: vec3<f32>,
-    alpha: f32,              // GGX α (roughness squared)
+    t1: vec3<f32>,           // the shading frame: t1 along v's tangential part (the
+    t2: vec3<f32>,           // tangent for an anisotropic material), t2 = n × t1
+    alpha: f32,              // GGX α (roughness squared); α along t1 when anisotropic
+    alpha_y: f32,            // α along t2 (alpha while isotropic)
     f0: f32,                 // Fresnel reflectance at normal incidence
     base_color: vec3<f32>,   // the diffuse albedo
     // The side's table at (α, n·v): each lobe's M⁻¹ (maps a direction in the frame
@@ -85,6 +86,7 @@ fn method_pixel(p: Pixel, ltc: LtcShading) -> MethodPixel {
         p.t1,
         p.t2,
         params.alpha,
+        params.alpha_y,
         params.f0,
         params.base_color.rgb,
         ltc.pair.spec.cos_from_brdf,

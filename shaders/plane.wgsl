@@ -109,6 +109,10 @@ fn surface_point_at(pos: vec2<f32>) -> Pixel {
     let len = length(tangential);
     // At normal view any tangent will do (src/render.rs ShadingFrame::new).
     p.t1 = select(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(tangential / len, 0.0), len > 0.0);
+    if ANISO {
+        // The material's tangent frame (src/render.rs ShadingFrame::of).
+        p.t1 = vec3<f32>(params.tangent_x, params.tangent_y, 0.0);
+    }
     p.t2 = cross(vec3<f32>(0.0, 0.0, 1.0), p.t1);
     // WGSL builds a matrix from columns, hence the transpose.
     p.tangent_from_world = transpose(mat3x3<f32>(p.t1, p.t2, vec3<f32>(0.0, 0.0, 1.0)));
@@ -116,10 +120,35 @@ fn surface_point_at(pos: vec2<f32>) -> Pixel {
     return p;
 }
 
-// One table's LtcShading at the pixel: the table of `size` cells per side at `base`.
-fn ltc_shading(p: Pixel, size: u32, base: u32) -> LtcShading {
+// An anisotropic material's lobes (src/cpu.rs LtcPixel::anisotropic): the specular lobe from
+// the 4D table in the tangent frame; the diffuse lobe from the 2D table at Burley's α, turned
+// from the view's frame into the tangent's (a tangent-frame direction has view-frame
+// coordinates turned by −φ, φ the view's azimuth).
+fn aniso_pair(p: Pixel, size: u32, base: u32, table: AnisoTable) -> LtcPair {
+    let alpha = material_alpha();
+    let spec = aniso_ltc(table, alpha, p.v_tangent);
+    let diff = lut_ltc_pair(0.5 * (alpha.x + alpha.y), p.v.z, size, base).diff;
+    let along = length(p.v_tangent.xy);
+    var c = 1.0;
+    var s = 0.0;
+    if along > 0.0 {
+        c = p.v_tangent.x / along;
+        s = p.v_tangent.y / along;
+    }
+    let view_from_tangent = mat3x3<f32>(vec3<f32>(c, -s, 0.0), vec3<f32>(s, c, 0.0), vec3<f32>(0.0, 0.0, 1.0));
+    let m = diff.cos_from_brdf * view_from_tangent;
+    return LtcPair(spec, Ltc(m, diff.det_cos_from_brdf, diff.norm, 0.0, 1.0));
+}
+
+// One table's LtcShading at the pixel: the table of `size` cells per side at `base`, and its
+// 4D table.
+fn ltc_shading(p: Pixel, size: u32, base: u32, table: AnisoTable) -> LtcShading {
     var s: LtcShading;
-    s.pair = lut_ltc_pair(params.alpha, p.v.z, size, base);
+    if ANISO {
+        s.pair = aniso_pair(p, size, base, table);
+    } else {
+        s.pair = lut_ltc_pair(params.alpha, p.v.z, size, base);
+    }
     s.spec_from_world = s.pair.spec.cos_from_brdf * p.tangent_from_world;
     s.diff_from_world = s.pair.diff.cos_from_brdf * p.tangent_from_world;
     if params.normalization == NORMALIZATION_PAPER_LITERAL {
@@ -131,7 +160,8 @@ fn ltc_shading(p: Pixel, size: u32, base: u32) -> LtcShading {
     }
     s.magnitudes = lobe_weights(s.pair, params.f0, NORMALIZATION_CORRECTED);
     s.nl = vec4<f32>(0.0);
-    if HORIZON == HORIZON_NL_FIT {
+    // The correction was fitted to the 2D table's lobes: an anisotropic pixel goes without.
+    if HORIZON == HORIZON_NL_FIT && !ANISO {
         s.nl = lut_nl_terms(params.alpha, p.v.z, size, base);
     }
     return s;
@@ -143,9 +173,9 @@ fn prepare(p_in: Pixel) -> Pixel {
     if !p.on_plane {
         return p;
     }
-    p.ltc_a = ltc_shading(p, params.lut_size, params.lut_base);
+    p.ltc_a = ltc_shading(p, params.lut_size, params.lut_base, AnisoTable(params.aniso_a.x, params.aniso_dims_a, params.aniso_a.y, params.aniso_a.z));
     if TABLE_B {
-        p.ltc_b = ltc_shading(p, params.lut_size_b, params.lut_base_b);
+        p.ltc_b = ltc_shading(p, params.lut_size_b, params.lut_base_b, AnisoTable(params.aniso_b.x, params.aniso_dims_b, params.aniso_b.y, params.aniso_b.z));
     } else {
         p.ltc_b = p.ltc_a;
     }
@@ -163,13 +193,25 @@ fn add_brdf(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
     if e <= 0.0 || l.z <= 0.0 {
         return;
     }
+    if ANISO {
+        // The tangent frame's BRDF (brdf_aniso.wgsl), l turned into it.
+        let lobes = brdf_cos_aniso(p.v_tangent, p.tangent_from_world * l, material_alpha(), params.f0);
+        (*s).spec += light.intensity.rgb * (e * lobes.x);
+        (*s).diff += light.intensity.rgb * (e * lobes.y);
+        return;
+    }
     let dots = dots_new(p.v, l);
     (*s).spec += light.intensity.rgb * (e * specular_cos(dots, params.alpha, params.f0));
     (*s).diff += light.intensity.rgb * (e * diffuse_cos(dots, params.alpha));
 }
 
 // The same BRDF, simplified: d² without a root for E, V_SmithGGXCorrelated for G/(4 n·v n·l).
+// Its shortcuts are the isotropic BRDF's: an anisotropic material takes add_brdf.
 fn add_brdf_fast(s: ptr<function, Sums>, p: Pixel, light: GpuLight) {
+    if ANISO {
+        add_brdf(s, p, light);
+        return;
+    }
     let u = light.position_range.xyz - p.x;
     let d2 = dot(u, u);
     if u.z <= 0.0 || d2 < MIN_LIGHT_DISTANCE * MIN_LIGHT_DISTANCE {

@@ -307,7 +307,7 @@ fn ltc_proxy_fast(ltc: Ltc, q: Quad, clip: u32, normalization: u32) -> f32 {
 struct RectShading {
     v: vec3<f32>,
     rect: Rect,
-    alpha: f32,
+    alpha: vec2<f32>,
     f0: f32,
     clip: u32,
     normalization: u32,
@@ -408,8 +408,7 @@ fn exact_triangle(s: RectShading, p0: vec3<f32>, a: vec3<f32>, b: vec3<f32>) -> 
                 let l = x / r;
                 if l.z > 0.0 {
                     let weight = 0.25 * ns.y * nt.y * sx * twice_area * abs(dot(x, unit)) / (r * r2);
-                    let d = dots_new(s.v, l);
-                    sum += weight * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
+                    sum += weight * exact_lobes(s.v, l, s.alpha, s.f0);
                 }
             }
         }

@@ -2,7 +2,7 @@
 // plane z = 0 (src/scene/mod.rs camera_ray, surface_point). Composed first into both the plane
 // shader and the binning shader; its Rust side is src/gpu/scene.rs.
 
-// Must match src/gpu/scene.rs Params (checked by tests/shaders.rs).
+// Must match src/gpu/scene.rs Params (checked by tests/shaders/main.rs).
 struct Params {
     eye: vec4<f32>,        // xyz camera position
     forward: vec4<f32>,    // xyz unit view direction
@@ -33,6 +33,19 @@ struct Params {
     lut_base_b: u32,       // its first vec4
     lut_base: u32,         // table A's first vec4 (B's, where B is shown alone)
     bin_row: u32,          // the first tile row a binning dispatch works on
+    alpha_y: f32,          // α along the bitangent (alpha while isotropic)
+    tangent_x: f32,        // the material's unit tangent in the plane (ltc_aniso.wgsl)
+    tangent_y: f32,
+    aniso_pad: u32,
+    aniso_a: vec4<u32>,    // table A's 4D table: first vec4, axes, stored (AnisoTable)
+    aniso_dims_a: vec4<u32>,
+    aniso_b: vec4<u32>,    // table B's
+    aniso_dims_b: vec4<u32>,
+}
+
+// The material's roughness along the shading frame's x and y (equal while isotropic).
+fn material_alpha() -> vec2<f32> {
+    return vec2<f32>(params.alpha, params.alpha_y);
 }
 
 // Must match src/gpu/scene.rs GpuLight: position and range (≤ 0: infinite), colour × intensity

@@ -334,7 +334,7 @@ struct SphereShading {
     intensity: f32,
     range: f32,
     radius: f32,
-    alpha: f32,
+    alpha: vec2<f32>,
     f0: f32,
     clip: u32,
     normalization: u32,
@@ -372,8 +372,7 @@ fn sphere_point(s: SphereShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     if e <= 0.0 || l.z <= 0.0 {
         return vec2<f32>(0.0);
     }
-    let dots = dots_new(s.v, l);
-    return e * vec2<f32>(specular_cos(dots, s.alpha, s.f0), diffuse_cos(dots, s.alpha));
+    return e * exact_lobes(s.v, l, s.alpha, s.f0);
 }
 
 // sphere_ltc_disk: both lobes (specular, diffuse) by the LTC disk.
@@ -411,16 +410,26 @@ fn sphere_representative_point(s: SphereShading, cap: Cap) -> vec2<f32> {
     if dot(closest, closest) > 0.0 {
         l = normalize(closest);
     }
-    let alpha_wide = min(s.alpha + 0.5 * min(s.radius / max(d, MIN_LIGHT_DISTANCE), 1.0), 1.0);
-    let energy = (s.alpha / alpha_wide) * (s.alpha / alpha_wide);
+    let energy = widening_energy(s.alpha, min(s.radius / max(d, MIN_LIGHT_DISTANCE), 1.0));
     let dr = max(d, s.radius);
     var specular = 0.0;
     if l.z > 0.0 {
-        specular = specular_cos(dots_new(s.v, l), s.alpha, s.f0);
+        specular = exact_lobes(s.v, l, s.alpha, s.f0).x;
     }
-    let diffuse = fd_toward(s.v, cap.axis, s.alpha) * sphere_radiance(s.intensity, s.radius)
-        * cap_illuminance(cap);
+    let diffuse = fd_toward(s.v, cap.axis, 0.5 * (s.alpha.x + s.alpha.y))
+        * sphere_radiance(s.intensity, s.radius) * cap_illuminance(cap);
     return vec2<f32>(w * s.intensity / (dr * dr) * energy * specular, w * diffuse);
+}
+
+// widening_energy: Karis's energy normalization (α/α')² for a lobe widened by `spread`,
+// (α_x/α_x')(α_y/α_y') for an anisotropic one (src/light/sphere/mod.rs).
+fn widening_energy(alpha: vec2<f32>, spread: f32) -> f32 {
+    if ANISO {
+        let wide = min(alpha + 0.5 * spread, vec2<f32>(1.0));
+        return (alpha.x / wide.x) * (alpha.y / wide.y);
+    }
+    let alpha_wide = min(alpha.x + 0.5 * spread, 1.0);
+    return (alpha.x / alpha_wide) * (alpha.x / alpha_wide);
 }
 
 // mirror: the mirror direction of v about the normal, where a glossy lobe peaks.
@@ -536,8 +545,7 @@ fn exact_ring(
             let sc = sincos_precise(node.x);
             let l = axis * mu + (t * sc.y + b * sc.x) * sin_theta;
             if l.z > 0.0 {
-                let d = dots_new(s.v, l);
-                sum += node.y * vec2<f32>(specular_cos(d, s.alpha, s.f0), diffuse_cos(d, s.alpha));
+                sum += node.y * exact_lobes(s.v, l, s.alpha, s.f0);
             }
         }
     }

@@ -7,7 +7,9 @@ use std::ops::Range;
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::brdf::{Lobes, brdf_cos, irradiance_scale, point_light_exact, window_falloff};
+use crate::brdf::{
+    Lobes, brdf_cos_aniso, irradiance_scale, point_light_exact_aniso, window_falloff,
+};
 use crate::light::Shape;
 use crate::light::disk::{
     Disk, DiskMethod, DiskShading, GPU_EXACT_NODES as DISK_GPU_EXACT_NODES, disk_light_with,
@@ -24,7 +26,8 @@ use crate::ltc::{ClipCase, LtcPair};
 use crate::metrics::relative_difference;
 use crate::render::ShapeMethods;
 use crate::render::{
-    Frame, FrameKind, LtcRules, LutFilter, RenderSettings, ShadingFrame, SurfacePoint, Tables, View,
+    Frame, FrameKind, Gloss, LtcRules, LutFilter, RenderSettings, ShadingFrame, SurfacePoint,
+    Tables, View,
 };
 use crate::scene::{Light, Scene};
 
@@ -40,7 +43,34 @@ pub struct LtcPixel {
 }
 
 impl LtcPixel {
-    pub fn new(lut: &Lut, alpha: f64, view: DVec3, rules: &LtcRules) -> Self {
+    /// The pixel's lobes for a material of roughness `gloss` seen from `view` (world, unit):
+    /// an isotropic material in the view's frame from the 2D table, an anisotropic one in
+    /// its tangent's frame (`anisotropic`).
+    pub fn new(lut: &Lut, gloss: &Gloss, view: DVec3, rules: &LtcRules) -> Self {
+        if gloss.alpha.is_isotropic() {
+            Self::isotropic(lut, gloss.alpha.x, view, rules)
+        } else {
+            Self::anisotropic(lut, gloss, view, rules)
+        }
+    }
+
+    /// An anisotropic material (docs/design.md §1.13): both lobes in the tangent frame
+    /// (`Lut::aniso_pair`). The 4D table is read bilinearly whatever the
+    /// rules' filter, and the horizon rules apply without `nl-fit`'s correction, which was
+    /// fitted to the 2D table's lobes.
+    pub fn anisotropic(lut: &Lut, gloss: &Gloss, view: DVec3, rules: &LtcRules) -> Self {
+        let frame = ShadingFrame::of(gloss, view);
+        let v = frame.tangent_from_world(view);
+        Self {
+            frame,
+            pair: lut.aniso_pair(gloss.alpha, v),
+            horizon: rules.horizon,
+            nl: [0.0; 4],
+        }
+    }
+
+    /// An isotropic material of roughness `alpha`.
+    pub fn isotropic(lut: &Lut, alpha: f64, view: DVec3, rules: &LtcRules) -> Self {
         let frame = ShadingFrame::new(view);
         let cos_theta_o = frame.tangent_from_world(view).z;
         type NlSampler = fn(&Lut, f64, f64) -> NlTerms;
@@ -90,7 +120,7 @@ pub fn shade_exact(scene: &Scene, p: &SurfacePoint, lights: &[Light]) -> DVec3 {
     if p.view.z <= 0.0 {
         return DVec3::ZERO;
     }
-    let frame = ShadingFrame::new(p.view);
+    let frame = ShadingFrame::of(&scene.material.gloss(), p.view);
     lights.iter().fold(DVec3::ZERO, |sum, light| {
         sum + exact_term(scene, &frame, p, light)
     })
@@ -100,12 +130,12 @@ pub fn shade_exact(scene: &Scene, p: &SurfacePoint, lights: &[Light]) -> DVec3 {
 pub fn exact_term(scene: &Scene, frame: &ShadingFrame, p: &SurfacePoint, light: &Light) -> DVec3 {
     let m = &scene.material;
     let u = frame.tangent_from_world(DVec3::from(light.position) - p.position);
-    let lobes = point_light_exact(
+    let lobes = point_light_exact_aniso(
         frame.tangent_from_world(p.view).to_array(),
         u.to_array(),
         1.0,
         light.range_or_infinity(),
-        m.alpha,
+        m.roughness(),
         m.f0,
     );
     light.radiant_intensity() * combine(lobes, m.base_color)
@@ -123,7 +153,7 @@ pub fn shade_ltc(
     if p.view.z <= 0.0 {
         return DVec3::ZERO;
     }
-    let px = LtcPixel::new(lut, scene.material.alpha, p.view, rules);
+    let px = LtcPixel::new(lut, &scene.material.gloss(), p.view, rules);
     lights.iter().fold(DVec3::ZERO, |sum, light| {
         sum + ltc_term(scene, &px, p, light, rules)
     })
@@ -150,7 +180,7 @@ pub fn ltc_term(
     let l = u / d;
     let lobes = px.lobes(l, m.f0, rules, || {
         let v = px.frame.tangent_from_world(p.view);
-        brdf_cos(v.to_array(), l.to_array(), m.alpha, m.f0)
+        brdf_cos_aniso(v.to_array(), l.to_array(), m.roughness(), m.f0)
     });
     light.radiant_intensity() * (e * combine(lobes, m.base_color))
 }
@@ -175,7 +205,7 @@ pub fn sphere_term(
         intensity: 1.0,
         range: light.range_or_infinity(),
         radius,
-        alpha: m.alpha,
+        alpha: m.roughness(),
         f0: m.f0,
         ltc: &px.pair,
         clip: rules.clipping,
@@ -206,7 +236,7 @@ pub fn rect_term(
     let shading = RectShading {
         v: px.frame.tangent_from_world(p.view),
         rect,
-        alpha: m.alpha,
+        alpha: m.roughness(),
         f0: m.f0,
         ltc: &px.pair,
         clip: rules.clipping,
@@ -238,7 +268,7 @@ pub fn disk_term(
     let shading = DiskShading {
         v: px.frame.tangent_from_world(p.view),
         disk,
-        alpha: m.alpha,
+        alpha: m.roughness(),
         f0: m.f0,
         ltc: &px.pair,
         clip: rules.clipping,
@@ -429,7 +459,7 @@ pub fn shade(scene: &Scene, p: &SurfacePoint, rules: &LtcRules, side: &Side<'_>)
     if p.view.z <= 0.0 {
         return DVec3::ZERO;
     }
-    let px = LtcPixel::new(side.lut, scene.material.alpha, p.view, rules);
+    let px = LtcPixel::new(side.lut, &scene.material.gloss(), p.view, rules);
     scene.lights.iter().fold(DVec3::ZERO, |sum, light| {
         sum + light_term(scene, &px, p, light, rules, side)
     })
@@ -474,7 +504,7 @@ fn render_radiance(
 /// The most telling sphere case (`SphereCase::ALL`'s order) of the lights with a size that
 /// reach `p`; `None` where none does.
 pub fn sphere_case(scene: &Scene, p: &SurfacePoint) -> Option<SphereCase> {
-    let frame = ShadingFrame::new(p.view);
+    let frame = ShadingFrame::of(&scene.material.gloss(), p.view);
     scene
         .lights
         .iter()
@@ -577,7 +607,7 @@ impl std::ops::Add for ClipCounts {
 
 /// Counts the lights that reach `p` (non-zero irradiance) in each clipping case.
 pub fn clip_counts(scene: &Scene, lut: &Lut, p: &SurfacePoint, lights: &[Light]) -> ClipCounts {
-    let px = LtcPixel::new(lut, scene.material.alpha, p.view, &LtcRules::default());
+    let px = LtcPixel::new(lut, &scene.material.gloss(), p.view, &LtcRules::default());
     let mut counts = ClipCounts::default();
     for light in lights {
         let u = px

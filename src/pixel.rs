@@ -158,9 +158,9 @@ pub fn pixel_terms(
     if p.view.z <= 0.0 {
         return None;
     }
-    let alpha = scene.material.alpha;
-    let px = LtcPixel::new(lut, alpha, p.view, rules);
-    let px_b = lut_b.map(|b| LtcPixel::new(b, alpha, p.view, rules));
+    let gloss = scene.material.gloss();
+    let px = LtcPixel::new(lut, &gloss, p.view, rules);
+    let px_b = lut_b.map(|b| LtcPixel::new(b, &gloss, p.view, rules));
     let terms: Vec<LightTerm> = scene
         .lights
         .iter()

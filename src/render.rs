@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use crate::brdf::Alpha;
 use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
@@ -272,7 +273,41 @@ pub struct ShadingFrame {
     pub t2: DVec3,
 }
 
+/// A material's roughness as a shading point sees it: α along its tangent and its bitangent,
+/// and the tangent (world, in the plane).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gloss {
+    pub alpha: Alpha<f64>,
+    pub tangent: DVec3,
+}
+
+impl Gloss {
+    /// An isotropic roughness (its tangent is never read).
+    pub fn isotropic(alpha: f64) -> Self {
+        Self {
+            alpha: Alpha::isotropic(alpha),
+            tangent: DVec3::X,
+        }
+    }
+}
+
 impl ShadingFrame {
+    /// The frame a material is shaded in: the view's (docs/design.md §1.1) when it is
+    /// isotropic, its tangent's when it is anisotropic (§1.13: `t1` the tangent, along which
+    /// `alpha.x` acts).
+    pub fn of(gloss: &Gloss, view: DVec3) -> Self {
+        if gloss.alpha.is_isotropic() {
+            return Self::new(view);
+        }
+        let t1 = DVec3::new(gloss.tangent.x, gloss.tangent.y, 0.0)
+            .try_normalize()
+            .unwrap_or(DVec3::X);
+        Self {
+            t1,
+            t2: DVec3::Z.cross(t1),
+        }
+    }
+
     pub fn new(view: DVec3) -> Self {
         let tangential = DVec3::new(view.x, view.y, 0.0);
         // At normal view any tangent will do: the lobes are rotationally symmetric there.

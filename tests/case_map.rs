@@ -36,7 +36,7 @@ fn reference_class(
     h: usize,
 ) -> Option<ClipCase> {
     let p = scene.surface_point(x, y, w, h)?;
-    let px = LtcPixel::new(lut, scene.material.alpha, p.view, &LtcRules::default());
+    let px = LtcPixel::new(lut, &scene.material.gloss(), p.view, &LtcRules::default());
     let cases: Vec<ClipCase> = scene
         .lights
         .iter()

@@ -62,6 +62,7 @@ fn sampler_returns_cell_values_at_cell_centres() {
 fn sampler_interpolates_between_cells_and_clamps_outside() {
     let mut lut = Lut {
         nl_terms: Default::default(),
+        aniso: None,
         size: 2,
         alpha_min: 1e-4,
         cells: vec![LutCell([0.0; Channel::COUNT]); 4],
@@ -205,6 +206,7 @@ fn alpha_min_may_be_written_as_f32() {
 fn the_specular_magnitude_is_filtered_as_the_product_of_scale_and_albedo() {
     let mut lut = Lut {
         nl_terms: Default::default(),
+        aniso: None,
         size: 2,
         alpha_min: 1e-4,
         cells: vec![LutCell([0.0; Channel::COUNT]); 4],

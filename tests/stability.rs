@@ -144,6 +144,7 @@ fn scene(alpha: f64, lights: Vec<Light>) -> Scene {
             base_color: [0.8, 0.8, 0.8],
             f0: 0.04,
             alpha,
+            ..Material::default()
         },
         // A low camera, so that the far plane is seen at grazing angles.
         camera: Camera {

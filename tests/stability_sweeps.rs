@@ -159,6 +159,7 @@ fn gpu_scene(alpha: f64, camera_height: f64, lights: Vec<Light>) -> Scene {
             base_color: [0.8; 3],
             f0: 0.04,
             alpha,
+            ..Material::default()
         },
         camera: Camera {
             position: [0.0, -3.0, camera_height],

@@ -57,6 +57,11 @@ pub struct Args {
     /// run it shades, in the same run; every method is then timed with runtime checks.
     #[arg(long)]
     method_file: Option<PathBuf>,
+    /// Also time every run with the scene's material anisotropic, of this α_y (α_x the
+    /// scene's α = 0.27, the tangent along x), right after the same run isotropic: the 4D
+    /// table's cost against the 2D table's.
+    #[arg(long)]
+    alpha_y: Option<f64>,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -69,6 +74,18 @@ pub fn run(a: &Args) -> Result<()> {
     }
     if let Some(r) = a.disk_radius {
         super::check_size("--disk-radius", r)?;
+    }
+    if let Some(y) = a.alpha_y
+        && !(ltc_lab::ltc::lut::ALPHA_MIN..=1.0).contains(&y)
+    {
+        return Err(ltc_lab::error::Error::input(
+            "--alpha-y",
+            format!(
+                "must be in [{}, 1], got {}",
+                ltc_lab::ltc::lut::ALPHA_MIN,
+                ltc_lab::error::number(y)
+            ),
+        ));
     }
     if let Some(p) = &a.csv {
         // Refuse a bad path before minutes of measuring.
@@ -119,6 +136,7 @@ pub fn run(a: &Args) -> Result<()> {
         disk_radius: a.disk_radius,
         skip_exact: a.skip_exact,
         method_file,
+        alpha_y: a.alpha_y,
     };
     let rows = ltc_lab::measure::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(

@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use ltc_lab::error::{Error, Result};
 use ltc_lab::files::read_text;
-use ltc_lab::measure::eval::{Kind, evaluate, header_of, parse_cases};
+use ltc_lab::measure::eval::{Light, evaluate, header_of, parse_cases};
 
 use ltc_lab::ltc::remedy::Horizon;
 
@@ -23,7 +23,13 @@ pub struct Args {
     /// With the header theta_o,alpha,f0,cx,cy,cz,ux,uy,uz,vx,vy,vz each row is a rect light of
     /// radiance 1 (centre and half-edge vectors in the shading frame, emitting toward u × v),
     /// and the columns are both lobes by exact, ltc-polygon, ltc-proxy, ltc-proxy-fast and
-    /// ltc-point (docs/design.md §1.11).
+    /// ltc-point (docs/design.md §1.11). With theta_o,alpha,f0,cx,cy,cz,nx,ny,nz,radius each
+    /// row is a disk of radiance 1 (centre, normal toward the side it lights, radius), by
+    /// exact, ltc-disk and ltc-point (§1.12). An anisotropic material (§1.13) replaces
+    /// theta_o,alpha by theta_o,phi_o,alpha_x,alpha_y in any of these headers: the view at
+    /// (θo, φo) in the frame whose x axis is the tangent, along which alpha_x acts, every
+    /// vector in that frame; its point rows' columns are exact_spec,ltc_spec,exact_diffuse,
+    /// ltc_diffuse.
     #[arg(long)]
     cases: PathBuf,
     #[command(flatten)]
@@ -36,7 +42,7 @@ pub fn run(a: &Args) -> Result<()> {
     let text = read_text(&a.cases, ltc_lab::measure::eval::MAX_FILE_BYTES)?;
     let cases = parse_cases(&text, &a.cases.display().to_string())?;
     a.lut.check_horizon(a.horizon)?;
-    if cases.kind != Kind::Points && a.horizon != Horizon::Eq30 {
+    if cases.kind.light != Light::Point && a.horizon != Horizon::Eq30 {
         return Err(Error::input(
             "--horizon",
             "the horizon remedies are for point lights; sphere and rect lights take eq30",

@@ -4,18 +4,20 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use ltc_lab::error::{Error, Result};
-use ltc_lab::files::{Claim, check_writable};
+use ltc_lab::files::{Claim, check_writable, write_atomically};
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::fit_point::{PointObjective, REFINEMENTS, fit_table_for};
 use ltc_lab::ltc::lut::{Channel, Lut, Table};
 
 use super::one_of;
 
+mod aniso;
+
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Cells per side.
-    #[arg(long, default_value_t = 64)]
-    size: usize,
+    /// Cells per side (64 by default); with --aniso, nodes per axis of the 4D table (8).
+    #[arg(long)]
+    size: Option<usize>,
     /// classic: ltc_code's objective (luts/ltc.exr); point: the pointwise relative L1
     /// error a point light sees, from the classic fit (luts/ltc_point.exr); arrival: the
     /// same weighted by where lights above a plane arrive from (luts/ltc_arrival.exr);
@@ -31,30 +33,45 @@ pub struct Args {
     /// that one written meanwhile by another run is not replaced either.
     #[arg(long)]
     force: bool,
+    /// Fit the anisotropic GGX table instead (docs/design.md §2.9): the specular lobe's LTC
+    /// at every node of a 4D grid over (α_x, α_y, θo, φo), written to luts/ltc_aniso.exr by
+    /// default. It keeps a checkpoint beside its output (OUT.checkpoint) as it goes.
+    #[arg(long, conflicts_with = "objective")]
+    aniso: bool,
+    /// With --aniso: go on from the checkpoint an interrupted fit left (OUT.checkpoint).
+    #[arg(long, requires = "aniso")]
+    resume: bool,
 }
+
+/// Nodes per axis `fit --aniso` accepts: at least 2 (the axes divide by N − 1), at most 16
+/// (16⁴ nodes take some ten hours on two cores; a file may hold up to 64).
+const ANISO_SIZES: std::ops::RangeInclusive<usize> = 2..=16;
 
 /// The table sizes `fit` accepts: at least 2 cells per axis (the axes divide by N − 1), at
 /// most 1024 (a 1024² fit already takes hours on two cores).
 const SIZES: std::ops::RangeInclusive<usize> = 2..=1024;
 
-pub fn run(a: &Args) -> Result<()> {
-    if !SIZES.contains(&a.size) {
-        return Err(Error::input(
-            "--size",
-            format!(
-                "must be in {}..={}, got {}",
-                SIZES.start(),
-                SIZES.end(),
-                a.size
-            ),
-        ));
+/// `size` checked against `sizes`.
+fn checked_size(size: usize, sizes: &std::ops::RangeInclusive<usize>) -> Result<usize> {
+    if sizes.contains(&size) {
+        return Ok(size);
     }
-    let out = output(a)?;
+    Err(Error::input(
+        "--size",
+        format!("must be in {}..={}, got {size}", sizes.start(), sizes.end()),
+    ))
+}
+
+pub fn run(a: &Args) -> Result<()> {
+    if a.aniso {
+        return aniso::run(a);
+    }
+    let n = checked_size(a.size.unwrap_or(64), &SIZES)?;
+    let out = output(a, Path::new(a.objective.path()))?;
     let settings = FitSettings {
-        size: a.size,
+        size: n,
         ..FitSettings::default()
     };
-    let n = a.size;
     let bar = super::progress_bar("fitting", 2 * n * n);
     let start = Instant::now();
     let (lut, at_limit) = match a.objective {
@@ -83,7 +100,7 @@ pub fn run(a: &Args) -> Result<()> {
     };
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    let out = out.write(&lut)?;
+    let out = out.write(&lut.to_exr_bytes())?;
     eprintln!(
         "fitted {n}×{n} cells × 2 lobes in {seconds:.1} s on {} threads (α_min = {}); wrote {}",
         rayon::current_num_threads(),
@@ -115,21 +132,21 @@ enum Output {
 }
 
 impl Output {
-    /// Writes the table; the file written.
-    fn write(self, lut: &Lut) -> Result<PathBuf> {
+    /// Writes the table's bytes; the file written.
+    fn write(self, bytes: &[u8]) -> Result<PathBuf> {
         match self {
-            Self::Replace(path) => lut.write(&path).map(|()| path),
-            Self::Claimed(claim) => claim.fill(&lut.to_exr_bytes()),
+            Self::Replace(path) => write_atomically(&path, bytes).map(|()| path),
+            Self::Claimed(claim) => claim.fill(bytes),
         }
     }
 }
 
 /// The output, checked before the fit: an `.exr` in an existing directory; the default
-/// file is replaced only with `--force`, and is otherwise claimed now.
-fn output(a: &Args) -> Result<Output> {
+/// file (`default`) is replaced only with `--force`, and is otherwise claimed now.
+fn output(a: &Args, default: &Path) -> Result<Output> {
     let (out, named) = match &a.out {
         Some(p) => (p.clone(), true),
-        None => (PathBuf::from(a.objective.path()), false),
+        None => (default.to_path_buf(), false),
     };
     if !is_exr(&out) {
         return Err(Error::input(

@@ -24,10 +24,13 @@ pub struct Args {
     atlas: Option<PathBuf>,
     /// Write the table in another layout: ltc-code-js (ltc_code's ltc.js), ltc-code-dds
     /// (its ltc_1.dds and ltc_2.dds), c (a header) or wgsl (const arrays and a lookup). The
-    /// point table's fitted scale is folded into the magnitudes.
-    #[arg(long, value_parser = one_of(&Export::ALL, Export::name), requires = "out")]
-    export: Option<Export>,
-    /// Where --export writes: a file, or for ltc-code-dds a directory (made if missing).
+    /// point table's fitted scale is folded into the magnitudes. aniso-texture writes the 4D
+    /// table (--aniso-lut's, else the shipped one) as three RGBA32F 3D textures
+    /// (ltc_aniso.bin) with a WGSL lookup (ltc_aniso.wgsl).
+    #[arg(long, value_parser = one_of(&Written::ALL, Written::name), requires = "out")]
+    export: Option<Written>,
+    /// Where --export writes: a file, or for ltc-code-dds and aniso-texture a directory
+    /// (made if missing).
     #[arg(long, requires = "export")]
     out: Option<PathBuf>,
     /// Texels of ltc-code-dds: f16 (RGBA16F, as ltc_code writes them) or f32 (RGBA32F).
@@ -35,15 +38,42 @@ pub struct Args {
     precision: Precision,
 }
 
+/// What `--export` writes: the 2D table in a layout of `Export`, or the 4D table's textures.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Written {
+    Table(Export),
+    AnisoTexture,
+}
+
+impl Written {
+    const ALL: [Self; 5] = [
+        Self::Table(Export::LtcCodeJs),
+        Self::Table(Export::LtcCodeDds),
+        Self::Table(Export::C),
+        Self::Table(Export::Wgsl),
+        Self::AnisoTexture,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Table(e) => e.name(),
+            Self::AnisoTexture => "aniso-texture",
+        }
+    }
+}
+
 pub fn run(a: &Args) -> Result<()> {
     check_export_beside_atlas(a)?;
+    if let (Some(Written::AnisoTexture), Some(dir)) = (a.export, &a.out) {
+        return export_aniso(a, dir);
+    }
     // The dump and the atlas show spec.err; the summary and an export do not need it.
     let lut = if a.dump || a.atlas.is_some() {
         a.lut.load_measured()?
     } else {
         a.lut.load()?
     };
-    if let (Some(format), Some(out)) = (a.export, &a.out) {
+    if let (Some(Written::Table(format)), Some(out)) = (a.export, &a.out) {
         let shipped = a.lut.lut.is_none().then_some(a.lut.table());
         let header = Header::new(&lut, &a.lut.describe(), shipped);
         let written = export(&lut, &header, format, a.precision, out)?;
@@ -101,8 +131,12 @@ fn check_export_beside_atlas(a: &Args) -> Result<()> {
     let (Some(format), Some(out), Some(dir)) = (a.export, &a.out, &a.atlas) else {
         return Ok(());
     };
-    // ltc-code-dds writes a directory of its own names, none of them an atlas file.
-    if matches!(format, Export::LtcCodeDds) {
+    // ltc-code-dds and aniso-texture write a directory of their own names, none of them an
+    // atlas file.
+    if matches!(
+        format,
+        Written::Table(Export::LtcCodeDds) | Written::AnisoTexture
+    ) {
         return Ok(());
     }
     let files: Vec<PathBuf> = atlas_files().iter().map(|f| dir.join(f)).collect();
@@ -110,6 +144,38 @@ fn check_export_beside_atlas(a: &Args) -> Result<()> {
     outputs.extend(files.iter().map(|f| ("--atlas", f.as_path())));
     outputs.push(("--out", out.as_path()));
     check_distinct(&outputs)
+}
+
+/// `--export aniso-texture`: the 4D table's textures and lookup into `dir` (made if
+/// missing), both files or neither; the bytes are said.
+fn export_aniso(a: &Args, dir: &std::path::Path) -> Result<()> {
+    use ltc_lab::gpu::ltc_aniso::export;
+    let lut = a.lut.load()?;
+    let table = lut.aniso();
+    let header = format!(
+        "{}\nfrom {}",
+        export::describe(table),
+        a.lut.describe_aniso()
+    );
+    let bytes = export::texture_bytes(table);
+    let files = [
+        (export::TEXTURE_FILE, bytes.clone()),
+        (export::WGSL_FILE, export::wgsl(table, &header).into_bytes()),
+    ];
+    let names = files.each_ref().map(|(n, _)| *n);
+    let mut outputs = ltc_lab::files::Outputs::new(dir, &names)?;
+    for (name, data) in &files {
+        outputs.stage(name, data)?;
+    }
+    outputs.commit()?;
+    let [w, h, d] = export::texture_size(table);
+    eprintln!(
+        "wrote {} ({} bytes: three RGBA32F 3D textures of {w}×{h}×{d}) and {}",
+        dir.join(export::TEXTURE_FILE).display(),
+        bytes.len(),
+        dir.join(export::WGSL_FILE).display()
+    );
+    Ok(())
 }
 
 /// The channels' names in a cell's order.

@@ -19,6 +19,7 @@ use clap::{Parser, Subcommand};
 
 use ltc_lab::error::{Error, Result};
 use ltc_lab::gpu::limits::{LimitError, Limited};
+use ltc_lab::ltc::aniso::source::AnisoSource;
 use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::{Lut, Table};
 use ltc_lab::ltc::remedy::Horizon;
@@ -99,6 +100,27 @@ pub struct LutArgs {
     /// fit), arrival or constrained (the horizon remedies' fits).
     #[arg(long, value_parser = one_of(&Table::ALL, Table::name))]
     pub table: Option<Table>,
+    /// The 4D table anisotropic materials read (docs/design.md §2.9): lab (the shipped fit,
+    /// luts/ltc_aniso.exr), i3d-alphax-alphay or i3d-alpha-lambda (I3D 2022's tables, read as
+    /// an engine reads them, with the lab's magnitudes), or a file `fit --aniso` wrote.
+    #[arg(long, value_parser = aniso_parser())]
+    pub aniso_lut: Option<AnisoSource>,
+}
+
+/// `--aniso-lut` and `--aniso-b`: a 4D table by name or file.
+pub fn aniso_parser() -> impl TypedValueParser<Value = AnisoSource> {
+    clap::builder::StringValueParser::new().map(|s| AnisoSource::parse(&s))
+}
+
+/// `lut` with its 4D table replaced by `aniso`'s where one is asked for.
+pub fn with_aniso(
+    lut: Cow<'static, Lut>,
+    aniso: Option<&AnisoSource>,
+) -> Result<Cow<'static, Lut>> {
+    match aniso {
+        Some(source) => Ok(Cow::Owned(lut.into_owned().with_aniso(source.load()?))),
+        None => Ok(lut),
+    }
 }
 
 /// `--horizon`'s help: what LTC does for lights near the horizon (docs/design.md §4.7).
@@ -137,7 +159,7 @@ impl LutArgs {
     /// The table a remedy shades with: its own where it is a table, else this one.
     pub fn load_for(&self, horizon: Horizon) -> Result<Cow<'static, Lut>> {
         match horizon.table() {
-            Some(own) => Ok(Cow::Borrowed(Lut::shipped(own))),
+            Some(own) => with_aniso(Cow::Borrowed(Lut::shipped(own)), self.aniso_lut.as_ref()),
             None => self.load(),
         }
     }
@@ -160,10 +182,11 @@ impl LutArgs {
     }
 
     fn loaded(&self) -> Result<formats::Loaded> {
-        let loaded = formats::load(self.lut.as_deref(), self.table())?;
+        let mut loaded = formats::load(self.lut.as_deref(), self.table())?;
         if let Some(note) = &loaded.note {
             eprintln!("ltc-lab: note: {note}");
         }
+        loaded.lut = with_aniso(loaded.lut, self.aniso_lut.as_ref())?;
         Ok(loaded)
     }
 
@@ -184,6 +207,11 @@ impl LutArgs {
             (None, Some(p)) => Source::File(p.display().to_string()),
             (None, None) => Source::Shipped(self.table()),
         }
+    }
+
+    /// The 4D table's name, as `describe` names the 2D one.
+    pub fn describe_aniso(&self) -> String {
+        self.aniso_lut.clone().unwrap_or(AnisoSource::Lab).name()
     }
 
     pub fn describe(&self) -> String {

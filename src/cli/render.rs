@@ -14,6 +14,7 @@ use ltc_lab::gpu::renderer::PlaneRenderer;
 use ltc_lab::light::disk::DiskMethod;
 use ltc_lab::light::rect::RectMethod;
 use ltc_lab::light::sphere::SphereMethod;
+use ltc_lab::ltc::aniso::source::AnisoSource;
 use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::Table;
 use ltc_lab::ltc::{Clipping, Normalization};
@@ -109,6 +110,11 @@ pub struct Args {
     /// The same, with a shipped table: classic or point.
     #[arg(long, value_parser = one_of(&Table::ALL, Table::name), conflicts_with = "lut_b")]
     table_b: Option<Table>,
+    /// The 4D table of the right side's LTC on an anisotropic material (as --aniso-lut):
+    /// split and diff then compare two 4D tables (without --table-b or --lut-b, both sides
+    /// keep table A's 2D table).
+    #[arg(long, value_parser = super::aniso_parser())]
+    aniso_b: Option<AnisoSource>,
     /// How the lights with a size (a `radius` in the scene) are shaded by the method alone,
     /// or left of a split (docs/design.md §1.10): exact, ltc-point, ltc-disk or
     /// representative-point.
@@ -195,7 +201,7 @@ pub fn run(a: &Args) -> Result<()> {
             if !matches!(a.method, Shown::Compared(_)) {
                 return Err(Error::input(
                     "--method",
-                    "--table-b and --lut-b compare two tables: use split or diff",
+                    "--table-b, --lut-b and --aniso-b compare two tables: use split or diff",
                 ));
             }
             settings.b.point = settings.a.point;
@@ -332,23 +338,30 @@ fn sides(a: &Args, settings: &mut RenderSettings) -> Result<Option<MethodFile>> 
 
 /// The second table of a comparison, if one is asked for.
 fn table_b(a: &Args) -> Result<Option<NamedTable>> {
-    if a.lut_b.is_none() && a.table_b.is_none() {
+    if a.lut_b.is_none() && a.table_b.is_none() && a.aniso_b.is_none() {
         return Ok(None);
     }
-    let table = a.table_b.unwrap_or(Table::Classic);
-    let loaded = formats::load(a.lut_b.as_deref(), table)?;
+    // Only a 4D table asked for: table A's 2D table beside it.
+    let (table, file) = match (a.table_b, &a.lut_b, &a.aniso_b) {
+        (None, None, Some(_)) => (a.lut.table(), a.lut.lut.as_deref()),
+        (t, f, _) => (t.unwrap_or(Table::Classic), f.as_deref()),
+    };
+    let loaded = formats::load(file, table)?;
     if let Some(note) = &loaded.note {
         eprintln!("ltc-lab: note: {note}");
     }
-    let (name, source) = match &a.lut_b {
+    let (mut name, source) = match file {
         Some(p) => {
             let path = p.display().to_string();
             (path.clone(), Source::File(path))
         }
         None => (table.name().to_string(), Source::Shipped(table)),
     };
+    if let Some(aniso) = &a.aniso_b {
+        name = format!("{name} with {}", aniso.name());
+    }
     Ok(Some(NamedTable {
-        lut: loaded.lut.into_owned(),
+        lut: super::with_aniso(loaded.lut, a.aniso_b.as_ref())?.into_owned(),
         name,
         source,
     }))

@@ -1,6 +1,6 @@
 //! The bindings of the compute passes, written once as data: each shader module lists its
 //! bindings (`@binding` number, the WGSL variable, what it holds), its bind group layout is
-//! made from that list, and `tests/shaders.rs` checks the list against the WGSL. Every
+//! made from that list, and `tests/shaders/main.rs` checks the list against the WGSL. Every
 //! binding is seen by the compute stage only, and buffers are bound whole.
 
 /// What a binding holds, as its WGSL declaration says.

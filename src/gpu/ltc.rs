@@ -3,7 +3,9 @@
 //! buffer holding tables A and B.
 
 use crate::error::Result;
+use crate::gpu::ltc_aniso::{ANISO_VEC4S_PER_NODE, aniso_params, pack_aniso};
 use crate::gpu::{GpuContext, limits};
+use crate::ltc::aniso::AnisoLut;
 use crate::ltc::lut::{Channel, Lut};
 use crate::ltc::nl_fit::nl_terms;
 use crate::ltc::remedy::HorizonRule;
@@ -87,14 +89,18 @@ pub fn pack_lut(lut: &Lut, with_nl: bool) -> Vec<[f32; 4]> {
         .collect()
 }
 
-/// The storage buffer the shaders read their tables from: A first, B (if any) after it; and
-/// the tables, to pack them again with the `nl-fit` correction when a render first needs it
-/// (fitting it takes about a second on two cores: not for every table's set-up).
+/// The storage buffer the shaders read their tables from: A first, B (if any) after it, then
+/// A's 4D table and B's where it is another (docs/design.md §2.9); and the tables, to pack
+/// them again with the `nl-fit` correction when a render first needs it (fitting it takes
+/// about a second on two cores: not for every table's set-up).
 pub struct LutBuffer {
     pub buffer: wgpu::Buffer,
     pub size_a: usize,
     /// Cells per side and first vec4 of table B.
     pub b: Option<(usize, u32)>,
+    /// Each side's 4D table as `Params::aniso_a` (and `_b`) hold it (`aniso_params`).
+    pub aniso_a: ([u32; 4], [u32; 4]),
+    pub aniso_b: ([u32; 4], [u32; 4]),
     /// Whether it holds the `nl-fit` correction (else zeros in its place).
     with_nl: bool,
     luts: (Lut, Option<Lut>),
@@ -122,13 +128,29 @@ impl LutBuffer {
         // Checked before packing: packing may fit the correction of every cell.
         let bytes = |lut: &Lut| (lut.size * lut.size * LUT_VEC4S_PER_CELL * 16) as u64;
         let largest = b.map_or(size_a, |lut| lut.size.max(size_a));
-        limits::check_lut_size(ctx, largest, bytes(a) + b.map_or(0, bytes))?;
+        let (aniso_a, aniso_b) = (a.aniso(), b.unwrap_or(a).aniso());
+        let aniso_bytes = |t: &AnisoLut| (t.cells.len() * ANISO_VEC4S_PER_NODE * 16) as u64;
+        let two_4d = aniso_a != aniso_b;
+        let total = bytes(a)
+            + b.map_or(0, bytes)
+            + aniso_bytes(aniso_a)
+            + if two_4d { aniso_bytes(aniso_b) } else { 0 };
+        limits::check_lut_size(ctx, largest, total)?;
         let mut all = pack_lut(a, with_nl);
         let b_at = b.map(|lut| {
             let base = all.len() as u32;
             all.extend(pack_lut(lut, with_nl));
             (lut.size, base)
         });
+        let aniso_a_at = aniso_params(aniso_a, all.len() as u32);
+        all.extend(pack_aniso(aniso_a));
+        let aniso_b_at = if two_4d {
+            let at = aniso_params(aniso_b, all.len() as u32);
+            all.extend(pack_aniso(aniso_b));
+            at
+        } else {
+            aniso_a_at
+        };
         let buffer = wgpu::util::DeviceExt::create_buffer_init(
             &ctx.device,
             &wgpu::util::BufferInitDescriptor {
@@ -141,6 +163,8 @@ impl LutBuffer {
             buffer,
             size_a,
             b: b_at,
+            aniso_a: aniso_a_at,
+            aniso_b: aniso_b_at,
             with_nl,
             luts,
         })

@@ -6,12 +6,14 @@
 pub mod bin;
 pub mod binding;
 pub mod brdf;
+pub mod brdf_aniso;
 pub mod display;
 pub mod driver_output;
 pub mod keep_driver;
 pub mod light;
 pub mod limits;
 pub mod ltc;
+pub mod ltc_aniso;
 pub mod ltc_f16;
 pub mod method_file;
 pub mod plane;
@@ -33,7 +35,8 @@ pub fn plane_module_source(f16: bool) -> String {
     plane_module_source_with(f16, None)
 }
 
-/// The WGSL of the plane shader: brdf.wgsl, ltc.wgsl, sphere_light.wgsl, rect_light.wgsl,
+/// The WGSL of the plane shader: brdf.wgsl, brdf_aniso.wgsl, ltc.wgsl, ltc_aniso.wgsl,
+/// sphere_light.wgsl, rect_light.wgsl,
 /// disk_light.wgsl, scene.wgsl, light_shape.wgsl, plane.wgsl, method_file.wgsl and
 /// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last — and
 /// then `file` as composed after them (or, without one, the stubs of its functions).
@@ -46,7 +49,9 @@ pub fn plane_module_source_with(f16: bool, file: Option<&method_file::MethodFile
     let lab = [
         enable,
         brdf::SOURCE,
+        brdf_aniso::SOURCE,
         ltc::SOURCE,
+        ltc_aniso::SOURCE,
         sphere_light::SOURCE,
         rect_light::SOURCE,
         disk_light::SOURCE,

@@ -1,5 +1,5 @@
 //! `shaders/plane.wgsl`: the compute shader that shades the plane. Here its constants and
-//! bindings as Rust names them (`tests/shaders.rs` checks both against the WGSL), and its
+//! bindings as Rust names them (`tests/shaders/main.rs` checks both against the WGSL), and its
 //! pipelines: one per combination of methods, view, table filter, table B, horizon rule and sphere methods
 //! (override constants), compiled on first use and kept. What a render keeps between its
 //! chunks is `gpu::plane_render`; what is kept between renders, `gpu::renderer`.
@@ -82,20 +82,24 @@ pub const BINDINGS: [Binding; 10] = [
 ];
 
 /// What a pipeline is specialized for (its override constants): methods A and B, the view,
-/// the LUT filter, whether B reads table B, the horizon rule, and where some light has a
-/// size, A's and B's sphere methods (`None`: point lights only, the pipelines of before),
-/// and where some light is a rect, A's and B's rect methods.
-pub type PipelineKey = (
-    Method,
-    Method,
-    ViewConstant,
-    LutFilter,
-    bool,
-    HorizonRule,
-    Option<(SphereMethod, SphereMethod)>,
-    Option<(RectMethod, RectMethod)>,
-    Option<(DiskMethod, DiskMethod)>,
-);
+/// the LUT filter, whether B reads table B, the horizon rule, each sized shape's methods on
+/// both sides where some light has that shape (`None`: none does, and the pipeline has none
+/// of that shape's code), and whether the material is anisotropic.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PipelineKey {
+    pub a: Method,
+    pub b: Method,
+    pub view: ViewConstant,
+    pub filter: LutFilter,
+    pub table_b: bool,
+    pub horizon: HorizonRule,
+    /// Where some light has a size (any shape but a point): A's and B's sphere methods.
+    pub sized: Option<(SphereMethod, SphereMethod)>,
+    pub rects: Option<(RectMethod, RectMethod)>,
+    pub disks: Option<(DiskMethod, DiskMethod)>,
+    /// The material is anisotropic (docs/design.md §1.13): its tangent frame and 4D table.
+    pub aniso: bool,
+}
 
 /// The pipeline's methods and view: `View::B` is B shaded as the single A (with B's table,
 /// which the render puts in A's place).
@@ -118,25 +122,19 @@ pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
             (s.a.disk, s.b.disk),
         ),
     };
-    let sized = scene
-        .lights
-        .iter()
-        .any(|l| l.shape != Shape::Point)
-        .then_some(spheres);
     let any = |shape: fn(&Shape) -> bool| scene.lights.iter().any(|l| shape(&l.shape));
-    let rects = any(|s| matches!(s, Shape::Rect { .. })).then_some(rects);
-    let disks = any(|s| matches!(s, Shape::Disk { .. })).then_some(disks);
-    (
+    PipelineKey {
         a,
         b,
         view,
-        s.rules.filter,
+        filter: s.rules.filter,
         table_b,
-        s.rules.horizon,
-        sized,
-        rects,
-        disks,
-    )
+        horizon: s.rules.horizon,
+        sized: any(|s| *s != Shape::Point).then_some(spheres),
+        rects: any(|s| matches!(s, Shape::Rect { .. })).then_some(rects),
+        disks: any(|s| matches!(s, Shape::Disk { .. })).then_some(disks),
+        aniso: scene.material.is_anisotropic(),
+    }
 }
 
 /// Whether wgpu wraps the shader in its runtime bounds checks.
@@ -192,7 +190,7 @@ impl PlanePipelines {
         let module = match checks {
             ShaderChecks::Checked => device.create_shader_module(desc),
             // SAFETY: the module is our own embedded WGSL (never a method file's), validated by naga in
-            // tests/shaders.rs; every buffer index in it is bounded by construction (lights
+            // tests/shaders/main.rs; every buffer index in it is bounded by construction (lights
             // by light_count ≤ the buffer's length, tile lists by their total ≤ the capacity,
             // LUT cells clamped into the table, sums and texture writes guarded by the image
             // size), which is what the runtime checks guard.
@@ -277,11 +275,22 @@ fn entry_point(
 
 /// The override constants of a specialization.
 fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
-    let (a, b, view, filter, table_b, horizon, sized, rects, disks) = key;
+    let PipelineKey {
+        a,
+        b,
+        view,
+        filter,
+        table_b,
+        horizon,
+        sized,
+        rects,
+        disks,
+        aniso,
+    } = key;
     let spheres = sized.unwrap_or((SphereMethod::LtcDisk, SphereMethod::Exact));
     let rect_methods = rects.unwrap_or((RectMethod::LtcPolygon, RectMethod::Exact));
     let disk_methods = disks.unwrap_or((DiskMethod::LtcDisk, DiskMethod::Exact));
-    vec![
+    let mut constants = vec![
         ("METHOD_A", f64::from(method_constant(a).0)),
         ("METHOD_B", f64::from(method_constant(b).0)),
         ("VIEW", f64::from(view.constant().0)),
@@ -300,5 +309,10 @@ fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
         ("DISKS", f64::from(u8::from(disks.is_some()))),
         ("DISK_A", f64::from(disk_constant(disk_methods.0).0)),
         ("DISK_B", f64::from(disk_constant(disk_methods.1).0)),
-    ]
+    ];
+    // Set only where anisotropic: an isotropic pipeline is specialized exactly as before.
+    if aniso {
+        constants.push(("ANISO", 1.0));
+    }
+    constants
 }

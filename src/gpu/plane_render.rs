@@ -89,10 +89,13 @@ impl PlaneRender {
         let (size_b, base_b) = tables.b.unwrap_or((tables.size_a, 0));
         p.lut_size_b = size_b as u32;
         p.lut_base_b = base_b;
+        ((p.aniso_a, p.aniso_dims_a), (p.aniso_b, p.aniso_dims_b)) =
+            (tables.aniso_a, tables.aniso_b);
         if settings.view == View::B && settings.b_reads_table_b {
             // B alone is shaded as the single method A: with B's table in A's place.
             p.lut_size = size_b as u32;
             p.lut_base = base_b;
+            (p.aniso_a, p.aniso_dims_a) = tables.aniso_b;
         }
         let (plane_group, bin_group) = bind_groups(ctx, &kept, &begun);
         Self {

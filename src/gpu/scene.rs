@@ -17,7 +17,7 @@ pub const SOURCE: &str = include_str!("../../shaders/scene.wgsl");
 /// of binning.
 pub const TILE_SIDE: usize = 16;
 
-/// The uniform block; must match `Params` in scene.wgsl (tests/shaders.rs checks it against
+/// The uniform block; must match `Params` in scene.wgsl (tests/shaders/main.rs checks it against
 /// naga's layout of the WGSL struct).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -53,6 +53,18 @@ pub struct Params {
     pub lut_base_b: u32,
     pub lut_base: u32,
     pub bin_row: u32,
+    /// α along the bitangent (`alpha` while isotropic).
+    pub alpha_y: f32,
+    /// The material's unit tangent in the plane (world x, y).
+    pub tangent_x: f32,
+    pub tangent_y: f32,
+    pub aniso_pad: u32,
+    /// Table A's 4D table: `[first vec4, axes, stored, 0]` and its node counts
+    /// (`gpu::ltc_aniso::aniso_params`); table B's after them.
+    pub aniso_a: [u32; 4],
+    pub aniso_dims_a: [u32; 4],
+    pub aniso_b: [u32; 4],
+    pub aniso_dims_b: [u32; 4],
 }
 
 /// One light in the storage buffer; must match `GpuLight` in scene.wgsl. A rect takes a second
@@ -149,6 +161,9 @@ pub fn params(settings: &RenderSettings, scene: &Scene) -> Params {
         up: v4(up),
         base_color: v4(DVec3::from(m.base_color)),
         alpha: m.alpha as f32,
+        alpha_y: m.roughness().y as f32,
+        tangent_x: m.tangent().x as f32,
+        tangent_y: m.tangent().y as f32,
         f0: m.f0 as f32,
         tan_half_fov: (scene.camera.fov_y_degrees.to_radians() * 0.5).tan() as f32,
         aspect: (settings.width as f64 / settings.height as f64) as f32,

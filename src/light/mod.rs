@@ -13,7 +13,7 @@ pub mod sphere;
 
 use glam::DVec3;
 
-use crate::brdf::{self, Lobes};
+use crate::brdf::{self, Alpha, Lobes};
 use crate::ltc::{Clipping, LtcPair, Normalization};
 
 /// Where a light's light comes from.
@@ -76,13 +76,13 @@ impl Shape {
 pub fn point_lobes(
     exact: bool,
     (v, l): (DVec3, DVec3),
-    (alpha, f0): (f64, f64),
+    (alpha, f0): (Alpha<f64>, f64),
     ltc: &LtcPair,
     clip: Clipping,
     normalization: Normalization,
 ) -> Lobes<f64> {
     match exact {
-        true if l.z > 0.0 => brdf::brdf_cos(v.to_array(), l.to_array(), alpha, f0),
+        true if l.z > 0.0 => brdf::brdf_cos_aniso(v.to_array(), l.to_array(), alpha, f0),
         true => Lobes::default(),
         false => ltc.ltc_lobes(l, f0, clip, normalization),
     }

@@ -355,6 +355,7 @@ pub fn fit_table(settings: &FitSettings, on_cell: &(dyn Fn() + Sync)) -> FittedT
     FittedTable {
         lut: Lut {
             nl_terms: Default::default(),
+            aniso: None,
             size: settings.size,
             alpha_min: settings.alpha_min,
             cells,

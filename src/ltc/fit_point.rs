@@ -17,7 +17,7 @@ use crate::ltc::fit::{CellProblem, FitSettings, FitStrata, pointwise_error};
 use crate::ltc::lobe::{Lobe, Stratum, visible_normal};
 use crate::ltc::lut::{Channel, Lut, LutCell};
 use crate::ltc::point_params::{CellObjective, Free, PointFit, fits_scale};
-use crate::ltc::{Clipping, Normalization};
+use crate::ltc::{Clipping, Ltc, Normalization};
 
 /// Strata per axis of the fit's quadrature (64² nodes); tests/fit/point.rs compares it with
 /// a 4× finer one on the hardest cells.
@@ -25,12 +25,12 @@ pub const QUADRATURE_STRATA: usize = 64;
 
 /// One node of a cell's quadrature: a direction drawn by the exact lobe's own sampling.
 #[derive(Clone, Copy, Debug)]
-struct Node {
-    l: DVec3,
+pub struct Node {
+    pub l: DVec3,
     /// The sampling density at `l`.
-    pdf: f64,
+    pub pdf: f64,
     /// `f cos / pdf` (for the specular lobe `G2/G1(v)`, at most 1).
-    weight: f64,
+    pub weight: f64,
 }
 
 /// The fixed quadrature of one cell: midpoint strata mapped through the exact lobe's
@@ -56,7 +56,11 @@ impl CellQuadrature {
             .iter()
             .filter_map(|s| lobe_node(lobe, view, alpha, s))
             .collect();
-        let count = strata.len();
+        Self::from_nodes(nodes, strata.len())
+    }
+
+    /// The quadrature of a lobe's nodes where it is non-zero, out of `count` strata.
+    pub fn from_nodes(nodes: Vec<Node>, count: usize) -> Self {
         let exact_total = nodes.iter().map(|n| n.weight).sum::<f64>() / count as f64;
         Self {
             nodes,
@@ -65,10 +69,19 @@ impl CellQuadrature {
         }
     }
 
+    /// `∫ f cos dω` by these nodes.
+    pub fn exact_total(&self) -> f64 {
+        self.exact_total
+    }
+
     /// The relative L1 error of `scale · norm · D` for this fit, relative to `norm` (the
     /// stored albedo), as the table's `err` channels are.
     pub fn relative_l1(&self, fit: &PointFit, norm: f64) -> f64 {
-        let ltc = fit.ltc(norm, 0.0);
+        self.relative_l1_ltc(&fit.ltc(norm, 0.0), norm)
+    }
+
+    /// `relative_l1` of any lobe: `∫ |ltc.magnitude() · D − f cos| dω / norm`.
+    pub fn relative_l1_ltc(&self, ltc: &Ltc, norm: f64) -> f64 {
         let magnitude = ltc.magnitude();
         let mut overlap = 0.0;
         for node in &self.nodes {
@@ -332,6 +345,7 @@ pub fn fit_table_for(
         .collect();
     let mut table = Lut {
         nl_terms: Default::default(),
+        aniso: None,
         size: n,
         alpha_min: classic.alpha_min,
         cells: (0..n)

@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use crate::brdf::{Dots, d_ggx, diffuse_cos, g2_correlated, lambda_ggx, specular_cos};
+use crate::brdf::{Alpha, Dots, d_ggx, diffuse_cos, g2_correlated, lambda_ggx, specular_cos};
 use crate::ltc::cosine_sample;
 use crate::named::named_enum;
 
@@ -47,6 +47,19 @@ impl Lobe {
                 value: diffuse_cos(&d, alpha),
                 pdf: l.z.max(0.0) / std::f64::consts::PI,
             },
+        }
+    }
+
+    /// `f cos` (F = 1 / c = 1) toward unit `l` for unit `v`, both in the tangent frame, for
+    /// an anisotropic roughness; an isotropic one is `eval`'s value.
+    pub fn value_aniso(self, v: DVec3, l: DVec3, alpha: Alpha<f64>) -> f64 {
+        if alpha.is_isotropic() {
+            return self.eval(v, l, alpha.x).value;
+        }
+        let lobes = crate::brdf::brdf_cos_aniso(v.to_array(), l.to_array(), alpha, 1.0);
+        match self {
+            Self::Specular => lobes.specular,
+            Self::Diffuse => lobes.diffuse,
         }
     }
 
@@ -192,7 +205,12 @@ pub fn lobe_moments(lobe: Lobe, v: DVec3, alpha: f64, strata: &[Stratum]) -> Lob
 /// "Sampling the GGX Distribution of Visible Normals", JCGT 7(4), listing 1). The stratum's
 /// cosine sample supplies the disk point `(sqrt(u1) cos 2πu2, sqrt(u1) sin 2πu2)`.
 pub fn visible_normal(v: DVec3, alpha: f64, s: &Stratum) -> DVec3 {
-    let vh = DVec3::new(alpha * v.x, alpha * v.y, v.z).normalize();
+    visible_normal_aniso(v, Alpha::isotropic(alpha), s)
+}
+
+/// `visible_normal` for an anisotropic roughness: listing 1 stretches by α_x and α_y apart.
+pub fn visible_normal_aniso(v: DVec3, alpha: Alpha<f64>, s: &Stratum) -> DVec3 {
+    let vh = DVec3::new(alpha.x * v.x, alpha.y * v.y, v.z).normalize();
     let len2 = vh.x * vh.x + vh.y * vh.y;
     let t1 = if len2 > 0.0 {
         DVec3::new(-vh.y, vh.x, 0.0) / len2.sqrt()
@@ -204,5 +222,5 @@ pub fn visible_normal(v: DVec3, alpha: f64, s: &Stratum) -> DVec3 {
     let blend = 0.5 * (1.0 + vh.z);
     let p2 = (1.0 - blend) * (1.0 - p1 * p1).max(0.0).sqrt() + blend * p2;
     let nh = p1 * t1 + p2 * t2 + (1.0 - p1 * p1 - p2 * p2).max(0.0).sqrt() * vh;
-    DVec3::new(alpha * nh.x, alpha * nh.y, nh.z.max(0.0)).normalize()
+    DVec3::new(alpha.x * nh.x, alpha.y * nh.y, nh.z.max(0.0)).normalize()
 }

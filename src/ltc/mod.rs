@@ -4,6 +4,7 @@
 //! (`brdf_from_cos`); it is evaluated through `M⁻¹` (`cos_from_brdf`):
 //! `D(ω) = max(ω'.z, 0) · |det M⁻¹| / (π (ω'·ω')²)`, `ω' = M⁻¹ ω`.
 
+pub mod aniso;
 pub mod cell_fitter;
 pub mod fit;
 pub mod fit_point;

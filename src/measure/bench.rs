@@ -91,6 +91,9 @@ pub struct BenchRow {
     pub ms_max: f64,
     /// The binning's share of the median frame (culled frames with timestamps).
     pub bin_ms_median: Option<f64>,
+    /// The material's α_y where it was anisotropic (α_x the bench scene's α), shaded from
+    /// the 4D table; `None`: isotropic, the 2D table.
+    pub alpha_y: Option<f64>,
 }
 
 impl BenchRow {
@@ -104,11 +107,11 @@ impl BenchRow {
         (self.lights * self.width * self.height) as f64 / (self.ms_median * 1e-3) / 1e9
     }
 
-    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,shape,shape_method,size";
+    pub const CSV_HEADER: &'static str = "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,shape,shape_method,size,alpha_y";
 
     pub fn csv(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3},{},{},{}",
+            "{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{:.3},{:.3},{},{},{},{}",
             self.method.name(),
             self.horizon.name(),
             self.lights,
@@ -127,13 +130,22 @@ impl BenchRow {
             self.glightpx_per_s(),
             self.sizing.shape_name(),
             self.sizing.method_name(),
-            self.size
+            self.size,
+            self.alpha_y.map_or(String::new(), |a| a.to_string())
         )
     }
 
     /// The method as the table names it: the sphere method and radius, the rect method and
     /// half-edge, or the point method with its remedy.
     pub fn label(&self) -> String {
+        let label = self.material_free_label();
+        match self.alpha_y {
+            Some(a) => format!("{label}, α_y = {a}"),
+            None => label,
+        }
+    }
+
+    fn material_free_label(&self) -> String {
         match (self.sizing, self.horizon) {
             (Sizing::Sphere(m), _) => format!("{} (r = {})", m.name(), self.size),
             (Sizing::Rect(m), _) => format!("rect {} (h = {})", m.name(), self.size),
@@ -263,6 +275,9 @@ pub struct BenchSettings {
     /// Also time this method file, on every shape of the run it shades; every method of
     /// the run is then timed with wgpu's runtime checks (a file is not trusted).
     pub method_file: Option<MethodFile>,
+    /// Also time every run with the material anisotropic, of this α_y (α_x the scene's α),
+    /// right after the same run isotropic.
+    pub alpha_y: Option<f64>,
 }
 
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
@@ -393,7 +408,12 @@ pub fn run(
         let rects = as_rects(&points, s.rect_half_edge.unwrap_or(0.0));
         let disks = as_disks(&points, s.disk_radius.unwrap_or(1.0));
         for &cull in &s.culls {
-            for (method, horizon, sizing) in all_runs(ctx, s) {
+            let materials = std::iter::once(None).chain(s.alpha_y.map(Some));
+            let runs = all_runs(ctx, s).into_iter();
+            let runs: Vec<_> = runs
+                .flat_map(|r| materials.clone().map(move |m| (r, m)))
+                .collect();
+            for ((method, horizon, sizing), alpha_y) in runs {
                 let (scene, size) = match sizing {
                     Sizing::Point => (&points, 0.0),
                     Sizing::Rect(_) | Sizing::File("rect") => {
@@ -431,6 +451,15 @@ pub fn run(
                     },
                     ..RenderSettings::single(width, height, method)
                 };
+                let mut brushed;
+                let scene = match alpha_y {
+                    Some(_) => {
+                        brushed = scene.clone();
+                        brushed.material.alpha_y = alpha_y;
+                        &brushed
+                    }
+                    None => scene,
+                };
                 let mut render = renderer.begin(ctx, scene, &settings, kept.take())?;
                 for _ in 0..WARM_UP_FRAMES {
                     render.run(ctx);
@@ -455,6 +484,7 @@ pub fn run(
                     ms_max: ms.iter().copied().fold(0.0, f64::max),
                     ms_median: median(&mut ms),
                     bin_ms_median: (!bins.is_empty()).then(|| median(&mut bins)),
+                    alpha_y,
                 };
                 progress(&row);
                 rows.push(row);

@@ -43,6 +43,7 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
                     && r.method == m
                     && r.horizon == h
                     && r.sizing == Sizing::Point
+                    && r.alpha_y.is_none()
             })
             .map(|r| r.ms_median)
     };
@@ -157,6 +158,7 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
             &ms,
         ));
     }
+    out.push_str(&aniso_markdown(rows));
     out.push_str("\nThe paper's Table 1 (GTX 1060, resolution not stated), for reference:\n\n| lights | BRDF fps | LTC fps | LTC / BRDF |\n|---:|---:|---:|---:|\n");
     for k in 0..PAPER_LIGHTS.len() {
         out.push_str(&format!(
@@ -270,6 +272,42 @@ fn file_markdown(rows: &[BenchRow], keys: &[(usize, bool)]) -> String {
                 ratio(Some(file), point),
             ));
         }
+    }
+    out
+}
+
+/// An anisotropic material's cost: each run's ms with the material anisotropic over the same
+/// run's ms isotropic (the 4D table's lookup, once a pixel, against the 2D table's; the
+/// BRDF forms' anisotropic D and Λ), same lights, same run; and their difference, which for
+/// the LTC forms is the lookup's, the same at any light count.
+fn aniso_markdown(rows: &[BenchRow]) -> String {
+    let brushed: Vec<&BenchRow> = rows.iter().filter(|r| r.alpha_y.is_some()).collect();
+    let Some(first) = brushed.first() else {
+        return String::new();
+    };
+    let mut out = format!(
+        "\nAnisotropic material (α_y = {}; ms anisotropic / ms isotropic, same run):\n\n| method | lights | cull | ms isotropic | ms anisotropic | anisotropic / isotropic | ms anisotropic − isotropic |\n|---|---:|---|---:|---:|---:|---:|\n",
+        first.alpha_y.unwrap_or_default()
+    );
+    for b in brushed {
+        let same = |r: &&BenchRow| {
+            r.alpha_y.is_none()
+                && (r.method, r.horizon, r.sizing, r.lights, r.cull)
+                    == (b.method, b.horizon, b.sizing, b.lights, b.cull)
+        };
+        let Some(iso) = rows.iter().find(same) else {
+            continue;
+        };
+        out.push_str(&format!(
+            "| {} | {} | {} | {:.3} | {:.3} | {:.2}× | {:+.3} |\n",
+            iso.label(),
+            b.lights,
+            if b.cull { "on" } else { "off" },
+            iso.ms_median,
+            b.ms_median,
+            b.ms_median / iso.ms_median,
+            b.ms_median - iso.ms_median
+        ));
     }
     out
 }

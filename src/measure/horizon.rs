@@ -154,7 +154,7 @@ pub fn lobes(
 ) -> (Lobes<f64>, Lobes<f64>) {
     let v = view_from_theta(theta_o.to_radians().min(THETA_MAX));
     let exact = brdf_cos(v, l.to_array(), alpha, F0);
-    let px = LtcPixel::new(lut, alpha, DVec3::from(v), rules);
+    let px = LtcPixel::isotropic(lut, alpha, DVec3::from(v), rules);
     (exact, px.lobes(l, F0, rules, || exact))
 }
 

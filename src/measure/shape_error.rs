@@ -8,7 +8,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::brdf::{Lobes, view_from_theta};
+use crate::brdf::{Alpha, Lobes, view_from_theta};
 use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::{Rect, RectMethod, RectShading, rect_exact, rect_light};
 use crate::ltc::lut::Lut;
@@ -146,15 +146,19 @@ fn cell(
         let s = RectShading {
             v,
             rect,
-            alpha,
+            alpha: Alpha::isotropic(alpha),
             f0: F0,
             ltc: &pair,
             clip,
             normalization,
         };
-        let exact = rect_exact(v, &rect, alpha, F0, nodes);
+        let exact = rect_exact(v, &rect, Alpha::isotropic(alpha), F0, nodes);
         if finer {
-            finer_by(0, exact, rect_exact(v, &rect, alpha, F0, 2 * nodes));
+            finer_by(
+                0,
+                exact,
+                rect_exact(v, &rect, Alpha::isotropic(alpha), F0, 2 * nodes),
+            );
         }
         rect_total[0] += exact.specular;
         rect_total[1] += exact.diffuse;
@@ -164,15 +168,19 @@ fn cell(
         let s = DiskShading {
             v,
             disk,
-            alpha,
+            alpha: Alpha::isotropic(alpha),
             f0: F0,
             ltc: &pair,
             clip,
             normalization,
         };
-        let exact = disk_exact(v, &disk, alpha, F0, nodes);
+        let exact = disk_exact(v, &disk, Alpha::isotropic(alpha), F0, nodes);
         if finer {
-            finer_by(1, exact, disk_exact(v, &disk, alpha, F0, 2 * nodes));
+            finer_by(
+                1,
+                exact,
+                disk_exact(v, &disk, Alpha::isotropic(alpha), F0, 2 * nodes),
+            );
         }
         disk_total[0] += exact.specular;
         disk_total[1] += exact.diffuse;

@@ -6,7 +6,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::brdf::{Lobes, view_from_theta};
+use crate::brdf::{Alpha, Lobes, view_from_theta};
 use crate::light::sphere::cap::Cap;
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_exact, sphere_light};
 use crate::ltc::lut::{Lut, THETA_MAX};
@@ -18,7 +18,7 @@ use crate::scene::SplitMix64;
 pub const RADII_DEG: [f64; 7] = [0.0, 0.5, 2.0, 5.0, 10.0, 20.0, 30.0];
 
 /// Nodes of the exact method in the measure: 32 keep the rule's error under 1e-4 of each
-/// case's value (tests/sphere_light.rs), far below the errors measured, at a quarter of
+/// case's value (tests/lights/sphere_light.rs), far below the errors measured, at a quarter of
 /// `sphere_light::EXACT_NODES`'s cost.
 pub const MEASURE_NODES: usize = 32;
 
@@ -120,7 +120,7 @@ pub fn one_sphere(
 ) -> (Lobes<f64>, [Lobes<f64>; 3]) {
     let v = DVec3::from(view_from_theta(theta_o.to_radians().min(THETA_MAX)));
     let pair = lut.ltc_pair(alpha, v);
-    let s = SphereShading::unit(v, l, radius_deg, alpha, F0, &pair);
+    let s = SphereShading::unit(v, l, radius_deg, Alpha::isotropic(alpha), F0, &pair);
     let want = match Cap::of_sphere(s.u, s.radius) {
         Some(cap) => sphere_exact(&s, &cap, nodes),
         None => sphere_light(SphereMethod::Exact, &s),

@@ -12,8 +12,9 @@ use crate::light::Shape;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
+use crate::brdf::Alpha;
 use crate::error::{Error, Result, number};
-use crate::render::SurfacePoint;
+use crate::render::{Gloss, SurfacePoint};
 pub use check::MIN_NORMAL;
 use check::{check_light, check_radius, check_range, finite, within};
 pub use light::{Light, MIN_RADIUS, RandomLights, SplitMix64, generate_lights};
@@ -85,13 +86,28 @@ pub const DISK_PRESETS: [(&str, &str); 1] = [(
     include_str!("../../assets/scenes/disk-limits.toml"),
 )];
 
-/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`, `RECT_PRESETS`, `DISK_PRESETS`).
+/// The anisotropic presets (docs/design.md §1.13): brushed metal under a rect and under
+/// spheres.
+pub const ANISO_PRESETS: [(&str, &str); 2] = [
+    (
+        "brushed-rect",
+        include_str!("../../assets/scenes/brushed-rect.toml"),
+    ),
+    (
+        "brushed-spheres",
+        include_str!("../../assets/scenes/brushed-spheres.toml"),
+    ),
+];
+
+/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`, `RECT_PRESETS`, `DISK_PRESETS`,
+/// `ANISO_PRESETS`).
 pub fn preset(name: &str) -> Scene {
     let (_, text) = PRESETS
         .iter()
         .chain(&SPHERE_PRESETS)
         .chain(&RECT_PRESETS)
         .chain(&DISK_PRESETS)
+        .chain(&ANISO_PRESETS)
         .find(|(n, _)| *n == name)
         .expect("a shipped preset");
     Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")
@@ -113,8 +129,51 @@ pub struct Material {
     pub base_color: [f64; 3],
     /// Specular reflectance at normal incidence (Schlick's `F0`).
     pub f0: f64,
-    /// GGX α (= perceptual roughness²).
+    /// GGX α (= perceptual roughness²); α along the tangent where `alpha_y` is given.
     pub alpha: f64,
+    /// GGX α along the bitangent, for an anisotropic material (docs/design.md §1.13; brushed
+    /// metal); absent, the material is isotropic and shades as it always did.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub alpha_y: Option<f64>,
+    /// The tangent's angle in the plane, in degrees from the world's +x axis toward +y: the
+    /// direction along which `alpha` acts (the brushing's direction). Unused while isotropic.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tangent_degrees: f64,
+}
+
+/// Whether a value is 0: such a field is left out of a saved scene.
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
+
+impl Material {
+    /// The material's roughness along its tangent and bitangent.
+    pub fn roughness(&self) -> Alpha<f64> {
+        Alpha {
+            x: self.alpha,
+            y: self.alpha_y.unwrap_or(self.alpha),
+        }
+    }
+
+    /// Whether the material is anisotropic: shaded in its tangent frame, its specular lobe
+    /// from the 4D table.
+    pub fn is_anisotropic(&self) -> bool {
+        !self.roughness().is_isotropic()
+    }
+
+    /// The unit tangent (world, in the plane).
+    pub fn tangent(&self) -> DVec3 {
+        let (s, c) = self.tangent_degrees.to_radians().sin_cos();
+        DVec3::new(c, s, 0.0)
+    }
+
+    /// What a shading point needs of the material's roughness.
+    pub fn gloss(&self) -> Gloss {
+        Gloss {
+            alpha: self.roughness(),
+            tangent: self.tangent(),
+        }
+    }
 }
 
 impl Default for Material {
@@ -255,6 +314,20 @@ impl Scene {
             &[m.alpha],
             crate::ltc::lut::ALPHA_MIN,
             1.0,
+        )?;
+        if let Some(alpha_y) = m.alpha_y {
+            within(
+                "material.alpha_y",
+                &[alpha_y],
+                crate::ltc::lut::ALPHA_MIN,
+                1.0,
+            )?;
+        }
+        within(
+            "material.tangent_degrees",
+            &[m.tangent_degrees],
+            -360.0,
+            360.0,
         )?;
         let c = &self.camera;
         within(

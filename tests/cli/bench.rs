@@ -52,7 +52,7 @@ fn bench_prints_the_table_and_writes_the_csv() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,shape,shape_method,size"
+        "method,horizon,lights,width,height,frames,cull,range,in_range_fraction,ms_median,ms_min,ms_max,bin_ms,fps,glightpx_per_s,shape,shape_method,size,alpha_y"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     // Every method with eq30, ltc and ltc-fast with exact-band too, the four sphere methods
@@ -117,10 +117,47 @@ fn bench_refuses_bad_arguments() {
         let flag = format!("--rect-half-edge={r}");
         assert_refused(&ltc_lab(&["bench", &flag]), "--rect-half-edge");
     }
+    for y in ["0", "2", "nan"] {
+        let flag = format!("--alpha-y={y}");
+        assert_refused(&ltc_lab(&["bench", &flag]), "--alpha-y");
+    }
     assert_refused(
         &ltc_lab(&["bench", "--csv", "/nonexistent-dir/b.csv"]),
         "/nonexistent-dir/b.csv",
     );
+}
+
+/// `--alpha-y`: every run again with the material anisotropic, right after it isotropic, in
+/// the CSV's last column, and the table's ratio of the two.
+#[test]
+fn bench_times_an_anisotropic_material_beside_the_isotropic_one() {
+    if gpu().is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("bench.csv");
+    let o = ltc_lab(&[
+        "bench",
+        "--lights",
+        "4",
+        "--size",
+        "16x8",
+        "--frames",
+        "1",
+        "--alpha-y",
+        "0.05",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = String::from_utf8(o.stdout).unwrap();
+    assert!(table.contains("Anisotropic material (α_y = 0.05"), "{table}");
+    assert!(table.contains("| ltc-fast | 4 | on |"), "{table}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let brushed = rows.iter().filter(|r| r[18] == "0.05").count();
+    let round = rows.iter().filter(|r| r[18].is_empty()).count();
+    assert!(brushed > 0 && brushed == round, "{text}");
 }
 
 /// Every light count is checked before the first is measured, and the message says which

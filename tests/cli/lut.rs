@@ -205,6 +205,32 @@ fn atlas_writes_all_its_files_or_none() {
     assert_refused(&o, "plain");
 }
 
+/// `lut --export aniso-texture`: the 4D table's three volumes (8⁴ nodes × 3 RGBA32F texels)
+/// and its lookup, into a directory made for them; the same bytes from a second run (the
+/// files named by --out are the user's to replace).
+#[test]
+fn lut_exports_the_4d_table_as_textures() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("aniso");
+    let args = [
+        "lut",
+        "--export",
+        "aniso-texture",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    let o = ltc_lab(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let bytes = std::fs::read(out.join("ltc_aniso.bin")).unwrap();
+    assert_eq!(bytes.len(), 3 * 8 * 8 * 8 * 8 * 16);
+    assert!(stderr(&o).contains("196608 bytes"), "{}", stderr(&o));
+    let wgsl = std::fs::read_to_string(out.join("ltc_aniso.wgsl")).unwrap();
+    assert!(wgsl.contains("fn aniso_ltc(") && wgsl.contains("the lab's 4D table"));
+    let again = ltc_lab(&args);
+    assert!(again.status.success(), "{}", stderr(&again));
+    assert_eq!(std::fs::read(out.join("ltc_aniso.bin")).unwrap(), bytes);
+}
+
 /// `lut --export`: each format written where asked, with its header; ltc_code's DDS pair at
 /// the sizes ltc_code's own files have (128-byte header + 64² texels of 8 or 16 bytes).
 #[test]
@@ -395,6 +421,7 @@ fn lut_refuses_an_exr_whose_header_claims_more_than_its_body() {
     let shipped = Lut::embedded();
     let small = Lut {
         nl_terms: Default::default(),
+        aniso: None,
         size: 4,
         alpha_min: shipped.alpha_min,
         cells: (0..16)

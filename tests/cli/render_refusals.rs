@@ -218,6 +218,7 @@ fn a_table_too_large_for_the_gpu_is_refused_naming_the_limit() {
     let cell = ltc_lab::ltc::lut::Lut::embedded().cells[0];
     let big = ltc_lab::ltc::lut::Lut {
         nl_terms: Default::default(),
+        aniso: None,
         size: n,
         alpha_min: 1e-4,
         cells: vec![cell; n * n],

@@ -37,7 +37,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let c = probe_in[k + 2u];
     let disk = Disk(b.xyz, c.xyz, c.w);
     let pair = LtcPair(probe_ltc(k + 3u), probe_ltc(k + 7u));
-    let s = DiskShading(a.xyz, disk, a.w, b.w, CLIP_HORIZON | CLIP_TRANSFORMED,
+    let s = DiskShading(a.xyz, disk, vec2<f32>(a.w), b.w, CLIP_HORIZON | CLIP_TRANSFORMED,
         NORMALIZATION_CORRECTED);
     let exact = disk_light(DISK_EXACT, s, pair);
     let ltc = disk_light(DISK_LTC_DISK, s, pair);
@@ -122,6 +122,7 @@ fn gpu_disk_lights_match_the_cpu_methods() {
     let input: Vec<[f32; 4]> = cases.iter().flat_map(pack).collect();
     let source = [
         brdf::SOURCE,
+        ltc_lab::gpu::brdf_aniso::SOURCE,
         ltc::SOURCE,
         sphere_light::SOURCE,
         rect_light::SOURCE,
@@ -143,7 +144,7 @@ fn gpu_disk_lights_match_the_cpu_methods() {
             let s = DiskShading {
                 v: c.v,
                 disk: c.disk,
-                alpha: c.alpha,
+                alpha: ltc_lab::brdf::Alpha::isotropic(c.alpha),
                 f0: c.f0,
                 ltc: &c.pair,
                 clip: Clipping::BOTH,

@@ -41,7 +41,13 @@ fn gpu_lut_filtering_matches_the_cpu_sampler() {
         })
         .collect();
     uv.extend((0..64).map(|k| [(k as f32 + 0.5) / 64.0, (k as f32 + 0.5) / 64.0]));
-    let source = [brdf::SOURCE, ltc::SOURCE, PROBE].join("\n");
+    let source = [
+        brdf::SOURCE,
+        ltc_lab::gpu::brdf_aniso::SOURCE,
+        ltc::SOURCE,
+        PROBE,
+    ]
+    .join("\n");
     let packed = ltc::pack_lut(lut, false);
     let got = run_probe(
         &source,

@@ -6,6 +6,7 @@
 #[path = "../gpu_common/mod.rs"]
 mod gpu_common;
 
+mod aniso;
 mod disk_light;
 mod lut;
 mod method_file;

@@ -33,7 +33,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let b = probe_in[k + 1u];
     let rect = Rect(b.xyz, probe_in[k + 2u].xyz, probe_in[k + 3u].xyz);
     let pair = LtcPair(probe_ltc(k + 4u), probe_ltc(k + 8u));
-    let s = RectShading(a.xyz, rect, a.w, b.w, CLIP_HORIZON | CLIP_TRANSFORMED,
+    let s = RectShading(a.xyz, rect, vec2<f32>(a.w), b.w, CLIP_HORIZON | CLIP_TRANSFORMED,
         NORMALIZATION_CORRECTED);
     var out: array<f32, 12>;
     for (var m = 0u; m < 5u; m++) {
@@ -126,6 +126,7 @@ fn gpu_rect_lights_match_the_cpu_methods() {
     let input: Vec<[f32; 4]> = cases.iter().flat_map(pack).collect();
     let source = [
         brdf::SOURCE,
+        ltc_lab::gpu::brdf_aniso::SOURCE,
         ltc::SOURCE,
         sphere_light::SOURCE,
         rect_light::SOURCE,
@@ -146,7 +147,7 @@ fn gpu_rect_lights_match_the_cpu_methods() {
             let s = RectShading {
                 v: c.v,
                 rect: c.rect,
-                alpha: c.alpha,
+                alpha: ltc_lab::brdf::Alpha::isotropic(c.alpha),
                 f0: c.f0,
                 ltc: &c.pair,
                 clip: Clipping::BOTH,

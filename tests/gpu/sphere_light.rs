@@ -31,7 +31,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let b = probe_in[k + 1u];
     let c = probe_in[k + 2u];
     let pair = LtcPair(probe_ltc(k + 3u), probe_ltc(k + 7u));
-    let s = SphereShading(a.xyz, b.xyz, 1.0, -1.0, a.w, b.w, c.x, CLIP_HORIZON | CLIP_TRANSFORMED,
+    let s = SphereShading(a.xyz, b.xyz, 1.0, -1.0, a.w, vec2<f32>(b.w), c.x, CLIP_HORIZON | CLIP_TRANSFORMED,
         NORMALIZATION_CORRECTED);
     let cap = cap_of_sphere(s.u, s.radius);
     let disk = sphere_ltc_disk(s, pair, cap);
@@ -93,7 +93,14 @@ fn pack(c: &Case) -> Vec<[f32; 4]> {
 
 /// The probe `tail` composed after the sphere lights' shaders, run over `input`.
 fn probe(tail: &str, input: &[[f32; 4]], outputs: usize) -> Vec<[f32; 4]> {
-    let source = [brdf::SOURCE, ltc::SOURCE, sphere_light::SOURCE, tail].join("\n");
+    let source = [
+        brdf::SOURCE,
+        ltc_lab::gpu::brdf_aniso::SOURCE,
+        ltc::SOURCE,
+        sphere_light::SOURCE,
+        tail,
+    ]
+    .join("\n");
     run_probe(&source, &[], bytemuck::cast_slice(input), &[], outputs)
 }
 
@@ -116,7 +123,7 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
                 intensity: 1.0,
                 range: f64::INFINITY,
                 radius: c.radius,
-                alpha: c.alpha,
+                alpha: ltc_lab::brdf::Alpha::isotropic(c.alpha),
                 f0: c.f0,
                 ltc: &c.pair,
                 clip: Clipping::BOTH,

@@ -6,6 +6,7 @@
 #[path = "../gpu_common/mod.rs"]
 mod gpu_common;
 
+mod aniso;
 mod chart;
 mod clipping;
 mod harness;

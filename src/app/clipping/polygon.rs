@@ -11,7 +11,7 @@ use egui::{Color32, Pos2, Stroke, Vec2};
 use glam::DVec3;
 
 use crate::app::lab::{Lab, LobeView, TableId};
-use crate::brdf::{brdf_cos, view_from_theta};
+use crate::brdf::{brdf_cos_aniso, view_from_theta};
 use crate::light::rect::{
     Rect, RectMethod, clip_horizon, ltc_polygon, ltc_proxy, ltc_proxy_fast, polygon_integral_about,
 };
@@ -61,11 +61,25 @@ pub fn shown_polygon(view: &LobeView) -> ([DVec3; 4], bool) {
 /// The lobe the view shows: the lobe panel's, at the lab's θo and α, from table `which`.
 pub fn shown_lobe(lab: &Lab, which: TableId) -> Ltc {
     let view = lab.lobe_view();
-    let v = DVec3::from(view_from_theta(view.theta_o_deg.to_radians()));
-    let pair = lab.tables().get(which).lut.ltc_pair(lab.alpha(), v);
+    let pair = lab.ltc_pair(&lab.tables().get(which).lut);
     match view.lobe {
         Lobe::Specular => pair.spec,
         Lobe::Diffuse => pair.diff,
+    }
+}
+
+/// The material's roughness as a label: α, or α_x, α_y and φo while anisotropic (its cell
+/// of the 4D table).
+fn roughness_label(lab: &Lab) -> String {
+    let a = lab.material().roughness();
+    match a.is_isotropic() {
+        true => format!("α = {:.4}", a.x),
+        false => format!(
+            "α_x = {:.4}, α_y = {:.4}, φo = {:.1}°",
+            a.x,
+            a.y,
+            lab.lobe_view().phi_o_deg
+        ),
     }
 }
 
@@ -123,9 +137,9 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, which: TableId) {
         Lobe::Diffuse => "diffuse",
     };
     ui.label(format!(
-        "∫ D over P ({lobe} lobe, θo = {:.1}°, α = {:.4}): {rules:.4} by the lab's rules (ltc-polygon)",
+        "∫ D over P ({lobe} lobe, θo = {:.1}°, {}): {rules:.4} by the lab's rules (ltc-polygon)",
         view.theta_o_deg,
-        lab.alpha()
+        roughness_label(lab)
     ));
     ui.label(format!(
         "unclipped (signed): {unclipped:.4} · proxy (ltc-proxy): {proxy:.4} · case 1 off adds {leak:.4} (the leak)"
@@ -153,8 +167,9 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, which: TableId) {
 pub fn radiances(lab: &Lab, which: TableId, corners: &[DVec3]) -> [f64; 4] {
     let view = lab.lobe_view();
     let v = DVec3::from(view_from_theta(view.theta_o_deg.to_radians()));
-    let (alpha, f0) = (lab.alpha(), lab.material().f0);
-    let pair = lab.tables().get(which).lut.ltc_pair(alpha, v);
+    let (alpha, f0) = (lab.material().roughness(), lab.material().f0);
+    let pair = lab.ltc_pair(&lab.tables().get(which).lut);
+    let turn = lab.tangent_from_view();
     let (ltc, weight, k) = match view.lobe {
         Lobe::Specular => (&pair.spec, pair.spec_magnitude(f0), 0),
         Lobe::Diffuse => (&pair.diff, pair.diff.magnitude(), 1),
@@ -165,7 +180,8 @@ pub fn radiances(lab: &Lab, which: TableId, corners: &[DVec3]) -> [f64; 4] {
     let mean = corners.iter().sum::<DVec3>().normalize_or_zero();
     let planar: Vec<DVec3> = corners.iter().map(|&c| c / c.dot(mean)).collect();
     let exact = polygon_integral_about(&clip_horizon(&planar), 32, Some(mirror), |l| {
-        let f = brdf_cos(v.to_array(), l.to_array(), alpha, f0);
+        let (v, l) = ((turn * v).to_array(), (turn * l).to_array());
+        let f = brdf_cos_aniso(v, l, alpha, f0);
         [f.specular, f.diffuse]
     })[k];
     let (clip, n) = (lab.rules().clipping, Normalization::Corrected);

@@ -8,6 +8,7 @@ mod light_check;
 pub mod part;
 pub mod parts;
 pub mod refit_result;
+pub mod tables;
 
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
@@ -15,8 +16,9 @@ use serde::{Deserialize, Serialize};
 pub use part::{Checked, Part, Stamp};
 pub use parts::{
     DiskForms, Exposure, Forms, LastRefit, Lights, LobeView, Overrides, RectForms, Selection,
-    SideB, SphereForms, Stage, TableId, TableSources, Tables,
+    SideB, SphereForms, Stage,
 };
+pub use tables::{TableId, TableSources, Tables};
 
 use crate::gpu::GpuContext;
 use crate::gpu::method_file::MethodFile;
@@ -435,9 +437,31 @@ impl Lab {
         self.lobe_view().theta_o_deg.to_radians().min(THETA_MAX)
     }
 
-    /// The LTC pair of `lut` at the lobe and matrix panels' (θo, α).
+    /// The LTC pair of `lut` at the lobe and matrix panels' (θo, α), in the view's frame (x
+    /// toward the view's azimuth): an anisotropic material's lobes come from the 4D table at
+    /// (θo, φo) in its tangent frame, turned into the view's (`tangent_from_view`).
     pub fn ltc_pair(&self, lut: &crate::ltc::lut::Lut) -> LtcPair {
-        lut.sample(self.alpha(), self.theta_o().cos()).ltc_pair()
+        let m = self.material();
+        if !m.is_anisotropic() {
+            return lut.sample(self.alpha(), self.theta_o().cos()).ltc_pair();
+        }
+        let turn = self.tangent_from_view();
+        let v = turn * DVec3::new(self.theta_o().sin(), 0.0, self.theta_o().cos());
+        let pair = lut.aniso_pair(m.roughness(), v);
+        let turned = |l: &Ltc| Ltc::from_cos_from_brdf(l.cos_from_brdf * turn, l.norm, l.fresnel);
+        LtcPair {
+            spec: turned(&pair.spec),
+            diff: turned(&pair.diff),
+        }
+    }
+
+    /// The turn from the lobe view's frame (x toward the view's azimuth) to the material's
+    /// tangent frame: by φo while the material is anisotropic, none while it is not.
+    pub fn tangent_from_view(&self) -> glam::DMat3 {
+        match self.material().is_anisotropic() {
+            true => glam::DMat3::from_rotation_z(self.lobe_view().phi_o_deg.to_radians()),
+            false => glam::DMat3::IDENTITY,
+        }
     }
 
     /// The cell of table A nearest (θo, α): (column of α, row of θo).
@@ -536,6 +560,15 @@ impl Lab {
     pub fn use_table_b(&mut self, table: Option<NamedTable>) {
         let tables = self.tables().with_b(table);
         self.set(tables);
+    }
+
+    /// Shades anisotropic materials on side `id` with the 4D table `source` from now on; one
+    /// that cannot be read is said, and the current one stays.
+    pub fn use_aniso(&mut self, id: TableId, source: crate::ltc::aniso::source::AnisoSource) {
+        match self.tables().with_aniso(id, source) {
+            Ok(tables) => self.set(tables),
+            Err(e) => self.say(Message::error(e.to_string())),
+        }
     }
 
     /// The refitted lobe, while the chosen cell of table A is the one refitted.

@@ -14,10 +14,9 @@ use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{ALPHA_MIN, Table};
+use crate::ltc::lut::ALPHA_MIN;
 use crate::render::{LtcRules, Method};
 use crate::scene::{Camera, Light, MAX_COORDINATE, MAX_LIGHTS, Material, Plane, Scene};
-use crate::tables::{NamedTable, NamedTables, Source};
 
 /// The scene the parts make.
 pub fn scene(stage: &Stage, material: &Material, lights: &Lights, exposure: &Exposure) -> Scene {
@@ -103,6 +102,13 @@ impl Checked for Material {
             );
             n.number("material.f0", &mut self.f0, p.f0, [0.0, 1.0]);
             n.number("material.alpha", &mut self.alpha, p.alpha, [ALPHA_MIN, 1.0]);
+            if let Some(y) = self.alpha_y.as_mut() {
+                let before = p.alpha_y.unwrap_or(p.alpha);
+                n.number("material.alpha_y", y, before, [ALPHA_MIN, 1.0]);
+            }
+            let turn = [-360.0, 360.0];
+            let t = &mut self.tangent_degrees;
+            n.number("material.tangent_degrees", t, p.tangent_degrees, turn);
         })
     }
 }
@@ -188,6 +194,9 @@ impl Checked for Exposure {
 pub struct LobeView {
     /// Degrees.
     pub theta_o_deg: f64,
+    /// The view's azimuth from the tangent, in degrees (an anisotropic material's fourth
+    /// axis; an isotropic lobe is the same at every φo).
+    pub phi_o_deg: f64,
     pub lobe: Lobe,
     /// ω in the shading frame, unit.
     pub light: Option<[f64; 3]>,
@@ -200,6 +209,7 @@ impl Default for LobeView {
     fn default() -> Self {
         Self {
             theta_o_deg: 45.0,
+            phi_o_deg: 0.0,
             lobe: Lobe::Specular,
             light: None,
             polygon: None,
@@ -208,7 +218,7 @@ impl Default for LobeView {
 }
 
 impl Checked for LobeView {
-    /// θo within the tables' rows' degrees; the light a unit vector, or none.
+    /// θo within the tables' rows' degrees, φo within a turn; the light a unit vector, or none.
     fn check(&mut self, previous: &Self) -> Vec<String> {
         notes(|n| {
             n.number(
@@ -217,6 +227,8 @@ impl Checked for LobeView {
                 previous.theta_o_deg,
                 [0.0, 90.0],
             );
+            let phi = &mut self.phi_o_deg;
+            n.number("φo", phi, previous.phi_o_deg, [0.0, 360.0]);
             // A polygon's corners are directions, each: one that is not refuses the polygon.
             if let Some(corners) = self.polygon {
                 let units: Option<Vec<[f64; 3]>> = corners
@@ -453,156 +465,6 @@ impl Checked for Overrides {
 impl Checked for LtcRules {
     fn check(&mut self, _: &Self) -> Vec<String> {
         Vec::new()
-    }
-}
-
-/// Which table a panel reads: A (shaded with) or B (compared with).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum TableId {
-    #[default]
-    A,
-    B,
-}
-
-/// Tables A and B, and the shipped table A stands for (whose default B is B unless a file
-/// is). Kept between runs as where they came from (`TableSources`).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(from = "TableSources", into = "TableSources")]
-pub struct Tables {
-    pub shipped: Table,
-    pub named: NamedTables,
-    /// What could not be read again when the tables were made from their sources (said
-    /// where they enter the lab).
-    lost: Vec<String>,
-}
-
-/// Where the tables came from: the shipped table, and the files of A and B.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct TableSources {
-    pub shipped: Table,
-    pub a_file: Option<String>,
-    pub b_file: Option<String>,
-}
-
-impl Default for Tables {
-    fn default() -> Self {
-        Self::shipped(Table::Classic)
-    }
-}
-
-impl Tables {
-    /// The shipped table `t` as A, and its default B.
-    pub fn shipped(t: Table) -> Self {
-        Self {
-            shipped: t,
-            named: NamedTables::shipped(t),
-            lost: Vec::new(),
-        }
-    }
-
-    pub fn a(&self) -> &NamedTable {
-        &self.named.a
-    }
-
-    pub fn b(&self) -> &NamedTable {
-        &self.named.b
-    }
-
-    pub fn get(&self, id: TableId) -> &NamedTable {
-        match id {
-            TableId::A => self.a(),
-            TableId::B => self.b(),
-        }
-    }
-
-    /// Whether table B is the one A's shipped table is compared with (not one the user
-    /// named).
-    pub fn b_is_default(&self) -> bool {
-        self.b().source == Source::Shipped(self.shipped.default_b())
-    }
-
-    /// The same with `a` as table A (standing in for `shipped`): a table B the user named
-    /// stays, a default one follows A's shipped table.
-    pub fn with_a(&self, a: NamedTable, shipped: Table) -> Self {
-        let named = match self.b_is_default() {
-            true => NamedTables::with_a(a, shipped),
-            false => NamedTables {
-                a,
-                b: self.b().clone(),
-            },
-        };
-        Self {
-            shipped,
-            named,
-            lost: Vec::new(),
-        }
-    }
-
-    /// The same with `b` as table B (`None`: A's default B).
-    pub fn with_b(&self, b: Option<NamedTable>) -> Self {
-        let b = b.unwrap_or_else(|| NamedTable::shipped(self.shipped.default_b()));
-        Self {
-            named: NamedTables {
-                a: self.a().clone(),
-                b,
-            },
-            ..self.clone()
-        }
-    }
-}
-
-impl From<Tables> for TableSources {
-    fn from(t: Tables) -> Self {
-        let file = |n: &NamedTable| match &n.source {
-            Source::File(path) => Some(path.clone()),
-            Source::Shipped(_) | Source::Given(_) => None,
-        };
-        Self {
-            shipped: t.shipped,
-            a_file: file(t.a()),
-            b_file: file(t.b()),
-        }
-    }
-}
-
-impl From<TableSources> for Tables {
-    /// The tables the sources name, their files read again; a file that cannot be read
-    /// leaves the shipped table in its place, and says why where the tables enter the lab.
-    fn from(s: TableSources) -> Self {
-        let mut lost = Vec::new();
-        let mut read = |file: &Option<String>, which: &str| {
-            let path = file.as_ref()?;
-            match NamedTable::from_file(path) {
-                Ok((table, _)) => Some(table),
-                Err(e) => {
-                    lost.push(format!(
-                        "table {which} was {path}, which cannot be read again ({e})"
-                    ));
-                    None
-                }
-            }
-        };
-        let (a, b) = (read(&s.a_file, "A"), read(&s.b_file, "B"));
-        let a = a.unwrap_or_else(|| NamedTable::shipped(s.shipped));
-        let tables = Tables::shipped(s.shipped).with_a(a, s.shipped).with_b(b);
-        Self { lost, ..tables }
-    }
-}
-
-impl Checked for Tables {
-    /// Every table was checked when it was read; what could not be read again is said.
-    fn check(&mut self, _: &Self) -> Vec<String> {
-        let lost = std::mem::take(&mut self.lost);
-        if lost.is_empty() {
-            return lost;
-        }
-        vec![format!(
-            "{}: shading with the {} table, comparing with {}",
-            lost.join("; "),
-            self.a().name,
-            self.b().name
-        )]
     }
 }
 

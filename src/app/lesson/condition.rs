@@ -36,6 +36,8 @@ named_enum! {
     pub enum Quantity {
         Alpha = "alpha",
         ThetaO = "theta_o",
+        AlphaY = "alpha_y",
+        PhiO = "phi_o",
         F0 = "f0",
         Morph = "morph",
         Case1 = "case1",
@@ -60,6 +62,8 @@ impl Quantity {
         match self {
             Self::Alpha => "the material's GGX α",
             Self::ThetaO => "θo, degrees",
+            Self::AlphaY => "the material's α_y (its α while isotropic)",
+            Self::PhiO => "φo, the view's azimuth from the tangent, degrees",
             Self::F0 => "Schlick's F0",
             Self::Morph => "the lobe panel's \"M: I -> fitted\" slider, 0 to 1",
             Self::Case1 => "clipping rule 1 (clip at the surface's horizon) on: 1, off: 0",
@@ -92,6 +96,8 @@ impl Quantity {
         match self {
             Self::Alpha => Some(lab.alpha()),
             Self::ThetaO => Some(lab.lobe_view().theta_o_deg),
+            Self::AlphaY => Some(lab.material().roughness().y),
+            Self::PhiO => Some(lab.lobe_view().phi_o_deg),
             Self::F0 => Some(lab.material().f0),
             Self::Morph => Some(now.lobe.morph),
             Self::Case1 => switch(lab.rules().clipping.case1),

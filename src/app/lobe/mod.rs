@@ -10,7 +10,7 @@ use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::Notes;
-use crate::app::lab::{Checked, Lab, LastRefit, LobeView, Part, Tables};
+use crate::app::lab::{Checked, Lab, LastRefit, LobeView, Part, TableId, Tables};
 use crate::app::lobe::sphere::{Drawn, Sphere, values};
 use crate::app::panel::Panel;
 use crate::app::ui::display::colour_bar;
@@ -163,13 +163,30 @@ impl LobePanel {
         let refitted = lab
             .refit_ltc()
             .is_some_and(|(l, _)| l == lab.lobe_view().lobe);
-        ui.strong(format!(
-            "θo = {:.1}°   α = {:.4}   table A: {}{}{b}",
-            lab.lobe_view().theta_o_deg,
-            lab.alpha(),
-            lab.tables().a().short_name(),
-            if refitted { " (refitted)" } else { "" }
-        ));
+        let m = lab.material();
+        let (view, tables) = (lab.lobe_view(), lab.tables());
+        match m.is_anisotropic() {
+            true => ui.strong(format!(
+                "θo = {:.1}°   φo = {:.1}°   α_x = {:.4}   α_y = {:.4}   4D table A: {}{}",
+                view.theta_o_deg,
+                view.phi_o_deg,
+                m.roughness().x,
+                m.roughness().y,
+                tables.aniso(TableId::A).short_name(),
+                if st.overlay_table_b {
+                    format!(", B: {}", tables.aniso(TableId::B).short_name())
+                } else {
+                    String::new()
+                }
+            )),
+            false => ui.strong(format!(
+                "θo = {:.1}°   α = {:.4}   table A: {}{}{b}",
+                view.theta_o_deg,
+                lab.alpha(),
+                tables.a().short_name(),
+                if refitted { " (refitted)" } else { "" }
+            )),
+        };
         ui.horizontal(|ui| {
             lab.edit(|v: &mut LobeView| {
                 use crate::ltc::lobe::Lobe;
@@ -223,23 +240,40 @@ type DrawnFrom<'a> = (
 );
 
 /// The lobe at the lab's (θo, α): table A's LTC (or the refit of its cell, while it is the
-/// cell chosen), morphed, and table B's where overlaid; a pinned pixel's light.
+/// cell chosen), morphed, and table B's where overlaid; a pinned pixel's light. An
+/// anisotropic material is seen from (θo, φo) in its tangent frame, its lobes from each
+/// table's 4D table (`Lut::aniso_pair`).
 fn drawn((material, view, tables, refit): DrawnFrom<'_>, st: &LobeState) -> Drawn {
     let theta = view.theta_o_deg.to_radians().min(THETA_MAX);
-    let alpha = material.alpha;
-    let pair = |lut: &crate::ltc::lut::Lut| lut.sample(alpha, theta.cos()).ltc_pair();
+    let alpha = material.roughness();
+    let v = match material.is_anisotropic() {
+        true => {
+            let phi = view.phi_o_deg.to_radians();
+            DVec3::new(
+                theta.sin() * phi.cos(),
+                theta.sin() * phi.sin(),
+                theta.cos(),
+            )
+        }
+        false => DVec3::new(theta.sin(), 0.0, theta.cos()),
+    };
+    let pair = |lut: &crate::ltc::lut::Lut| match material.is_anisotropic() {
+        true => lut.aniso_pair(alpha, v),
+        false => lut.sample(alpha.x, theta.cos()).ltc_pair(),
+    };
     let a = &tables.a().lut;
-    let refitted = refit
-        .0
-        .as_ref()
-        .filter(|r| r.lobe == view.lobe && r.cell == a.nearest_cell(alpha, theta.cos()));
+    let refitted = refit.0.as_ref().filter(|r| {
+        !material.is_anisotropic()
+            && r.lobe == view.lobe
+            && r.cell == a.nearest_cell(alpha.x, theta.cos())
+    });
     let fitted = match refitted {
         Some(r) => r.ltc(),
         None => *pair(a).lobe(view.lobe),
     };
     Drawn {
         lobe: view.lobe,
-        v: DVec3::new(theta.sin(), 0.0, theta.cos()),
+        v,
         alpha,
         ltc: morphed_ltc(&fitted, st.morph),
         other: st
@@ -254,12 +288,14 @@ fn drawn((material, view, tables, refit): DrawnFrom<'_>, st: &LobeState) -> Draw
 fn slice_plot(ui: &mut egui::Ui, d: &Drawn, height: f32) {
     let (lobe, v, alpha, ltc, other) = (d.lobe, d.v, d.alpha, &d.ltc, d.other.as_ref());
     let samples = 361;
+    // The plane through the normal and the view (an anisotropic view has an azimuth).
+    let (sin_phi, cos_phi) = v.y.atan2(v.x).sin_cos();
     let points = |which: &Ltc, exact: bool| -> Vec<[f64; 2]> {
         (0..samples)
             .map(|k| {
                 let deg = -90.0 + 180.0 * k as f64 / (samples - 1) as f64;
                 let t = deg.to_radians();
-                let l = DVec3::new(t.sin(), 0.0, t.cos());
+                let l = DVec3::new(t.sin() * cos_phi, t.sin() * sin_phi, t.cos());
                 let (e, a) = values(lobe, v, alpha, which, l);
                 [deg, if exact { e } else { a }]
             })

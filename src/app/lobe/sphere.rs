@@ -6,6 +6,7 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use crate::app::ui::display::rgb;
+use crate::brdf::Alpha;
 use crate::colormap::ColourScale;
 use crate::ltc::lobe::Lobe;
 use crate::ltc::{Clipping, Ltc, Normalization};
@@ -16,8 +17,8 @@ const RINGS: usize = 64;
 const SEGMENTS: usize = 128;
 
 /// `f cos` of the lobe (F = 1, c = 1) and `n D` of the LTC toward `l`.
-pub fn values(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, l: DVec3) -> (f64, f64) {
-    let exact = lobe.eval(v, l, alpha).value;
+pub fn values(lobe: Lobe, v: DVec3, alpha: Alpha<f64>, ltc: &Ltc, l: DVec3) -> (f64, f64) {
+    let exact = lobe.value_aniso(v, l, alpha);
     let approx = ltc.magnitude() * ltc.ltc_eval(l, Clipping::CASE2, Normalization::Corrected);
     (exact, approx)
 }
@@ -27,7 +28,7 @@ pub fn values(lobe: Lobe, v: DVec3, alpha: f64, ltc: &Ltc, l: DVec3) -> (f64, f6
 pub struct Drawn {
     pub lobe: Lobe,
     pub v: DVec3,
-    pub alpha: f64,
+    pub alpha: Alpha<f64>,
     pub ltc: Ltc,
     pub other: Option<Ltc>,
     pub light: Option<DVec3>,
@@ -132,7 +133,7 @@ struct Surface {
 
 impl Surface {
     fn new(d: &Drawn) -> Self {
-        let exact_at = |l: DVec3| d.lobe.eval(d.v, l, d.alpha).value;
+        let exact_at = |l: DVec3| d.lobe.value_aniso(d.v, l, d.alpha);
         // The tessellation's pole is the exact lobe's peak, its rings packed toward it, so that
         // a sharp lobe (α ≈ 0.02, a degree wide) is made of many triangles, not one sliver.
         let dirs = pole_grid(peak_direction(d.lobe, d.v, exact_at));

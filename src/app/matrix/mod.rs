@@ -3,13 +3,16 @@
 //! chosen cell (click a cell to choose it); and "refit this cell", which runs the fitter live
 //! and plots the Nelder–Mead objective iteration by iteration.
 
+pub mod aniso;
+mod entries;
 pub mod refit;
 
 use egui::{Color32, Pos2, Vec2};
-use glam::DMat3;
 
 use crate::app::lab::refit_result::{Objective, RefitResult};
 use crate::app::lab::{Lab, LastRefit, LobeView};
+use crate::app::matrix::aniso::AnisoSlice;
+use crate::app::matrix::entries::{entry, matrix};
 use crate::app::matrix::refit::Refit;
 use crate::app::panel::Panel;
 use crate::app::ui::axes::log_axis;
@@ -33,6 +36,8 @@ pub struct MatrixPanel {
     hovered: Option<Reading>,
     /// A refit under way (its result goes to the lab).
     refit: Option<Refit>,
+    /// The 4D tables' slice, shown while the material is anisotropic.
+    aniso: AnisoSlice,
 }
 
 impl Default for MatrixPanel {
@@ -42,6 +47,7 @@ impl Default for MatrixPanel {
             focus: Channel::err(Lobe::Specular),
             hovered: None,
             refit: None,
+            aniso: AnisoSlice::default(),
         }
     }
 }
@@ -90,6 +96,11 @@ impl Panel for MatrixPanel {
             .show(ui, |ui| {
                 // Long lines wrap at the panel's edge rather than run past it.
                 ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Wrap);
+                if lab.material().is_anisotropic() {
+                    self.aniso.show(ui, lab);
+                    ui.separator();
+                    ui.small("The 2D table below shades the diffuse lobe (at Burley's α = (α_x + α_y)/2) and isotropic materials.");
+                }
                 cell_readout(ui, lab);
                 self.refit_controls(ui, lab);
                 ui.separator();
@@ -425,35 +436,6 @@ fn channel_scale(lut: &Lut, c: Channel) -> ColourScale {
     } else {
         ColourScale::linear(lo, hi, name)
     }
-}
-
-/// A matrix entry in a fixed width: fixed-point where four decimals read it, else scientific
-/// (a -9995.0363 beside a 0.0000 ran together).
-fn entry(x: f64) -> String {
-    if x != 0.0 && !(1e-3..1e4).contains(&x.abs()) {
-        format!("{x:>11.3e}")
-    } else {
-        format!("{x:>11.4}")
-    }
-}
-
-fn matrix(ui: &mut egui::Ui, title: &str, m: DMat3, hover: &str) {
-    ui.vertical(|ui| {
-        // A number is never broken across lines (the panel wraps its long lines).
-        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-        ui.small(title).on_hover_text(hover);
-        egui::Grid::new(title)
-            .striped(true)
-            .spacing([8.0, 2.0])
-            .show(ui, |ui| {
-                for row in mat3_rows(m) {
-                    for x in row {
-                        ui.monospace(entry(x));
-                    }
-                    ui.end_row();
-                }
-            });
-    });
 }
 
 /// A refit's stored and refitted matrices, scale and pointwise error.

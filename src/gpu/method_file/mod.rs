@@ -28,7 +28,7 @@ pub const ENTRIES: [(&str, &str, &str); 4] = [
 ];
 
 /// METHOD_FILE_STEPS of method_file.wgsl: the steps a file's loops may take for one light
-/// (tests/shaders.rs checks the two agree).
+/// (tests/shaders/main.rs checks the two agree).
 pub const STEPS: u32 = 16384;
 
 /// The constants of method_file.wgsl that say which shapes the file shades.

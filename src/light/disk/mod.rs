@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 
 use glam::{DMat3, DVec3};
 
-use crate::brdf::{self, Lobes};
+use crate::brdf::{self, Alpha, Lobes};
 use crate::light::point_lobes;
 use crate::light::sphere::disk::{cone_image, cone_integral, hemisphere};
 use crate::ltc::{Clipping, Ltc, LtcPair, Normalization};
@@ -93,7 +93,7 @@ impl DiskMethod {
     }
 }
 
-/// Nodes per dimension and piece of `DiskMethod::Exact` in `disk_light`: tests/disk_light.rs
+/// Nodes per dimension and piece of `DiskMethod::Exact` in `disk_light`: tests/lights/disk_light.rs
 /// holds the rule to its bound against Lambert's edge formula over a fine polygon.
 pub const EXACT_NODES: usize = 64;
 
@@ -112,7 +112,8 @@ pub const DISK_POINT_LIMIT: f64 = 1e-7;
 pub struct DiskShading<'a> {
     pub v: DVec3,
     pub disk: Disk,
-    pub alpha: f64,
+    /// The material's roughness along the shading frame's x and y.
+    pub alpha: Alpha<f64>,
     pub f0: f64,
     /// The LTC lobes at this pixel's (θo, α).
     pub ltc: &'a LtcPair,
@@ -163,14 +164,14 @@ pub fn disk_point(method: DiskMethod, s: &DiskShading<'_>) -> Lobes<f64> {
 
 /// The exact radiance of a disk of unit radiance toward `v`, per lobe (base colour 1):
 /// `∫ f(v, ω) cos ω dω` over its directions above the surface, `n × n` nodes a piece.
-pub fn disk_exact(v: DVec3, disk: &Disk, alpha: f64, f0: f64, n: usize) -> Lobes<f64> {
+pub fn disk_exact(v: DVec3, disk: &Disk, alpha: Alpha<f64>, f0: f64, n: usize) -> Lobes<f64> {
     if !disk.faces_origin() {
         return Lobes::default();
     }
     // The specular lobe peaks about the mirror direction: the rule centres its pieces there.
     let mirror = DVec3::new(-v.x, -v.y, v.z);
     let [specular, diffuse] = disk_integral_about(disk, n, Some(mirror), |l| {
-        let lobes = brdf::brdf_cos(v.to_array(), l.to_array(), alpha, f0);
+        let lobes = brdf::brdf_cos_aniso(v.to_array(), l.to_array(), alpha, f0);
         [lobes.specular, lobes.diffuse]
     });
     Lobes { specular, diffuse }

@@ -9,7 +9,7 @@ pub mod quadrature;
 
 use glam::DVec3;
 
-use crate::brdf::{self, Lobes};
+use crate::brdf::{self, Alpha, Lobes};
 use crate::light::point_lobes;
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
@@ -108,7 +108,7 @@ impl RectMethod {
 }
 
 /// Gauss–Legendre nodes per dimension and triangle of `RectMethod::Exact` in `rect_light`:
-/// tests/rect_light.rs holds the rule to its bound against Lambert's closed form.
+/// tests/lights/rect_light.rs holds the rule to its bound against Lambert's closed form.
 pub const EXACT_NODES: usize = 64;
 
 /// Nodes per dimension and triangle of the renders' exact method, on the CPU and in
@@ -120,7 +120,7 @@ pub const GPU_EXACT_NODES: usize = 8;
 /// Below this `angular_size` every method shades a rect as its oriented point light. The
 /// edge formula sums terms of size `s/d` to a value of size `(s/d)²`: its f32 rounding is
 /// some `2⁻²⁴ d/s` of the value, 6e-5 here, while the point light differs from the rect by
-/// `O((s/d)²)` of the lobe's curvature, 1e-6 here (tests/rect_light.rs measures both).
+/// `O((s/d)²)` of the lobe's curvature, 1e-6 here (tests/lights/rect_light.rs measures both).
 pub const RECT_POINT_LIMIT: f64 = 1e-3;
 
 /// One rect light of unit radiance at one shading point: everything the methods read.
@@ -128,7 +128,8 @@ pub const RECT_POINT_LIMIT: f64 = 1e-3;
 pub struct RectShading<'a> {
     pub v: DVec3,
     pub rect: Rect,
-    pub alpha: f64,
+    /// The material's roughness along the shading frame's x and y.
+    pub alpha: Alpha<f64>,
     pub f0: f64,
     /// The LTC lobes at this pixel's (θo, α).
     pub ltc: &'a LtcPair,
@@ -196,7 +197,7 @@ pub fn rect_point(method: RectMethod, s: &RectShading<'_>) -> Lobes<f64> {
 
 /// The exact radiance of a rect of unit radiance toward `v`, per lobe (base colour 1):
 /// `∫ f(v, ω) cos ω dω` over its directions above the surface, `n × n` nodes a triangle.
-pub fn rect_exact(v: DVec3, rect: &Rect, alpha: f64, f0: f64, n: usize) -> Lobes<f64> {
+pub fn rect_exact(v: DVec3, rect: &Rect, alpha: Alpha<f64>, f0: f64, n: usize) -> Lobes<f64> {
     if !rect.faces_origin() {
         return Lobes::default();
     }
@@ -204,7 +205,7 @@ pub fn rect_exact(v: DVec3, rect: &Rect, alpha: f64, f0: f64, n: usize) -> Lobes
     // The specular lobe peaks about the mirror direction: the rule crowds its nodes there.
     let mirror = DVec3::new(-v.x, -v.y, v.z);
     let [specular, diffuse] = polygon_integral_about(&above, n, Some(mirror), |l| {
-        let lobes = brdf::brdf_cos(v.to_array(), l.to_array(), alpha, f0);
+        let lobes = brdf::brdf_cos_aniso(v.to_array(), l.to_array(), alpha, f0);
         [lobes.specular, lobes.diffuse]
     });
     Lobes { specular, diffuse }

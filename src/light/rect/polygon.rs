@@ -84,7 +84,7 @@ pub fn polygon_form_factor(poly: &[DVec3]) -> f64 {
 /// cosine's from the mapped ones. The clipped polygon's boundary is those parts and, from
 /// each point where the polygon leaves the region above both horizons to the next where it
 /// comes back, a path along the horizon it left by: straight where it comes back by the same
-/// one, else through the line where the two meet. tests/rect_light.rs holds it to
+/// one, else through the line where the two meet. tests/lights/rect_light.rs holds it to
 /// Sutherland–Hodgman's clipped polygon (`clip_horizon`).
 pub fn ltc_polygon(ltc: &Ltc, poly: &[DVec3], clip: Clipping, normalization: Normalization) -> f64 {
     let n = poly.len();

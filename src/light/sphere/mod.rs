@@ -10,7 +10,7 @@ pub mod quadrature;
 
 use glam::DVec3;
 
-use crate::brdf::{self, Lobes, MIN_LIGHT_DISTANCE};
+use crate::brdf::{self, Alpha, Lobes, MIN_LIGHT_DISTANCE};
 use crate::light::sphere::cap::Cap;
 use crate::light::sphere::quadrature::cap_integral_about;
 use crate::ltc::{Clipping, LtcPair, Normalization};
@@ -67,7 +67,8 @@ pub struct SphereShading<'a> {
     /// The window's range (infinite: no window), applied at the centre's distance.
     pub range: f64,
     pub radius: f64,
-    pub alpha: f64,
+    /// The material's roughness along the shading frame's x and y.
+    pub alpha: Alpha<f64>,
     pub f0: f64,
     /// The LTC lobes at this pixel's (θo, α), for the LTC methods.
     pub ltc: &'a LtcPair,
@@ -77,12 +78,12 @@ pub struct SphereShading<'a> {
 
 /// Gauss–Legendre nodes per dimension of the exact method: 64 × 64 per piece of the cap keeps
 /// the rule's error under 1e-6 of the result for α ≥ 0.05 and caps up to 30°
-/// (tests/sphere_light.rs compares it with 128 nodes).
+/// (tests/lights/sphere_light.rs compares it with 128 nodes).
 pub const EXACT_NODES: usize = 64;
 
 /// Gauss–Legendre nodes per dimension and piece of the GPU's exact method
 /// (`shaders/sphere_light.wgsl` `sphere_exact`, the same rule): within 2% of `EXACT_NODES`'s
-/// specular lobe for α ≥ 0.2 and 1e-3 of its diffuse lobe (tests/sphere_light.rs), at up to
+/// specular lobe for α ≥ 0.2 and 1e-3 of its diffuse lobe (tests/lights/sphere_light.rs), at up to
 /// 512 BRDF evaluations per light where 64 nodes would take 32 768.
 pub const GPU_EXACT_NODES: usize = 8;
 
@@ -96,7 +97,14 @@ impl<'a> SphereShading<'a> {
     /// A sphere of unit intensity at unit distance toward unit `l`, with angular radius
     /// `sigma_deg`, no window and eq. 30's corrected rules: the case `eval` and
     /// `sphere_error` measure, whose σ = 0 is a unit-irradiance point light.
-    pub fn unit(v: DVec3, l: DVec3, sigma_deg: f64, alpha: f64, f0: f64, ltc: &'a LtcPair) -> Self {
+    pub fn unit(
+        v: DVec3,
+        l: DVec3,
+        sigma_deg: f64,
+        alpha: Alpha<f64>,
+        f0: f64,
+        ltc: &'a LtcPair,
+    ) -> Self {
         Self {
             v,
             u: l,
@@ -140,7 +148,7 @@ pub fn sphere_light_with(
 /// exact point light, the LTC ones the paper's.
 pub fn sphere_point(method: SphereMethod, s: &SphereShading<'_>) -> Lobes<f64> {
     match method {
-        SphereMethod::Exact | SphereMethod::RepresentativePoint => brdf::point_light_exact(
+        SphereMethod::Exact | SphereMethod::RepresentativePoint => brdf::point_light_exact_aniso(
             s.v.to_array(),
             s.u.to_array(),
             s.intensity,
@@ -164,7 +172,7 @@ pub fn sphere_exact(s: &SphereShading<'_>, cap: &Cap, nodes: usize) -> Lobes<f64
     // The specular lobe peaks about the mirror direction: the rule crowds its nodes there.
     let focus = Some(mirror(s.v));
     let [specular, diffuse] = cap_integral_about(cap.axis, cap.depth(), nodes, focus, |l| {
-        let lobes = brdf::brdf_cos(s.v.to_array(), l.to_array(), s.alpha, s.f0);
+        let lobes = brdf::brdf_cos_aniso(s.v.to_array(), l.to_array(), s.alpha, s.f0);
         [lobes.specular, lobes.diffuse]
     });
     Lobes {
@@ -221,17 +229,27 @@ pub fn sphere_representative_point(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f6
         s.u + centre_to_ray
     };
     let l = closest.try_normalize().unwrap_or(reflected);
-    let alpha_wide = (s.alpha + 0.5 * (s.radius / d.max(MIN_LIGHT_DISTANCE)).min(1.0)).min(1.0);
-    let energy = (s.alpha / alpha_wide).powi(2);
+    let energy = widening_energy(s.alpha, (s.radius / d.max(MIN_LIGHT_DISTANCE)).min(1.0));
     let d2 = d.max(s.radius).powi(2);
-    let specular = brdf::brdf_cos(s.v.to_array(), l.to_array(), s.alpha, s.f0).specular;
-    let diffuse = fd_toward(s.v, cap.axis, s.alpha)
+    let specular = brdf::brdf_cos_aniso(s.v.to_array(), l.to_array(), s.alpha, s.f0).specular;
+    let diffuse = fd_toward(s.v, cap.axis, s.alpha.diffuse())
         * sphere_radiance(s.intensity, s.radius)
         * cap.illuminance();
     Lobes {
         specular: w * s.intensity / d2 * energy * specular,
         diffuse: w * diffuse,
     }
+}
+
+/// Karis's energy normalization for a lobe widened by a light's angular size `spread`
+/// (`saturate(r/d)`): `(α/α')²`, `α' = saturate(α + spread/2)`. D's peak goes as `1/(α_x α_y)`,
+/// so an anisotropic lobe widened along both axes keeps `(α_x/α_x')(α_y/α_y')`.
+pub fn widening_energy(alpha: Alpha<f64>, spread: f64) -> f64 {
+    let wide = |a: f64| (a + 0.5 * spread).min(1.0);
+    if alpha.is_isotropic() {
+        return (alpha.x / wide(alpha.x)).powi(2);
+    }
+    (alpha.x / wide(alpha.x)) * (alpha.y / wide(alpha.y))
 }
 
 /// The mirror direction of `v` about the normal `+z`: where a glossy lobe peaks.

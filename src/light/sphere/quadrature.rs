@@ -48,7 +48,7 @@ fn legendre(n: usize, x: f64) -> (f64, f64) {
 /// computed from a rounded `cos σ` loses every digit for a small cap) that lie above the surface (`ω.z > 0`), for `K` integrands at
 /// once, with `n` nodes per dimension and per piece. The rings' `μ` range is split where
 /// the horizon starts to cut them, so each piece's integrand is smooth and the rule's error
-/// falls as fast as the integrand allows (tests/sphere_light.rs measures it, n against 2n).
+/// falls as fast as the integrand allows (tests/lights/sphere_light.rs measures it, n against 2n).
 pub fn cap_integral<const K: usize>(
     axis: DVec3,
     depth: f64,

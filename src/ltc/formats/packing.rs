@@ -81,6 +81,7 @@ pub fn unpack(p: &Packed, alpha_min: f64, diffuse: &Lut) -> Lut {
     let n = p.size;
     let mut lut = Lut {
         nl_terms: Default::default(),
+        aniso: None,
         size: n,
         alpha_min,
         cells: vec![LutCell([0.0; crate::ltc::lut::Channel::COUNT]); n * n],

@@ -133,6 +133,7 @@ impl Lut {
         }
         let lut = Lut {
             nl_terms: Default::default(),
+            aniso: None,
             size: w,
             alpha_min,
             cells,

@@ -6,9 +6,10 @@ mod axes;
 mod channel;
 mod exr;
 mod sample;
+pub mod taps;
 mod validate;
 
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 pub use axes::{ALPHA_MIN, THETA_MAX, axes, cell_alpha, cell_theta};
 pub use channel::Channel;
@@ -18,10 +19,15 @@ pub use exr::{MAX_SIZE, check_size};
 /// each): the shipped 64² tables are ~100 kB, a 2048² table of 14 f32 channels uncompressed
 /// 235 MB. A `MAX_SIZE` table beyond that must come compressed.
 pub const MAX_FILE_BYTES: u64 = 256 << 20;
-pub use sample::{LutSample, bilinear_taps};
+pub use sample::LutSample;
+pub use taps::bilinear_taps;
 pub use validate::ChannelLimits;
 
-use crate::ltc::{Ltc, mat3_rows};
+use glam::{DMat3, DVec3};
+
+use crate::brdf::Alpha;
+use crate::ltc::aniso::AnisoLut;
+use crate::ltc::{Ltc, LtcPair, mat3_rows};
 use crate::named::named_enum;
 
 /// The stored form of docs/design.md §2: `M⁻¹` divided by its middle element, as
@@ -148,16 +154,48 @@ pub struct Lut {
     /// The `nl-fit` correction of each cell (`crate::ltc::nl_fit::nl_terms`), fitted on
     /// first use; the cells must not change after it.
     pub nl_terms: OnceLock<Vec<[f64; 4]>>,
+    /// The 4D table that anisotropic materials' specular lobes read (docs/design.md §2.9):
+    /// the shipped one (`AnisoLut::shipped`) unless another is set (`with_aniso`).
+    pub aniso: Option<Arc<AnisoLut>>,
 }
 
 impl PartialEq for Lut {
-    /// The same cells: whether the correction was fitted yet does not matter.
+    /// The same cells and 4D table: whether the correction was fitted yet does not matter.
     fn eq(&self, other: &Self) -> bool {
-        (self.size, self.alpha_min) == (other.size, other.alpha_min) && self.cells == other.cells
+        (self.size, self.alpha_min) == (other.size, other.alpha_min)
+            && self.cells == other.cells
+            && self.aniso() == other.aniso()
     }
 }
 
 impl Lut {
+    /// The 4D table anisotropic materials read.
+    pub fn aniso(&self) -> &AnisoLut {
+        self.aniso.as_deref().unwrap_or_else(|| AnisoLut::shipped())
+    }
+
+    /// The same table with `aniso` as its 4D table.
+    pub fn with_aniso(self, aniso: Arc<AnisoLut>) -> Self {
+        Self {
+            aniso: Some(aniso),
+            ..self
+        }
+    }
+
+    /// Both lobes of an anisotropic material of roughness `alpha` seen from unit `v` in its
+    /// tangent frame (docs/design.md §1.13): the specular lobe from the 4D table; the diffuse
+    /// lobe, isotropic, from the 2D table at Burley's α, turned from the view's frame into the
+    /// tangent's.
+    pub fn aniso_pair(&self, alpha: Alpha<f64>, v: DVec3) -> LtcPair {
+        let spec = self.aniso().ltc(alpha, v);
+        let diff = self.sample(alpha.diffuse(), v.z).ltc_pair().diff;
+        // A tangent-frame direction has view-frame coordinates turned by −φ (φ the view's
+        // azimuth about the normal), and M⁻¹ acts on those.
+        let view_from_tangent = DMat3::from_rotation_z(-v.y.atan2(v.x));
+        let diff = Ltc::from_cos_from_brdf(diff.cos_from_brdf * view_from_tangent, diff.norm, 0.0);
+        LtcPair { spec, diff }
+    }
+
     /// The table embedded in the binary (parsed once).
     pub fn embedded() -> &'static Lut {
         Lut::shipped(Table::Classic)

@@ -3,9 +3,7 @@
 //! presets finite and non-negative by every method without black spots, and ltc_code's leak
 //! of a rect behind the surface shown only with case 1 off.
 
-mod common;
-
-use common::black_spots;
+use crate::common::black_spots;
 use ltc_lab::cpu::render;
 use ltc_lab::light::Shape;
 use ltc_lab::light::rect::RectMethod;

@@ -1,7 +1,11 @@
 //! The exact BRDF of docs/design.md §1: GGX specular with height-correlated Smith masking and
 //! Burley's diffuse, one small function per term, generic over `f32` (rendering) and `f64`
 //! (fitting, integration). Everything is written in the shading frame: `n = +z`, and the
-//! dot products with `n` are the `z` components.
+//! dot products with `n` are the `z` components. Anisotropic GGX is `aniso`.
+
+pub mod aniso;
+
+pub use aniso::{Alpha, brdf_cos_aniso};
 
 use num_traits::{Float, FloatConst};
 
@@ -191,6 +195,19 @@ pub fn point_light_exact<T: Real>(
     alpha: T,
     f0: T,
 ) -> Lobes<T> {
+    point_light_exact_aniso(v, u, intensity, range, Alpha::isotropic(alpha), f0)
+}
+
+/// `point_light_exact` for an anisotropic roughness (the shading frame's x the tangent):
+/// the same arithmetic, `brdf_cos_aniso` for the lobes.
+pub fn point_light_exact_aniso<T: Real>(
+    v: V3<T>,
+    u: V3<T>,
+    intensity: T,
+    range: T,
+    alpha: Alpha<T>,
+    f0: T,
+) -> Lobes<T> {
     let d = dot(u, u).sqrt();
     let e = irradiance_scale(intensity, d, range);
     if e <= T::zero() {
@@ -200,7 +217,7 @@ pub fn point_light_exact<T: Real>(
         };
     }
     let l = [u[0] / d, u[1] / d, u[2] / d];
-    let lobes = brdf_cos(v, l, alpha, f0);
+    let lobes = brdf_cos_aniso(v, l, alpha, f0);
     Lobes {
         specular: e * lobes.specular,
         diffuse: e * lobes.diffuse,

@@ -3,9 +3,7 @@
 //! negative, no black spots), the leak of a disk behind the surface with case 1 off, and a
 //! small disk rendering as its oriented point light.
 
-mod common;
-
-use common::black_spots;
+use crate::common::black_spots;
 use ltc_lab::cpu::render;
 use ltc_lab::light::Shape;
 use ltc_lab::light::disk::DiskMethod;

@@ -3,7 +3,7 @@
 //! the exact integral's point limit, and a rect that faces away.
 
 use glam::DVec3;
-use ltc_lab::brdf::{self, brdf_cos};
+use ltc_lab::brdf::{self, Alpha, brdf_cos};
 use ltc_lab::light::rect::{
     Rect, clip_horizon, ltc_polygon, polygon_form_factor, polygon_integral, rect_exact,
 };
@@ -100,7 +100,7 @@ fn a_tiny_rect_is_its_oriented_point_light() {
     let v = DVec3::from(brdf::view_from_theta(30.0 * DEG));
     for centre in [DVec3::new(0.3, 0.2, 0.9), DVec3::new(-0.6, 0.1, 0.5)] {
         let rect = facing(centre, 5e-4, 20.0);
-        let got = rect_exact(v, &rect, 0.4, 0.04, 8);
+        let got = rect_exact(v, &rect, Alpha::isotropic(0.4), 0.04, 8);
         let d = centre.length();
         let cos_e = rect.normal().normalize().dot(-centre / d);
         let scale = rect.area() * cos_e / (d * d);
@@ -126,8 +126,11 @@ fn a_rect_facing_away_lights_nothing() {
         ..rect
     };
     assert!(!away.faces_origin());
-    assert_eq!(rect_exact(v, &away, 0.3, 0.04, 16), brdf::Lobes::default());
-    assert!(rect_exact(v, &rect, 0.3, 0.04, 16).diffuse > 0.0);
+    assert_eq!(
+        rect_exact(v, &away, Alpha::isotropic(0.3), 0.04, 16),
+        brdf::Lobes::default()
+    );
+    assert!(rect_exact(v, &rect, Alpha::isotropic(0.3), 0.04, 16).diffuse > 0.0);
 }
 
 /// Where the rect's image under `M⁻¹` is wholly above the cosine's horizon, the proxy's cap is
@@ -179,8 +182,8 @@ fn the_exact_rule_converges_on_sharp_lobes() {
         let mirror = DVec3::new(-v.x, -v.y, v.z);
         for offset in [DVec3::ZERO, DVec3::new(0.05, 0.02, 0.0)] {
             let rect = facing(mirror + offset, 0.4, 15.0);
-            let coarse = rect_exact(v, &rect, alpha, 0.04, 64);
-            let fine = rect_exact(v, &rect, alpha, 0.04, 256);
+            let coarse = rect_exact(v, &rect, Alpha::isotropic(alpha), 0.04, 64);
+            let fine = rect_exact(v, &rect, Alpha::isotropic(alpha), 0.04, 256);
             for (x, y) in [
                 (coarse.specular, fine.specular),
                 (coarse.diffuse, fine.diffuse),

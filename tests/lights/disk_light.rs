@@ -6,7 +6,7 @@
 use std::f64::consts::PI;
 
 use glam::DVec3;
-use ltc_lab::brdf::{self, brdf_cos};
+use ltc_lab::brdf::{self, Alpha, brdf_cos};
 use ltc_lab::light::disk::{
     Disk, DiskMethod, DiskShading, GPU_EXACT_NODES, disk_exact, disk_integral_about, disk_light,
     disk_light_with, ltc_disk_light,
@@ -104,7 +104,7 @@ fn the_exact_method_is_the_brdf_over_the_disk() {
     for (theta_o, alpha) in [(0.0, 0.3), (40.0, 0.5), (70.0, 0.2)] {
         let v = DVec3::from(brdf::view_from_theta(theta_o * DEG));
         for disk in disks() {
-            let got = disk_exact(v, &disk, alpha, 0.04, 64);
+            let got = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, 64);
             let polygon = clip_horizon(&inscribed(&disk, 512));
             let want = polygon_integral(&polygon, 64, |l| {
                 let f = brdf_cos(v.to_array(), l.to_array(), alpha, 0.04);
@@ -161,7 +161,7 @@ fn a_tiny_disk_is_its_oriented_point_light() {
     let v = DVec3::from(brdf::view_from_theta(30.0 * DEG));
     for centre in [DVec3::new(0.3, 0.2, 0.9), DVec3::new(-0.6, 0.1, 0.5)] {
         let disk = facing(centre, 5e-4 * centre.length(), 20.0);
-        let got = disk_exact(v, &disk, 0.4, 0.04, 8);
+        let got = disk_exact(v, &disk, Alpha::isotropic(0.4), 0.04, 8);
         let d = centre.length();
         let scale = disk.area() * disk.normal.dot(-centre / d) / (d * d);
         let point = brdf_cos(v.to_array(), (centre / d).to_array(), 0.4, 0.04);
@@ -190,7 +190,7 @@ fn a_disk_facing_away_lights_nothing() {
         let s = |disk| DiskShading {
             v,
             disk,
-            alpha: 0.3,
+            alpha: Alpha::isotropic(0.3),
             f0: 0.04,
             ltc: &pair,
             clip: Clipping::BOTH,
@@ -213,8 +213,8 @@ fn the_exact_rule_converges_on_sharp_lobes() {
     let mirror = DVec3::new(-v.x, -v.y, v.z);
     let disk = facing(mirror * 1.5 + DVec3::new(0.05, 0.02, 0.0), 0.5, 15.0);
     for alpha in [0.002, 0.02, 0.2] {
-        let coarse = disk_exact(v, &disk, alpha, 0.04, 64);
-        let fine = disk_exact(v, &disk, alpha, 0.04, 256);
+        let coarse = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, 64);
+        let fine = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, 256);
         assert!(
             (coarse.specular - fine.specular).abs() <= 1e-3 * fine.specular,
             "α {alpha}: {} vs {}",
@@ -243,8 +243,8 @@ fn the_renders_rule_at(v: DVec3) {
             .into_iter()
             .filter(|d| d.radius <= d.centre.length())
         {
-            let coarse = disk_exact(v, &disk, alpha, 0.04, GPU_EXACT_NODES);
-            let fine = disk_exact(v, &disk, alpha, 0.04, 64);
+            let coarse = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, GPU_EXACT_NODES);
+            let fine = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, 64);
             assert!(
                 (coarse.specular - fine.specular).abs() <= 0.02 * fine.specular,
                 "α {alpha} {disk:?}: {} vs {}",
@@ -302,7 +302,7 @@ fn every_method_is_finite_and_non_negative_at_the_limits() {
             let s = DiskShading {
                 v,
                 disk,
-                alpha,
+                alpha: Alpha::isotropic(alpha),
                 f0: 0.04,
                 ltc: &pair,
                 clip,

@@ -2,9 +2,7 @@
 //! nothing, a shrinking sphere becomes its point light in every method, bad radii are refused
 //! by name, and the failure presets give finite, non-negative images without black spots.
 
-mod common;
-
-use common::black_spots;
+use crate::common::black_spots;
 use ltc_lab::cpu::render;
 use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::lut::Lut;

@@ -4,7 +4,17 @@
 //! for the shaders are the WGSL's.
 
 use ltc_lab::gpu::scene::{GpuLight, Params};
-use ltc_lab::gpu::{bin_module_source, brdf, ltc, plane_module_source, sphere_light};
+use ltc_lab::gpu::{
+    bin_module_source, brdf, brdf_aniso, ltc, ltc_aniso, plane_module_source, sphere_light,
+};
+
+mod aniso;
+
+/// brdf.wgsl and brdf_aniso.wgsl, which every later file builds on (the exact lobes of either
+/// material: `exact_lobes`).
+fn brdf_sources() -> String {
+    [brdf::SOURCE, brdf_aniso::SOURCE].join("\n")
+}
 
 fn validate(name: &str, src: &str) -> naga::Module {
     let module = naga::front::wgsl::parse_str(src)
@@ -21,9 +31,10 @@ fn validate(name: &str, src: &str) -> naga::Module {
 #[test]
 fn every_wgsl_file_validates() {
     validate("brdf.wgsl", brdf::SOURCE);
+    validate("brdf.wgsl + brdf_aniso.wgsl", &brdf_sources());
     validate(
-        "brdf.wgsl + ltc.wgsl",
-        &[brdf::SOURCE, ltc::SOURCE].join("\n"),
+        "brdf.wgsl + brdf_aniso.wgsl + ltc.wgsl",
+        &[&brdf_sources(), ltc::SOURCE].join("\n"),
     );
     for f16 in [false, true] {
         let module = validate(
@@ -38,8 +49,8 @@ fn every_wgsl_file_validates() {
         }
     }
     validate(
-        "brdf.wgsl + ltc.wgsl + sphere_light.wgsl",
-        &[brdf::SOURCE, ltc::SOURCE, sphere_light::SOURCE].join("\n"),
+        "brdf.wgsl + brdf_aniso.wgsl + ltc.wgsl + sphere_light.wgsl",
+        &[&brdf_sources(), ltc::SOURCE, sphere_light::SOURCE].join("\n"),
     );
     let module = validate("scene.wgsl + bin.wgsl", &bin_module_source());
     for entry in ["bin_count", "bin_scan", "bin_write"] {
@@ -111,7 +122,15 @@ fn pod_types_match_the_wgsl_structs() {
             lut_size_b,
             lut_base_b,
             lut_base,
-            bin_row
+            bin_row,
+            alpha_y,
+            tangent_x,
+            tangent_y,
+            aniso_pad,
+            aniso_a,
+            aniso_dims_a,
+            aniso_b,
+            aniso_dims_b
         ),
         wgsl_layout(&module, "Params")
     );
@@ -134,7 +153,7 @@ fn function_names(module: &naga::Module) -> Vec<&str> {
 fn mirrored_functions_have_the_same_names() {
     let module = validate("plane", &plane_module_source(false));
     let wgsl = function_names(&module);
-    // Each exists in Rust under this name (src/brdf.rs, src/ltc/mod.rs, src/ltc/lut/); the
+    // Each exists in Rust under this name (src/brdf/mod.rs, src/ltc/mod.rs, src/ltc/lut/); the
     // `use` below fails to compile if one is renamed.
     #[allow(unused_imports)]
     use ltc_lab::brdf::{
@@ -182,7 +201,7 @@ fn mirrored_functions_have_the_same_names() {
 /// The sphere lights' functions carry their Rust names (a method `Cap::f` as `cap_f`).
 #[test]
 fn sphere_light_functions_have_the_rust_names() {
-    let source = [brdf::SOURCE, ltc::SOURCE, sphere_light::SOURCE].join("\n");
+    let source = [&brdf_sources(), ltc::SOURCE, sphere_light::SOURCE].join("\n");
     let module = validate("sphere_light", &source);
     let wgsl = function_names(&module);
     // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
@@ -234,7 +253,7 @@ fn sphere_light_functions_have_the_rust_names() {
 fn disk_light_functions_have_the_rust_names() {
     use ltc_lab::gpu::{disk_light, rect_light};
     let source = [
-        brdf::SOURCE,
+        &brdf_sources(),
         ltc::SOURCE,
         sphere_light::SOURCE,
         rect_light::SOURCE,
@@ -395,6 +414,8 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             (CLIP_HORIZON, "CLIP_HORIZON"),
             (CLIP_TRANSFORMED, "CLIP_TRANSFORMED"),
         ])
+        .chain(ltc_lab::ltc::aniso::AnisoAxes::ALL.map(ltc_aniso::axes_constant))
+        .chain(ltc_lab::ltc::aniso::Stored::ALL.map(ltc_aniso::stored_constant))
         .map(|(value, name)| (name, vec![f64::from(value)]));
     // The positive half of the 8-point rule in increasing order, as sphere_light.wgsl's
     // `gl8` unfolds it.
@@ -406,6 +427,20 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
     codes
         .chain([
             ("LUT_VEC4S_PER_CELL", vec![LUT_VEC4S_PER_CELL as f64]),
+            (
+                "ANISO_VEC4S_PER_NODE",
+                vec![ltc_aniso::ANISO_VEC4S_PER_NODE as f64],
+            ),
+            ("ANISO_ALPHA_MIN", f32s(&[ltc_lab::ltc::lut::ALPHA_MIN])),
+            ("COS_THETA_MAX", f32s(&[ltc_lab::ltc::lut::THETA_MAX.cos()])),
+            (
+                "I3D_THETA_MAX",
+                f32s(&[ltc_lab::ltc::aniso::axes::I3D_THETA_MAX]),
+            ),
+            (
+                "I3D_ALPHA_MIN",
+                f32s(&[ltc_lab::ltc::aniso::axes::I3D_ALPHA_MIN]),
+            ),
             ("TILE_SIDE", vec![TILE_SIDE as f64]),
             ("LOAD", vec![LOAD as f64]),
             ("PI", f32s(&[std::f64::consts::PI])),

@@ -177,7 +177,7 @@ fn shading(
         intensity: 2.0,
         range: 3.0,
         radius,
-        alpha,
+        alpha: brdf::Alpha::isotropic(alpha),
         f0: 0.04,
         ltc: pair,
         clip: Clipping::BOTH,

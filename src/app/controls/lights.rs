@@ -1,0 +1,308 @@
+//! The side panel's lights: how many, where, how bright, each sized shape's methods and
+//! fields, and the presets.
+
+use glam::DVec3;
+
+use crate::app::lab::parts::{RADIUS_RANGE, RANGE_RANGE};
+use crate::app::lab::{DiskForms, Forms, Lab, Overrides, RectForms, SphereForms};
+use crate::app::ui::widgets::explain;
+use crate::light::Shape;
+use crate::light::disk::DiskMethod;
+use crate::light::rect::RectMethod;
+use crate::light::sphere::SphereMethod;
+use crate::scene::{DISK_PRESETS, Light, MIN_RADIUS, RECT_PRESETS, SPHERE_PRESETS, preset};
+
+use super::MAX_LIGHT_SLIDER;
+
+pub(super) fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
+    let max = lab.max_lights().min(MAX_LIGHT_SLIDER);
+    ui.strong("Lights");
+    lab.edit(|o: &mut Overrides| {
+        ui.add(
+            egui::Slider::new(&mut o.intensity_scale, 0.01..=100.0)
+                .logarithmic(true)
+                .text("intensity ×"),
+        )
+        .on_hover_text("Multiplies every light's I in E = I/d² · w(d)");
+        explain(ui, "× every light's I (not saved to the scene)");
+        let range = ui
+            .add(egui::Slider::new(&mut o.range, 0.0..=RANGE_RANGE[1]).text("range R"))
+            .on_hover_text("The window w(d) = clamp(1 − (d/R)⁴, 0, 1)²; 0 keeps each light's own range (absent = ∞)");
+        // In steps of the smallest range it shows (0.01): a range between 0 (each light's
+        // own) and that showed as "0.00" beside a black plane.
+        if range.changed() {
+            o.range = (o.range / RANGE_RANGE[0]).round() * RANGE_RANGE[0];
+        }
+        explain(
+            ui,
+            if o.range > 0.0 {
+                "every light fades to 0 at distance R"
+            } else {
+                "0: each light's own range from the scene"
+            },
+        );
+    });
+    if let Some(k) = lab.selection().light {
+        let half_size = lab.stage().plane.half_size;
+        lab.edit_light(k, |l| light_position(ui, k, l, half_size));
+    }
+    let mut count = lab.lights().list.len();
+    ui.horizontal(|ui| {
+        if ui
+            .add(egui::Slider::new(&mut count, 0..=max).logarithmic(true).text("lights"))
+            .on_hover_text(format!("Regenerates the lights with the seeded generator (replaces the current ones): N point lights over the plane, heights 0.05–0.6, range 2, paper-100's intensities (past 100 lights scaled down so that the total power stays paper-100's). At most {max} here: {}", if max < MAX_LIGHT_SLIDER { "this adapter's limit" } else { "the slider's" }))
+            .changed()
+        {
+            lab.set_light_count(count);
+        }
+    });
+    // The slider clamps a typed count without a word: say it where it was typed.
+    if max < MAX_LIGHT_SLIDER && lab.lights().list.len() >= max {
+        ui.small(format!("at most {max} lights: this adapter's limit"));
+    }
+    lab.edit(|f: &mut Forms| {
+        ui.checkbox(&mut f.cull, "cull by range")
+            .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. The image is the same to the bit; with short ranges it is much faster")
+    });
+    egui::CollapsingHeader::new("lights with a size")
+        .id_salt("sized lights")
+        .show(ui, |ui| sized_lights(ui, lab));
+}
+
+/// A shape's methods: all of them, each one's name and its description.
+type Methods<M> = (&'static [M], fn(M) -> &'static str, fn(M) -> &'static str);
+
+/// A side's method for a light shape, picked from `all` (each described on hover).
+fn method_combo<M: Copy + PartialEq>(
+    ui: &mut egui::Ui,
+    (label, hover): (&str, &str),
+    method: &mut M,
+    (all, name, describe): Methods<M>,
+) {
+    egui::ComboBox::from_label(label)
+        .selected_text(name(*method))
+        .show_ui(ui, |ui| {
+            for &m in all {
+                ui.selectable_value(method, m, name(m))
+                    .on_hover_text(describe(m));
+            }
+        })
+        .response
+        .on_hover_text(hover);
+}
+
+/// How each side shades a rect light, and the rects' failure presets (docs/design.md §1.11).
+fn rect_lights(ui: &mut egui::Ui, lab: &mut Lab) {
+    lab.edit(|f: &mut RectForms| {
+        for (label, method, hover) in [
+            (
+                "rect LTC side",
+                &mut f.ltc,
+                "How the LTC side (and table B) shades a rect light",
+            ),
+            (
+                "rect reference side",
+                &mut f.brdf,
+                "How the BRDF side shades a rect light",
+            ),
+        ] {
+            method_combo(
+                ui,
+                (label, hover),
+                method,
+                (&RectMethod::ALL, RectMethod::name, RectMethod::describe),
+            );
+        }
+    });
+    explain(
+        ui,
+        "A rect emits toward half_u × half_v with radiance I/A: far away it is the oriented point light of intensity I cos θe",
+    );
+    preset_buttons(
+        ui,
+        lab,
+        &RECT_PRESETS,
+        "Load this failure case of rect lights",
+    );
+}
+
+/// How each side shades a disk light, and the disks' failure preset (docs/design.md §1.12).
+fn disk_lights(ui: &mut egui::Ui, lab: &mut Lab) {
+    lab.edit(|f: &mut DiskForms| {
+        for (label, method, hover) in [
+            (
+                "disk LTC side",
+                &mut f.ltc,
+                "How the LTC side (and table B) shades a disk light",
+            ),
+            (
+                "disk reference side",
+                &mut f.brdf,
+                "How the BRDF side shades a disk light",
+            ),
+        ] {
+            method_combo(
+                ui,
+                (label, hover),
+                method,
+                (&DiskMethod::ALL, DiskMethod::name, DiskMethod::describe),
+            );
+        }
+    });
+    explain(
+        ui,
+        "A disk emits toward its normal with radiance I/(π r²): far away it is the oriented point light of intensity I cos θe",
+    );
+    preset_buttons(
+        ui,
+        lab,
+        &DISK_PRESETS,
+        "Load this failure case of disk lights",
+    );
+}
+
+/// Every light's radius, how each side shades a light with one, and the failure presets
+/// (docs/design.md §1.10); then the same for rects (§1.11) and disks (§1.12).
+fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
+    lab.edit(|o: &mut Overrides| {
+        ui.add(
+            egui::Slider::new(&mut o.radius, 0.0..=RADIUS_RANGE[1])
+                .logarithmic(true)
+                .smallest_positive(RADIUS_RANGE[0])
+                .text("radius r"),
+        )
+        .on_hover_text("Every light a sphere of radius r, lighting a distant point as its point light does (radiance I/(π r²)); 0 keeps each light's own radius (absent = a point)");
+        explain(
+            ui,
+            if o.radius > 0.0 {
+                "every light a sphere of radius r"
+            } else {
+                "0: each light's own radius from the scene"
+            },
+        );
+    });
+    lab.edit(|f: &mut SphereForms| {
+        for (label, method, hover) in [
+            (
+                "LTC side",
+                &mut f.ltc,
+                "How the LTC side (and table B) shades a light with a size",
+            ),
+            (
+                "reference side",
+                &mut f.brdf,
+                "How the BRDF side shades a light with a size",
+            ),
+        ] {
+            method_combo(
+                ui,
+                (label, hover),
+                method,
+                (
+                    &SphereMethod::ALL,
+                    SphereMethod::name,
+                    SphereMethod::describe,
+                ),
+            );
+        }
+    });
+    preset_buttons(
+        ui,
+        lab,
+        &SPHERE_PRESETS,
+        "Load this failure case of lights with a size",
+    );
+    ui.separator();
+    rect_lights(ui, lab);
+    ui.separator();
+    disk_lights(ui, lab);
+}
+
+/// Light `k`'s x, y (over the plane) and z, typed or dragged.
+fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64) {
+    ui.horizontal(|ui| {
+        ui.label(format!("light {k}"));
+        for (i, (axis, range, hover)) in [
+            ("x", -half_size..=half_size, "Across the plane"),
+            ("y", -half_size..=half_size, "Along the plane, away from the camera"),
+            ("z", -1.0..=3.0, "Height: below 0 the light is under the plane (clipping case 1). Shift-drag its marker for the same"),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let label = ui.label(axis);
+            ui.add(egui::DragValue::new(&mut light.position[i]).speed(0.01).range(range).max_decimals(4))
+                .labelled_by(label.id)
+                .on_hover_text(hover);
+        }
+        if let Shape::Rect { half_u, half_v } = &mut light.shape {
+            rect_size(ui, half_u, half_v);
+            return;
+        }
+        if let Shape::Disk { radius, .. } = &mut light.shape {
+            // A disk keeps its size: its radius from the scene's least, never 0.
+            let label = ui.label("r");
+            ui.add(egui::DragValue::new(radius).speed(0.004).range(RADIUS_RANGE[0]..=RADIUS_RANGE[1]).max_decimals(4))
+                .labelled_by(label.id)
+                .on_hover_text("The disk's radius, 0.0001 to 1 (a value typed beyond is brought into that range): it keeps its normal and its intensity, so a larger disk lights a distant point alike and is dimmer per area");
+            return;
+        }
+        // The shape by its radius: 0 a point, more a sphere.
+        let label = ui.label("r");
+        let mut radius = light.shape.radius();
+        ui.add(egui::DragValue::new(&mut radius).speed(0.001).range(0.0..=RADIUS_RANGE[1]).max_decimals(4))
+            .labelled_by(label.id)
+            .on_hover_text("Radius: 0 is the paper's point light; from 0.0001 a sphere, shaded by each side's method for lights with a size");
+        light.shape = Shape::of_radius(radius);
+    });
+}
+
+/// A rect's width and height (its edges' full lengths), each dragged along its own
+/// direction: the orientation stays.
+fn rect_size(ui: &mut egui::Ui, half_u: &mut DVec3, half_v: &mut DVec3) {
+    for (name, edge, hover) in [
+        (
+            "w",
+            half_u,
+            "Width: the length of the rect's first edge (2 |half_u|)",
+        ),
+        (
+            "h",
+            half_v,
+            "Height: the length of its second edge (2 |half_v|)",
+        ),
+    ] {
+        let label = ui.label(name);
+        let length = edge.length();
+        let mut full = 2.0 * length;
+        // From 2·MIN_RADIUS, so that a square keeps the scene's least area, to 4 (the
+        // default plane's side).
+        ui.add(
+            egui::DragValue::new(&mut full)
+                .speed(0.005)
+                .range(2.0 * MIN_RADIUS..=4.0)
+                .max_decimals(4),
+        )
+        .labelled_by(label.id)
+        .on_hover_text(hover);
+        if length > 0.0 && full != 2.0 * length {
+            *edge *= 0.5 * full / length;
+        }
+    }
+}
+
+/// A button per preset of `presets`, each loading its scene.
+pub(super) fn preset_buttons(
+    ui: &mut egui::Ui,
+    lab: &mut Lab,
+    presets: &[(&str, &str)],
+    hover: &str,
+) {
+    ui.horizontal_wrapped(|ui| {
+        for (name, _) in presets {
+            if ui.small_button(*name).on_hover_text(hover).clicked() {
+                lab.use_scene(preset(name));
+            }
+        }
+    });
+}
