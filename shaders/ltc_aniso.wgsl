@@ -4,14 +4,14 @@
 // interpolation in the shader (AnisoLut::sample), the stored matrix turned into M⁻¹
 // (Stored::cos_from_brdf, mirror_frame, canonical::proper) and the lobe in the tangent frame
 // (AnisoLut::ltc). Composed after ltc.wgsl and sphere_light.wgsl (uses Ltc, atan_precise,
-// acos_precise); its Rust side is src/gpu/ltc_aniso.rs.
+// acos_precise); its Rust side is src/gpu/ltc_aniso/mod.rs.
 
-// AnisoAxes (src/gpu/ltc_aniso.rs axes_constant).
+// AnisoAxes (src/gpu/ltc_aniso/mod.rs axes_constant).
 const AXES_LAB: u32 = 0u;
 const AXES_I3D_ALPHA_XY: u32 = 1u;
 const AXES_I3D_ALPHA_LAMBDA: u32 = 2u;
 
-// Stored (src/gpu/ltc_aniso.rs stored_constant).
+// Stored (src/gpu/ltc_aniso/mod.rs stored_constant).
 const STORED_COS_FROM_BRDF: u32 = 0u;
 const STORED_BRDF_FROM_COS: u32 = 1u;
 const STORED_MIRROR_FROM_COS: u32 = 2u;
@@ -24,7 +24,7 @@ const COS_THETA_MAX: f32 = 0.0007963267; // cos(1.57)
 const I3D_THETA_MAX: f32 = 1.5706392; // 0.9999 · π/2
 const I3D_ALPHA_MIN: f32 = 1e-4;
 
-// Three vec4s a node (src/gpu/ltc_aniso.rs pack_aniso): [m00 m01 m02 m10] [m11 m12 m20 m21]
+// Three vec4s a node (src/gpu/ltc_aniso/mod.rs pack_aniso): [m00 m01 m02 m10] [m11 m12 m20 m21]
 // [m22 norm fresnel 0], the stored matrix by rows, nodes in AnisoLut::index's order.
 const ANISO_VEC4S_PER_NODE: u32 = 3u;
 

@@ -6,6 +6,7 @@
 
 pub mod aniso;
 pub mod cell_fitter;
+pub mod exr_bytes;
 pub mod fit;
 pub mod fit_point;
 pub mod formats;

@@ -91,7 +91,7 @@ fn bench_prints_the_table_and_writes_the_csv() {
     let remedies = rows.iter().filter(|r| r[1] == "exact-band").count();
     assert_eq!(remedies, 4, "ltc and ltc-fast × 2 light counts");
     for r in &rows {
-        assert_eq!(r.len(), 18);
+        assert_eq!(r.len(), 19);
         assert_eq!((r[6], r[7]), ("on", "2"), "{r:?}");
         let fraction: f64 = r[8].parse().unwrap();
         assert!(fraction > 0.0 && fraction <= 1.0, "{r:?}");
@@ -151,10 +151,17 @@ fn bench_times_an_anisotropic_material_beside_the_isotropic_one() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = String::from_utf8(o.stdout).unwrap();
-    assert!(table.contains("Anisotropic material (α_y = 0.05"), "{table}");
+    assert!(
+        table.contains("Anisotropic material (α_y = 0.05"),
+        "{table}"
+    );
     assert!(table.contains("| ltc-fast | 4 | on |"), "{table}");
     let text = std::fs::read_to_string(&csv).unwrap();
-    let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
     let brushed = rows.iter().filter(|r| r[18] == "0.05").count();
     let round = rows.iter().filter(|r| r[18].is_empty()).count();
     assert!(brushed > 0 && brushed == round, "{text}");

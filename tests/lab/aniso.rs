@@ -48,7 +48,8 @@ fn anisotropic_controls_appear_with_the_checkbox() {
 /// 4D table for A in the side panel changes what A shades with.
 #[test]
 fn matrix_panel_slices_both_4d_tables_and_the_side_panel_picks_them() {
-    let Some(mut h) = lab((1280.0, 720.0), maximised(PanelId::Matrix)) else {
+    // Tall enough that the side panel's table rows are in view without scrolling.
+    let Some(mut h) = lab((1280.0, 1200.0), maximised(PanelId::Matrix)) else {
         return;
     };
     press(&mut h, "brushed-rect");

@@ -113,6 +113,7 @@ fn do_task(h: &mut Harness<'static, LabApp>, k: usize) {
             click(h, "case 2 rule ((M^-1 l).z ≤ 0 -> 0)");
         }
         9 => slide(h, "θo (°)", 86.0),
+        11 => slide(h, "φo (°)", 65.0),
         k => unreachable!("step {k} asks nothing the walk does"),
     }
     h.run_steps(2);

@@ -92,7 +92,10 @@ pub(super) fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState)
             lab.use_table_b(None);
         }
     });
-    aniso_tables(ui, lab);
+    // The 4D tables matter only to an anisotropic material.
+    if lab.material().is_anisotropic() {
+        aniso_tables(ui, lab);
+    }
 }
 
 /// The 4D tables anisotropic materials shade with on each side: the lab's or one of I3D

@@ -291,18 +291,21 @@ fn rect_size(ui: &mut egui::Ui, half_u: &mut DVec3, half_v: &mut DVec3) {
     }
 }
 
-/// A button per preset of `presets`, each loading its scene.
+/// A button per preset of `presets`, each loading its scene, in a row of their own.
 pub(super) fn preset_buttons(
     ui: &mut egui::Ui,
     lab: &mut Lab,
     presets: &[(&str, &str)],
     hover: &str,
 ) {
-    ui.horizontal_wrapped(|ui| {
-        for (name, _) in presets {
-            if ui.small_button(*name).on_hover_text(hover).clicked() {
-                lab.use_scene(preset(name));
-            }
+    ui.horizontal_wrapped(|ui| preset_row(ui, lab, presets, hover));
+}
+
+/// The same buttons in the row being laid out.
+pub(super) fn preset_row(ui: &mut egui::Ui, lab: &mut Lab, presets: &[(&str, &str)], hover: &str) {
+    for (name, _) in presets {
+        if ui.small_button(*name).on_hover_text(hover).clicked() {
+            lab.use_scene(preset(name));
         }
-    });
+    }
 }

@@ -7,12 +7,26 @@ use crate::scene::{ANISO_PRESETS, Material};
 
 pub(super) fn material(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.strong("Material");
+    ui.horizontal_wrapped(|ui| {
+        lab.edit(|m: &mut Material| anisotropic_switch(ui, m));
+        super::lights::preset_row(
+            ui,
+            lab,
+            &ANISO_PRESETS,
+            "Brushed metal (α_x ≫ α_y): the streak a rect light or spheres draw across it",
+        );
+    });
     lab.edit(|m: &mut Material| roughness(ui, m));
+    let anisotropic = lab.material().is_anisotropic();
     lab.edit(|v: &mut LobeView| {
         ui.add(egui::Slider::new(&mut v.theta_o_deg, 0.0..=90.0).text("θo (°)"))
             .on_hover_text("View angle of the lobe and matrix panels: v = (sin θo cos φo, sin θo sin φo, cos θo); the LUT row is sqrt(1 − cos θo)");
-        ui.add(egui::Slider::new(&mut v.phi_o_deg, 0.0..=360.0).text("φo (°)"))
-            .on_hover_text("The view's azimuth from the tangent, which only an anisotropic material sees: the 4D table's fourth axis");
+        // An isotropic lobe is the same at every azimuth: the slider shows only where it
+        // changes something.
+        if anisotropic {
+            ui.add(egui::Slider::new(&mut v.phi_o_deg, 0.0..=360.0).text("φo (°)"))
+                .on_hover_text("The view's azimuth from the tangent, which only an anisotropic material sees: the 4D table's fourth axis");
+        }
     });
     lab.edit(|m: &mut Material| {
         ui.add(egui::Slider::new(&mut m.f0, 0.0..=1.0).text("F0"))
@@ -29,16 +43,10 @@ pub(super) fn material(ui: &mut egui::Ui, lab: &mut Lab) {
             ui.label("base colour");
         });
     });
-    super::lights::preset_buttons(
-        ui,
-        lab,
-        &ANISO_PRESETS,
-        "Brushed metal (α_x ≫ α_y): the streak a rect light or spheres draw across it",
-    );
 }
 
-/// One α while the material is isotropic; α_x, α_y and the tangent's angle once it is not.
-fn roughness(ui: &mut egui::Ui, m: &mut Material) {
+/// The switch between one α and two.
+fn anisotropic_switch(ui: &mut egui::Ui, m: &mut Material) {
     let mut anisotropic = m.alpha_y.is_some();
     if ui
         .checkbox(&mut anisotropic, "anisotropic")
@@ -48,6 +56,10 @@ fn roughness(ui: &mut egui::Ui, m: &mut Material) {
         // Starts stretched along the tangent, so that the change is seen at once.
         m.alpha_y = anisotropic.then(|| (m.alpha * 0.25).max(ALPHA_MIN));
     }
+}
+
+/// One α while the material is isotropic; α_x, α_y and the tangent's angle once it is not.
+fn roughness(ui: &mut egui::Ui, m: &mut Material) {
     let Some(alpha_y) = m.alpha_y.as_mut() else {
         ui.add(egui::Slider::new(&mut m.alpha, 1e-3..=1.0).logarithmic(true).text("α"))
             .on_hover_text("GGX α: D = α² / (π ((n·h)²(α²−1)+1)²), Λ = (−1+sqrt(1+α² tan²θ))/2; also the LUT column (r = sqrt α) the LTC comes from");

@@ -154,7 +154,11 @@ impl LobePanel {
     fn header(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
         let st = &mut self.state;
         // File names without their directories: a path pushed the row past the panel.
-        let b_name = lab.tables().b().short_name().to_string();
+        // An anisotropic lobe comes from the 4D tables: B's is the one overlaid.
+        let b_name = match lab.material().is_anisotropic() {
+            true => lab.tables().aniso(TableId::B).short_name(),
+            false => lab.tables().b().short_name().to_string(),
+        };
         let b = if st.overlay_table_b {
             format!(", B: {b_name}")
         } else {

@@ -108,7 +108,7 @@ impl AnisoSlice {
         ui.strong("4D tables (anisotropic GGX): a slice over α_x and θo");
         ui.add(egui::Slider::new(&mut self.ratio, 0.0..=1.0).text("α_y / α_x"))
             .on_hover_text("The slice's third axis: α_y = max(ratio · α_x, α_min) at every point");
-        ui.add(egui::Slider::new(&mut self.phi_deg, 0.0..=90.0).text("φo (°)"))
+        ui.add(egui::Slider::new(&mut self.phi_deg, 0.0..=90.0).text("slice φo (°)"))
             .on_hover_text("The slice's fourth axis: the view's azimuth from the tangent (the tables fold every other azimuth onto 0°…90° by the lobe's mirror symmetries)");
         let ctx = ui.ctx().clone();
         let inputs = (lab.tables(), Own((self.ratio, self.phi_deg)));

@@ -53,7 +53,7 @@ pub fn read_texels(bytes: &[u8], nodes: usize) -> Option<Vec<Vec<[f32; 4]>>> {
 }
 
 /// The lookup: `header` as comments, the table's constants, the three textures' bindings
-/// (group 0, bindings 0–2), `Ltc`, and `shaders/ltc_aniso.wgsl` with its buffer reads made
+/// (group 0, bindings 0–2), and `shaders/ltc_aniso.wgsl` with its buffer reads made
 /// texture loads. Call `aniso_ltc(ltc_aniso_table(), vec2(α_x, α_y), v)` with `v` the unit
 /// view in the tangent frame.
 pub fn wgsl(lut: &AnisoLut, header: &str) -> String {
@@ -78,24 +78,26 @@ pub fn wgsl(lut: &AnisoLut, header: &str) -> String {
 }
 
 /// `shaders/ltc_aniso.wgsl` reading three textures instead of the lab's buffer, after what it
-/// uses of the modules it is composed after: `PI` (brdf.wgsl), `atan_precise` and
-/// `acos_precise` (sphere_light.wgsl). A change to the buffer's read there fails the export's test (the
+/// uses of the modules it is composed after: `PI` (brdf.wgsl), `Ltc` (ltc.wgsl),
+/// `atan_precise` and `acos_precise` (sphere_light.wgsl). A change to the buffer's read there fails the export's test (the
 /// replaced text must be found).
 pub fn lookup_source() -> String {
     let pi = "const PI: f32 = 3.141592653589793;\n\n";
     let sphere = crate::gpu::light::sphere_light::SOURCE;
-    let atan = function_text(sphere, "atan_precise");
-    let acos = function_text(sphere, "acos_precise");
+    let atan = item_text(sphere, "fn atan_precise(");
+    let acos = item_text(sphere, "fn acos_precise(");
+    let ltc = item_text(crate::gpu::ltc::SOURCE, "struct Ltc {");
     format!(
-        "{pi}{atan}\n{acos}\n{}",
+        "{pi}{ltc}\n{atan}\n{acos}\n{}",
         super::SOURCE.replace(BUFFER_READ, TEXTURE_READ)
     )
 }
 
-/// Function `name` of WGSL `source`, with the comment lines just above it, to its closing
-/// brace at a line's start (empty where it is not there, which the export's test finds).
-fn function_text(source: &str, name: &str) -> String {
-    let Some(at) = source.find(&format!("\nfn {name}(")) else {
+/// The item of WGSL `source` that starts with the line `head` (a function's or a struct's),
+/// with the comment lines just above it, to its closing brace at a line's start (empty
+/// where it is not there, which the export's test finds).
+fn item_text(source: &str, head: &str) -> String {
+    let Some(at) = source.find(&format!("\n{head}")) else {
         return String::new();
     };
     let end = source[at..]
@@ -120,20 +122,10 @@ const TEXTURE_READ: &str =
         rows[1] += w * textureLoad(ltc_aniso_1, texel, 0);
         rows[2] += w * textureLoad(ltc_aniso_2, texel, 0);";
 
-/// What the lookup needs beside the textures: `Ltc` as `shaders/ltc.wgsl` has it.
+/// The three textures' bindings.
 const BINDINGS: &str = "@group(0) @binding(0) var ltc_aniso_0: texture_3d<f32>;
 @group(0) @binding(1) var ltc_aniso_1: texture_3d<f32>;
 @group(0) @binding(2) var ltc_aniso_2: texture_3d<f32>;
-
-// An LTC: M⁻¹ (cos_from_brdf), |M⁻¹|, the lobe's magnitudes (n = ∫ f cos with F = 1, and
-// its Schlick part), and a scale (1 here). D(l) = max(ω'.z, 0) |M⁻¹| / (π |ω'|⁴), ω' = M⁻¹ l.
-struct Ltc {
-    cos_from_brdf: mat3x3<f32>,
-    det_cos_from_brdf: f32,
-    norm: f32,
-    fresnel: f32,
-    scale: f32,
-}
 
 ";
 

@@ -237,19 +237,7 @@ impl AnisoLut {
             Text::from(ATTRIBUTE),
             AttributeValue::Text(Text::from(value.as_str())),
         );
-        // Lossless and single-threaded, as the 2D table (§2.5): the same table, the same bytes.
-        let encoding = Encoding {
-            compression: Compression::ZIP16,
-            ..Encoding::default()
-        };
-        let layer = Layer::new((w, h), attributes, encoding, AnyChannels::sort(channels));
-        let mut out = Cursor::new(Vec::new());
-        Image::from_layer(layer)
-            .write()
-            .non_parallel()
-            .to_buffered(&mut out)
-            .expect("writing an EXR to memory cannot fail");
-        out.into_inner()
+        crate::ltc::exr_bytes::layer_bytes((w, h), attributes, channels)
     }
 
     /// Writes the table to `path` (atomically: no partial file on failure).

@@ -23,7 +23,7 @@ pub use axes::{AnisoAxes, AnisoPoint, Folded};
 pub use stored::{Stored, mirror_frame, poles_agree};
 
 /// One node: its matrix (row-major) and the lobe's magnitudes there.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct AnisoCell {
     /// The stored matrix, rows first: `m[3 r + c]` is row `r`, column `c`.
     pub m: [f32; 9],
@@ -33,6 +33,20 @@ pub struct AnisoCell {
     pub fresnel: f32,
     /// The node's pointwise lobe error (docs/design.md §4.1), NaN where unmeasured.
     pub err: f32,
+}
+
+/// The same node to the bit: an unmeasured error (NaN, as a table read from I3D 2022's files
+/// holds) equals itself, so a table equals itself.
+impl PartialEq for AnisoCell {
+    fn eq(&self, other: &Self) -> bool {
+        let bits = |c: &Self| {
+            (
+                c.m.map(f32::to_bits),
+                [c.norm, c.fresnel, c.err].map(f32::to_bits),
+            )
+        };
+        bits(self) == bits(other)
+    }
 }
 
 impl AnisoCell {

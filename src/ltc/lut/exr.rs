@@ -158,21 +158,7 @@ impl Lut {
             Text::from(ALPHA_MIN_ATTRIBUTE),
             AttributeValue::F64(self.alpha_min),
         );
-        // ZIP is lossless: the round trip is bit-exact.
-        let encoding = Encoding {
-            compression: Compression::ZIP16,
-            ..Encoding::default()
-        };
-        let layer = Layer::new((n, n), attributes, encoding, AnyChannels::sort(channels));
-        let mut out = Cursor::new(Vec::new());
-        Image::from_layer(layer)
-            .write()
-            // Parallel compression writes chunks in the order they finish: the same table
-            // would give different bytes run to run.
-            .non_parallel()
-            .to_buffered(&mut out)
-            .expect("writing an EXR to memory cannot fail");
-        out.into_inner()
+        crate::ltc::exr_bytes::layer_bytes((n, n), attributes, channels)
     }
 
     /// Writes the table to `path` (atomically: no partial file on failure).
