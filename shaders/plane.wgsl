@@ -379,13 +379,16 @@ fn workgroup_centre(wid: vec2<u32>) -> vec3<f32> {
 }
 
 // Sums one chunk — entries [light_start, light_end) of each pixel's list — into the sums kept
-// in `accum` (starting from zero at the first chunk).
+// in `accum` (starting from zero at the first chunk), over a band of tile rows from
+// `params.bin_row` (a render split into submissions a watchdog never sees, gpu/failures/submissions.rs).
 @compute @workgroup_size(16, 16, 1)
 fn shade(
-    @builtin(global_invocation_id) gid: vec3<u32>,
-    @builtin(workgroup_id) wid: vec3<u32>,
+    @builtin(global_invocation_id) band_gid: vec3<u32>,
+    @builtin(workgroup_id) band_wid: vec3<u32>,
     @builtin(local_invocation_index) li: u32,
 ) {
+    let gid = band_gid.xy + vec2<u32>(0u, params.bin_row * TILE_SIDE);
+    let wid = band_wid.xy + vec2<u32>(0u, params.bin_row);
     let inside = gid.x < params.width && gid.y < params.height;
     // The tile's list: culled where binned and the lists fit, else every light.
     let tiles = params.tiles_x * params.tiles_y;
@@ -407,20 +410,20 @@ fn shade(
     var p: Pixel;
     p.on_plane = false;
     if inside {
-        p = prepare(surface_point(gid.xy));
+        p = prepare(surface_point(gid));
     }
     let first = tile_offsets[tile];
     var centre = vec3<f32>(0.0);
     if METHOD_A == METHOD_LTC_F16_PAIRS {
-        centre = workgroup_centre(wid.xy);
+        centre = workgroup_centre(wid);
     }
     let x_relative = p.x - centre;
     let end = min(params.light_end, count);
-    let use_a = uses_a(gid.xy);
-    let use_b = uses_b(gid.xy);
+    let use_a = uses_a(gid);
+    let use_b = uses_b(gid);
     var a = Sums(vec3<f32>(0.0), vec3<f32>(0.0));
     var b = Sums(vec3<f32>(0.0), vec3<f32>(0.0));
-    let k = pixel_index(gid.xy);
+    let k = pixel_index(gid);
     if inside && params.light_start > 0u {
         let sums = load_sums(k);
         a = sums[0];

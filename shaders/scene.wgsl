@@ -32,7 +32,7 @@ struct Params {
     lut_size_b: u32,       // table B (method B's own table), after table A in the buffer
     lut_base_b: u32,       // its first vec4
     lut_base: u32,         // table A's first vec4 (B's, where B is shown alone)
-    bin_row: u32,          // the first tile row a binning dispatch works on
+    bin_row: u32,          // the first tile row a band of binning or shading works on
     alpha_y: f32,          // α along the bitangent (alpha while isotropic)
     tangent_x: f32,        // the material's unit tangent in the plane (ltc_aniso.wgsl)
     tangent_y: f32,

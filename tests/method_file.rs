@@ -160,3 +160,50 @@ fn every_loop_of_a_file_is_guarded() {
     let tail = &composed[composed.find("The method file \"forever.wgsl\"").unwrap()..];
     assert_eq!(tail.matches("if method_file_over() { break; }").count(), 3);
 }
+
+/// A method of `body` for points: `body` then a zero radiance.
+fn point_file(before: &str, body: &str) -> String {
+    format!(
+        "{before}\n{POINT_SIGNATURE} {{\n{body}\n    return MethodRadiance(vec3<f32>(0.0), vec3<f32>(0.0));\n}}\n"
+    )
+}
+
+/// Arrays past the stated sizes are refused at the line declaring them (a function's local,
+/// a private variable, a constant, the total), and one within them is taken. Without the
+/// bound, one line of `array<f32, 100000000>` had the process killed for memory.
+#[test]
+fn arrays_past_their_bounds_are_refused_at_their_line() {
+    use ltc_lab::gpu::method_file::bounds::{MAX_INVOCATION_BYTES, MAX_VALUE_BYTES};
+    let n = MAX_VALUE_BYTES / 4;
+    // Within: one array at the bound.
+    MethodFile::from_source(
+        "mine.wgsl",
+        &point_file("", &format!("    var a: array<f32, {n}>;\n    a[0] = 1.0;")),
+    )
+    .unwrap();
+    for (before, body, line) in [
+        (
+            "",
+            "    var a: array<f32, 100000000>;\n    a[0] = 1.0;".to_string(),
+            3,
+        ),
+        (
+            "var<private> big: array<vec4<f32>, 65536>;",
+            String::new(),
+            1,
+        ),
+        ("", format!("    let a = array<f32, {}>();", n + 1), 3),
+    ] {
+        let m = refusal(&point_file(before, &body));
+        assert!(m.contains(&format!("line {line}")), "{m}");
+        assert!(m.contains(&MAX_VALUE_BYTES.to_string()), "{m}");
+    }
+    // Many arrays each within the bound, past the total together.
+    let count = MAX_INVOCATION_BYTES / MAX_VALUE_BYTES + 1;
+    let vars: String = (0..count)
+        .map(|k| format!("    var a{k}: array<f32, {n}>;\n    a{k}[0] = 1.0;\n"))
+        .collect();
+    let m = refusal(&point_file("", &vars));
+    assert!(m.contains(&MAX_INVOCATION_BYTES.to_string()), "{m}");
+    assert!(m.contains("line"), "{m}");
+}

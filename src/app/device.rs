@@ -33,5 +33,6 @@ pub fn of_window(render_state: Option<&egui_wgpu::RenderState>) -> Result<GpuCon
         rs.device.clone(),
         rs.queue.clone(),
         rs.adapter.get_info(),
+        downlevel.flags,
     ))
 }

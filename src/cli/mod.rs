@@ -269,10 +269,15 @@ impl Range {
 
 /// A progress bar on stderr (drawn only on a terminal) counting `len` cells.
 pub fn progress_bar(what: &str, len: usize) -> indicatif::ProgressBar {
+    progress_bar_of(what, len, "cells")
+}
+
+/// A progress bar on stderr (drawn only on a terminal) counting `len` of `unit`.
+pub fn progress_bar_of(what: &str, len: usize, unit: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(len as u64);
     bar.set_style(
         indicatif::ProgressStyle::with_template(&format!(
-            "{what} {{bar:40}} {{pos}}/{{len}} cells  {{elapsed_precise}}"
+            "{what} {{bar:40}} {{pos}}/{{len}} {unit}  {{elapsed_precise}}"
         ))
         .expect("a valid template"),
     );

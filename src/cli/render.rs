@@ -383,7 +383,26 @@ fn render_gpu(
     if s.b_reads_table_b {
         renderer.set_tables(&ctx, &tables.a.lut, Some(&tables.b.lut))?;
     }
-    renderer.set_method_file(&ctx, file.cloned());
-    let (frame, ms) = renderer.render(&ctx, scene, s)?;
+    renderer.set_method_file(&ctx, file.cloned())?;
+    // A render split into submissions a watchdog never sees (gpu/failures/submissions.rs) shows how far
+    // it is, and says how many it took.
+    let mut bar = None;
+    let mut submissions = 0;
+    let (frame, ms) = renderer.render_with(&ctx, scene, s, &mut |at| {
+        submissions = at.submissions;
+        if at.submissions > 1 {
+            bar.get_or_insert_with(|| super::progress_bar_of("render", at.lights, "lights"))
+                .set_position(at.lights_done as u64);
+        }
+    })?;
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    if submissions > 1 {
+        eprintln!(
+            "render: {submissions} submissions, each under {:.0e} estimated operations (docs/design.md §5.14)",
+            ltc_lab::gpu::failures::submissions::MAX_SUBMISSION_WORK
+        );
+    }
     Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))
 }

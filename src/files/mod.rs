@@ -28,24 +28,58 @@ pub use claim::Claim;
 pub use outputs::Outputs;
 pub use unfinished::exit_interrupted;
 
-/// The bytes of the file at `path`, read up to `limit`: a longer file — or one that never
-/// ends, such as a device (`/dev/zero`, `/dev/urandom`) — is refused as bad input naming the
-/// file and the limit once `limit + 1` bytes were read, so no input can hold the program for
-/// longer or take more memory than its limit. Every file the lab and the CLI read comes
-/// through here.
+/// The bytes of the file at `path`, read up to `limit`: a longer file is refused as bad input
+/// naming the file and the limit once `limit + 1` bytes were read, and anything that is not a
+/// regular file (a directory, a FIFO, a device such as `/dev/zero`, a socket) is refused at
+/// once naming what it is, before it is opened (opening a FIFO waits for a writer), so no input
+/// can hold the program for longer or take more memory than its limit. Every file the lab and
+/// the CLI read comes through here.
 pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>> {
     use std::io::Read;
     let name = path.display().to_string();
-    if path.is_dir() {
-        return Err(Error::input(name, "is a directory, not a file"));
-    }
+    let meta = fs::metadata(path).map_err(|e| Error::io(&name, "read", &e))?;
+    check_regular(&name, &meta.file_type())?;
     let file = fs::File::open(path).map_err(|e| Error::io(&name, "read", &e))?;
+    // Checked again on what was opened: the path may have been replaced in between.
+    let opened = file.metadata().map_err(|e| Error::io(&name, "read", &e))?;
+    check_regular(&name, &opened.file_type())?;
     let mut bytes = Vec::new();
     file.take(limit.saturating_add(1))
         .read_to_end(&mut bytes)
         .map_err(|e| Error::io(&name, "read", &e))?;
     check_length(&name, bytes.len(), limit)?;
     Ok(bytes)
+}
+
+/// Refuses the input `name` unless `kind` is a regular file, naming what it is.
+fn check_regular(name: &str, kind: &fs::FileType) -> Result<()> {
+    if kind.is_file() {
+        return Ok(());
+    }
+    let what = if kind.is_dir() {
+        "a directory"
+    } else {
+        special_kind(kind)
+    };
+    Err(Error::input(name, format!("is {what}, not a regular file")))
+}
+
+/// What a file that is neither regular nor a directory is, in words.
+#[cfg(unix)]
+fn special_kind(kind: &fs::FileType) -> &'static str {
+    use std::os::unix::fs::FileTypeExt;
+    match kind {
+        k if k.is_fifo() => "a FIFO (named pipe)",
+        k if k.is_char_device() => "a character device",
+        k if k.is_block_device() => "a block device",
+        k if k.is_socket() => "a socket",
+        _ => "a special file",
+    }
+}
+
+#[cfg(not(unix))]
+fn special_kind(_: &fs::FileType) -> &'static str {
+    "a special file"
 }
 
 /// Refuses `len` bytes of the input `name` past `limit` (a file read whole elsewhere, such

@@ -258,14 +258,25 @@ fn a_file_is_read_up_to_its_limit_and_refused_past_it() {
     assert_eq!(read_text(&p, 1024).unwrap_err().exit_code(), 2);
 }
 
-/// A device that never ends is read to the limit and refused, quickly and in bounded memory,
-/// instead of filling memory (`/dev/zero`) or never returning (`/dev/urandom`).
+/// A special file is refused at once, naming what it is: a device that never ends
+/// (`/dev/zero` would fill memory, `/dev/urandom` never return) and a FIFO (opening it waits
+/// for a writer forever).
 #[cfg(unix)]
 #[test]
-fn an_endless_device_is_refused_at_the_limit() {
-    for device in ["/dev/zero", "/dev/urandom"] {
+fn special_files_are_refused_naming_their_kind() {
+    for (device, kind) in [
+        ("/dev/zero", "character device"),
+        ("/dev/urandom", "character device"),
+    ] {
         let e = read_text(Path::new(device), 1 << 20).unwrap_err();
         assert_eq!(e.exit_code(), 2, "{device}: {e}");
         assert!(e.to_string().contains(device), "{e}");
+        assert!(e.to_string().contains(kind), "{e}");
     }
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("scene.toml");
+    nix::unistd::mkfifo(&fifo, nix::sys::stat::Mode::S_IRWXU).unwrap();
+    let e = read_bytes(&fifo, 1024).unwrap_err();
+    assert_eq!(e.exit_code(), 2, "{e}");
+    assert!(e.to_string().contains("FIFO"), "{e}");
 }

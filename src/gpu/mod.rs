@@ -9,6 +9,7 @@ pub mod brdf;
 pub mod brdf_aniso;
 pub mod display;
 pub mod driver_output;
+pub mod failures;
 pub mod keep_driver;
 pub mod light;
 pub mod limits;
@@ -27,7 +28,6 @@ pub mod work;
 
 pub use light::{disk_light, light_shape, rect_light, sphere_light};
 
-#[cfg(not(target_arch = "wasm32"))]
 use crate::error::Error;
 
 /// The WGSL of the plane shader without a method file (`plane_module_source_with`).
@@ -86,13 +86,18 @@ pub fn device_descriptor(adapter: &wgpu::Adapter) -> wgpu::DeviceDescriptor<'sta
     }
 }
 
-/// A device and what was chosen (cloned: the handles are shared, not the device).
+/// A device and what was chosen (cloned: the handles are shared, not the device), and what
+/// went wrong on it so far.
 #[derive(Clone)]
 pub struct GpuContext {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
     pub info: wgpu::AdapterInfo,
     pub limits: wgpu::Limits,
+    /// The adapter's downlevel flags (what its shaders take, with the device's features).
+    pub downlevel: wgpu::DownlevelFlags,
+    /// Its uncaptured errors and its loss, kept instead of wgpu's panic.
+    pub failures: failures::Failures,
 }
 
 impl GpuContext {
@@ -127,6 +132,7 @@ impl GpuContext {
             )
         })?;
         let info = adapter.get_info();
+        let downlevel = adapter.get_downlevel_capabilities().flags;
         let (device, queue) = pollster::block_on(
             adapter.request_device(&device_descriptor(&adapter)),
         )
@@ -136,19 +142,38 @@ impl GpuContext {
                 format!("cannot open the device: {e}"),
             )
         })?;
-        Ok(Self::from_parts(device, queue, info))
+        Ok(Self::from_parts(device, queue, info, downlevel))
     }
 
     /// A device opened elsewhere (the lab's window's), with `device_descriptor`'s features
-    /// where it was asked for them.
-    pub fn from_parts(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Self {
+    /// where it was asked for them; its failures watched from now on (`Failures::watch`: once
+    /// per device, cloned after).
+    pub fn from_parts(
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+        info: wgpu::AdapterInfo,
+        downlevel: wgpu::DownlevelFlags,
+    ) -> Self {
         let limits = device.limits();
+        let failures = failures::Failures::watch(&device);
         Self {
             device,
             queue,
             info,
             limits,
+            downlevel,
+            failures,
         }
+    }
+
+    /// The device's name for a message (`GPU lavapipe`).
+    pub fn name(&self) -> String {
+        format!("GPU {}", self.info.name)
+    }
+
+    /// Refuses to go on where the device was lost or reported an error (`Failures::check`).
+    pub fn check(&self) -> Result<(), Error> {
+        self.failures.check(&self.name())
     }
 
     /// One line for the log: name, backend, type, timestamps.

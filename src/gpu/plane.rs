@@ -6,11 +6,14 @@
 
 use std::collections::HashMap;
 
+use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
+use crate::gpu::failures::scoped;
 use crate::gpu::light::light_shape::{disk_constant, rect_constant, sphere_constant};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::method_file::MethodFile;
+use crate::gpu::method_file::device_check::DeviceShaders;
 use crate::gpu::target::OUTPUT_FORMAT;
 use crate::light::Shape;
 use crate::light::disk::DiskMethod;
@@ -160,6 +163,8 @@ pub struct Pipelines {
 pub struct PlanePipelines {
     /// The method file composed into the module, if any.
     pub file: Option<MethodFile>,
+    /// The estimated operations of one light at one pixel (`work::light_operations`).
+    pub light_work: f64,
     module: wgpu::ShaderModule,
     pub layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
@@ -169,13 +174,22 @@ pub struct PlanePipelines {
 }
 
 impl PlanePipelines {
-    pub fn new(ctx: &GpuContext, checks: ShaderChecks) -> Self {
+    pub fn new(ctx: &GpuContext, checks: ShaderChecks) -> Result<Self> {
         Self::with_file(ctx, checks, None)
     }
 
     /// The module with `file` composed into it: always with wgpu's runtime checks, whatever
-    /// `checks` says (the text is the user's, not ours).
-    pub fn with_file(ctx: &GpuContext, checks: ShaderChecks, file: Option<MethodFile>) -> Self {
+    /// `checks` says (the text is the user's, not ours), and checked against the device's
+    /// capabilities first (`MethodFile::check_for`). What the device refuses of it is the
+    /// file's fault (bad input); of the lab's own module, the machine's.
+    pub fn with_file(
+        ctx: &GpuContext,
+        checks: ShaderChecks,
+        file: Option<MethodFile>,
+    ) -> Result<Self> {
+        if let Some(f) = &file {
+            f.check_for(&DeviceShaders::of(ctx))?;
+        }
         let device = &ctx.device;
         let source = super::plane_module_source_with(ctx.has_f16(), file.as_ref());
         let desc = wgpu::ShaderModuleDescriptor {
@@ -187,7 +201,7 @@ impl PlanePipelines {
         } else {
             checks
         };
-        let module = match checks {
+        let (module, error) = scoped(device, || match checks {
             ShaderChecks::Checked => device.create_shader_module(desc),
             // SAFETY: the module is our own embedded WGSL (never a method file's), validated by naga in
             // tests/shaders/main.rs; every buffer index in it is bounded by construction (lights
@@ -198,41 +212,83 @@ impl PlanePipelines {
             ShaderChecks::Trusted => unsafe {
                 device.create_shader_module_trusted(desc, wgpu::ShaderRuntimeChecks::unchecked())
             },
-        };
+        });
+        refused(ctx, file.as_ref(), error)?;
         let layout = binding::layout(device, "plane", &BINDINGS);
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("plane"),
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        Self {
+        let light_work = light_work(file.as_ref())?;
+        Ok(Self {
             file,
+            light_work,
             module,
             layout,
             pipeline_layout,
             compiled: HashMap::new(),
             probes: HashMap::new(),
-        }
+        })
     }
 
     /// The method file's probe (`probe_file` of method_file.wgsl) of a specialization,
     /// compiled on first use.
-    pub fn probe(&mut self, ctx: &GpuContext, key: PipelineKey) -> wgpu::ComputePipeline {
+    pub fn probe(&mut self, ctx: &GpuContext, key: PipelineKey) -> Result<wgpu::ComputePipeline> {
+        if let Some(p) = self.probes.get(&key) {
+            return Ok(p.clone());
+        }
         let (module, layout) = (&self.module, &self.pipeline_layout);
-        self.probes
-            .entry(key)
-            .or_insert_with(|| entry_point(ctx, (module, layout), &constants(key), "probe_file"))
-            .clone()
+        let (probe, error) = scoped(&ctx.device, || {
+            entry_point(ctx, (module, layout), &constants(key), "probe_file")
+        });
+        refused(ctx, self.file.as_ref(), error)?;
+        Ok(self.probes.entry(key).or_insert(probe).clone())
     }
 
-    /// The pipelines of a specialization, compiled on first use.
-    pub fn get(&mut self, ctx: &GpuContext, key: PipelineKey) -> Pipelines {
+    /// The pipelines of a specialization, compiled on first use (refused as `with_file`'s
+    /// module is, where the device refuses them).
+    pub fn get(&mut self, ctx: &GpuContext, key: PipelineKey) -> Result<Pipelines> {
+        if let Some(p) = self.compiled.get(&key) {
+            return Ok(p.clone());
+        }
         let (module, layout) = (&self.module, &self.pipeline_layout);
-        self.compiled
-            .entry(key)
-            .or_insert_with(|| compile(ctx, module, layout, key))
-            .clone()
+        let (pipelines, error) = scoped(&ctx.device, || compile(ctx, module, layout, key));
+        refused(ctx, self.file.as_ref(), error)?;
+        Ok(self.compiled.entry(key).or_insert(pipelines).clone())
     }
+}
+
+/// The estimated operations of one light at one pixel with `file` (`work::light_operations`;
+/// the lab's own module's counted once a process). A count refused is the lab's fault, a
+/// file's refused here was checked already: both a failure of the machine.
+fn light_work(file: Option<&MethodFile>) -> Result<f64> {
+    static LAB: std::sync::OnceLock<std::result::Result<f64, String>> = std::sync::OnceLock::new();
+    let counted = match file {
+        None => LAB
+            .get_or_init(|| crate::gpu::work::light_operations(None))
+            .clone(),
+        Some(f) => crate::gpu::work::light_operations(Some(f)),
+    };
+    counted.map_err(|e| {
+        Error::machine(
+            "the plane shader",
+            format!("its work could not be counted: {e}"),
+        )
+    })
+}
+
+/// The device's error of a module or pipeline as an error: the method `file`'s (bad input)
+/// where one is composed in, else the machine's.
+fn refused(ctx: &GpuContext, file: Option<&MethodFile>, error: Option<wgpu::Error>) -> Result<()> {
+    let Some(e) = error else {
+        return Ok(());
+    };
+    let message = format!("{} refused its shader: {e}", ctx.name());
+    Err(match file {
+        Some(f) => Error::input(&f.name, message),
+        None => Error::machine(ctx.name(), message),
+    })
 }
 
 /// The four entry points of `module` with the override constants of `key`.

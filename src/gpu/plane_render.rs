@@ -7,8 +7,11 @@
 
 use std::ops::Range;
 
+use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::bin::{self, BinPass, Binning};
+use crate::gpu::failures::scoped;
+use crate::gpu::failures::submissions::{METHOD_FILE_SUBMISSION_MS, Plan};
 use crate::gpu::ltc::LutBuffer;
 use crate::gpu::plane::{self, Pipelines};
 use crate::gpu::scene::{GpuLight, Params, light_elements, params};
@@ -47,7 +50,24 @@ pub struct PlaneRender {
     bin_stage: Option<BinStage>,
     /// The method file its pipelines hold, by name (what a stopped render names).
     file: Option<String>,
+    /// The estimated operations of one light at one pixel (`work::light_operations`).
+    light_work: f64,
+    /// With a method file: the lights of its next submission, paced on the time the last took
+    /// (from 1, kept from one `run` to the next), so that one past the time limit is the
+    /// file's, not a batch too large for a slow device.
+    file_chunk: usize,
 }
+
+/// How far `PlaneRender::run` is: submissions made, lights summed of all.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RunProgress {
+    pub submissions: usize,
+    pub lights_done: usize,
+    pub lights: usize,
+}
+
+/// The time a method file's submission aims at in `run`: well inside the stop's 2 s.
+const FILE_SUBMISSION_TARGET_MS: f64 = 200.0;
 
 /// What `PlaneRenderer::begin` hands a new render: the pipelines of its specialization and
 /// their layout, the binning passes and the tables' buffer.
@@ -58,6 +78,8 @@ pub struct Begun<'a> {
     pub tables: &'a LutBuffer,
     /// The name of the method file the pipelines hold, if any.
     pub file: Option<String>,
+    /// The estimated operations of one light at one pixel in their module.
+    pub light_work: f64,
 }
 
 impl PlaneRender {
@@ -109,6 +131,8 @@ impl PlaneRender {
             light_count: scene.lights.len(),
             bin_stage: cull.then_some(BinStage::Count(0)),
             file: begun.file,
+            light_work: begun.light_work,
+            file_chunk: 1,
         }
     }
 
@@ -127,13 +151,31 @@ impl PlaneRender {
         self.light_count
     }
 
+    /// How it is split into submissions a watchdog never sees (`submissions::Plan`).
+    pub fn plan(&self) -> Plan {
+        let s = &self.settings;
+        Plan::new(s.width, s.height, self.light_count, self.light_work)
+    }
+
     /// Sums entries `range` of every pixel's list into the kept sums (from zero where the
     /// range starts at 0), then resolves the image; one submission. The first chunk of a
     /// culled render makes the tile lists first, where `bin_step` has not.
     pub fn step(&mut self, ctx: &GpuContext, range: Range<usize>) -> wgpu::SubmissionIndex {
+        let rows = 0..self.tiles().1;
+        self.step_band(ctx, range, rows)
+    }
+
+    /// `step` over the tile rows `rows` alone: the image is resolved after the band that ends
+    /// at the last row. A band from row 0 comes first for each range (it makes the lists).
+    pub fn step_band(
+        &mut self,
+        ctx: &GpuContext,
+        range: Range<usize>,
+        rows: Range<u32>,
+    ) -> wgpu::SubmissionIndex {
         self.params.light_start = range.start as u32;
         self.params.light_end = range.end as u32;
-        self.params.bin_row = 0;
+        self.params.bin_row = rows.start;
         self.write_params(ctx);
         let mut encoder = ctx
             .device
@@ -147,12 +189,13 @@ impl PlaneRender {
             t.clear();
         }
         let tiles = self.tiles();
-        if range.start == 0 {
+        if range.start == 0 && rows.start == 0 {
             // The mark of a method file stopped (after the floor in `partials`) begins clear.
             let floor = u64::from(tiles.0 * tiles.1) * 16;
             encoder.clear_buffer(&self.kept.target.partials, floor, Some(16));
         }
-        if self.bin_stage.take().is_some() {
+        // Binning reads `bin_row` as its first row too: only with a band from row 0.
+        if rows.start == 0 && self.bin_stage.take().is_some() {
             // Lists not (all) made band by band: made whole here, in one pass from row 0.
             self.binning
                 .encode_all(&mut encoder, &self.bin_group, tiles, timing.as_deref_mut());
@@ -164,9 +207,11 @@ impl PlaneRender {
             });
             pass.set_bind_group(0, &self.plane_group, &[]);
             pass.set_pipeline(&self.pipelines.shade);
-            pass.dispatch_workgroups(tiles.0, tiles.1, 1);
+            pass.dispatch_workgroups(tiles.0, rows.end.saturating_sub(rows.start), 1);
         }
-        self.encode_resolve(&mut encoder);
+        if rows.end >= tiles.1 {
+            self.encode_resolve(&mut encoder);
+        }
         let timed = timing.is_some();
         if let Some(t) = timing {
             t.resolve(&mut encoder);
@@ -282,10 +327,17 @@ impl PlaneRender {
         })
     }
 
-    /// Renders it whole (one chunk of every light, its tile lists made again) and waits: the
-    /// GPU times (timestamp queries), or the wall clock of submit-to-done where the adapter
-    /// has none.
-    pub fn run(&mut self, ctx: &GpuContext) -> FrameTimes {
+    /// Renders it whole (every light, its tile lists made again) in submissions within its
+    /// `plan` — with a method file, paced from one light on their times — waiting for each;
+    /// `progress` hears each one done. Its GPU times (timestamp queries) summed, or the wall
+    /// clock of submit-to-done where the adapter has none. Refused where the device failed
+    /// (`GpuContext::check`), and, with a method file, where one submission took past
+    /// `METHOD_FILE_SUBMISSION_MS`, naming the file and how far it got.
+    pub fn run(
+        &mut self,
+        ctx: &GpuContext,
+        progress: &mut dyn FnMut(RunProgress),
+    ) -> Result<FrameTimes> {
         if self.params.cull != 0 {
             self.bin_stage = Some(BinStage::Count(0));
         }
@@ -293,16 +345,80 @@ impl PlaneRender {
         if let Some(t) = &mut self.kept.timer {
             let _ = t.read_ms(&ctx.device);
         }
-        let start = web_time::Instant::now();
-        self.step(ctx, 0..self.light_count);
-        let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
-        let wall_ms = start.elapsed().as_secs_f64() * 1e3;
-        let slots = self
-            .kept
-            .timer
-            .as_mut()
-            .map_or([None; 2], |t| t.read_ms(&ctx.device));
-        FrameTimes::from_slots(slots, wall_ms)
+        let plan = self.plan();
+        let mut total = FrameTimes {
+            bin_ms: None,
+            shade_ms: 0.0,
+        };
+        let mut at = RunProgress {
+            submissions: 0,
+            lights_done: 0,
+            lights: self.light_count,
+        };
+        let mut row = 0;
+        loop {
+            let per = if self.file.is_some() {
+                self.file_chunk.min(plan.lights_per)
+            } else {
+                plan.lights_per
+            };
+            let lights = at.lights_done..(at.lights_done + per).min(self.light_count);
+            let rows = row..(row + plan.rows_per).min(plan.rows);
+            let start = web_time::Instant::now();
+            let (_, error) = scoped(&ctx.device, || {
+                self.step_band(ctx, lights.clone(), rows.clone())
+            });
+            let _ = ctx.device.poll(wgpu::PollType::wait_indefinitely());
+            let wall_ms = start.elapsed().as_secs_f64() * 1e3;
+            ctx.check()?;
+            if let Some(e) = error {
+                let message = format!("the device refused the lab's work: {e}");
+                return Err(Error::machine(ctx.name(), message));
+            }
+            self.check_time(wall_ms, &at)?;
+            let slots = self
+                .kept
+                .timer
+                .as_mut()
+                .map_or([None; 2], |t| t.read_ms(&ctx.device));
+            let times = FrameTimes::from_slots(slots, wall_ms);
+            total.shade_ms += times.shade_ms;
+            if let Some(b) = times.bin_ms {
+                *total.bin_ms.get_or_insert(0.0) += b;
+            }
+            at.submissions += 1;
+            row = rows.end % plan.rows;
+            if row == 0 {
+                at.lights_done = lights.end;
+                // Towards the target time, by at most 4 times a step.
+                let grow = (FILE_SUBMISSION_TARGET_MS / wall_ms.max(1e-3)).clamp(0.5, 4.0);
+                self.file_chunk = ((per as f64 * grow) as usize).clamp(1, plan.lights_per);
+            }
+            progress(at);
+            if at.lights_done >= self.light_count {
+                return Ok(total);
+            }
+        }
+    }
+
+    /// Refuses a method file's submission that took `wall_ms` past
+    /// `METHOD_FILE_SUBMISSION_MS`, naming the file and how far the render got (`at`).
+    fn check_time(&self, wall_ms: f64, at: &RunProgress) -> Result<()> {
+        match &self.file {
+            Some(name) if wall_ms > METHOD_FILE_SUBMISSION_MS => Err(Error::input(
+                name,
+                format!(
+                    "stopped after {} submissions, {} of {} lights summed: submission {} took {:.1} s, past the {:.0} s one submission with a method file may take (docs/design.md §5.13); measure it on a smaller image or with fewer lights",
+                    at.submissions,
+                    at.lights_done,
+                    at.lights,
+                    at.submissions + 1,
+                    wall_ms / 1e3,
+                    METHOD_FILE_SUBMISSION_MS / 1e3
+                ),
+            )),
+            _ => Ok(()),
+        }
     }
 
     /// Fills the image with NaN, so that a pixel no pass writes shows.
@@ -311,16 +427,16 @@ impl PlaneRender {
     }
 
     /// The image, read back (blocks); refused where a method file's loops were stopped.
-    pub fn read(&self, ctx: &GpuContext) -> crate::error::Result<Frame> {
+    pub fn read(&self, ctx: &GpuContext) -> Result<Frame> {
         let (frame, stopped) = self.kept.target.read(ctx, &self.settings)?;
         self.check_stopped(stopped)?;
         Ok(frame)
     }
 
     /// An error naming the method file where `stopped` (the image's mark, `Target::read`).
-    fn check_stopped(&self, stopped: bool) -> crate::error::Result<()> {
+    fn check_stopped(&self, stopped: bool) -> Result<()> {
         match (&self.file, stopped) {
-            (Some(name), true) => Err(crate::error::Error::input(
+            (Some(name), true) => Err(Error::input(
                 name,
                 format!(
                     "stopped: its loops ran past {} steps for one light (docs/design.md §5.13)",
@@ -344,7 +460,7 @@ impl PlaneRender {
     }
 
     /// Refused where the texels `start_read` fetched carry a method file's stop.
-    pub fn check_texels(&self, texels: &[u8]) -> crate::error::Result<()> {
+    pub fn check_texels(&self, texels: &[u8]) -> Result<()> {
         self.check_stopped(crate::gpu::target::stopped(texels))
     }
 
@@ -369,7 +485,7 @@ impl PlaneRender {
         pipeline: &wgpu::ComputePipeline,
         at: [f32; 2],
         aspect: f32,
-    ) -> crate::error::Result<Option<Vec<glam::DVec3>>> {
+    ) -> Result<Option<Vec<glam::DVec3>>> {
         self.params.probe_x = at[0];
         self.params.probe_y = at[1];
         self.params.aspect = aspect;
@@ -392,7 +508,7 @@ impl PlaneRender {
         ctx.queue.submit([encoder.finish()]);
         let bytes = u64::from(n.max(1)) * 16;
         let data = crate::gpu::target::read_buffer(ctx, &self.kept.target.sums[0], 0, bytes)
-            .ok_or_else(|| crate::error::Error::machine("GPU", "the probe's read-back failed"))?;
+            .ok_or_else(|| Error::machine("GPU", "the probe's read-back failed"))?;
         let values: Vec<[f32; 4]> = data
             .chunks_exact(16)
             .map(bytemuck::pod_read_unaligned)

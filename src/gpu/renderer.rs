@@ -10,7 +10,7 @@ use crate::gpu::limits;
 use crate::gpu::ltc::LutBuffer;
 use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::{PlanePipelines, ShaderChecks, pipeline_key};
-use crate::gpu::plane_render::{Begun, Kept, PlaneRender};
+use crate::gpu::plane_render::{Begun, Kept, PlaneRender, RunProgress};
 use crate::gpu::scene::GpuLight;
 use crate::gpu::target;
 use crate::ltc::lut::Lut;
@@ -35,7 +35,7 @@ impl PlaneRenderer {
     /// storage.
     pub fn new(ctx: &GpuContext, lut: &Lut, checks: ShaderChecks) -> Result<Self> {
         Ok(Self {
-            pipelines: PlanePipelines::new(ctx, checks),
+            pipelines: PlanePipelines::new(ctx, checks)?,
             checks,
             binning: Binning::new(ctx),
             tables: LutBuffer::new(ctx, lut, None)?,
@@ -54,11 +54,13 @@ impl PlaneRenderer {
 
     /// Renders begun from now on shade the method `file` by `file`: the module is built again
     /// with it composed in (with runtime checks), or without one. The same file keeps the
-    /// module.
-    pub fn set_method_file(&mut self, ctx: &GpuContext, file: Option<MethodFile>) {
+    /// module. Refused where the device cannot run the file (`PlanePipelines::with_file`): the
+    /// module it had stays.
+    pub fn set_method_file(&mut self, ctx: &GpuContext, file: Option<MethodFile>) -> Result<()> {
         if self.pipelines.file != file {
-            self.pipelines = PlanePipelines::with_file(ctx, self.checks, file);
+            self.pipelines = PlanePipelines::with_file(ctx, self.checks, file)?;
         }
+        Ok(())
     }
 
     /// The pixel inspector's values of the method file (docs/design.md §5.13): each light of
@@ -91,7 +93,7 @@ impl PlaneRenderer {
             height: h,
             ..*settings
         };
-        let pipeline = self.pipelines.probe(ctx, pipeline_key(&small, scene));
+        let pipeline = self.pipelines.probe(ctx, pipeline_key(&small, scene))?;
         let mut render = self.begin(ctx, scene, &small, None)?;
         let at = [(u * w as f64) as f32, (v * h as f64) as f32];
         render.probe(ctx, &pipeline, at, aspect as f32)
@@ -165,11 +167,12 @@ impl PlaneRenderer {
             self.tables.ensure_nl(ctx)?;
         }
         let begun = Begun {
-            pipelines: self.pipelines.get(ctx, pipeline_key(settings, scene)),
+            pipelines: self.pipelines.get(ctx, pipeline_key(settings, scene))?,
             layout: &self.pipelines.layout,
             binning: &self.binning,
             tables: &self.tables,
             file: self.pipelines.file.as_ref().map(|f| f.name.clone()),
+            light_work: self.pipelines.light_work,
         };
         Ok(PlaneRender::new(ctx, begun, (scene, settings), kept))
     }
@@ -182,10 +185,21 @@ impl PlaneRenderer {
         scene: &Scene,
         settings: &RenderSettings,
     ) -> Result<(Frame, f64)> {
+        self.render_with(ctx, scene, settings, &mut |_| {})
+    }
+
+    /// `render`, with `progress` hearing each of its submissions done.
+    pub fn render_with(
+        &mut self,
+        ctx: &GpuContext,
+        scene: &Scene,
+        settings: &RenderSettings,
+        progress: &mut dyn FnMut(RunProgress),
+    ) -> Result<(Frame, f64)> {
         let spare = self.spare.take();
         let mut render = self.begin(ctx, scene, settings, spare)?;
         render.poison(ctx);
-        let times = render.run(ctx);
+        let times = render.run(ctx, progress)?;
         let frame = render.read(ctx)?;
         self.spare = Some(render.into_kept());
         Ok((frame, times.total_ms()))

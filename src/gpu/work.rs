@@ -30,6 +30,19 @@ pub struct Work {
     pub reads: u32,
 }
 
+impl Work {
+    /// Its operations as one count, for a submission's estimate (`gpu::failures::submissions`): a
+    /// division or a special function as 8 and a read as 4. A streaming multiprocessor of
+    /// compute capability 8.x–9.0 gives 128 f32 additions or multiplications a clock but 16
+    /// reciprocals, square roots or transcendentals (the CUDA C++ Programming Guide's table
+    /// of arithmetic instruction throughput); a read from the caches is a few times an add.
+    pub fn operations(&self) -> f64 {
+        f64::from(self.arithmetic)
+            + 8.0 * f64::from(self.divisions + self.special)
+            + 4.0 * f64::from(self.reads)
+    }
+}
+
 impl std::ops::Add for Work {
     type Output = Self;
     fn add(self, b: Self) -> Self {
@@ -94,6 +107,24 @@ pub fn file_work(
         .filter(|(_, shades)| *shades)
         .map(|((function, _, shape), _)| Ok((*shape, work_of(&source, function)?)))
         .collect()
+}
+
+/// The estimated operations of one light at one pixel in the plane module with `file` (or
+/// none), for splitting a render into submissions (`gpu::failures::submissions`): `add_light` and all it
+/// may call (every shape's methods, each side's: counted twice), and, with a file, its largest
+/// function again at its whole loop budget (`method_file::STEPS` steps, each at most its
+/// function's whole work, as a loop body is counted once).
+pub fn light_operations(file: Option<&crate::gpu::method_file::MethodFile>) -> Result<f64, String> {
+    let source = super::plane_module_source_with(false, file);
+    let lab = 2.0 * work_of(&source, "add_light")?.operations();
+    let worst = match file {
+        Some(f) => file_work(f)?
+            .iter()
+            .map(|(_, w)| w.operations())
+            .fold(0.0, f64::max),
+        None => 0.0,
+    };
+    Ok(lab + worst * f64::from(crate::gpu::method_file::STEPS))
 }
 
 /// A method file's work per light in words, a shape after another (`point: 85 arithmetic,

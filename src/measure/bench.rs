@@ -395,7 +395,7 @@ pub fn run(
     check(ctx, &s.lights, s.size)?;
     let (width, height) = s.size;
     let mut renderer = PlaneRenderer::new(ctx, lut, s.checks)?;
-    renderer.set_method_file(ctx, s.method_file.clone());
+    renderer.set_method_file(ctx, s.method_file.clone())?;
     let mut rows = Vec::new();
     let mut kept = None;
     for &lights in &s.lights {
@@ -462,9 +462,11 @@ pub fn run(
                 };
                 let mut render = renderer.begin(ctx, scene, &settings, kept.take())?;
                 for _ in 0..WARM_UP_FRAMES {
-                    render.run(ctx);
+                    render.run(ctx, &mut |_| {})?;
                 }
-                let times: Vec<FrameTimes> = (0..s.frames).map(|_| render.run(ctx)).collect();
+                let times: Vec<FrameTimes> = (0..s.frames)
+                    .map(|_| render.run(ctx, &mut |_| {}))
+                    .collect::<Result<_>>()?;
                 kept = Some(render.into_kept());
                 let mut ms: Vec<f64> = times.iter().map(FrameTimes::total_ms).collect();
                 let mut bins: Vec<f64> = times.iter().filter_map(|t| t.bin_ms).collect();

@@ -334,7 +334,7 @@ pub fn run(
     let mut file_renderer = match &s.method_file {
         Some(f) => {
             let mut r = PlaneRenderer::new(ctx, shipped, ShaderChecks::Checked)?;
-            r.set_method_file(ctx, Some(f.clone()));
+            r.set_method_file(ctx, Some(f.clone()))?;
             Some((f.shades, r))
         }
         None => None,
@@ -438,10 +438,10 @@ fn timed(
     frames: usize,
 ) -> Result<(f64, Frame)> {
     let mut render = renderer.begin(ctx, scene, settings, None)?;
-    render.run(ctx);
+    render.run(ctx, &mut |_| {})?;
     let mut ms: Vec<f64> = (0..frames.max(1))
-        .map(|_| render.run(ctx).total_ms())
-        .collect();
+        .map(|_| render.run(ctx, &mut |_| {}).map(|t| t.total_ms()))
+        .collect::<Result<_>>()?;
     ms.sort_by(f64::total_cmp);
     Ok((ms[ms.len() / 2], render.read(ctx)?))
 }

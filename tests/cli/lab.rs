@@ -92,10 +92,10 @@ fn lab_refuses_a_lesson_that_does_not_open() {
     }
 }
 
-/// Every input file is read up to its stated limit: a device that never ends (`/dev/zero`
-/// filled memory until the process was killed, `/dev/urandom` never returned) and a file
-/// over the limit are refused in one line naming them, as a lesson, a scene, a table and a
-/// cases CSV alike, exit 2.
+/// Every input file is read up to its stated limit, and only a regular file: a device that
+/// never ends (`/dev/zero` filled memory until the process was killed, `/dev/urandom` never
+/// returned) is refused naming its kind, and a file over the limit naming the limit, in one
+/// line, as a lesson, a scene, a table and a cases CSV alike, exit 2.
 #[cfg(unix)]
 #[test]
 fn endless_and_oversized_inputs_are_refused_at_their_limit() {
@@ -114,7 +114,7 @@ fn endless_and_oversized_inputs_are_refused_at_their_limit() {
             let o = ltc_lab(&args);
             assert_refused(&o, device);
             assert!(
-                stderr(&o).contains("longer than"),
+                stderr(&o).contains("character device, not a regular file"),
                 "{args:?}: {}",
                 stderr(&o)
             );

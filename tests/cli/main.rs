@@ -10,6 +10,7 @@ mod eval;
 mod fit;
 mod lab;
 mod lut;
+mod method_file;
 mod render;
 mod render_names;
 mod render_refusals;

@@ -29,7 +29,7 @@ fn shipped(name: &str) -> MethodFile {
 fn renderer_with(file: MethodFile) -> Option<PlaneRenderer> {
     let g = gpu()?;
     let mut r = PlaneRenderer::new(&g.ctx, Lut::embedded(), ShaderChecks::Checked).unwrap();
-    r.set_method_file(&g.ctx, Some(file));
+    r.set_method_file(&g.ctx, Some(file)).unwrap();
     Some(r)
 }
 

@@ -99,7 +99,7 @@ fn culled_images_equal_unculled_ones_exactly() {
                 s.cull = true;
                 let mut render = r.begin(&g.ctx, &scene, &s, None).unwrap();
                 render.poison(&g.ctx);
-                render.run(&g.ctx);
+                render.run(&g.ctx, &mut |_| {}).unwrap();
                 let culled = render.read(&g.ctx).unwrap();
                 let (kept, all) = render.tile_entries(&g.ctx).expect("a culled render");
                 assert!(
@@ -360,7 +360,7 @@ fn a_read_in_steps_is_the_waiting_read() {
             None,
         )
         .unwrap();
-    render.run(&g.ctx);
+    render.run(&g.ctx, &mut |_| {}).unwrap();
     let waited = render.read(&g.ctx).unwrap();
     let pending = render.start_read(&g.ctx);
     let mut texels = pending.try_take(&g.ctx);

@@ -9,6 +9,7 @@ mod gpu_common;
 mod aniso;
 mod chart;
 mod clipping;
+mod device_loss;
 mod harness;
 mod lesson;
 mod lobe;

@@ -247,11 +247,13 @@ impl MeasureJob {
         lut: &Lut,
         file: Option<&MethodFile>,
     ) -> Result<Self, String> {
-        let ctx = GpuContext::from_parts(ctx.device.clone(), ctx.queue.clone(), ctx.info.clone());
+        let ctx = ctx.clone();
         let mut renderer =
             PlaneRenderer::new(&ctx, lut, ShaderChecks::Checked).map_err(|e| e.to_string())?;
         // Checked like every method here, so its time is on the same footing.
-        renderer.set_method_file(&ctx, file.cloned());
+        renderer
+            .set_method_file(&ctx, file.cloned())
+            .map_err(|e| e.to_string())?;
         let (w, h) = MEASURE_SIZE;
         let mut tasks = Vec::new();
         // The reference shades every light exactly, whatever its shape; the LTC forms shade
@@ -452,7 +454,13 @@ impl MeasureJob {
         if done >= total {
             return self.finish_repeat(current.render);
         }
-        let end = (done + self.pacer.next(budget_ms)).min(total);
+        // Paced to the frame's budget, and never past a submission's bound (the chart's small
+        // image holds a method file's whole loop budget for every light of a chunk).
+        let most = self
+            .pacer
+            .next(budget_ms)
+            .min(current.render.plan().lights_per);
+        let end = (done + most).min(total);
         self.idle.store(false, Ordering::Release);
         current.render.step(&self.ctx, done..end);
         let idle = self.idle.clone();

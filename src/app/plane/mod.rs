@@ -156,9 +156,7 @@ impl Panel for PlanePanel {
         self.paint(ui, lab, placed, shown, (a, b));
         let markers = markers(lab, placed);
         self.interact(&response, lab, placed, &markers);
-        if let Some(why) = self.shading.take_stopped() {
-            lab.stop_method_file(&why);
-        }
+        self.shading.tell(lab);
         self.pinned.update(lab, self.state.pinned, placed.size);
         let shading = &mut self.shading;
         self.pinned

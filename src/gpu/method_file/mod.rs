@@ -1,12 +1,16 @@
 //! `shaders/method_file.wgsl` and a method loaded from a WGSL file (docs/design.md §5.13):
 //! one function per light shape it shades, under the interface that file declares, checked
 //! by naga against that interface alone (its errors at the file's own line and column), then
-//! composed after the lab's plane shader — its names renamed where they meet the lab's, a
+//! composed after the lab's plane shader — its module-scope names renamed (`file_…`) but for the
+//! functions the lab calls, so none meets the lab's or shadows a WGSL builtin the lab calls, a
 //! step guard at the top of each of its loops — as the method `file`.
 
+pub mod bounds;
+pub mod device_check;
 pub mod wgsl_text;
 
 use wgpu::naga;
+use wgpu::naga::valid::Capabilities;
 
 use crate::error::{Error, Result};
 use wgsl_text::{first_directive, line_column, module_names, rewrite, tokens};
@@ -54,17 +58,13 @@ pub struct MethodFile {
 }
 
 impl MethodFile {
-    /// The file at `path`, read up to `MAX_BYTES` and checked (`from_source`).
+    /// The file at `path`, read up to `MAX_BYTES` (`files::read_bytes`: a FIFO or a device is
+    /// refused at once) and checked (`from_source`) against the interface alone; the device's
+    /// capabilities are `for_device`'s.
     #[cfg(not(target_arch = "wasm32"))]
     pub fn read(path: &std::path::Path) -> Result<Self> {
-        use std::io::Read;
         let shown = path.display().to_string();
-        let file = std::fs::File::open(path)
-            .map_err(|e| Error::input(&shown, format!("cannot read it: {e}")))?;
-        let mut bytes = Vec::new();
-        file.take(MAX_BYTES as u64 + 1)
-            .read_to_end(&mut bytes)
-            .map_err(|e| Error::input(&shown, format!("cannot read it: {e}")))?;
+        let bytes = crate::files::read_bytes(path, MAX_BYTES as u64)?;
         let name = path
             .file_name()
             .map_or(shown.clone(), |n| n.to_string_lossy().into_owned());
@@ -110,7 +110,12 @@ impl MethodFile {
             ));
         }
         let beside = format!("{source}\n{}", interface());
-        let module = check(name, source, &beside)?;
+        // Every capability naga knows: what the device running it lacks is its check
+        // (`check_for`), with the feature named.
+        let module = check(name, source, &beside, Capabilities::all())?;
+        bounds::check(&module, source, &|offset, message| {
+            place(name, source, offset, message)
+        })?;
         // A name's first place in the file (its declaration, where it is declared first).
         let at_name = |wanted: &str, message: String| {
             let offset = toks
@@ -172,7 +177,7 @@ impl MethodFile {
             shades,
         };
         let composed = crate::gpu::plane_module_source_with(false, Some(&file));
-        check(name, "", &composed).map_err(|e| Error {
+        check(name, "", &composed, Capabilities::all()).map_err(|e| Error {
             message: format!(
                 "the lab could not compose it with its shader: {}",
                 e.message
@@ -208,8 +213,8 @@ impl MethodFile {
     }
 
     /// What follows `lab` (the plane shader's text) in the module: the constants of the
-    /// shapes it shades, its text with every module-scope name that meets one of `lab`'s
-    /// renamed and a step guard in each loop, and a stub for each shape it does not shade.
+    /// shapes it shades, its text with every module-scope name but its entries renamed
+    /// and a step guard in each loop, and a stub for each shape it does not shade.
     pub fn composed(&self, lab: &str) -> String {
         let lab_names: std::collections::HashSet<&str> = module_names(&tokens(lab))
             .into_iter()
@@ -217,9 +222,12 @@ impl MethodFile {
             .collect();
         let own = module_names(&tokens(&self.source));
         let taken = |n: &str| lab_names.contains(n) || own.iter().any(|o| o.0 == n);
+        // Every name but the functions the lab calls: a name that meets one of the lab's, and
+        // one that shadows a WGSL builtin (`fn normalize`, `alias vec3f`), which would
+        // otherwise take the lab's own calls to it, since WGSL's module scope is one.
         let renames: Vec<(String, String)> = own
             .iter()
-            .filter(|(n, _)| lab_names.contains(n))
+            .filter(|(n, _)| !ENTRIES.iter().any(|e| e.0 == *n))
             .map(|(n, _)| {
                 let mut new = format!("file_{n}");
                 while taken(&new) {
@@ -283,36 +291,39 @@ pub fn interface() -> &'static str {
     &SOURCE[..end]
 }
 
-/// `text` parsed and validated by naga; an error in its first `source.len()` bytes (the
-/// file's own text) at its line and column there.
-fn check(name: &str, source: &str, text: &str) -> Result<naga::Module> {
-    let place = |offset: Option<usize>, message: String| match offset {
+/// An error of the file `name` at `offset` of its text `source` (its line and column there), or
+/// of the file as a whole where the offset falls outside it.
+fn place(name: &str, source: &str, offset: Option<usize>, message: String) -> Error {
+    match offset {
         Some(o) if o < source.len() => {
             let (line, column) = line_column(source, o);
             Error::input(name, format!("line {line}, column {column}: {message}"))
         }
         _ => Error::input(name, message),
-    };
+    }
+}
+
+/// `text` parsed and validated by naga with `capabilities`; an error in its first
+/// `source.len()` bytes (the file's own text) at its line and column there.
+fn check(name: &str, source: &str, text: &str, capabilities: Capabilities) -> Result<naga::Module> {
+    let place = |offset, message| place(name, source, offset, message);
     let module = naga::front::wgsl::parse_str(text).map_err(|e| {
         place(
             e.location(text).map(|l| l.offset as usize),
             e.message().to_string(),
         )
     })?;
-    naga::valid::Validator::new(
-        naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::all(),
-    )
-    .validate(&module)
-    .map_err(|e| {
-        let mut message = e.as_inner().to_string();
-        let mut source_err = std::error::Error::source(e.as_inner());
-        while let Some(s) = source_err {
-            message.push_str(&format!(": {s}"));
-            source_err = s.source();
-        }
-        place(e.location(text).map(|l| l.offset as usize), message)
-    })?;
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
+        .validate(&module)
+        .map_err(|e| {
+            let mut message = e.as_inner().to_string();
+            let mut source_err = std::error::Error::source(e.as_inner());
+            while let Some(s) = source_err {
+                message.push_str(&format!(": {s}"));
+                source_err = s.source();
+            }
+            place(e.location(text).map(|l| l.offset as usize), message)
+        })?;
     Ok(module)
 }
 
@@ -332,6 +343,6 @@ fn wrong_signature(
             let call = format!(
                 "{beside}\nfn method_file_call(p: MethodPixel, l: {light}) -> MethodRadiance {{ return {f}(p, l); }}\n"
             );
-            check(name, "", &call).is_err()
+            check(name, "", &call, Capabilities::all()).is_err()
         })
 }

@@ -7,6 +7,7 @@ use crate::app::work::completion::{Chunk, Completion};
 use crate::app::work::pacer::Pacer;
 use crate::gpu::GpuContext;
 use crate::gpu::display::DisplayPass;
+use crate::gpu::failures::submissions::METHOD_FILE_SUBMISSION_MS;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::plane_render::PlaneRender;
 use crate::gpu::renderer::PlaneRenderer;
@@ -46,14 +47,12 @@ pub(super) struct GpuShading {
     pub(super) in_flight: Option<InFlight>,
     /// How the shown image was last made from the sums (a change re-encodes it).
     pub(super) shown: Option<(FrameKind, f64)>,
-    /// Why a method file's render was stopped (a batch past `METHOD_FILE_BATCH_MS`).
+    /// Why a method file's render was stopped (a batch past `METHOD_FILE_SUBMISSION_MS`).
     pub(super) stopped: Option<String>,
+    /// The next band of tile rows of the light being summed, where one light over the whole
+    /// image is past a submission's bound (`submissions::Plan`).
+    pub(super) band: u32,
 }
-
-/// The longest a batch of a render with a method file may take before the lab stops that
-/// render (docs/design.md §5.13): the lab paces its batches to a few ms, so a batch of this
-/// long holds the window for as long; the file's loops are bounded, so its batches end.
-pub const METHOD_FILE_BATCH_MS: f64 = 2000.0;
 
 /// A chunk submitted and not yet timed.
 pub(super) struct InFlight {
@@ -88,6 +87,7 @@ impl GpuShading {
             in_flight: None,
             shown: None,
             stopped: None,
+            band: 0,
         })
     }
 
@@ -102,6 +102,7 @@ impl GpuShading {
         // A new render's cost per light may be anything: its chunks start small again.
         self.shade_pacer = Pacer::default();
         self.bin_pacer = Pacer::default();
+        self.band = 0;
         if let Some(chunk) = &mut self.in_flight {
             chunk.stale = true;
         }
@@ -140,7 +141,8 @@ impl GpuShading {
             .render
             .as_ref()
             .is_some_and(|r| r.settings().methods().contains(&Method::File));
-        if file && chunk.work == Work::Shade && !chunk.stale && wall_ms > METHOD_FILE_BATCH_MS {
+        if file && chunk.work == Work::Shade && !chunk.stale && wall_ms > METHOD_FILE_SUBMISSION_MS
+        {
             let name = self
                 .renderer
                 .method_file()
@@ -149,7 +151,7 @@ impl GpuShading {
                 "{name}: one batch of {} lights took {:.1} s, past the lab's {:.0} s for a method file: stopped. Measure it in the terminal (ltc-lab study or bench --method-file)",
                 chunk.units,
                 wall_ms / 1e3,
-                METHOD_FILE_BATCH_MS / 1e3
+                METHOD_FILE_SUBMISSION_MS / 1e3
             ));
             self.render = None;
             self.in_flight = None;
@@ -211,8 +213,24 @@ impl GpuShading {
             let rows = self.bin_pacer.next(budget_ms);
             render.bin_step(&self.ctx, rows);
             (Work::Bin, rows)
+        } else if render.plan().rows_per < render.plan().rows {
+            // One light over the image is past a submission's bound: a band of rows at a time,
+            // the light done with its last band.
+            let plan = render.plan();
+            let rows = self.band..(self.band + plan.rows_per).min(plan.rows);
+            render.step_band(&self.ctx, progress.done..progress.done + 1, rows.clone());
+            self.band = rows.end % plan.rows;
+            let units = usize::from(self.band == 0);
+            progress.done += units;
+            self.encode_display(kind, exposure * progress.preview_scale());
+            (Work::Shade, units)
         } else {
-            let end = (progress.done + self.shade_pacer.next(budget_ms)).min(progress.total);
+            // Paced to the frame's budget, and never past a submission's bound.
+            let most = self
+                .shade_pacer
+                .next(budget_ms)
+                .min(render.plan().lights_per);
+            let end = (progress.done + most).min(progress.total);
             render.step(&self.ctx, progress.done..end);
             let units = end - progress.done;
             progress.done = end;

@@ -117,10 +117,12 @@ pub struct Shading {
     error: Option<String>,
     /// The finished image's read-back, on its way (`read`).
     reading: Option<PendingRead>,
-    /// Why a method file's render was stopped, for the panel to say (`take_stopped`).
+    /// Why a method file's render was stopped, for the lab to say (`tell`).
     stopped: Option<String>,
     /// Whether the finished render's image was checked for a method file's stop mark.
     file_checked: bool,
+    /// What the device said went wrong, for the lab to say once (`tell`).
+    device_note: Option<String>,
 }
 
 enum Path {
@@ -146,6 +148,7 @@ impl Shading {
             reading: None,
             stopped: None,
             file_checked: false,
+            device_note: None,
         };
         (shading, why)
     }
@@ -191,7 +194,7 @@ impl Shading {
                 (parts::shaded(scene, overrides), s)
             },
         );
-        let restart = self.render.count().1 != before;
+        let restart = self.render.count().1 != before || self.watch_device();
         let kind = if settings.view == View::Diff {
             FrameKind::RelativeDifference
         } else {
@@ -242,6 +245,30 @@ impl Shading {
         }
     }
 
+    /// What the device said went wrong since the last frame (`GpuContext::check`): an error it
+    /// reported of the lab's work is shown over the image; a lost device (a watchdog's or a
+    /// driver's reset) moves the plane to the CPU, every setting kept. True where the render
+    /// must start again (on the CPU).
+    fn watch_device(&mut self) -> bool {
+        let Path::Gpu(g) = &self.path else {
+            return false;
+        };
+        let Err(e) = g.ctx.check() else {
+            return false;
+        };
+        let lost = g.ctx.failures.lost().is_some();
+        if lost {
+            self.path = Path::Cpu(CpuShading::default());
+            self.device_note = Some(format!(
+                "{e}. The plane is shaded on the CPU from now on, every setting kept; open the lab again to shade on the GPU"
+            ));
+        } else {
+            self.error = Some(e.to_string());
+            self.device_note = Some(e.to_string());
+        }
+        lost
+    }
+
     /// Reads the finished image back over frames and says where a method file's loops were
     /// stopped in it (its alpha mark, docs/design.md §5.13).
     fn check_file_mark(&mut self, ui: &egui::Context) {
@@ -281,10 +308,16 @@ impl Shading {
         Some((render, texels))
     }
 
-    /// Why a method file's render was stopped, once: the panel says it and takes the file
-    /// off its side.
-    pub fn take_stopped(&mut self) -> Option<String> {
-        self.stopped.take()
+    /// What the render has to tell the lab, once: a method file's stop (the lab puts its side
+    /// back to the lab's form and says why) and what the device said went wrong
+    /// (`watch_device`).
+    pub fn tell(&mut self, lab: &mut Lab) {
+        if let Some(why) = self.stopped.take() {
+            lab.stop_method_file(&why);
+        }
+        if let Some(note) = self.device_note.take() {
+            lab.say(crate::app::lab::Message::error(note));
+        }
     }
 
     /// Starts the render afresh (the tables brought up to date first).
@@ -307,8 +340,13 @@ impl Shading {
                 }
                 if self.error.is_none() {
                     // The method file, where a side names it (the same file keeps the module).
-                    g.renderer
-                        .set_method_file(&g.ctx, lab.method_file().cloned());
+                    self.error = g
+                        .renderer
+                        .set_method_file(&g.ctx, lab.method_file().cloned())
+                        .err()
+                        .map(|e| e.to_string());
+                }
+                if self.error.is_none() {
                     self.error = g.begin(&scene, settings).err();
                 }
                 self.progress = Progress {
