@@ -65,28 +65,27 @@ fn spawn_default_render(dir: &Path, scene: &Path) -> std::process::Child {
         .unwrap()
 }
 
-/// A FIFO for a scene: a render reading it waits until the test writes the scene, which
-/// holds the render at a known point without any timing.
-fn scene_fifo(dir: &Path, name: &str) -> std::path::PathBuf {
-    let fifo = dir.join(name);
-    let made = std::process::Command::new("mkfifo")
-        .arg(&fifo)
-        .status()
-        .unwrap();
-    assert!(made.success());
-    fifo
+/// A scene whose render holds the process for seconds: a million lights on the CPU (64
+/// pixels × 10⁶ lights of f64 LTC, seconds on two cores). A FIFO held it at a known point
+/// before; a FIFO is refused now, as every special file is (docs/design.md §5.13).
+fn held_scene(dir: &Path, name: &str) -> std::path::PathBuf {
+    let path = dir.join(name);
+    let text = std::fs::read_to_string(preset("paper-100.toml"))
+        .unwrap()
+        .replace("count = 100", "count = 1000000");
+    std::fs::write(&path, text).unwrap();
+    path
 }
 
-/// The default name is taken when the render starts, before it reads its scene (it was
-/// taken only when the image was written): while the render waits on a FIFO for its scene,
-/// its empty claim is there and a second render of that name writes `-2`. Filled, the
-/// claim is the image the render reports.
+/// The default name is taken when the render starts (it was taken only when the image was
+/// written): while a long render runs, its empty claim is there and a second render of that
+/// name writes `-2`. Filled, the claim is the image the render reports.
 #[test]
 fn a_default_render_claims_its_name_at_the_start() {
     let dir = tempfile::tempdir().unwrap();
-    let fifo = scene_fifo(dir.path(), "held.toml");
+    let held = held_scene(dir.path(), "held.toml");
     let claimed = dir.path().join("held-ltc.png");
-    let mut first = spawn_default_render(dir.path(), &fifo);
+    let mut first = spawn_default_render(dir.path(), &held);
     crate::study::wait_until(&mut first, "held-ltc.png claimed", || claimed.exists());
     // Another scene of the same name, which does not wait.
     std::fs::create_dir(dir.path().join("other")).unwrap();
@@ -95,9 +94,6 @@ fn a_default_render_claims_its_name_at_the_start() {
     let second = spawn_default_render(dir.path(), &same_name)
         .wait_with_output()
         .unwrap();
-    // The scene is given before anything is asserted, so that a failure leaves no render
-    // waiting for ever.
-    std::fs::write(&fifo, std::fs::read(preset("figure2-normal.toml")).unwrap()).unwrap();
     let first = first.wait_with_output().unwrap();
     for (o, name) in [(&second, "held-ltc-2.png"), (&first, "held-ltc.png")] {
         assert!(o.status.success(), "{}", stderr(o));
@@ -117,7 +113,7 @@ fn a_default_render_claims_its_name_at_the_start() {
 }
 
 /// A claim that is never filled goes again: on a refused scene, and on SIGTERM (exit 130
-/// through the handler) while the render waits for its scene.
+/// through the handler) while the render runs.
 #[test]
 fn an_unfilled_default_name_is_removed() {
     let dir = tempfile::tempdir().unwrap();
@@ -129,9 +125,9 @@ fn an_unfilled_default_name_is_removed() {
         .unwrap();
     assert_refused(&o, "bad.toml");
     assert!(!dir.path().join("bad-ltc.png").exists(), "the claim stayed");
-    let fifo = scene_fifo(dir.path(), "held.toml");
+    let held = held_scene(dir.path(), "held.toml");
     let claimed = dir.path().join("held-ltc.png");
-    let mut child = spawn_default_render(dir.path(), &fifo);
+    let mut child = spawn_default_render(dir.path(), &held);
     crate::study::wait_until(&mut child, "held-ltc.png claimed", || claimed.exists());
     crate::study::terminate(&child);
     let status = crate::study::wait_for_exit(&mut child);
