@@ -14,9 +14,15 @@ use super::{CullArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, p
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Light counts, comma-separated.
-    #[arg(long, value_delimiter = ',', default_value = "100,500,1000,5000")]
-    lights: Vec<usize>,
+    /// Light counts, comma-separated (default 100,500,1000,5000); not with --scene, which
+    /// brings its own.
+    #[arg(long, value_delimiter = ',')]
+    lights: Option<Vec<usize>>,
+    /// A scene file (TOML, as `render` takes) timed as given in place of the generated
+    /// lights: its lights and their shapes (each point method's rows shade its sized lights by
+    /// the lab's default method of their shape), camera and material.
+    #[arg(long)]
+    scene: Option<PathBuf>,
     #[arg(long, default_value = "1920x1080", value_parser = parse_size)]
     size: (usize, usize),
     /// Timed frames per method and light count (after 5 warm-up frames).
@@ -65,7 +71,23 @@ pub struct Args {
 }
 
 pub fn run(a: &Args) -> Result<()> {
-    check_frames_and_lights(a.frames, &a.lights)?;
+    let scene = a
+        .scene
+        .as_deref()
+        .map(ltc_lab::scene::Scene::load)
+        .transpose()?;
+    let lights = match (&a.lights, &scene) {
+        (Some(_), Some(_)) => {
+            return Err(ltc_lab::error::Error::input(
+                "--lights",
+                "--scene brings its own lights",
+            ));
+        }
+        (Some(l), None) => l.clone(),
+        (None, Some(s)) => vec![s.lights.len()],
+        (None, None) => vec![100, 500, 1000, 5000],
+    };
+    check_frames_and_lights(a.frames, &lights)?;
     if let Some(r) = a.sphere_radius {
         super::check_size("--sphere-radius", r)?;
     }
@@ -105,7 +127,7 @@ pub fn run(a: &Args) -> Result<()> {
     }
     let lut = a.lut.load()?;
     let ctx = GpuContext::new()?;
-    ltc_lab::measure::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
+    ltc_lab::measure::bench::check(&ctx, &lights, a.size).map_err(super::flag_of)?;
     let device = ctx.describe();
     eprintln!("benchmarking on {device}");
     if !ctx.has_timestamps() {
@@ -124,7 +146,7 @@ pub fn run(a: &Args) -> Result<()> {
         ShaderChecks::Trusted
     };
     let settings = BenchSettings {
-        lights: a.lights.clone(),
+        lights,
         size: a.size,
         frames: a.frames,
         checks,
@@ -137,6 +159,7 @@ pub fn run(a: &Args) -> Result<()> {
         skip_exact: a.skip_exact,
         method_file,
         alpha_y: a.alpha_y,
+        scene,
     };
     let rows = ltc_lab::measure::bench::run(&ctx, &lut, &settings, |r| {
         eprintln!(

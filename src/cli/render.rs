@@ -211,13 +211,22 @@ pub fn run(a: &Args) -> Result<()> {
         None => NamedTables::with_a(named_a, table_a),
     };
     let start = Instant::now();
-    let (frame, device) = if a.cpu {
-        let frame = cpu::render(&scene, tables.pair(), &settings);
+    // A difference is measured too: each side alone, A against B (`sides_measured`).
+    let mut all = vec![settings];
+    if settings.view == View::Diff {
+        all.extend([View::A, View::B].map(|view| RenderSettings { view, ..settings }));
+    }
+    let (frames, device) = if a.cpu {
+        let frames = all
+            .iter()
+            .map(|s| cpu::render(&scene, tables.pair(), s))
+            .collect();
         let threads = rayon::current_num_threads();
-        (frame, format!("the CPU ({threads} threads)"))
+        (frames, format!("the CPU ({threads} threads)"))
     } else {
-        render_gpu(&scene, &tables, &settings, method_file.as_ref())?
+        render_gpu(&scene, &tables, &all, method_file.as_ref())?
     };
+    let (frame, caption) = sides_measured(frames, &settings, (&scene, method_file.as_ref()));
     let seconds = start.elapsed().as_secs_f64();
     if let Some(file) = &method_file {
         // A file's light may be negative (a port's artifact, shown as it is), never NaN.
@@ -241,7 +250,12 @@ pub fn run(a: &Args) -> Result<()> {
             ),
         ));
     }
-    let bytes = frame_bytes(&frame, format, scene.exposure);
+    let bytes = match (format, &caption) {
+        (ImageFormat::Png, Some(caption)) => {
+            ltc_lab::output::png_with_caption(&frame, scene.exposure, caption)
+        }
+        _ => frame_bytes(&frame, format, scene.exposure),
+    };
     let written = match claim {
         Some(claim) => claim.fill(&bytes)?,
         None => {
@@ -367,13 +381,82 @@ fn table_b(a: &Args) -> Result<Option<NamedTable>> {
     }))
 }
 
-/// The GPU render, checked against the adapter's limits before any work.
+/// The first of `frames` (the image asked for) and, for a difference (each side alone after
+/// it), A measured against B, said on stderr and returned as the PNG's caption.
+fn sides_measured(
+    mut frames: Vec<Frame>,
+    s: &RenderSettings,
+    (scene, file): (&Scene, Option<&MethodFile>),
+) -> (Frame, Option<String>) {
+    let sides = frames.split_off(1);
+    let frame = frames.remove(0);
+    let [a, b] = &sides[..] else {
+        return (frame, None);
+    };
+    let e = ltc_lab::metrics::image_error(a, b);
+    eprintln!(
+        "diff: A ({}) against B ({}): relative RMSE {:.2}%, p99 of the pixels' relative error {:.2}%",
+        side_name(&s.a, scene, file),
+        side_name(&s.b, scene, file),
+        100.0 * e.rel_rmse,
+        100.0 * e.p99_rel
+    );
+    let caption = format!(
+        "RMSE {:.2}% P99 {:.2}%",
+        100.0 * e.rel_rmse,
+        100.0 * e.p99_rel
+    );
+    (frame, Some(caption))
+}
+
+/// A side's methods for the shapes `scene` holds (`ltc-polygon`, or `point ltc, rect
+/// ltc-polygon` where it holds several), a method file by its name.
+fn side_name(
+    m: &ltc_lab::render::ShapeMethods,
+    scene: &Scene,
+    file: Option<&MethodFile>,
+) -> String {
+    use ltc_lab::light::Shape;
+    let point = match (m.point, file) {
+        (Method::File, Some(f)) => f.name.clone(),
+        (p, _) => p.name().to_string(),
+    };
+    // The file shades every shape it has a function for.
+    let by_file = |k: usize| match (m.point, file) {
+        (Method::File, Some(f)) if f.shades[k] => Some(f.name.clone()),
+        _ => None,
+    };
+    let mut parts: Vec<(&str, String)> = Vec::new();
+    for light in &scene.lights {
+        let part = match light.shape {
+            Shape::Point => ("point", point.clone()),
+            Shape::Sphere { .. } => ("sphere", by_file(1).unwrap_or(m.sphere.name().into())),
+            Shape::Rect { .. } => ("rect", by_file(2).unwrap_or(m.rect.name().into())),
+            Shape::Disk { .. } => ("disk", by_file(3).unwrap_or(m.disk.name().into())),
+        };
+        if !parts.contains(&part) {
+            parts.push(part);
+        }
+    }
+    match &parts[..] {
+        [] => point,
+        [(_, one)] => one.clone(),
+        many => many
+            .iter()
+            .map(|(shape, method)| format!("{shape} {method}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+    }
+}
+
+/// The GPU renders of `all`, checked against the adapter's limits before any work.
 fn render_gpu(
     scene: &Scene,
     tables: &NamedTables,
-    s: &RenderSettings,
+    all: &[RenderSettings],
     file: Option<&MethodFile>,
-) -> Result<(Frame, String)> {
+) -> Result<(Vec<Frame>, String)> {
+    let s = &all[0];
     let ctx = GpuContext::new().map_err(|e| Error {
         message: format!("{} (--cpu)", e.message),
         ..e
@@ -395,6 +478,10 @@ fn render_gpu(
                 .set_position(at.lights_done as u64);
         }
     })?;
+    let mut frames = vec![frame];
+    for s in &all[1..] {
+        frames.push(renderer.render(&ctx, scene, s)?.0);
+    }
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
@@ -404,5 +491,5 @@ fn render_gpu(
             ltc_lab::gpu::failures::submissions::MAX_SUBMISSION_WORK
         );
     }
-    Ok((frame, format!("{} ({ms:.2} ms GPU)", ctx.describe())))
+    Ok((frames, format!("{} ({ms:.2} ms GPU)", ctx.describe())))
 }

@@ -28,8 +28,10 @@ pub struct Args {
     out: Option<PathBuf>,
     #[arg(long, default_value = "320x180", value_parser = parse_size)]
     size: (usize, usize),
-    #[arg(long, value_delimiter = ',', default_value = "100,1000")]
-    lights: Vec<usize>,
+    /// Light counts of the generated lights, comma-separated (default 100,1000); not with a
+    /// scene file, which brings its own.
+    #[arg(long, value_delimiter = ',')]
+    lights: Option<Vec<usize>>,
     #[arg(long, value_delimiter = ',', default_value = "0.1,0.27,0.6")]
     alpha: Vec<f64>,
     /// Timed frames per variant (median, after one warm-up).
@@ -51,16 +53,21 @@ pub struct Args {
     )]
     horizon: Vec<Horizon>,
     /// paper-100: paper-100's lights (0.05–0.6 above the plane); low-lights: lights
-    /// 0.02–0.15 above it, most of them within 15° of the horizon where they shade.
-    #[arg(long, default_value = "paper-100", value_parser = ["paper-100", "low-lights"])]
+    /// 0.02–0.15 above it, most of them within 15° of the horizon where they shade; or a scene
+    /// file (TOML, as `render` takes; the presets are in assets/scenes/), studied as given:
+    /// every method of each shape it holds against its exact image, in variants
+    /// `<variant>@<scene>` (docs/design.md §4.6).
+    #[arg(long, default_value = "paper-100")]
     scene: String,
     /// Also every light a square rect of this half-edge facing the plane (scene units, ≥ 1e-4),
     /// by each rect method against the rects' exact integral: variants rect-<method>
-    /// (docs/design.md §1.11).
+    /// (docs/design.md §1.11); and the rects' failure preset, rect-horizon, as given
+    /// (variants <variant>@rect-horizon).
     #[arg(long)]
     rect_half_edge: Option<f64>,
     /// Also every light a disk of this radius facing the plane (scene units, ≥ 1e-4), by each
-    /// disk method against the disks' exact integral: variants disk-<method> (§1.12).
+    /// disk method against the disks' exact integral: variants disk-<method> (§1.12); and the
+    /// disks' failure preset, disk-limits, as given (variants <variant>@disk-limits).
     #[arg(long)]
     disk_radius: Option<f64>,
     /// Also the method in this WGSL file (docs/design.md §5.13): variants `file`, and
@@ -70,8 +77,55 @@ pub struct Args {
     method_file: Option<PathBuf>,
 }
 
+/// The light sets `--scene` names: generated lights at these heights, or none (a scene file).
+fn generated(a: &Args) -> Result<(Option<[f64; 2]>, Vec<usize>)> {
+    let heights = match a.scene.as_str() {
+        "paper-100" => Some(ltc_lab::measure::bench::PAPER_HEIGHTS),
+        "low-lights" => Some(study::LOW_HEIGHTS),
+        _ => None,
+    };
+    let lights = match (&a.lights, heights) {
+        (Some(_), None) => {
+            return Err(Error::input(
+                "--lights",
+                format!("the scene file {} brings its own lights", a.scene),
+            ));
+        }
+        (Some(l), Some(_)) => l.clone(),
+        (None, Some(_)) => vec![100, 1000],
+        (None, None) => Vec::new(),
+    };
+    Ok((heights, lights))
+}
+
+/// The scenes studied as given: the scene file, and each sized shape's failure preset.
+fn scenes(a: &Args, file: bool) -> Result<Vec<(String, ltc_lab::scene::Scene)>> {
+    let mut scenes = Vec::new();
+    if file {
+        let path = Path::new(&a.scene);
+        let name = path
+            .file_stem()
+            .map_or(a.scene.clone(), |s| s.to_string_lossy().into_owned());
+        scenes.push((name, ltc_lab::scene::Scene::load(path)?));
+    }
+    let presets = [
+        (a.rect_half_edge.is_some(), "rect-horizon"),
+        (a.disk_radius.is_some(), "disk-limits"),
+    ];
+    for (_, name) in presets.into_iter().filter(|p| p.0) {
+        scenes.push((name.to_string(), ltc_lab::scene::preset(name)));
+    }
+    Ok(scenes)
+}
+
 pub fn run(a: &Args) -> Result<()> {
-    check_frames_and_lights(a.frames, &a.lights)?;
+    let (heights, lights) = generated(a)?;
+    let counts: Vec<usize> = match heights {
+        Some(_) => lights.clone(),
+        None => vec![1],
+    };
+    check_frames_and_lights(a.frames, &counts)?;
+    let scenes = scenes(a, heights.is_none())?;
     if let Some(h) = a.rect_half_edge {
         super::check_size("--rect-half-edge", h)?;
     }
@@ -97,23 +151,19 @@ pub fn run(a: &Args) -> Result<()> {
     };
     let dir = out.dir().to_path_buf();
     let ctx = GpuContext::new()?;
-    ltc_lab::measure::bench::check(&ctx, &a.lights, a.size).map_err(super::flag_of)?;
+    ltc_lab::measure::bench::check(&ctx, &lights, a.size).map_err(super::flag_of)?;
     let device = ctx.describe();
     eprintln!("study on {device}");
     let start = Instant::now();
     let settings = study::StudySettings {
         size: a.size,
-        lights: a.lights.clone(),
+        lights,
         alphas: a.alpha.clone(),
         frames: a.frames,
         culls: a.culling.cull.clone(),
         range: Range::or_default(a.culling.range),
         horizons: a.horizon.clone(),
-        heights: if a.scene == "low-lights" {
-            study::LOW_HEIGHTS
-        } else {
-            ltc_lab::measure::bench::PAPER_HEIGHTS
-        },
+        heights: heights.unwrap_or(ltc_lab::measure::bench::PAPER_HEIGHTS),
         rect_half_edge: a.rect_half_edge,
         disk_radius: a.disk_radius,
         method_file: a
@@ -121,8 +171,9 @@ pub fn run(a: &Args) -> Result<()> {
             .as_deref()
             .map(ltc_lab::gpu::method_file::MethodFile::read)
             .transpose()?,
+        scenes,
     };
-    let rows = study::run(&ctx, &lut, &settings, |r| {
+    let mut report = |r: &study::StudyRow| {
         eprintln!(
             "  α {:<5} {:>6} lights cull {:>3} {:>13}: {:9.3} ms, rel RMSE {:.2e}, p99 {:.2e}",
             r.alpha,
@@ -133,7 +184,15 @@ pub fn run(a: &Args) -> Result<()> {
             r.rel_rmse,
             r.p99_rel_err
         );
-    })?;
+    };
+    let mut begun = study::Study::new(&ctx, &lut, &settings)?;
+    let mut rows = begun.generated(&ctx, &settings, &mut report)?;
+    rows.extend(ltc_lab::measure::scene_study::run(
+        &ctx,
+        &mut begun,
+        &settings,
+        &mut report,
+    )?);
     let csv = study::csv(&rows);
     out.stage("study.csv", csv.as_bytes())?;
     let png = study::pareto_png(&rows, &ctx.info.name, &a.scene)?;

@@ -278,6 +278,10 @@ pub struct BenchSettings {
     /// Also time every run with the material anisotropic, of this α_y (α_x the scene's α),
     /// right after the same run isotropic.
     pub alpha_y: Option<f64>,
+    /// A scene as given (`bench --scene FILE`) in place of the generated lights: its lights,
+    /// their shapes (each point method's rows shade its sized lights by the lab's default
+    /// method of their shape), its camera and material.
+    pub scene: Option<Scene>,
 }
 
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
@@ -392,14 +396,24 @@ pub fn run(
     s: &BenchSettings,
     mut progress: impl FnMut(&BenchRow),
 ) -> Result<Vec<BenchRow>> {
-    check(ctx, &s.lights, s.size)?;
+    let counts = match &s.scene {
+        Some(scene) => vec![scene.lights.len()],
+        None => s.lights.clone(),
+    };
+    check(ctx, &counts, s.size)?;
     let (width, height) = s.size;
     let mut renderer = PlaneRenderer::new(ctx, lut, s.checks)?;
     renderer.set_method_file(ctx, s.method_file.clone())?;
     let mut rows = Vec::new();
     let mut kept = None;
-    for &lights in &s.lights {
-        let points = bench_scene(lights, s.range);
+    // Sized lights of a scene as given keep their shape in the point methods' rows.
+    let defaults = RenderSettings::single(1, 1, Method::Ltc).a;
+    let given = s.scene.is_some();
+    for &lights in &counts {
+        let points = s
+            .scene
+            .clone()
+            .unwrap_or_else(|| bench_scene(lights, s.range));
         let fraction = in_range_fraction(&points, width, height);
         let mut spheres = points.clone();
         for l in &mut spheres.lights {
@@ -438,14 +452,17 @@ pub fn run(
                         point: method,
                         sphere: match sizing {
                             Sizing::Sphere(m) => m,
+                            _ if given => defaults.sphere,
                             _ => SphereMethod::LtcPoint,
                         },
                         rect: match sizing {
                             Sizing::Rect(m) => m,
+                            _ if given => defaults.rect,
                             _ => RectMethod::LtcPoint,
                         },
                         disk: match sizing {
                             Sizing::Disk(m) => m,
+                            _ if given => defaults.disk,
                             _ => DiskMethod::LtcPoint,
                         },
                     },

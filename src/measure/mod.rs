@@ -11,6 +11,7 @@ pub mod bench_table;
 pub mod eval;
 pub mod horizon;
 pub mod parity;
+pub mod scene_study;
 pub mod shape_error;
 pub mod sphere_error;
 pub mod study;

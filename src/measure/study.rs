@@ -266,6 +266,28 @@ pub struct StudySettings {
     /// study it shades (`rect-file`, `disk-file`), timed with wgpu's runtime checks (its own
     /// renderer: a file is not trusted) and measured against the same exact images.
     pub method_file: Option<MethodFile>,
+    /// Scenes studied as given, by name (`study --scene FILE`, and each sized shape's failure
+    /// preset beside its generated lights): every method of each shape they hold against
+    /// their exact image (`scene_study`).
+    pub scenes: Vec<(String, Scene)>,
+}
+
+/// The renderers of a study: one per table its variants shade with, and the method file's.
+pub(crate) struct Renderers {
+    pub by_lut: Vec<(LutChoice, PlaneRenderer)>,
+    pub file: Option<([bool; 4], PlaneRenderer)>,
+}
+
+impl Renderers {
+    /// The renderer of the table `lut` (made for every variant's table).
+    pub fn of(&mut self, lut: LutChoice) -> &mut PlaneRenderer {
+        &mut self
+            .by_lut
+            .iter_mut()
+            .find(|(c, _)| *c == lut)
+            .expect("made for every variant's table")
+            .1
+    }
 }
 
 /// The sized variants of a study: each shape asked for, its scene (the study's lights as that
@@ -293,144 +315,163 @@ fn sized_variants(s: &StudySettings, scene: &Scene) -> Vec<(Scene, Vec<(String, 
 /// lights within 15° of the horizon (a light 0.15 up is 15° above a pixel 0.56 away).
 pub const LOW_HEIGHTS: [f64; 2] = [0.02, 0.15];
 
-/// Runs the study: for each α, light count and culling, the exact image, then every variant,
-/// each timed (median of `frames` after one warm-up) and measured against the exact image.
-pub fn run(
-    ctx: &GpuContext,
-    shipped: &Lut,
-    s: &StudySettings,
-    mut progress: impl FnMut(&StudyRow),
-) -> Result<Vec<StudyRow>> {
-    crate::measure::bench::check(ctx, &s.lights, s.size)?;
-    let (width, height) = s.size;
-    let variants: Vec<Variant> = variants()
-        .into_iter()
-        .filter(|v| !v.method.needs_f16() || ctx.has_f16())
-        .filter(|v| v.horizon == Horizon::Eq30 || s.horizons.contains(&v.horizon))
-        .collect();
-    let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
-    for v in &variants {
-        if renderers.iter().any(|(c, _)| *c == v.lut) {
-            continue;
-        }
-        let lut = match v.lut {
-            LutChoice::Shipped => shipped.clone(),
-            LutChoice::Point => Lut::embedded_point().clone(),
-            LutChoice::Arrival => Lut::shipped(Table::Arrival).clone(),
-            LutChoice::Constrained => Lut::shipped(Table::Constrained).clone(),
-            LutChoice::Fitted(size) => {
-                fit_table(
-                    &FitSettings {
-                        size,
-                        ..FitSettings::default()
-                    },
-                    &|| {},
-                )
-                .lut
+/// A study begun: the variants this device runs and the renderers of their tables (fitted
+/// once for the generated lights and the scenes as given, `scene_study`).
+pub struct Study {
+    pub(crate) variants: Vec<Variant>,
+    pub(crate) renderers: Renderers,
+}
+
+impl Study {
+    /// The variants of `s` this device runs, and their renderers.
+    pub fn new(ctx: &GpuContext, shipped: &Lut, s: &StudySettings) -> Result<Self> {
+        crate::measure::bench::check(ctx, &s.lights, s.size)?;
+        let variants: Vec<Variant> = variants()
+            .into_iter()
+            .filter(|v| !v.method.needs_f16() || ctx.has_f16())
+            .filter(|v| v.horizon == Horizon::Eq30 || s.horizons.contains(&v.horizon))
+            .collect();
+        let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
+        // The scenes as given shade sized lights with the shipped table too.
+        let tables = variants.iter().map(|v| v.lut).chain([LutChoice::Shipped]);
+        for lut in tables {
+            if renderers.iter().any(|(c, _)| *c == lut) {
+                continue;
             }
-        };
-        renderers.push((v.lut, PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)?));
-    }
-    let mut file_renderer = match &s.method_file {
-        Some(f) => {
-            let mut r = PlaneRenderer::new(ctx, shipped, ShaderChecks::Checked)?;
-            r.set_method_file(ctx, Some(f.clone()))?;
-            Some((f.shades, r))
-        }
-        None => None,
-    };
-    let mut rows = Vec::new();
-    for &alpha in &s.alphas {
-        for &lights in &s.lights {
-            let scene = study_scene(lights, alpha, s.range, s.heights);
-            for &cull in &s.culls {
-                let mut exact = None;
-                for v in &variants {
-                    let renderer = &mut renderers
-                        .iter_mut()
-                        .find(|(c, _)| *c == v.lut)
-                        .expect("made above")
-                        .1;
-                    let settings = RenderSettings {
-                        rules: LtcRules {
-                            clipping: Clipping::BOTH,
-                            normalization: v.normalization,
-                            filter: v.filter,
-                            horizon: v.horizon.rule(),
+            let choice = lut;
+            let lut = match choice {
+                LutChoice::Shipped => shipped.clone(),
+                LutChoice::Point => Lut::embedded_point().clone(),
+                LutChoice::Arrival => Lut::shipped(Table::Arrival).clone(),
+                LutChoice::Constrained => Lut::shipped(Table::Constrained).clone(),
+                LutChoice::Fitted(size) => {
+                    fit_table(
+                        &FitSettings {
+                            size,
+                            ..FitSettings::default()
                         },
-                        cull,
-                        ..RenderSettings::single(width, height, v.method)
-                    };
-                    let (ms, image) = timed(ctx, renderer, &scene, &settings, s.frames)?;
-                    let reference = exact.get_or_insert_with(|| image.clone());
-                    let row = row(v.name, (alpha, lights, cull), s, ms, &image, reference);
-                    progress(&row);
-                    rows.push(row);
+                        &|| {},
+                    )
+                    .lut
                 }
-                if let (Some((shades, r)), Some(reference)) = (&mut file_renderer, &exact)
-                    && shades[0]
-                {
-                    let settings = RenderSettings {
-                        cull,
-                        ..RenderSettings::single(width, height, Method::File)
-                    };
-                    let (ms, image) = timed(ctx, r, &scene, &settings, s.frames)?;
-                    let row = row("file", (alpha, lights, cull), s, ms, &image, reference);
-                    progress(&row);
-                    rows.push(row);
-                }
-                // The lights with a size, each shape against its own exact image.
-                let shipped = renderers
-                    .iter()
-                    .position(|(c, _)| *c == LutChoice::Shipped)
-                    .expect("brdf shades with the shipped table");
-                for (shaped, methods) in sized_variants(s, &scene) {
+            };
+            renderers.push((
+                choice,
+                PlaneRenderer::new(ctx, &lut, ShaderChecks::Trusted)?,
+            ));
+        }
+        let file_renderer = match &s.method_file {
+            Some(f) => {
+                let mut r = PlaneRenderer::new(ctx, shipped, ShaderChecks::Checked)?;
+                r.set_method_file(ctx, Some(f.clone()))?;
+                Some((f.shades, r))
+            }
+            None => None,
+        };
+        Ok(Self {
+            variants,
+            renderers: Renderers {
+                by_lut: renderers,
+                file: file_renderer,
+            },
+        })
+    }
+
+    /// The rows of the generated lights: for each α, light count and culling, the exact image,
+    /// then every variant, each timed and measured against it.
+    pub fn generated(
+        &mut self,
+        ctx: &GpuContext,
+        s: &StudySettings,
+        progress: &mut impl FnMut(&StudyRow),
+    ) -> Result<Vec<StudyRow>> {
+        let (width, height) = s.size;
+        let (variants, r) = (&self.variants, &mut self.renderers);
+        let mut rows = Vec::new();
+        for &alpha in &s.alphas {
+            for &lights in &s.lights {
+                let scene = study_scene(lights, alpha, s.range, s.heights);
+                for &cull in &s.culls {
                     let mut exact = None;
-                    for (name, a) in methods {
+                    for v in variants {
+                        let renderer = r.of(v.lut);
                         let settings = RenderSettings {
+                            rules: LtcRules {
+                                clipping: Clipping::BOTH,
+                                normalization: v.normalization,
+                                filter: v.filter,
+                                horizon: v.horizon.rule(),
+                            },
                             cull,
-                            a,
-                            ..RenderSettings::single(width, height, Method::LtcFast)
+                            ..RenderSettings::single(width, height, v.method)
                         };
-                        let renderer = &mut renderers[shipped].1;
-                        let (ms, image) = timed(ctx, renderer, &shaped, &settings, s.frames)?;
+                        let (ms, image) = timed(ctx, renderer, &scene, &settings, s.frames)?;
                         let reference = exact.get_or_insert_with(|| image.clone());
-                        let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
+                        let row = row(v.name, (alpha, lights, cull), s, ms, &image, reference);
                         progress(&row);
                         rows.push(row);
                     }
-                    // The method file on this shape, where it shades it.
-                    let shape = if shaped
-                        .lights
-                        .iter()
-                        .any(|l| matches!(l.shape, Shape::Rect { .. }))
-                    {
-                        2
-                    } else {
-                        3
-                    };
-                    if let (Some((shades, r)), Some(reference)) = (&mut file_renderer, &exact)
-                        && shades[shape]
+                    if let (Some((shades, fr)), Some(reference)) = (&mut r.file, &exact)
+                        && shades[0]
                     {
                         let settings = RenderSettings {
                             cull,
                             ..RenderSettings::single(width, height, Method::File)
                         };
-                        let (ms, image) = timed(ctx, r, &shaped, &settings, s.frames)?;
-                        let name = format!("{}-file", ["", "", "rect", "disk"][shape]);
-                        let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
+                        let (ms, image) = timed(ctx, fr, &scene, &settings, s.frames)?;
+                        let row = row("file", (alpha, lights, cull), s, ms, &image, reference);
                         progress(&row);
                         rows.push(row);
+                    }
+                    // The lights with a size, each shape against its own exact image.
+                    for (shaped, methods) in sized_variants(s, &scene) {
+                        let mut exact = None;
+                        for (name, a) in methods {
+                            let settings = RenderSettings {
+                                cull,
+                                a,
+                                ..RenderSettings::single(width, height, Method::LtcFast)
+                            };
+                            let renderer = r.of(LutChoice::Shipped);
+                            let (ms, image) = timed(ctx, renderer, &shaped, &settings, s.frames)?;
+                            let reference = exact.get_or_insert_with(|| image.clone());
+                            let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
+                            progress(&row);
+                            rows.push(row);
+                        }
+                        // The method file on this shape, where it shades it.
+                        let shape = if shaped
+                            .lights
+                            .iter()
+                            .any(|l| matches!(l.shape, Shape::Rect { .. }))
+                        {
+                            2
+                        } else {
+                            3
+                        };
+                        if let (Some((shades, fr)), Some(reference)) = (&mut r.file, &exact)
+                            && shades[shape]
+                        {
+                            let settings = RenderSettings {
+                                cull,
+                                ..RenderSettings::single(width, height, Method::File)
+                            };
+                            let (ms, image) = timed(ctx, fr, &shaped, &settings, s.frames)?;
+                            let name = format!("{}-file", ["", "", "rect", "disk"][shape]);
+                            let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
+                            progress(&row);
+                            rows.push(row);
+                        }
                     }
                 }
             }
         }
+        Ok(rows)
     }
-    Ok(rows)
 }
 
 /// One render of `scene` timed: the median GPU ms of `frames` after one warm-up, and its image.
-fn timed(
+pub(crate) fn timed(
     ctx: &GpuContext,
     renderer: &mut PlaneRenderer,
     scene: &Scene,
@@ -447,7 +488,7 @@ fn timed(
 }
 
 /// The row of a variant's render: its time and its image's error against `reference`.
-fn row(
+pub(crate) fn row(
     variant: &str,
     (alpha, lights, cull): (f64, usize, bool),
     s: &StudySettings,

@@ -15,6 +15,7 @@ mod render;
 mod render_names;
 mod render_refusals;
 mod study;
+mod study_scene;
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};

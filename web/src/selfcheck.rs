@@ -31,6 +31,7 @@ async fn webgpu() -> Result<GpuContext, String> {
         setup.device,
         setup.queue,
         setup.adapter.get_info(),
+        setup.adapter.get_downlevel_capabilities().flags,
     ))
 }
 
