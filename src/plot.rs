@@ -89,7 +89,7 @@ pub fn pareto_png(name: &str, title: &str, points: &[ParetoPoint]) -> Result<Vec
             .label_style(("sans-serif", 14))
             .draw()
             .map_err(|e| plot_error(name, e))?;
-        let palette = |k: usize| Palette99::pick(k).to_rgba();
+        let palette = |k: usize| readable(Palette99::pick(k).to_rgba());
         let mut names: Vec<&str> = points.iter().map(|p| p.label.as_str()).collect();
         names.dedup();
         names.sort_unstable();
@@ -115,15 +115,32 @@ pub fn pareto_png(name: &str, title: &str, points: &[ParetoPoint]) -> Result<Vec
             }
         }
         // Labels stacked 17 px apart beside their markers, with a leader line each: the
-        // variants of one method sit at nearly the same point.
+        // variants of one method sit at nearly the same point. The stack moved up as a whole
+        // where it would run off the image's foot (the exact variant, at the floor, was cut
+        // off), and a label that would run off the right edge left of its marker.
         labels.sort_by_key(|l| l.0.1);
         let mut next_y = i32::MIN;
-        for ((x, y), label, colour) in labels {
-            let ly = y.max(next_y);
-            next_y = ly + 17;
-            let lx = x + 60;
+        let stacked: Vec<i32> = labels
+            .iter()
+            .map(|((_, y), _, _)| {
+                let ly = (*y).max(next_y);
+                next_y = ly + 17;
+                ly
+            })
+            .collect();
+        // The plot's foot: above the x labels' area (44 px) and the margin (16 px).
+        let overflow = stacked
+            .last()
+            .map_or(0, |&ly| (ly + 10 - (h as i32 - 60)).max(0));
+        for (((x, y), label, colour), ly) in labels.into_iter().zip(stacked) {
+            let ly = ly - overflow;
+            // 15 px sans-serif: about 8 px a character.
+            let width = 8 * label.chars().count() as i32;
+            let left = x + 60 + width > w as i32;
+            let lx = if left { x - 60 - width } else { x + 60 };
+            let end = if left { lx + width + 4 } else { lx - 4 };
             root.draw(&PathElement::new(
-                vec![(x, y), (lx - 4, ly)],
+                vec![(x, y), (end, ly)],
                 colour.stroke_width(1),
             ))
             .map_err(|e| plot_error(name, e))?;
@@ -133,6 +150,18 @@ pub fn pareto_png(name: &str, title: &str, points: &[ParetoPoint]) -> Result<Vec
         root.present().map_err(|e| plot_error(name, e))?;
     }
     encode_png(name, w, h, buffer)
+}
+
+/// `c` darkened where it is too pale to read on white (Palette99's yellows and light greens),
+/// to a luma of at most 150 of 255 (Rec. 601 weights).
+fn readable(c: RGBAColor) -> RGBAColor {
+    let luma = 0.299 * f64::from(c.0) + 0.587 * f64::from(c.1) + 0.114 * f64::from(c.2);
+    if luma <= 150.0 {
+        return c;
+    }
+    let k = 150.0 / luma;
+    let scale = |v: u8| (f64::from(v) * k).round() as u8;
+    RGBAColor(scale(c.0), scale(c.1), scale(c.2), c.3)
 }
 
 /// A heat map of `value(x, y)` on a grid of cells with the given edges, coloured on the

@@ -166,15 +166,17 @@ impl LabApp {
         if s.panel.is_some() {
             self.window.maximised = s.panel;
         }
+        // The method file before the measurement, which measures it too (it was loaded after,
+        // and `lab --measure --method-file` left the file's point out).
+        if let Some(file) = s.method_file {
+            let said = self.lab.use_method_file(file);
+            self.lab.say(said);
+        }
         if s.measure {
             self.panels.start_measurement(&self.lab);
         }
         if let Some((lesson, source, step)) = s.lesson {
             self.open_lesson(lesson, &source, step);
-        }
-        if let Some(file) = s.method_file {
-            let said = self.lab.use_method_file(file);
-            self.lab.say(said);
         }
     }
 

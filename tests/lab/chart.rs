@@ -193,3 +193,38 @@ fn the_chart_gives_each_methods_work_per_light_beside_its_time() {
     assert!(h.query_all_by_label_contains("lights)").count() >= 4);
     h.snapshot_options("chart_work_per_light", &options(1200 * 800));
 }
+
+/// `lab --measure --method-file F` (the start's order): the file is loaded before the chart
+/// measures, so the measurement times it too, as the *measure* button's does (it was loaded
+/// after, and the file's point was missing). Watched as the chart says it: its task comes up.
+#[test]
+fn a_measurement_asked_at_the_start_measures_the_method_file() {
+    let mut state = maximised(PanelId::Chart);
+    crate::harness::with_lights(&mut state, 5);
+    let Some(mut h) = lab((1000.0, 600.0), state) else {
+        return;
+    };
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/methods/ltc.wgsl");
+    let file = ltc_lab::gpu::method_file::MethodFile::read(&path).unwrap();
+    h.state_mut().start_with(ltc_lab::app::Startup {
+        scene: None,
+        lights: None,
+        panel: None,
+        measure: true,
+        lesson: None,
+        method_file: Some(file),
+    });
+    // The file's task follows the lab's methods on the scene (seconds on lavapipe); the
+    // deadline only ends a measurement that never reaches it.
+    h.run_steps(2);
+    let start = std::time::Instant::now();
+    while !shows(&h, "measuring file: ltc.wgsl") {
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(240) && shows(&h, "measuring"),
+            "the measurement never timed the method file"
+        );
+        h.step();
+    }
+    h.get_by_label("cancel").click();
+    h.run_steps(2);
+}

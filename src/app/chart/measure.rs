@@ -93,15 +93,17 @@ impl Measurement {
     /// LTC's fps over the BRDF's at each light count both were measured at, for the forms `ltc`
     /// and `brdf` (or the first of each kind measured).
     pub fn fps_ratios(&self, ltc: Method, brdf: Method) -> Option<FpsRatios> {
-        let pick = |chosen: Method| {
-            self.scaling.iter().find(|(x, _)| *x == chosen).or_else(|| {
-                self.scaling
-                    .iter()
-                    .find(|(x, _)| x.is_ltc() == chosen.is_ltc())
-            })
+        // A form not timed at the paper's counts (the method file, which is not an LTC form of
+        // the lab's) falls back to its side's first: an LTC form for the LTC side, else the
+        // BRDF (it fell back to brdf, whose ratio to itself read ×1.00).
+        let pick = |chosen: Method, side: fn(Method) -> bool| {
+            self.scaling
+                .iter()
+                .find(|(x, _)| *x == chosen)
+                .or_else(|| self.scaling.iter().find(|(x, _)| side(*x)))
         };
-        let (ltc, ltc_fps) = pick(ltc)?;
-        let (brdf, brdf_fps) = pick(brdf)?;
+        let (ltc, ltc_fps) = pick(ltc, Method::is_ltc)?;
+        let (brdf, brdf_fps) = pick(brdf, |m| !m.is_ltc() && m != Method::File)?;
         let ratios = ltc_fps
             .iter()
             .filter_map(|[n, f]| {
@@ -527,5 +529,29 @@ impl MeasureJob {
     fn next_task(&mut self) -> Option<Measurement> {
         self.next += 1;
         (self.next == self.tasks.len()).then(|| std::mem::take(&mut self.result))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// With the method file as the LTC form (not timed at the paper's counts), the ratio is the
+    /// lab's LTC form's over the BRDF's, not the BRDF's over itself (×1.00).
+    #[test]
+    fn a_form_not_timed_falls_back_to_its_own_side() {
+        let m = Measurement {
+            points: Vec::new(),
+            scaling: vec![
+                (Method::Brdf, vec![[100.0, 10.0]]),
+                (Method::Ltc, vec![[100.0, 30.0]]),
+            ],
+            scaling_range: Vec::new(),
+            device: String::new(),
+            study: None,
+        };
+        let (ltc, brdf, ratios) = m.fps_ratios(Method::File, Method::Brdf).unwrap();
+        assert_eq!((ltc, brdf), (Method::Ltc, Method::Brdf));
+        assert_eq!(ratios, vec![(100.0, 3.0)]);
     }
 }
