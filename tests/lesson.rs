@@ -173,7 +173,8 @@ fn broken(field: &str, value: Option<&str>) -> String {
 #[test]
 fn a_broken_lesson_is_refused_naming_its_line_step_and_field() {
     // The third step starts on line 12 (`broken` writes a title, then two steps of five lines);
-    // a field it adds is on line 17.
+    // its title, text, panels and view are on lines 13 to 16, a field it adds on line 17. A
+    // field's error is at its own line; one serde refuses (a missing field) at the step's.
     for (field, value, says) in [
         ("title", None, "line 12, step 3: missing field `title`"),
         (
@@ -184,38 +185,38 @@ fn a_broken_lesson_is_refused_naming_its_line_step_and_field() {
         (
             "text",
             Some("\"  \""),
-            "line 12, step 3: field `text`: empty",
+            "line 14, step 3: field `text`: empty",
         ),
         (
             "text",
             Some("\"{nope}\""),
-            "line 12, step 3: field `text`: {nope} is not a reading",
+            "line 14, step 3: field `text`: {nope} is not a reading",
         ),
         (
             "text",
             Some("\"a } alone\""),
-            "line 12, step 3: field `text`: a '}' without its '{'",
+            "line 14, step 3: field `text`: a '}' without its '{'",
         ),
         (
             "panels",
             Some("[\"teapot\"]"),
-            "line 12, step 3: field `panels`: 'teapot' is not a panel",
+            "line 15, step 3: field `panels`: 'teapot' is not a panel",
         ),
         (
             "panels",
             Some("[]"),
-            "line 12, step 3: field `panels`: 0 panels",
+            "line 15, step 3: field `panels`: 0 panels",
         ),
         (
             "panels",
             Some("[\"lobe\", \"plane\", \"chart\"]"),
-            "line 12, step 3: field `panels`: 3 panels",
+            "line 15, step 3: field `panels`: 3 panels",
         ),
         ("view", None, "step 3: missing field `view`"),
         (
             "view",
             Some("3"),
-            "line 12, step 3: field `view`: a table of settings or a share-view string",
+            "line 16, step 3: field `view`: a table of settings or a share-view string",
         ),
         (
             "titel",
@@ -225,17 +226,17 @@ fn a_broken_lesson_is_refused_naming_its_line_step_and_field() {
         (
             "try",
             Some("{ task = \"t\", when = \"morph < \" }"),
-            "line 12, step 3: field `try.when`: '' is not a finite number",
+            "line 17, step 3: field `try.when`: '' is not a finite number",
         ),
         (
             "try",
             Some("{ task = \"t\", when = \"teapot > 1\" }"),
-            "line 12, step 3: field `try.when`: 'teapot' is not a quantity",
+            "line 17, step 3: field `try.when`: 'teapot' is not a quantity",
         ),
         (
             "try",
             Some("{ task = \"t\", when = \"morph ~ 1\" }"),
-            "line 12, step 3: field `try.when`: 'morph ~ 1' has no comparison",
+            "line 17, step 3: field `try.when`: 'morph ~ 1' has no comparison",
         ),
         (
             "try",
@@ -272,12 +273,38 @@ fn a_broken_lesson_is_refused_naming_its_line_step_and_field() {
         let e = Lesson::from_toml(text, "t.lesson.toml").expect_err(says);
         assert!(e.contains(says), "said '{e}', not '{says}'");
     }
-    // A view that does not open is not refused with the lesson: its step shows its text with
-    // why (the lab's test walks that).
+    // A share-view string that does not open is not refused with the lesson: its step shows
+    // its text with why (the lab's test walks that).
     let text = broken("view", Some("\"v1.not-a-view\""));
     assert!(Lesson::from_toml(&text, "t.lesson.toml").is_ok());
+    // A table's unknown setting is, as the file is read: at its line.
     let text = broken("view", Some("{ lobe.teapot = 1 }"));
-    assert!(Lesson::from_toml(&text, "t.lesson.toml").is_ok());
+    let e = Lesson::from_toml(&text, "t.lesson.toml").unwrap_err();
+    assert!(
+        e.contains("line 16, step 3: field `view`: `lobe.teapot` is not a setting of the view"),
+        "{e}"
+    );
+}
+
+/// A misspelled setting in a step's `[step.view]` table is refused as the file is read, at
+/// its own line, with the nearest setting the view has (it dropped the whole view when the
+/// step opened, and the step showed the default 100 lights under the lesson's text).
+#[test]
+fn a_misspelled_setting_is_refused_at_its_line_with_the_nearest_name() {
+    let text = "title = \"t\"\n\n[[step]]\ntitle = \"s\"\ntext = \"Fine. Fine.\"\npanels = [\"plane\"]\n\n[step.view]\nlab.material.alpha = 0.3\nlab.material.alhpa = 0.4\n";
+    let e = Lesson::from_toml(text, "t.lesson.toml").unwrap_err();
+    assert!(e.contains("line 10, step 1: field `view`"), "{e}");
+    assert!(e.contains("unknown field `alhpa`"), "{e}");
+    assert!(e.contains("the nearest is `alpha`"), "{e}");
+    // A misspelled table: the nearest path the view has.
+    let text = text.replace("lab.material.alhpa = 0.4", "lab.rules.clip.case1 = false");
+    let e = Lesson::from_toml(&text, "t.lesson.toml").unwrap_err();
+    assert!(e.contains("line 10, step 1: field `view`"), "{e}");
+    assert!(
+        e.contains("`lab.rules.clip` is not a setting of the view"),
+        "{e}"
+    );
+    assert!(e.contains("the nearest is `lab.rules.clipping`"), "{e}");
 }
 
 /// A step's view as a table: what it names is set, the rest stays at the lab's defaults; a
@@ -412,4 +439,17 @@ fn the_readme_lists_every_reading_quantity_and_field() {
     ] {
         assert!(section.contains(&format!("| `{field}` |")), "{field}");
     }
+    // Every setting a view can hold, as the lab's defaults write them.
+    let settings = section
+        .split("Settings a view can hold")
+        .nth(1)
+        .expect("the README lists a view's settings");
+    let missing: Vec<String> = ltc_lab::app::link::setting_paths()
+        .into_iter()
+        .filter(|p| !settings.contains(&format!("`{p}`")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "the README lacks the settings: {missing:?}"
+    );
 }

@@ -29,7 +29,7 @@ import sys
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from cdp import click_text, drop_files, open_page, wait_for  # noqa: E402
+from cdp import click_text, drop_files, move, open_page, wait_for  # noqa: E402
 
 WEBGPU = ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader",
           "--enable-unsafe-swiftshader"]
@@ -248,12 +248,19 @@ def lessons(url, out):
             first = json.loads(page.evaluate(f"JSON.stringify({lesson})"))
             walked["first"] = first
             for step in range(first["step"] + 1, first["steps"] + 1):
-                try:
-                    click_text(page, "next")
-                except RuntimeError as e:
-                    walked["why"] = f"step {step - 1}: {e}"
-                    return False
-                if not wait_for(page, f"{lesson}.step === {step}", 60):
+                # A click a slow software-GL frame loses (seen with Chromium 156.0.8078.108 on
+                # the commit that passed CI before it) is clicked again, as a user would, after
+                # the pointer leaves the button; the step must then be the next one exactly.
+                for attempt in range(3):
+                    try:
+                        click_text(page, "next")
+                    except RuntimeError as e:
+                        walked["why"] = f"step {step - 1}: {e}"
+                        return False
+                    if wait_for(page, f"{lesson}.step >= {step}", 20):
+                        break
+                    move(page, 2, 400)
+                if not wait_for(page, f"{lesson}.step === {step}", 1):
                     walked["why"] = f"next did not reach step {step}: {page.evaluate(STATE)}"
                     return False
             walked["last"] = json.loads(page.evaluate(f"JSON.stringify({lesson})"))

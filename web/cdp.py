@@ -171,6 +171,13 @@ def click(page, x, y):
         time.sleep(0.05)
 
 
+def move(page, x, y):
+    """The pointer moved to (x, y), nothing pressed."""
+    page.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y, button="none",
+              buttons=0)
+    time.sleep(0.05)
+
+
 def click_text(page, text):
     """Clicks the one place the lab drew `text` (a button's label); an error if it is not
     there, or there more than once."""

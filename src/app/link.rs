@@ -182,13 +182,19 @@ pub fn table(view: &toml::Table, state: &LabState) -> Result<LabState, String> {
         merged.remove("generated");
     }
     merge(&mut merged, view);
-    let link: Link = merged
-        .try_into()
-        .map_err(|e: toml::de::Error| format!("the view does not read: {}", e.message().trim()))?;
+    let link: Link = merged.try_into().map_err(|e: toml::de::Error| {
+        let message = e.message().trim();
+        format!(
+            "the view does not read: {message}{}",
+            nearest_expected(message)
+        )
+    })?;
     // Every entry written must be read: serde passes over a name the state does not have.
     let read = toml::Table::try_from(&link).map_err(|e| format!("the view does not write: {e}"))?;
     if let Some(path) = unread(view, &read, "") {
-        return Err(format!("`{path}` is not a setting of the view"));
+        let near = nearest(&path, &paths(&read, "", true))
+            .map_or_else(String::new, |n| format!("; the nearest is `{n}`"));
+        return Err(format!("`{path}` is not a setting of the view{near}"));
     }
     state_with(link, state)
 }
@@ -203,6 +209,84 @@ fn merge(into: &mut toml::Table, view: &toml::Table) {
             }
         }
     }
+}
+
+/// Every setting a view can hold, by its dotted path (`lab.material.alpha`), as the lab's
+/// defaults write them: the list the README's "Writing a lesson" gives (tests/lesson.rs keeps
+/// the two the same).
+pub fn setting_paths() -> Vec<String> {
+    toml::Table::try_from(link_of(&LabState::default()))
+        .map(|t| paths(&t, "", false))
+        .unwrap_or_default()
+}
+
+/// The dotted paths of `table`'s entries under `at`: its leaves, and with `tables` its
+/// tables too.
+fn paths(table: &toml::Table, at: &str, tables: bool) -> Vec<String> {
+    let mut out = Vec::new();
+    for (key, value) in table {
+        let path = if at.is_empty() {
+            key.clone()
+        } else {
+            format!("{at}.{key}")
+        };
+        match value {
+            toml::Value::Table(t) => {
+                if tables {
+                    out.push(path.clone());
+                }
+                out.extend(paths(t, &path, tables));
+            }
+            _ => out.push(path),
+        }
+    }
+    out
+}
+
+/// The path of `candidates` nearest `path` by edit distance, where one is within half its
+/// length (a misspelling, not another name).
+fn nearest<'a>(path: &str, candidates: &'a [String]) -> Option<&'a str> {
+    candidates
+        .iter()
+        .map(|c| (edit_distance(path, c), c))
+        .min_by_key(|(d, _)| *d)
+        .filter(|(d, _)| *d <= path.len().div_ceil(2))
+        .map(|(_, c)| c.as_str())
+}
+
+/// For serde's "unknown field `x`, expected one of `a`, `b`": the nearest of those to `x`, in
+/// words ("; the nearest is `a`"), or nothing.
+fn nearest_expected(message: &str) -> String {
+    let Some(rest) = message.strip_prefix("unknown field `") else {
+        return String::new();
+    };
+    let mut quoted = rest.split('`').step_by(2);
+    let Some(unknown) = quoted.next() else {
+        return String::new();
+    };
+    let expected: Vec<String> = quoted
+        .map(str::to_string)
+        .filter(|n| !n.is_empty())
+        .collect();
+    nearest(unknown, &expected).map_or_else(String::new, |n| format!("; the nearest is `{n}`"))
+}
+
+/// Levenshtein's distance between `a` and `b`, by characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let above = row[j + 1];
+            row[j + 1] = (diagonal + usize::from(ca != cb))
+                .min(row[j] + 1)
+                .min(above + 1);
+            diagonal = above;
+        }
+    }
+    row[b.len()]
 }
 
 /// The first entry of `written` (its dotted path under `at`) that `read` lacks.

@@ -325,14 +325,18 @@ fn a_teacher_writes_a_lesson_and_a_broken_one_is_refused() {
             .to_toml()
             .unwrap()
             .replacen("panels = [\"lobe\"]", "panels = [\"teapot\"]", 1);
+    // Refused at the field's own line.
+    let line = 1 + text[..text.find("panels = [\"teapot\"]").unwrap()]
+        .matches('\n')
+        .count();
     std::fs::write(&broken_file, text).unwrap();
     drop_file(&mut h, &broken_file);
     let said = notice(&h).unwrap();
     assert!(
         said.is_error
-            && said
-                .text
-                .contains("broken.lesson.toml: line 4, step 1: field `panels`"),
+            && said.text.contains(&format!(
+                "broken.lesson.toml: line {line}, step 1: field `panels`"
+            )),
         "{said:?}"
     );
     assert_eq!(h.state().state(), before);

@@ -255,6 +255,29 @@ fn where_in(text: &str, at: usize) -> String {
     }
 }
 
+/// The start of the first line of `text` within `range` that writes `key`: a key or table
+/// header naming it as one of its dotted parts (`text = …`, `view.lab.rules.clip.case1 = …`,
+/// `[step.try]`), never a value that mentions it.
+fn key_line(text: &str, range: std::ops::Range<usize>, key: &str) -> Option<usize> {
+    let mut at = range.start;
+    for line in text[range.start..range.end.min(text.len())].split_inclusive('\n') {
+        let trimmed = line.trim_start();
+        let head = if trimmed.starts_with('[') {
+            trimmed
+        } else {
+            trimmed.split('=').next().unwrap_or("")
+        };
+        let parts = head.split(|c: char| c == '.' || c == '[' || c == ']' || c.is_whitespace());
+        if head.len() < trimmed.len() || trimmed.starts_with('[') {
+            if parts.into_iter().any(|p| p.trim_matches('"') == key) {
+                return Some(at);
+            }
+        }
+        at += line.len();
+    }
+    None
+}
+
 /// Where each `[[step]]` header starts in `text`.
 fn step_headers(text: &str) -> Vec<usize> {
     let mut at = 0;
@@ -285,8 +308,18 @@ impl RawLesson {
             .enumerate()
             .map(|(k, s)| {
                 s.check().map_err(|e| match headers.get(k) {
-                    Some(&at) => format!("{}{e}", where_in(text, at)),
-                    None => format!("step {}: {e}", k + 1),
+                    Some(&start) => {
+                        // At the field's own line within its step, where it is written there.
+                        let end = headers.get(k + 1).copied().unwrap_or(text.len());
+                        // The key's own line, else its parent's (`try = { when = … }`).
+                        let at = e
+                            .key
+                            .rsplit('.')
+                            .find_map(|k| key_line(text, start..end, k))
+                            .unwrap_or(start);
+                        format!("{}{}", where_in(text, at), e.message)
+                    }
+                    None => format!("step {}: {}", k + 1, e.message),
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
@@ -294,39 +327,69 @@ impl RawLesson {
     }
 }
 
+/// What is wrong with a step: the dotted key it is written under (a field's name, a view's
+/// unknown setting), to find its line, and the message.
+struct StepError {
+    key: String,
+    message: String,
+}
+
+impl StepError {
+    /// The field `name`'s error `e`.
+    fn field(name: &str, e: impl std::fmt::Display) -> Self {
+        Self {
+            key: name.to_string(),
+            message: format!("field `{name}`: {e}"),
+        }
+    }
+}
+
 impl RawStep {
-    fn check(self) -> Result<Step, String> {
+    fn check(self) -> Result<Step, StepError> {
         let field = |name: &str, value: &str, required: bool| {
-            text_field(value, required).map_err(|e| format!("field `{name}`: {e}"))
+            text_field(value, required).map_err(|e| StepError::field(name, e))
         };
         let title = field("title", &self.title, true)?;
         let text = field("text", &self.text, true)?;
-        readings::check_placeholders(&text).map_err(|e| format!("field `text`: {e}"))?;
+        readings::check_placeholders(&text).map_err(|e| StepError::field("text", e))?;
         let control = field("control", &self.control, false)?;
         for (k, e) in self.equations.iter().enumerate() {
-            field("equations", e, false).map_err(|why| format!("{why} (item {})", k + 1))?;
+            field("equations", e, false).map_err(|why| StepError {
+                message: format!("{} (item {})", why.message, k + 1),
+                ..why
+            })?;
         }
-        let panels = read_panels(&self.panels).map_err(|e| format!("field `panels`: {e}"))?;
+        let panels = read_panels(&self.panels).map_err(|e| StepError::field("panels", e))?;
         let view = match self.view {
             toml::Value::String(s) if s.len() > link::MAX_LEN => {
-                return Err(format!("field `view`: {} bytes, not a view", s.len()));
+                let e = format!("{} bytes, not a view", s.len());
+                return Err(StepError::field("view", e));
             }
             toml::Value::String(s) => StepView::Link(s.trim().to_string()),
             toml::Value::Table(t) => StepView::Fields(t),
             other => {
-                return Err(format!(
-                    "field `view`: a table of settings or a share-view string, not {}",
+                let e = format!(
+                    "a table of settings or a share-view string, not {}",
                     other.type_str()
-                ));
+                );
+                return Err(StepError::field("view", e));
             }
         };
+        // A table's settings checked as the file is read (a misspelled one dropped the whole
+        // view when the step opened), at the unknown setting's own line.
+        if let StepView::Fields(t) = &view {
+            link::table(t, &crate::app::state::LabState::default()).map_err(|e| StepError {
+                key: format!("view.{}", e.split('`').nth(1).unwrap_or("")),
+                message: format!("field `view`: {e}"),
+            })?;
+        }
         let try_this = self
             .try_this
             .map(|t| {
                 let task = field("try.task", &t.task, true)?;
                 let when = field("try.when", &t.when, true)?;
-                let when = when.parse().map_err(|e| format!("field `try.when`: {e}"))?;
-                Ok::<_, String>(TryThis { task, when })
+                let when = when.parse().map_err(|e| StepError::field("try.when", e))?;
+                Ok::<_, StepError>(TryThis { task, when })
             })
             .transpose()?;
         Ok(Step {
