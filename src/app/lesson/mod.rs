@@ -268,10 +268,10 @@ fn key_line(text: &str, range: std::ops::Range<usize>, key: &str) -> Option<usiz
             trimmed.split('=').next().unwrap_or("")
         };
         let parts = head.split(|c: char| c == '.' || c == '[' || c == ']' || c.is_whitespace());
-        if head.len() < trimmed.len() || trimmed.starts_with('[') {
-            if parts.into_iter().any(|p| p.trim_matches('"') == key) {
-                return Some(at);
-            }
+        if (head.len() < trimmed.len() || trimmed.starts_with('['))
+            && parts.into_iter().any(|p| p.trim_matches('"') == key)
+        {
+            return Some(at);
         }
         at += line.len();
     }
