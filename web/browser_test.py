@@ -29,7 +29,7 @@ import sys
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from cdp import click_text, drop_files, move, open_page, wait_for  # noqa: E402
+from cdp import click_text, drop_files, move, open_page, press_key, wait_for  # noqa: E402
 
 WEBGPU = ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader",
           "--enable-unsafe-swiftshader"]
@@ -249,11 +249,15 @@ def lessons(url, out):
             walked["first"] = first
             for step in range(first["step"] + 1, first["steps"] + 1):
                 # A click a slow software-GL frame loses (seen with Chromium 156.0.8078.108 on
-                # the commit that passed CI before it) is clicked again, as a user would, after
-                # the pointer leaves the button; the step must then be the next one exactly.
-                for attempt in range(3):
+                # the commit that passed CI before it) is clicked again after the pointer leaves
+                # the button, then the bar's key (→, as its hover text says) is pressed, as a
+                # user would; the step must then be the next one exactly.
+                for attempt in range(4):
                     try:
-                        click_text(page, "next")
+                        if attempt < 2:
+                            click_text(page, "next")
+                        else:
+                            press_key(page, "ArrowRight", "ArrowRight", 39)
                     except RuntimeError as e:
                         walked["why"] = f"step {step - 1}: {e}"
                         return False

@@ -178,6 +178,14 @@ def move(page, x, y):
     time.sleep(0.05)
 
 
+def press_key(page, key, code, key_code):
+    """A key pressed and released, as a keyboard's (`key` as the DOM names it)."""
+    for kind in ("keyDown", "keyUp"):
+        page.call("Input.dispatchKeyEvent", type=kind, key=key, code=code,
+                  windowsVirtualKeyCode=key_code, nativeVirtualKeyCode=key_code)
+        time.sleep(0.05)
+
+
 def click_text(page, text):
     """Clicks the one place the lab drew `text` (a button's label); an error if it is not
     there, or there more than once."""
