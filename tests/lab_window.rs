@@ -206,7 +206,9 @@ fn a_screenshot_of_a_step_whose_view_does_not_open_says_so() {
     let text = format!(
         "title = \"cut\"\n{}{}",
         step("view.lab.material.alpha = 0.3"),
-        step("view.lobe.teapot = 1")
+        // A share-view string that does not open (a table's unknown setting is refused as
+        // the file is read: tests/lesson.rs).
+        step("view = \"v1.not-a-view\"")
     );
     std::fs::write(&lesson, text).unwrap();
     for (k, ok) in [(1, true), (2, false)] {
@@ -225,10 +227,7 @@ fn a_screenshot_of_a_step_whose_view_does_not_open_says_so() {
         } else {
             assert_eq!(o.status.code(), Some(2), "step {k}: {said}");
             assert_eq!(said.trim_end().lines().count(), 1, "{said}");
-            assert!(
-                said.contains("step 2's view does not open") && said.contains("lobe.teapot"),
-                "{said}"
-            );
+            assert!(said.contains("step 2's view does not open"), "{said}");
         }
     }
 }
