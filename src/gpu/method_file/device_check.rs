@@ -18,8 +18,6 @@ use crate::gpu::GpuContext;
 pub struct DeviceShaders {
     pub capabilities: Capabilities,
     pub f16: bool,
-    /// The device's name, for the refusal.
-    pub name: &'static str,
 }
 
 /// A capability a method file's functions could ask for: the device feature that grants it
@@ -119,7 +117,6 @@ impl DeviceShaders {
                 ctx.downlevel,
             ),
             f16: ctx.has_f16(),
-            name: "this device",
         }
     }
 }
@@ -134,8 +131,8 @@ impl MethodFile {
             return Err(match missing(&self.name, &beside, device.capabilities) {
                 Some(need) => {
                     let message = format!(
-                        "{} needs {}, which {} does not have",
-                        need.words, need.feature, device.name
+                        "{} needs {}, which this device does not have",
+                        need.words, need.feature
                     );
                     // Where the file asks for it, else where naga placed the error.
                     let at = need.first_use(&self.source);
@@ -192,7 +189,6 @@ mod tests {
         DeviceShaders {
             capabilities,
             f16: false,
-            name: "this device",
         }
     }
 
