@@ -86,6 +86,33 @@ fn a_type_error_is_refused_at_its_line_and_column() {
 }
 
 #[test]
+fn a_return_of_the_wrong_type_is_said_in_wgsl_types_at_the_return() {
+    // naga's own text is "The `return` expression Some([0]) does not match the declared
+    // return type Some([0])", placed at the `fn`: the refusal names both types as WGSL
+    // writes them, at the line of the `return`.
+    let src = format!(
+        "fn helper(x: f32) -> f32 {{\n    let y = x * 2.0;\n    return vec3<f32>(y);\n}}\n{POINT_SIGNATURE} {{\n    return MethodRadiance(vec3<f32>(helper(1.0)), vec3<f32>(0.0));\n}}\n"
+    );
+    let m = refusal(&src);
+    assert!(m.starts_with("line 3, column 12:"), "{m}");
+    assert!(
+        m.contains("`helper` returns vec3<f32>, but it is declared to return f32"),
+        "{m}"
+    );
+    assert!(!m.contains("Some(["), "naga's handles left in: {m}");
+    // A value returned from a function declared to return nothing.
+    let src = format!(
+        "fn nothing() {{\n    return f32(1.0);\n}}\n{POINT_SIGNATURE} {{\n    nothing();\n    return MethodRadiance(vec3<f32>(0.0), vec3<f32>(0.0));\n}}\n"
+    );
+    let m = refusal(&src);
+    assert!(
+        m.starts_with("line 2, column 12:")
+            && m.contains("returns f32, but it is declared to return nothing"),
+        "{m}"
+    );
+}
+
+#[test]
 fn a_call_to_the_labs_own_functions_is_refused() {
     // A method sees the interface alone: d_ggx is the lab's, not the file's.
     let src = format!(

@@ -316,6 +316,9 @@ fn check(name: &str, source: &str, text: &str, capabilities: Capabilities) -> Re
     naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
         .validate(&module)
         .map_err(|e| {
+            if let Some((offset, message)) = wrong_return(&module, e.as_inner()) {
+                return place(Some(offset), message);
+            }
             let mut message = e.as_inner().to_string();
             let mut source_err = std::error::Error::source(e.as_inner());
             while let Some(s) = source_err {
@@ -325,6 +328,45 @@ fn check(name: &str, source: &str, text: &str, capabilities: Capabilities) -> Re
             place(e.location(text).map(|l| l.offset as usize), message)
         })?;
     Ok(module)
+}
+
+/// naga's "The `return` expression Some([0]) does not match the declared return type
+/// Some([0])", placed at the `fn`, in WGSL's types at the returned expression: "`helper`
+/// returns vec3<f32>, but it is declared to return f32". `None` for any other error.
+fn wrong_return(
+    module: &naga::Module,
+    error: &naga::valid::ValidationError,
+) -> Option<(usize, String)> {
+    use naga::common::wgsl::TypeContext;
+    let naga::valid::ValidationError::Function {
+        handle,
+        name,
+        source:
+            naga::valid::FunctionError::InvalidReturnType {
+                expression: Some(expression),
+                expected_ty,
+            },
+    } = error
+    else {
+        return None;
+    };
+    let function = module.functions.try_get(*handle).ok()?;
+    let context = naga::proc::ResolveContext::with_locals(
+        module,
+        &function.local_variables,
+        &function.arguments,
+    );
+    let mut types = naga::front::Typifier::new();
+    types
+        .grow(*expression, &function.expressions, &context)
+        .ok()?;
+    let found = module.types.type_resolution_to_string(&types[*expression]);
+    let declared = expected_ty.map_or("nothing".to_string(), |t| module.types.type_to_string(t));
+    let offset = function.expressions.get_span(*expression).to_range()?.start;
+    Some((
+        offset,
+        format!("`{name}` returns {found}, but it is declared to return {declared}"),
+    ))
 }
 
 /// The first function the file defines whose signature is not the interface's (its name and
