@@ -290,3 +290,11 @@ pub fn drop_file(h: &mut Harness<'static, LabApp>, path: &std::path::Path) {
         .push(std::sync::Arc::new(DroppedFromDisk(path.to_path_buf())));
     h.run_steps(2);
 }
+
+/// The failure preset `name` of lights with a size, picked from the side panel's list.
+pub fn load_sized_preset(h: &mut Harness<'static, LabApp>, name: &str) {
+    h.get_by_label("lights with a size").click();
+    h.run_steps(2);
+    h.get_by_label(name).click();
+    settle(h);
+}

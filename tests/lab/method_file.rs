@@ -4,8 +4,8 @@
 //! it and says so.
 
 use crate::harness::{
-    click_at, drop_file, lab, maximised, notice, plane_image, plane_state, press, settle, shows,
-    type_into, with_lights,
+    click_at, drop_file, lab, load_sized_preset, maximised, notice, options, plane_image,
+    plane_state, press, settle, shows, type_into, with_lights,
 };
 use egui_kittest::kittest::Queryable;
 use ltc_lab::app::lab::{Forms, Part};
@@ -124,6 +124,63 @@ fn the_pinned_pixel_gives_each_light_by_the_file() {
         "each light by the method file ltc.wgsl (on the GPU)"
     ));
     assert!(!shows(&h, "the method file's values:"), "the probe failed");
+}
+
+/// At 1280×720 with a rect preset and three.js's rect as the file, the pinned pixel's
+/// headline names each side's method (the file, then the BRDF with its rect method), the
+/// file's rows come first, and the lights table's columns, the rects' methods to the last,
+/// lie inside the plane's panel: none is cut off.
+#[test]
+fn the_pinned_pixel_names_each_side_and_fits_1280_by_720() {
+    let Some(mut h) = lab((1280.0, 720.0), maximised(ltc_lab::app::PanelId::Plane)) else {
+        return;
+    };
+    load_sized_preset(&mut h, "rect-horizon");
+    type_into(&mut h, "method file", &example("threejs-rect.wgsl").display().to_string());
+    press(&mut h, "load method");
+    settle(&mut h);
+    let rect = h.get_by_label("plane image").rect();
+    click_at(
+        &mut h,
+        egui::pos2(
+            rect.min.x + rect.width() * 0.45,
+            rect.min.y + rect.height() * 0.6,
+        ),
+    );
+    settle(&mut h);
+    let headline = h
+        .query_by_label_contains("pinned (")
+        .and_then(|n| n.value())
+        .expect("the pinned pixel's headline");
+    assert!(
+        headline.contains("threejs-rect.wgsl (rect: file) ")
+            && headline.contains("| BRDF (rect: exact) "),
+        "{headline}"
+    );
+    let file_title = h
+        .query_by_label_contains("each light by the method file threejs-rect.wgsl (on the GPU)")
+        .expect("the file's rows")
+        .rect();
+    let first_header = h.get_by_label("#").rect();
+    assert!(
+        file_title.max.y <= first_header.min.y,
+        "the file's rows ({file_title:?}) are not above the lab's ({first_header:?})"
+    );
+    // Every column of both tables within the image's width (the panel's, less its margins).
+    // (The sorted column's header ends in its arrow: "error share v".)
+    for label in ["E", "error share", "F(v·h)", "ltc-point", "exact"] {
+        let nodes: Vec<_> = h.query_all_by_label_contains(label).collect();
+        assert!(!nodes.is_empty(), "no column {label:?}");
+        for node in nodes {
+            assert!(
+                node.rect().max.x <= rect.max.x + 1.0,
+                "column {label:?} ends at x = {}, past the panel's {}",
+                node.rect().max.x,
+                rect.max.x
+            );
+        }
+    }
+    h.snapshot_options("plane_pinned_file_1280x720", &options(1280 * 720));
 }
 
 /// A method whose loop never ends is stopped — by its step guard, or by the lab's limit on a

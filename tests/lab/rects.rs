@@ -4,10 +4,9 @@
 //! enters.
 
 use egui::accesskit::Role;
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use ltc_lab::app::lab::{Lights, Part, Selection};
-use ltc_lab::app::{LabApp, PanelId};
+use ltc_lab::app::PanelId;
 use ltc_lab::colormap::short_number;
 use ltc_lab::light::Shape;
 use ltc_lab::light::rect::RectMethod;
@@ -15,21 +14,14 @@ use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
 use ltc_lab::scene::preset;
 
-use crate::harness::{click_at, lab, maximised, settle, shows};
-
-fn load_rect_preset(h: &mut Harness<'static, LabApp>, name: &str) {
-    h.get_by_label("lights with a size").click();
-    h.run_steps(2);
-    h.get_by_label(name).click();
-    settle(h);
-}
+use crate::harness::{click_at, lab, load_sized_preset, maximised, settle, shows};
 
 #[test]
 fn a_rect_preset_is_shaded_by_each_sides_rect_method() {
     let Some(mut h) = lab((1000.0, 800.0), maximised(PanelId::Plane)) else {
         return;
     };
-    load_rect_preset(&mut h, "rect-horizon");
+    load_sized_preset(&mut h, "rect-horizon");
     let lights = &h.state().lab().lights().list;
     assert!(lights.iter().all(|l| matches!(l.shape, Shape::Rect { .. })));
     assert_eq!(
@@ -62,7 +54,7 @@ fn the_pinned_pixel_gives_each_rect_by_every_method() {
     let Some(mut h) = lab((1000.0, 800.0), maximised(PanelId::Plane)) else {
         return;
     };
-    load_rect_preset(&mut h, "rect-ceiling");
+    load_sized_preset(&mut h, "rect-ceiling");
     let image = h.get_by_label("plane image").rect();
     click_at(&mut h, image.center());
     settle(&mut h);

@@ -173,9 +173,10 @@ impl Panel for PlanePanel {
             .hover_pos()
             .and_then(|pos| inspect(lab, placed, pos, &settings));
         reading_line(ui, inspected.as_ref(), (a, b));
+        let (a, b) = sized_side_names(lab, &self.state, (a, b));
         let table = (&mut self.state.pinned, &mut self.state.light_sort);
         let terms = (self.pinned.terms(), self.pinned.file());
-        pixel_table::show(ui, table, lab, terms, table_h);
+        pixel_table::show(ui, table, lab, terms, ((&a, &b), table_h));
     }
 
     /// Whether the render is still being summed (or its worst pixel read back).

@@ -274,18 +274,24 @@ pub fn sorted_rows(t: &PixelTerms, (column, descending): (LightColumn, bool)) ->
     rows
 }
 
-/// The readout's sums, then the lights table in `table_height` points.
+/// The readout's sums under the sides' `names` (the split's, `plane::sized_side_names`),
+/// then the lights table in `table_height` points: the method file's rows first, where a
+/// side shades with one.
 pub fn show(
     ui: &mut egui::Ui,
     (pinned, sort): (&mut Option<[f64; 2]>, &mut (LightColumn, bool)),
     lab: &mut Lab,
     (terms, file): (Option<&PixelTerms>, Option<&FileValues>),
-    table_height: f32,
+    (names, table_height): ((&str, &str), f32),
 ) {
     let Some(t) = terms else {
         return;
     };
-    readout(ui, (pinned, lab), t);
+    let file_sum = match file {
+        Some(Ok(Some((_, values)))) => Some(values.iter().sum::<DVec3>()),
+        _ => None,
+    };
+    readout(ui, (pinned, lab), t, (names, file_sum));
     let rows = sorted_rows(t, *sort);
     let value_columns = if tables_compared(t) {
         TABLE_COLUMNS
@@ -297,6 +303,7 @@ pub fn show(
         .max_height(table_height)
         .auto_shrink([false, true])
         .show(ui, |ui| {
+            file_rows(ui, &rows, file);
             egui::Grid::new("pixel lights grid")
                 .striped(true)
                 .spacing([10.0, 2.0])
@@ -317,11 +324,10 @@ pub fn show(
                 ));
             }
             sized_rows(ui, &rows);
-            file_rows(ui, &rows, file);
         });
 }
 
-/// The method file's value of each light (the table's first rows), evaluated on the GPU at
+/// The method file's value of each light (the table's first rows, above the lab's), evaluated on the GPU at
 /// this pixel, beside the CPU's LTC and exact values of the same light.
 fn file_rows(ui: &mut egui::Ui, rows: &[&LightTerm], file: Option<&FileValues>) {
     match file {
@@ -355,28 +361,62 @@ fn file_rows(ui: &mut egui::Ui, rows: &[&LightTerm], file: Option<&FileValues>) 
     }
 }
 
-/// The pixel's sides and their difference, its magnitudes, and the unpin button.
-fn readout(ui: &mut egui::Ui, (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab), t: &PixelTerms) {
+/// A side's name from the split's (`plane::sized_side_names`: the side, then a line per
+/// shape with a size) on one line: "threejs-rect.wgsl (rect: file)".
+fn one_line(name: &str) -> String {
+    let mut lines = name.lines();
+    let first = lines.next().unwrap_or_default();
+    let rest: Vec<&str> = lines.collect();
+    if rest.is_empty() {
+        first.to_string()
+    } else {
+        format!("{first} ({})", rest.join(", "))
+    }
+}
+
+/// The pixel's sides, each named by its method as the split names it, and their difference,
+/// its magnitudes, and the unpin button. Side A is the method file's sum over the lights,
+/// read on the GPU (`file_sum`), where a side shades with one; else table A's LTC on the CPU.
+fn readout(
+    ui: &mut egui::Ui,
+    (pinned, lab): (&mut Option<[f64; 2]>, &mut Lab),
+    t: &PixelTerms,
+    ((a_name, b_name), file_sum): ((&str, &str), Option<DVec3>),
+) {
     let [u, v] = pinned.unwrap_or_default();
+    let file_shades = lab.method_file().is_some() && lab.forms().ltc == crate::render::Method::File;
+    let (a_name, a) = match file_sum {
+        Some(sum) => (one_line(a_name), luminance(sum)),
+        // The file's values are read on the GPU after the pixel's terms: until then (or where
+        // the probe failed, said under the table) side A is the lab's own LTC.
+        None if file_shades => ("LTC (the lab's, f64)".to_string(), luminance(t.ltc)),
+        None => (one_line(a_name), luminance(t.ltc)),
+    };
+    let b = luminance(t.side_b());
+    let b_name = one_line(b_name);
+    let (a_name, b_name) = if tables_compared(t) && file_sum.is_none() {
+        (format!("table {a_name}"), format!("table {b_name}"))
+    } else {
+        (a_name, b_name)
+    };
+    let difference = 100.0 * (a - b) / b.abs().max(1e-300);
     let (sides, hover) = if tables_compared(t) {
         (
             format!(
-                "table A {} | table B {} (luminance), difference {:+.2}%",
-                short_number(luminance(t.ltc)),
-                short_number(luminance(t.side_b())),
-                100.0 * t.relative_difference()
+                "{a_name} {} | {b_name} {} (luminance), difference {difference:+.2}%",
+                short_number(a),
+                short_number(b),
             ),
-            "LTC with table A against the same LTC form with table B, the rules in force, in f64 on the CPU; it updates with every change",
+            "Side A against the same LTC form with table B, the rules in force, in f64 on the CPU (a method file's values on the GPU); it updates with every change",
         )
     } else {
         (
             format!(
-                "LTC {} | exact {} (luminance), error {:+.2}%",
-                short_number(luminance(t.ltc)),
-                short_number(luminance(t.exact)),
-                100.0 * t.relative_error()
+                "{a_name} {} | {b_name} {} (luminance), error {difference:+.2}%",
+                short_number(a),
+                short_number(b),
             ),
-            "LTC with table A and the rules in force against the exact BRDF, in f64 on the CPU; it updates with every change",
+            "Side A (LTC with table A and the rules in force, in f64 on the CPU; a method file's sum over the lights, on the GPU) against the exact BRDF in f64; it updates with every change",
         )
     };
     ui.horizontal_wrapped(|ui| {
