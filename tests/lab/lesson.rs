@@ -10,7 +10,9 @@ use ltc_lab::app::lesson::bar::LessonBar;
 use ltc_lab::app::lesson::{Lesson, StepView};
 use ltc_lab::app::{LabApp, LabState, link};
 
-use crate::harness::{drop_file, lab, notice, press, settle, shows, slide, type_into};
+use crate::harness::{
+    click_at, drag_along, drop_file, lab, notice, press, settle, shows, slide, type_into,
+};
 
 /// A step's snapshot of `pixels`: 1% of them may differ. A step shows its panels large, and
 /// at 1920×1080 the matrix step's fifteen heat maps span ~200 px for their 64 texels, whose
@@ -450,7 +452,44 @@ fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
             "step {}",
             k + 1
         );
+        // Steps 1 and 3 ask for nothing in the side panel, which they fold away: the plane's
+        // image takes the width left of the bar (794 points less the panel's margins),
+        // not the 480 it had beside the side panel.
+        let image = h.get_by_label("plane image").rect();
+        if k == 0 || k == 2 {
+            assert!(h.state().state().window.controls_hidden, "step {}", k + 1);
+            assert!(image.width() >= 740.0, "step {}: image {image:?}", k + 1);
+        }
+        if k == 0 {
+            click_at(&mut h, image.center());
+            settle(&mut h);
+            assert_eq!(at(&h), (k + 1, true), "a pixel pinned");
+        }
+        if k == 2 {
+            // The step's move is the divider, as its task: dragged to the left.
+            assert!(lesson.steps[k].control.contains("divider"));
+            let start = egui::pos2(image.center().x, image.max.y - 0.2 * image.height());
+            drag_along(
+                &mut h,
+                start,
+                egui::pos2(image.min.x + 0.1 * image.width(), start.y),
+            );
+            h.run_steps(2);
+            assert_eq!(at(&h), (k + 1, true), "the divider slid");
+        }
         if k == 3 {
+            // The side panel's last row is reachable: scrolled to with the wheel, it lies in
+            // the window and its button works.
+            press(&mut h, "share view");
+            h.run_steps(2);
+            let share = h.get_by_label("share view").rect();
+            let window = h.ctx.input(egui::InputState::viewport_rect);
+            assert!(window.contains_rect(share), "{share:?} in {window:?}");
+            assert!(
+                notice(&h).is_some_and(|m| m.text.contains("--view")),
+                "{:?}",
+                notice(&h)
+            );
             h.get_by_label("clip case 1 (n·l ≤ 0)").click();
             h.run_steps(2);
             assert_eq!(at(&h), (k + 1, true), "the leak shown");

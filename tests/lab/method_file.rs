@@ -136,7 +136,11 @@ fn the_pinned_pixel_names_each_side_and_fits_1280_by_720() {
         return;
     };
     load_sized_preset(&mut h, "rect-horizon");
-    type_into(&mut h, "method file", &example("threejs-rect.wgsl").display().to_string());
+    type_into(
+        &mut h,
+        "method file",
+        &example("threejs-rect.wgsl").display().to_string(),
+    );
     press(&mut h, "load method");
     settle(&mut h);
     let rect = h.get_by_label("plane image").rect();

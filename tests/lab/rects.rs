@@ -5,8 +5,8 @@
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
-use ltc_lab::app::lab::{Lights, Part, Selection};
 use ltc_lab::app::PanelId;
+use ltc_lab::app::lab::{Lights, Part, Selection};
 use ltc_lab::colormap::short_number;
 use ltc_lab::light::Shape;
 use ltc_lab::light::rect::RectMethod;
