@@ -282,11 +282,12 @@ fn a_pinned_pixel_opens_into_its_lights_and_one_shows_on_the_lobe() {
         "pinned at ({u}, {v})"
     );
     assert_eq!(t.terms.len(), h.state().lab().lights().list.len());
-    // The readout, in its own strip: the pixel's exact radiance as the CPU reference has it.
+    // The readout, in its own strip: the pixel's exact radiance as the CPU reference has it,
+    // under side B's name as the split gives it.
     let exact = ltc_lab::colormap::short_number(luminance(t.exact));
     assert!(shows(&h, "pinned (0.2"));
     assert!(
-        shows(&h, &format!("| exact {exact} (luminance)")),
+        shows(&h, &format!("| BRDF {exact} (luminance)")),
         "no exact {exact}"
     );
     // Sorted by the share of the error, largest first: click the top row's index.
