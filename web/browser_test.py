@@ -26,10 +26,14 @@ import json
 import os
 import re
 import sys
+import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from cdp import click_text, drop_files, move, open_page, press_key, wait_for  # noqa: E402
+from cdp import (  # noqa: E402
+    click_for_event, click_text, drop_files, move, open_page, press_key, rest_and_click,
+    wait_for,
+)
 
 WEBGPU = ["--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader",
           "--enable-unsafe-swiftshader"]
@@ -316,8 +320,6 @@ def picks_downloads_and_refit(url, out):
     and a screenshot, then refits a cell: each by clicking the button the lab labelled so."""
     downloads = os.path.abspath(os.path.join(out, "downloads"))
     os.makedirs(downloads, exist_ok=True)
-    for name in os.listdir(downloads):
-        os.remove(os.path.join(downloads, name))
     scene = os.path.abspath(os.path.join(out, "picked-scene.toml"))
     with open(scene, "w") as f:
         f.write("[plane]\nhalf_size = 2.0\n[material]\nbase_color = [0.5, 0.5, 0.5]\n"
@@ -328,7 +330,10 @@ def picks_downloads_and_refit(url, out):
     found = {}
 
     def downloaded(page, button, name):
-        click_text(page, button)
+        if not click_for_event(page, button, "Browser.downloadWillBegin"):
+            found["why"] = f"{button}: three clicks began no download; the lab says " \
+                           f"{page.evaluate(message)!r}"
+            return None
         done = page.wait_event("Browser.downloadProgress", 30,
                                lambda p: p.get("state") in ("completed", "canceled"))
         path = os.path.join(downloads, name)
@@ -342,11 +347,14 @@ def picks_downloads_and_refit(url, out):
         page.call("Page.setInterceptFileChooserDialog", enabled=True)
         page.call("Browser.setDownloadBehavior", behavior="allow", downloadPath=downloads,
                   eventsEnabled=True)
+        # The page's first click focuses the canvas and was seen to open nothing: a click on
+        # the side panel's heading (a label, which does nothing) takes it first.
+        rest_and_click(page, "LTC Lab")
+        time.sleep(1)
         # The scene's "load" opens the picker; DevTools answers it with the file.
-        click_text(page, "load")
-        chooser = page.wait_event("Page.fileChooserOpened", 30)
+        chooser = click_for_event(page, "load", "Page.fileChooserOpened")
         if not chooser:
-            found["why"] = "load: no file picker opened"
+            found["why"] = "load: three clicks opened no file picker"
             return False
         page.call("DOM.setFileInputFiles", files=[scene], backendNodeId=chooser["backendNodeId"])
         if not wait_for(page, f"{message}.includes('loaded picked-scene.toml')", 60):
@@ -364,31 +372,45 @@ def picks_downloads_and_refit(url, out):
             (function frame(t) { const g = window.gaps; g.longest = Math.max(g.longest, t - g.last);
               g.last = t; g.frames++; if (!g.stop) requestAnimationFrame(frame); })(performance.now());
             0""")
-        # The refit's start is seen (its progress line, or its result) before its end is
-        # awaited: a click a slow software-GL frame loses (CI, Chromium 156.0.8078.108, the
-        # commit after the one that passed) is clicked again once the pointer has left.
-        started = f"/refitting cell|refitted \\(÷ middle\\)/.test({TEXTS})"
+        # The refit's start is seen (the matrix panel busy, or the refit's result) before its
+        # end is awaited: a click a slow software-GL frame loses (CI, Chromium 156.0.8078.108)
+        # is clicked again once the pointer has left. The result is read where it always
+        # shows, the lobe panel's "table A: classic (refitted)": the matrix panel's own line
+        # may lie below its scrolled fold.
+        refitting = f"JSON.parse({STATE}).working.some(w => /matrix/i.test(w))"
+        refitted = f"{TEXTS}.includes('(refitted)')"
         for attempt in range(3):
             try:
-                click_text(page, "ltc_code")
+                rest_and_click(page, "ltc_code")
             except RuntimeError as e:
                 found["why"] = f"refit: {e}"
                 return False
-            if wait_for(page, started, 20):
+            if wait_for(page, f"{refitting} || {refitted}", 20):
                 break
             move(page, 2, 400)
         else:
             found["why"] = "three clicks on ltc_code did not start a refit"
             return False
-        if not wait_for(page, f"{TEXTS}.includes('refitted (÷ middle)')", 240):
-            shown = re.findall(r"refitting cell[^\n]{0,40}", page.evaluate(TEXTS))
-            found["why"] = f"the refit did not end with its result shown within 240 s: {shown}"
+        if not wait_for(page, f"!({refitting}) && {refitted}", 240):
+            found["why"] = f"the refit did not end with its result shown within 240 s: " \
+                           f"{page.evaluate(STATE)[:300]}"
             return False
         found["gaps"] = json.loads(page.evaluate("window.gaps.stop = true; JSON.stringify(window.gaps)"))
         return True
 
-    shown, console, done = open_page(url + "?texts", SETTLED, STATE, "1920,1080", WEBGL2, 240,
-                                     os.path.join(out, "picks.png"), act=act)
+    # A fresh browser again where a click on the software-GL page was lost three times over
+    # (a quarter of the runs here and in CI: the picker or the second download not opened,
+    # each time at a different step): every step must still pass within one page.
+    for attempt in range(3):
+        for name in os.listdir(downloads):
+            os.remove(os.path.join(downloads, name))
+        found.clear()
+        shown, console, done = open_page(url + "?texts", SETTLED, STATE, "1920,1080", WEBGL2,
+                                         240, os.path.join(out, "picks.png"), act=act)
+        if done:
+            break
+        print(f"web/browser_test.py: picks, page {attempt + 1} of 3: "
+              f"{found.get('why', shown)}; again in a fresh browser", file=sys.stderr)
     check_console("picks", console, out)
     if not done:
         fail(f"picks: {found.get('why', shown)}")
