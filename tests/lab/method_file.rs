@@ -101,24 +101,33 @@ fn a_link_naming_the_method_file_opens_without_it_and_says_so() {
 
 /// The pinned pixel's table gives each light by the file, evaluated on the GPU, beside the
 /// CPU's LTC and exact values (the values themselves: tests/gpu/method_file.rs).
+/// The shipped example `name` loaded by the *load method* field, then the plane's pixel at
+/// `[u, v]` of its image pinned by a click.
+fn load_and_pin(
+    h: &mut egui_kittest::Harness<'static, ltc_lab::app::LabApp>,
+    name: &str,
+    [u, v]: [f32; 2],
+) {
+    type_into(h, "method file", &example(name).display().to_string());
+    press(h, "load method");
+    settle(h);
+    let rect = h.get_by_label("plane image").rect();
+    click_at(
+        h,
+        egui::pos2(
+            rect.min.x + rect.width() * u,
+            rect.min.y + rect.height() * v,
+        ),
+    );
+    settle(h);
+}
+
 #[test]
 fn the_pinned_pixel_gives_each_light_by_the_file() {
     let Some(mut h) = lab((1000.0, 700.0), maximised(ltc_lab::app::PanelId::Plane)) else {
         return;
     };
-    let path = example("ltc.wgsl");
-    type_into(&mut h, "method file", &path.display().to_string());
-    press(&mut h, "load method");
-    settle(&mut h);
-    let rect = h.get_by_label("plane image").rect();
-    click_at(
-        &mut h,
-        egui::pos2(
-            rect.min.x + rect.width() * 0.2,
-            rect.min.y + rect.height() * 0.8,
-        ),
-    );
-    settle(&mut h);
+    load_and_pin(&mut h, "ltc.wgsl", [0.2, 0.8]);
     assert!(shows(
         &h,
         "each light by the method file ltc.wgsl (on the GPU)"
@@ -136,22 +145,9 @@ fn the_pinned_pixel_names_each_side_and_fits_1280_by_720() {
         return;
     };
     load_sized_preset(&mut h, "rect-horizon");
-    type_into(
-        &mut h,
-        "method file",
-        &example("threejs-rect.wgsl").display().to_string(),
-    );
-    press(&mut h, "load method");
-    settle(&mut h);
+    // The image unpinned spans the panel's width (less its margins): the table must fit it.
     let rect = h.get_by_label("plane image").rect();
-    click_at(
-        &mut h,
-        egui::pos2(
-            rect.min.x + rect.width() * 0.45,
-            rect.min.y + rect.height() * 0.6,
-        ),
-    );
-    settle(&mut h);
+    load_and_pin(&mut h, "threejs-rect.wgsl", [0.45, 0.6]);
     let headline = h
         .query_by_label_contains("pinned (")
         .and_then(|n| n.value())
