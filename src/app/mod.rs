@@ -5,6 +5,7 @@
 #[cfg(target_arch = "wasm32")]
 pub mod browser;
 pub mod chart;
+pub mod clicks;
 pub mod clipping;
 pub mod controls;
 pub mod device;
@@ -141,6 +142,7 @@ impl LabApp {
             Some(Ok(state)) => (state, None),
             Some(Err(why)) => (LabState::default(), Some(why)),
         };
+        clicks::keep_slow_clicks(&cc.egui_ctx);
         let mut app = Self::new(state, cc.wgpu_render_state.as_ref());
         if let Some(e) = unread {
             app.lab.say(Message::error(format!(
