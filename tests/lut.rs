@@ -276,3 +276,92 @@ fn each_channel_knows_its_place_name_and_lobe() {
         assert_eq!(c.is_err(), c.name().ends_with(".err"));
     }
 }
+
+/// Every encoding's name reads back as itself; a wrong storage or size is refused naming it.
+#[test]
+fn an_encoding_is_named_as_it_is_read() {
+    use ltc_lab::ltc::lut::encoding::SIZES;
+    use ltc_lab::ltc::lut::{Encoding, Storage};
+    for storage in Storage::ALL {
+        for size in SIZES.map(Some).into_iter().chain([None]) {
+            let e = Encoding { storage, size };
+            assert_eq!(Encoding::parse(&e.name()), Ok(e));
+        }
+    }
+    assert!(Encoding::parse("f8").unwrap_err().contains("f8"));
+    assert!(Encoding::parse("f16-12").unwrap_err().contains("`12`"));
+    assert!(Encoding::parse("f16-").is_err());
+}
+
+/// What each storage gives back, value by value, within the bound its format states: f32 is
+/// the table itself; f16 rounds each value to 11 significant bits (a relative error of at
+/// most 2⁻¹¹, or 2⁻²⁵ absolute among its subnormals); 8 bits over a channel's range
+/// `[lo, hi]` round to within half a step, `(hi − lo)/510` (and f32's own rounding of the
+/// decoded value, 2⁻²⁴ relative).
+#[test]
+fn each_storage_gives_back_its_values_within_its_rounding() {
+    use ltc_lab::ltc::lut::encoding::SHADER_CHANNELS;
+    use ltc_lab::ltc::lut::{Encoding, Storage};
+    let lut = Lut::embedded();
+    let f32_table = Encoding::default().decoded(lut);
+    assert_eq!(&f32_table, lut);
+    let half = Encoding::parse("f16").unwrap().decoded(lut);
+    let byte = Encoding::parse("unorm8").unwrap().decoded(lut);
+    for c in SHADER_CHANNELS {
+        let values: Vec<f64> = lut.cells.iter().map(|cell| cell.shaded(c)).collect();
+        let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        for (k, &v) in values.iter().enumerate() {
+            let (h, b) = (half.cells[k].shaded(c), byte.cells[k].shaded(c));
+            let f32_rounding = 2f64.powi(-24) * v.abs().max(h.abs());
+            assert!(
+                (h - v).abs() <= 2f64.powi(-11) * v.abs() + 2f64.powi(-25) + f32_rounding,
+                "f16 {c:?} cell {k}: {v} read back as {h}"
+            );
+            assert!(
+                (b - v).abs() <= (hi - lo) / 510.0 + 2f64.powi(-24) * (hi.abs() + lo.abs()),
+                "unorm8 {c:?} cell {k}: {v} read back as {b} over [{lo}, {hi}]"
+            );
+            assert!(h.is_finite() && b.is_finite());
+        }
+    }
+    // Bytes an engine stores: 11 channels of 64² values, and 8-bit tables' ranges.
+    assert_eq!(Encoding::default().bytes(64), 64 * 64 * 11 * 4);
+    assert_eq!(
+        Encoding::parse("f16-32").unwrap().bytes(64),
+        32 * 32 * 11 * 2
+    );
+    let byte8 = Encoding {
+        storage: Storage::Unorm8,
+        size: Some(8),
+    };
+    assert_eq!(byte8.bytes(64), 8 * 8 * 11 + 11 * 2 * 4);
+}
+
+/// A table resampled to its own size is itself (each new cell sits on an old one's centre);
+/// to a smaller size, each new cell is the old table filtered where the new cell sits, so the
+/// corners, which sit on old cells at every size, are kept.
+#[test]
+fn a_resampled_table_keeps_the_cells_it_lands_on() {
+    use ltc_lab::ltc::lut::encoding::resampled;
+    let lut = Lut::embedded();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-6 * a.abs().max(b.abs()).max(1e-30);
+    let same = resampled(lut, lut.size);
+    for (a, b) in lut.cells.iter().zip(&same.cells) {
+        for c in Channel::ALL {
+            assert!(close(a.shaded(c), b.shaded(c)), "{c:?}: {a:?} {b:?}");
+        }
+    }
+    for size in [32, 16, 8] {
+        let small = resampled(lut, size);
+        assert_eq!((small.size, small.cells.len()), (size, size * size));
+        let last = lut.size - 1;
+        for (i, j) in [(0, 0), (size - 1, 0), (0, size - 1), (size - 1, size - 1)] {
+            let (oi, oj) = (i * last / (size - 1), j * last / (size - 1));
+            for c in Channel::ALL {
+                let (a, b) = (lut.cell(oi, oj).shaded(c), small.cell(i, j).shaded(c));
+                assert!(close(a, b), "{size}² corner ({i}, {j}) {c:?}: {a} {b}");
+            }
+        }
+    }
+}

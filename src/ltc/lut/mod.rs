@@ -1,9 +1,10 @@
 //! The LTC look-up table of docs/design.md §2: N×N cells over (roughness, view angle), each a
 //! `Channel` per fitted value; the shipped tables embedded in the binary. Its axes, its file,
-//! its validation and its sampler are modules of their own.
+//! its validation, its sampler and its encodings are modules of their own.
 
 mod axes;
 mod channel;
+pub mod encoding;
 mod exr;
 mod sample;
 pub mod taps;
@@ -13,6 +14,7 @@ use std::sync::{Arc, OnceLock};
 
 pub use axes::{ALPHA_MIN, THETA_MAX, axes, cell_alpha, cell_theta};
 pub use channel::Channel;
+pub use encoding::{Encoding, Storage};
 pub use exr::{MAX_SIZE, check_size};
 
 /// The most bytes of a table file this program reads (`files::read_bytes`; a DDS pair's

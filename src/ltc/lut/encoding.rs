@@ -1,0 +1,194 @@
+//! A table's encoding (docs/design.md §2.10): how an engine stores the table for its shader —
+//! a storage format for each value and a table size — and the table as that encoding gives it
+//! back, so that every measure can shade with what an engine would read.
+
+use crate::ltc::lut::taps::bilinear_taps;
+use crate::ltc::lut::{Channel, Lut, LutCell};
+use crate::named::named_enum;
+
+named_enum! {
+    /// How one value of the table is stored.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+    pub enum Storage {
+        /// 32-bit floats, as the lab shades (the reference every other encoding is held to).
+        #[default]
+        F32 = "f32",
+        /// IEEE half floats (three.js's and PlayCanvas's fallback where float textures fail).
+        F16 = "f16",
+        /// 8 bits a value over each channel's own range, with a scale and a bias per channel
+        /// (PlayCanvas's last fallback).
+        Unorm8 = "unorm8",
+    }
+}
+
+impl Storage {
+    /// Bytes of one stored value.
+    pub fn value_bytes(self) -> usize {
+        match self {
+            Self::F32 => 4,
+            Self::F16 => 2,
+            Self::Unorm8 => 1,
+        }
+    }
+}
+
+/// The table sizes an encoding may resample to: the shipped 64² and each halving down to 8²
+/// (below 8 cells the α axis no longer has a cell inside the specular range that matters).
+pub const SIZES: [usize; 4] = [64, 32, 16, 8];
+
+/// The channels a shader reads: both lobes' four entries of `M⁻¹` and magnitudes, with
+/// `spec.scale` folded into the specular magnitudes (`LutCell::shaded`) as ltc_code's layout
+/// stores them. The pointwise errors are measurements, not read by a shader.
+pub const SHADER_CHANNELS: [Channel; 11] = [
+    Channel::SpecM00,
+    Channel::SpecM02,
+    Channel::SpecM20,
+    Channel::SpecM22,
+    Channel::SpecNorm,
+    Channel::SpecFresnel,
+    Channel::DiffM00,
+    Channel::DiffM02,
+    Channel::DiffM20,
+    Channel::DiffM22,
+    Channel::DiffNorm,
+];
+
+/// A storage and a table size (`None`: the table's own).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Encoding {
+    pub storage: Storage,
+    pub size: Option<usize>,
+}
+
+impl Encoding {
+    /// `STORAGE` or `STORAGE-SIZE` (`f16`, `unorm8-16`); an error naming what is wrong.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let (storage, size) = match text.split_once('-') {
+            Some((s, n)) => (s, Some(n)),
+            None => (text, None),
+        };
+        let storage = Storage::from_name(storage).ok_or_else(|| {
+            format!(
+                "`{text}`: the storage is one of {} (with -SIZE, one of {:?}, to resample)",
+                Storage::ALL.map(Storage::name).join(", "),
+                SIZES
+            )
+        })?;
+        let size = match size {
+            None => None,
+            Some(n) => match n.parse::<usize>() {
+                Ok(n) if SIZES.contains(&n) => Some(n),
+                _ => return Err(format!("`{text}`: the size is one of {SIZES:?}, not `{n}`")),
+            },
+        };
+        Ok(Self { storage, size })
+    }
+
+    /// Its name, as `parse` reads it.
+    pub fn name(&self) -> String {
+        match self.size {
+            Some(n) => format!("{}-{n}", self.storage.name()),
+            None => self.storage.name().to_string(),
+        }
+    }
+
+    /// Bytes an engine stores for a table of `size` cells a side in this encoding: the
+    /// shader's channels at the storage's width, and a scale and a bias (f32) per channel
+    /// for 8-bit values.
+    pub fn bytes(&self, size: usize) -> usize {
+        let n = self.size.unwrap_or(size);
+        let values = n * n * SHADER_CHANNELS.len() * self.storage.value_bytes();
+        let ranges = match self.storage {
+            Storage::Unorm8 => SHADER_CHANNELS.len() * 2 * 4,
+            _ => 0,
+        };
+        values + ranges
+    }
+
+    /// `lut` as an engine storing it in this encoding reads it back: resampled to the size
+    /// (bilinearly, as its sampler would read the full table there), then each value of the
+    /// shader's channels stored and read. The errors and `spec.scale` are kept as they were
+    /// (the stored magnitudes carry the scale); f32 at the table's own size is `lut` itself.
+    pub fn decoded(&self, lut: &Lut) -> Lut {
+        let mut out = match self.size {
+            Some(n) if n != lut.size => resampled(lut, n),
+            _ => lut.clone(),
+        };
+        if self.storage == Storage::F32 {
+            return out;
+        }
+        for c in SHADER_CHANNELS {
+            let values: Vec<f64> = out.cells.iter().map(|cell| cell.shaded(c)).collect();
+            let stored = store(self.storage, &values);
+            for (cell, v) in out.cells.iter_mut().zip(stored) {
+                // The shaded magnitudes are scale × value: stored back unscaled.
+                let scale = match c {
+                    Channel::SpecNorm | Channel::SpecFresnel => {
+                        f64::from(cell.get(Channel::SpecScale))
+                    }
+                    _ => 1.0,
+                };
+                cell.0[c as usize] = (v / scale) as f32;
+            }
+        }
+        out
+    }
+}
+
+/// `values` stored in `storage` and read back.
+fn store(storage: Storage, values: &[f64]) -> Vec<f64> {
+    match storage {
+        Storage::F32 => values.iter().map(|&v| f64::from(v as f32)).collect(),
+        Storage::F16 => values
+            .iter()
+            .map(|&v| f64::from(half::f16::from_f64(v)))
+            .collect(),
+        Storage::Unorm8 => {
+            let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            let step = (hi - lo) / 255.0;
+            values
+                .iter()
+                .map(|&v| match step > 0.0 {
+                    true => lo + ((v - lo) / step).round() * step,
+                    false => v,
+                })
+                .collect()
+        }
+    }
+}
+
+/// `lut` at `size` cells a side: each new cell the full table bilinearly filtered at the
+/// cell's place on the axes (docs/design.md §2.3: cell `i` of any size sits at `i/(N−1)`).
+pub fn resampled(lut: &Lut, size: usize) -> Lut {
+    let mut cells = Vec::with_capacity(size * size);
+    for j in 0..size {
+        for i in 0..size {
+            let at = |k: usize| k as f64 / (size - 1) as f64;
+            let (u, v) = lut.uv_of_axes(at(i), at(j));
+            let (i0, i1, fx) = bilinear_taps(lut.size, u);
+            let (j0, j1, fy) = bilinear_taps(lut.size, v);
+            // As the sampler filters them: the specular magnitudes as the products it
+            // shades with, stored back divided by the filtered scale.
+            let filtered = |c: Channel| {
+                let get = |i: usize, j: usize| lut.cell(i, j).shaded(c);
+                let top = get(i0, j0) * (1.0 - fx) + get(i1, j0) * fx;
+                let bottom = get(i0, j1) * (1.0 - fx) + get(i1, j1) * fx;
+                top * (1.0 - fy) + bottom * fy
+            };
+            let scale = filtered(Channel::SpecScale);
+            let value = |c: Channel| match c {
+                Channel::SpecNorm | Channel::SpecFresnel => (filtered(c) / scale) as f32,
+                _ => filtered(c) as f32,
+            };
+            cells.push(LutCell(Channel::ALL.map(value)));
+        }
+    }
+    Lut {
+        size,
+        alpha_min: lut.alpha_min,
+        cells,
+        nl_terms: Default::default(),
+        aniso: lut.aniso.clone(),
+    }
+}
