@@ -3,10 +3,10 @@
 use std::path::PathBuf;
 
 use ltc_lab::error::{Error, Result};
-use ltc_lab::files::check_distinct;
+use ltc_lab::files::{check_distinct, check_writable, write_atomically};
 use ltc_lab::ltc::formats::dds::Precision;
 use ltc_lab::ltc::formats::{Export, Header, export};
-use ltc_lab::ltc::lut::Channel;
+use ltc_lab::ltc::lut::{Channel, Encoding};
 use ltc_lab::measure::atlas::atlas_files;
 
 use super::{LutArgs, one_of, print};
@@ -29,9 +29,15 @@ pub struct Args {
     /// (ltc_aniso.bin) with a WGSL lookup (ltc_aniso.wgsl).
     #[arg(long, value_parser = one_of(&Written::ALL, Written::name), requires = "out")]
     export: Option<Written>,
-    /// Where --export writes: a file, or for ltc-code-dds and aniso-texture a directory
-    /// (made if missing).
-    #[arg(long, requires = "export")]
+    /// Write the table as an engine storing it in the encoding NAME reads it back
+    /// (docs/design.md §2.10: f32, f16 or unorm8, optionally -64, -32, -16 or -8 to resample),
+    /// as this project's .exr, which --lut reads: shading with that file is shading with
+    /// --encoding NAME.
+    #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with = "export")]
+    encode: Option<Encoding>,
+    /// Where --export or --encode writes: a file, or for ltc-code-dds and aniso-texture a
+    /// directory (made if missing).
+    #[arg(long)]
     out: Option<PathBuf>,
     /// Texels of ltc-code-dds: f16 (RGBA16F, as ltc_code writes them) or f32 (RGBA32F).
     #[arg(long, value_parser = one_of(&Precision::ALL, Precision::name), default_value = "f16")]
@@ -63,6 +69,15 @@ impl Written {
 }
 
 pub fn run(a: &Args) -> Result<()> {
+    if a.out.is_some() && a.export.is_none() && a.encode.is_none() {
+        return Err(Error::input(
+            "--out",
+            "names where --export or --encode writes",
+        ));
+    }
+    if let (Some(encoding), Some(out)) = (a.encode, &a.out) {
+        return write_encoded(a, encoding, out);
+    }
     check_export_beside_atlas(a)?;
     if let (Some(Written::AnisoTexture), Some(dir)) = (a.export, &a.out) {
         return export_aniso(a, dir);
@@ -123,6 +138,34 @@ pub fn run(a: &Args) -> Result<()> {
         }
     }
     print(&out)
+}
+
+/// `--encode NAME --out FILE`: the table as the encoding gives it back, as an .exr (f32
+/// holds every value of each storage exactly), written to the file the user named.
+fn write_encoded(a: &Args, encoding: Encoding, out: &std::path::Path) -> Result<()> {
+    if !out
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("exr"))
+    {
+        return Err(Error::input(
+            out.display().to_string(),
+            "an encoded table is written as OpenEXR: the output must end in .exr",
+        ));
+    }
+    check_writable(out)?;
+    let lut = a.lut.load()?;
+    let encoded = encoding.decoded(&lut);
+    write_atomically(out, &encoded.to_exr_bytes())?;
+    eprintln!(
+        "wrote {}: {} as {} ({}×{} cells, {} bytes in an engine)",
+        out.display(),
+        a.lut.describe(),
+        encoding.name(),
+        encoded.size,
+        encoded.size,
+        encoding.bytes(lut.size)
+    );
+    Ok(())
 }
 
 /// A file export must be neither the atlas directory nor one of its files: one output would

@@ -563,3 +563,37 @@ fn export_js(table: &[&str], out: &std::path::Path) {
     let o = ltc_lab(&args);
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+/// `lut --encode NAME --out FILE.exr` writes the table as that encoding gives it back, and
+/// shading with the file (`--lut`) is shading with `--encoding NAME`, to the bit; the file is
+/// the encoding's size. What is not a table's place is refused, naming it.
+#[test]
+fn lut_encode_writes_what_eval_encoding_shades_with() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases.csv");
+    std::fs::write(
+        &cases,
+        "theta_o,alpha,lx,ly,lz,f0\n0,0.27,0,0,1,0.04\n\
+         60,0.5,-0.6,0.2,0.7745966692414834,1\n\
+         40,0.05,-0.7071067811865476,0,0.7071067811865475,0.04\n",
+    )
+    .unwrap();
+    let cases = cases.to_str().unwrap();
+    for (name, size) in [("f16", 64), ("unorm8-16", 16), ("f32-8", 8)] {
+        let file = dir.path().join(format!("{name}.exr"));
+        let o = ltc_lab(&["lut", "--encode", name, "--out", file.to_str().unwrap()]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let table = Lut::read(&file).unwrap();
+        assert_eq!(table.size, size, "{name}");
+        let by_file = ltc_lab(&["eval", "--cases", cases, "--lut", file.to_str().unwrap()]);
+        let by_name = ltc_lab(&["eval", "--cases", cases, "--encoding", name]);
+        assert!(by_file.status.success() && by_name.status.success());
+        assert_eq!(by_file.stdout, by_name.stdout, "{name}");
+    }
+    let out = dir.path().join("table.txt");
+    let o = ltc_lab(&["lut", "--encode", "f16", "--out", out.to_str().unwrap()]);
+    assert_refused(&o, "table.txt");
+    assert!(!out.exists());
+    let o = ltc_lab(&["lut", "--out", dir.path().join("t.exr").to_str().unwrap()]);
+    assert_refused(&o, "--out");
+}
