@@ -35,6 +35,15 @@ pub struct Args {
     /// --encoding NAME.
     #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with = "export")]
     encode: Option<Encoding>,
+    /// Measure every encoding (docs/design.md §2.10: each storage at 64², 32², 16² and 8²)
+    /// on every light shape: CSV on stdout, a row per encoding, shape, α band and θo band,
+    /// with the error each adds against the f32 table and its total against the exact
+    /// integral, per lobe.
+    #[arg(long, conflicts_with_all = ["export", "encode", "dump", "atlas"])]
+    encodings: bool,
+    /// Cases a band for --encodings (1–100000).
+    #[arg(long, default_value_t = 64, requires = "encodings")]
+    cases: usize,
     /// Where --export or --encode writes: a file, or for ltc-code-dds and aniso-texture a
     /// directory (made if missing).
     #[arg(long)]
@@ -77,6 +86,9 @@ pub fn run(a: &Args) -> Result<()> {
     }
     if let (Some(encoding), Some(out)) = (a.encode, &a.out) {
         return write_encoded(a, encoding, out);
+    }
+    if a.encodings {
+        return measure_encodings(a);
     }
     check_export_beside_atlas(a)?;
     if let (Some(Written::AnisoTexture), Some(dir)) = (a.export, &a.out) {
@@ -138,6 +150,34 @@ pub fn run(a: &Args) -> Result<()> {
         }
     }
     print(&out)
+}
+
+/// `--encodings`: every encoding measured on every shape, as CSV.
+fn measure_encodings(a: &Args) -> Result<()> {
+    use ltc_lab::ltc::lut::Storage;
+    use ltc_lab::ltc::lut::encoding::SIZES;
+    use ltc_lab::measure::encodings::{csv_rows, encoding_errors};
+    if !(1..=100_000).contains(&a.cases) {
+        return Err(Error::input(
+            "--cases",
+            format!("must be in 1..=100000, got {}", a.cases),
+        ));
+    }
+    let lut = a.lut.load()?;
+    let encodings: Vec<Encoding> = Storage::ALL
+        .into_iter()
+        .flat_map(|storage| {
+            SIZES.map(|n| Encoding {
+                storage,
+                size: (n != lut.size).then_some(n),
+            })
+        })
+        .collect();
+    let rows = encoding_errors(&lut, &encodings, a.cases, 1);
+    print(&format!(
+        "encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff\n{}",
+        csv_rows(&rows, lut.size)
+    ))
 }
 
 /// `--encode NAME --out FILE`: the table as the encoding gives it back, as an .exr (f32

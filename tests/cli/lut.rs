@@ -597,3 +597,42 @@ fn lut_encode_writes_what_eval_encoding_shades_with() {
     let o = ltc_lab(&["lut", "--out", dir.path().join("t.exr").to_str().unwrap()]);
     assert_refused(&o, "--out");
 }
+
+/// `lut --encodings`: a row per encoding, shape, α band and θo band; f32 at the table's size
+/// adds nothing anywhere (it is the table); every figure is finite and not negative; 8 bits
+/// add more than half floats near α → 0, and a smaller table adds more than a larger one.
+#[test]
+fn lut_encodings_measures_every_encoding_on_every_shape() {
+    let o = ltc_lab(&["lut", "--encodings", "--cases", "16"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    // 3 storages × 4 sizes, 4 shapes, 3 α bands × 3 θo bands.
+    assert_eq!(rows.len(), 12 * 4 * 9);
+    let value = |r: &Vec<&str>, k: usize| r[k].parse::<f64>().unwrap();
+    // Σ over a storage's rows of a shape and α band of the specular error it adds.
+    let added = |encoding: &str, shape: &str, alpha: &str| -> f64 {
+        rows.iter()
+            .filter(|r| r[0] == encoding && r[2] == shape && r[3] == alpha)
+            .map(|r| value(r, 6))
+            .sum()
+    };
+    for r in &rows {
+        for k in 6..10 {
+            assert!(value(r, k).is_finite() && value(r, k) >= 0.0, "{r:?}");
+        }
+        if r[0] == "f32" {
+            assert_eq!((value(r, 6), value(r, 7)), (0.0, 0.0), "{r:?}");
+        }
+    }
+    for shape in ["point", "sphere", "rect", "disk"] {
+        assert!(added("unorm8", shape, "0.01..0.1") > added("f16", shape, "0.01..0.1"));
+        assert!(added("f32-8", shape, "0.1..0.4") > added("f32-32", shape, "0.1..0.4"));
+    }
+    assert_refused(&ltc_lab(&["lut", "--encodings", "--cases", "0"]), "--cases");
+}

@@ -1,0 +1,221 @@
+//! Each encoding of the table measured on every light shape (docs/design.md §2.10): the error
+//! it adds against the f32 table (Σ|encoded − f32| / Σ f32 per lobe) and its total error
+//! against the exact integral (Σ|encoded − exact| / Σ exact), by shape, α band and θo band,
+//! over the same drawn cases for every encoding. Each shape by the LTC method engines ship
+//! for it: a point by the LTC, a sphere and a disk by `ltc-disk`, a rect by `ltc-polygon`.
+//! `lut --encodings` prints it.
+
+use glam::DVec3;
+use rayon::prelude::*;
+
+use crate::brdf::{Alpha, Lobes, view_from_theta};
+use crate::light::disk::{DiskMethod, DiskShading, disk_exact, disk_light};
+use crate::light::rect::{RectMethod, RectShading, rect_exact, rect_light};
+use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
+use crate::ltc::lut::{Encoding, Lut, THETA_MAX};
+use crate::ltc::{Clipping, Normalization};
+use crate::measure::horizon::{F0, lobes};
+use crate::measure::shape_error::lights;
+use crate::measure::sphere_error::one_sphere;
+use crate::render::LtcRules;
+use crate::scene::SplitMix64;
+
+/// The light shapes measured, in the rows' order.
+pub const SHAPES: [&str; 4] = ["point", "sphere", "rect", "disk"];
+
+/// α bands: near the mirror (where `M⁻¹`'s entries grow like 1/α), glossy, rough.
+pub const ALPHA_BANDS: [[f64; 2]; 3] = [[0.01, 0.1], [0.1, 0.4], [0.4, 1.0]];
+
+/// θo bands, degrees: facing, oblique, grazing.
+pub const THETA_BANDS: [[f64; 2]; 3] = [[0.0, 40.0], [40.0, 70.0], [70.0, 89.0]];
+
+/// A sphere's angular radius (degrees) and a rect's and a disk's solid angle (sr): a light
+/// of a size a room holds, seen from a metre or two.
+pub const SPHERE_RADIUS_DEG: f64 = 5.0;
+pub const AREA_SOLID_ANGLE: f64 = 0.1;
+
+/// Nodes of the exact rules a piece: 32 is within 1e-4 of 64 on these lights (the rules'
+/// own error, shape_error's `finer` measure, docs/design.md §1.11), far below what an
+/// encoding is measured to add or an LTC to miss.
+pub const NODES: usize = 32;
+
+/// One encoding, shape and band: what it adds to f32's error and its total error, per lobe
+/// (`[specular, diffuse]`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EncodingError {
+    pub encoding: Encoding,
+    pub shape: &'static str,
+    pub alpha: [f64; 2],
+    pub theta: [f64; 2],
+    pub cases: usize,
+    pub added: [f64; 2],
+    pub total: [f64; 2],
+}
+
+/// Every encoding of `encodings` over every shape and band, `cases` cases a band (seeded).
+pub fn encoding_errors(
+    lut: &Lut,
+    encodings: &[Encoding],
+    cases: usize,
+    seed: u64,
+) -> Vec<EncodingError> {
+    let tables: Vec<Lut> = encodings.iter().map(|e| e.decoded(lut)).collect();
+    let bands: Vec<(usize, usize)> = (0..ALPHA_BANDS.len())
+        .flat_map(|a| (0..THETA_BANDS.len()).map(move |t| (a, t)))
+        .collect();
+    let per_band: Vec<Vec<EncodingError>> = bands
+        .par_iter()
+        .map(|&(a, t)| band(lut, &tables, encodings, (a, t), cases, seed))
+        .collect();
+    let mut rows: Vec<EncodingError> = per_band.into_iter().flatten().collect();
+    rows.sort_by_key(|r| {
+        let e = encodings.iter().position(|&e| e == r.encoding);
+        let s = SHAPES.iter().position(|&s| s == r.shape);
+        (e, s)
+    });
+    rows
+}
+
+/// Each shape's lobes at one case: exact, and by each table.
+type Case = [(Lobes<f64>, Vec<Lobes<f64>>); 4];
+
+fn band(
+    lut: &Lut,
+    tables: &[Lut],
+    encodings: &[Encoding],
+    (a, t): (usize, usize),
+    cases: usize,
+    seed: u64,
+) -> Vec<EncodingError> {
+    let mut rng = SplitMix64(seed.wrapping_add((a * THETA_BANDS.len() + t) as u64));
+    // Per shape: Σ exact, Σ f32, and per table Σ|table − f32|, Σ|table − exact| (per lobe).
+    let mut exact_sum = [[0.0f64; 2]; 4];
+    let mut f32_sum = [[0.0f64; 2]; 4];
+    let mut added = vec![[[0.0f64; 2]; 4]; tables.len()];
+    let mut total = vec![[[0.0f64; 2]; 4]; tables.len()];
+    for _ in 0..cases {
+        let theta_o = rng.uniform(THETA_BANDS[t]);
+        let alpha = rng.uniform(ALPHA_BANDS[a]);
+        // A light above the horizon, uniform in solid angle.
+        let z = rng.uniform([5f64.to_radians().sin(), 1.0]);
+        let phi = rng.uniform([0.0, std::f64::consts::TAU]);
+        let r = (1.0 - z * z).sqrt();
+        let l = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+        let tilt_seed = SplitMix64(rng.0);
+        let case = one_case(lut, tables, (theta_o, alpha), l, tilt_seed);
+        for (s, (exact, got)) in case.iter().enumerate() {
+            let f32_lobes = got[0];
+            // Σ|x − y| per lobe (y zero: Σ|x|).
+            let sum = |acc: &mut [f64; 2], x: Lobes<f64>, y: Lobes<f64>| {
+                acc[0] += (x.specular - y.specular).abs();
+                acc[1] += (x.diffuse - y.diffuse).abs();
+            };
+            sum(&mut exact_sum[s], *exact, Lobes::default());
+            sum(&mut f32_sum[s], f32_lobes, Lobes::default());
+            for (k, g) in got[1..].iter().enumerate() {
+                sum(&mut added[k][s], *g, f32_lobes);
+                sum(&mut total[k][s], *g, *exact);
+            }
+        }
+    }
+    let ratio = |e: [f64; 2], t: [f64; 2]| [0, 1].map(|k| e[k] / t[k].max(1e-300));
+    let mut rows = Vec::new();
+    for (k, &encoding) in encodings.iter().enumerate() {
+        for (s, &shape) in SHAPES.iter().enumerate() {
+            rows.push(EncodingError {
+                encoding,
+                shape,
+                alpha: ALPHA_BANDS[a],
+                theta: THETA_BANDS[t],
+                cases,
+                added: ratio(added[k][s], f32_sum[s]),
+                total: ratio(total[k][s], exact_sum[s]),
+            });
+        }
+    }
+    rows
+}
+
+/// One view and light direction: each shape's exact lobes and its lobes by `lut` (first)
+/// and then by each of `tables`.
+fn one_case(
+    lut: &Lut,
+    tables: &[Lut],
+    (theta_o, alpha): (f64, f64),
+    l: DVec3,
+    mut rng: SplitMix64,
+) -> Case {
+    let all: Vec<&Lut> = std::iter::once(lut).chain(tables).collect();
+    let rules = LtcRules::default();
+    let point_exact = lobes(lut, &rules, (theta_o, alpha), l).0;
+    let point = all.iter().map(|t| lobes(t, &rules, (theta_o, alpha), l).1);
+    let sphere_exact = one_sphere(lut, (theta_o, alpha), l, SPHERE_RADIUS_DEG, NODES).0;
+    let v = DVec3::from(view_from_theta(theta_o.to_radians().min(THETA_MAX)));
+    let a = Alpha::isotropic(alpha);
+    let sphere = all.iter().map(|t| {
+        let pair = t.ltc_pair(alpha, v);
+        let s = SphereShading::unit(v, l, SPHERE_RADIUS_DEG, a, F0, &pair);
+        sphere_light(SphereMethod::LtcDisk, &s)
+    });
+    let elevation = l.z.asin().to_degrees();
+    let azimuth = l.y.atan2(l.x).to_degrees();
+    let (rect, disk) = lights(&mut rng, AREA_SOLID_ANGLE, elevation, azimuth);
+    let (clip, normalization) = (Clipping::BOTH, Normalization::Corrected);
+    let rects = all.iter().map(|t| {
+        let pair = t.ltc_pair(alpha, v);
+        let s = RectShading {
+            v,
+            rect,
+            alpha: a,
+            f0: F0,
+            ltc: &pair,
+            clip,
+            normalization,
+        };
+        rect_light(RectMethod::LtcPolygon, &s)
+    });
+    let disks = all.iter().map(|t| {
+        let pair = t.ltc_pair(alpha, v);
+        let s = DiskShading {
+            v,
+            disk,
+            alpha: a,
+            f0: F0,
+            ltc: &pair,
+            clip,
+            normalization,
+        };
+        disk_light(DiskMethod::LtcDisk, &s)
+    });
+    [
+        (point_exact, point.collect()),
+        (sphere_exact, sphere.collect()),
+        (rect_exact(v, &rect, a, F0, NODES), rects.collect()),
+        (disk_exact(v, &disk, a, F0, NODES), disks.collect()),
+    ]
+}
+
+/// The figures as CSV rows
+/// (`encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff`),
+/// bands as `lo..hi`; `size` is the full table's (for the bytes).
+pub fn csv_rows(errors: &[EncodingError], size: usize) -> String {
+    let mut out = String::new();
+    for e in errors {
+        out += &format!(
+            "{},{},{},{}..{},{}..{},{},{:.3e},{:.3e},{:.3e},{:.3e}\n",
+            e.encoding.name(),
+            e.encoding.bytes(size),
+            e.shape,
+            e.alpha[0],
+            e.alpha[1],
+            e.theta[0],
+            e.theta[1],
+            e.cases,
+            e.added[0],
+            e.added[1],
+            e.total[0],
+            e.total[1]
+        );
+    }
+    out
+}
