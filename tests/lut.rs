@@ -296,13 +296,30 @@ fn an_encoding_is_named_as_it_is_read() {
 /// What each storage gives back, value by value, within the bound its format states: f32 is
 /// the table itself; f16 rounds each value to 11 significant bits (a relative error of at
 /// most 2⁻¹¹, or 2⁻²⁵ absolute among its subnormals); 8 bits over a channel's range
-/// `[lo, hi]` round to within half a step, `(hi − lo)/510` (and f32's own rounding of the
-/// decoded value, 2⁻²⁴ relative).
+/// `[lo, hi]` round to within half a step, `(hi − lo)/510`; and f32's own rounding of the
+/// value, and of it divided by the scale and multiplied back (`LutCell::shaded`), 2⁻²³
+/// relative. The classic table's spec.scale is 1; the point table's is not, so the
+/// magnitudes' division by it is checked too.
 #[test]
 fn each_storage_gives_back_its_values_within_its_rounding() {
+    use ltc_lab::ltc::lut::{Encoding, Storage, Table};
+    for table in [Table::Classic, Table::Point] {
+        stored_within_rounding(Lut::shipped(table));
+    }
+    // Bytes an engine stores: 11 channels of 64² values, and 8-bit tables' ranges.
+    assert_eq!(Encoding::default().bytes(64), 64 * 64 * 11 * 4);
+    let half32 = Encoding::parse("f16-32").unwrap();
+    assert_eq!(half32.bytes(64), 32 * 32 * 11 * 2);
+    let byte8 = Encoding {
+        storage: Storage::Unorm8,
+        size: Some(8),
+    };
+    assert_eq!(byte8.bytes(64), 8 * 8 * 11 + 11 * 2 * 4);
+}
+
+fn stored_within_rounding(lut: &Lut) {
+    use ltc_lab::ltc::lut::Encoding;
     use ltc_lab::ltc::lut::encoding::SHADER_CHANNELS;
-    use ltc_lab::ltc::lut::{Encoding, Storage};
-    let lut = Lut::embedded();
     let f32_table = Encoding::default().decoded(lut);
     assert_eq!(&f32_table, lut);
     let half = Encoding::parse("f16").unwrap().decoded(lut);
@@ -313,29 +330,18 @@ fn each_storage_gives_back_its_values_within_its_rounding() {
         let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         for (k, &v) in values.iter().enumerate() {
             let (h, b) = (half.cells[k].shaded(c), byte.cells[k].shaded(c));
-            let f32_rounding = 2f64.powi(-24) * v.abs().max(h.abs());
+            let f32_rounding = 2f64.powi(-23) * v.abs().max(h.abs()).max(b.abs());
             assert!(
                 (h - v).abs() <= 2f64.powi(-11) * v.abs() + 2f64.powi(-25) + f32_rounding,
                 "f16 {c:?} cell {k}: {v} read back as {h}"
             );
             assert!(
-                (b - v).abs() <= (hi - lo) / 510.0 + 2f64.powi(-24) * (hi.abs() + lo.abs()),
+                (b - v).abs() <= (hi - lo) / 510.0 + 2f64.powi(-23) * (hi.abs() + lo.abs()),
                 "unorm8 {c:?} cell {k}: {v} read back as {b} over [{lo}, {hi}]"
             );
             assert!(h.is_finite() && b.is_finite());
         }
     }
-    // Bytes an engine stores: 11 channels of 64² values, and 8-bit tables' ranges.
-    assert_eq!(Encoding::default().bytes(64), 64 * 64 * 11 * 4);
-    assert_eq!(
-        Encoding::parse("f16-32").unwrap().bytes(64),
-        32 * 32 * 11 * 2
-    );
-    let byte8 = Encoding {
-        storage: Storage::Unorm8,
-        size: Some(8),
-    };
-    assert_eq!(byte8.bytes(64), 8 * 8 * 11 + 11 * 2 * 4);
 }
 
 /// A table resampled to its own size is itself (each new cell sits on an old one's centre);
@@ -350,6 +356,16 @@ fn a_resampled_table_keeps_the_cells_it_lands_on() {
     for (a, b) in lut.cells.iter().zip(&same.cells) {
         for c in Channel::ALL {
             assert!(close(a.shaded(c), b.shaded(c)), "{c:?}: {a:?} {b:?}");
+        }
+    }
+    // 8 cells a side land on every ninth of the 64 (63 = 7 × 9): every cell is an old one,
+    // within f32's rounding of the magnitudes divided by the scale and back (2⁻²³ relative).
+    let eight = resampled(lut, 8);
+    for (i, j) in (0..8).flat_map(|j| (0..8).map(move |i| (i, j))) {
+        for c in Channel::ALL {
+            let (a, b) = (lut.cell(9 * i, 9 * j).shaded(c), eight.cell(i, j).shaded(c));
+            let bound = 2f64.powi(-23) * a.abs();
+            assert!((a - b).abs() <= bound, "8² ({i}, {j}) {c:?}: {a} {b}");
         }
     }
     for size in [32, 16, 8] {

@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use ltc_lab::error::{Error, Result};
-use ltc_lab::files::{Claim, check_writable, write_atomically};
+use ltc_lab::files::{Claim, check_writable, is_exr, write_atomically};
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::fit_point::{PointObjective, REFINEMENTS, fit_table_for};
 use ltc_lab::ltc::lut::{Channel, Lut, Table};
@@ -165,10 +165,6 @@ fn output(a: &Args, default: &Path) -> Result<Output> {
             "exists: name it with --out to replace it, or pass --force",
         )),
     }
-}
-
-fn is_exr(p: &Path) -> bool {
-    p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"))
 }
 
 /// Mean and maximum of a channel, with the maximum's cell.

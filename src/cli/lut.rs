@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use ltc_lab::error::{Error, Result};
-use ltc_lab::files::{check_distinct, check_writable, write_atomically};
+use ltc_lab::files::{check_distinct, check_writable, is_exr, write_atomically};
 use ltc_lab::ltc::formats::dds::Precision;
 use ltc_lab::ltc::formats::{Export, Header, export};
 use ltc_lab::ltc::lut::{Channel, Encoding};
@@ -32,8 +32,8 @@ pub struct Args {
     /// Write the table as an engine storing it in the encoding NAME reads it back
     /// (docs/design.md §2.10: f32, f16 or unorm8, optionally -64, -32, -16 or -8 to resample),
     /// as this project's .exr, which --lut reads: shading with that file is shading with
-    /// --encoding NAME.
-    #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with = "export")]
+    /// --encoding NAME. A resampled table's spec.err and diff.err are filtered, not measured.
+    #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with_all = ["export", "dump", "atlas"])]
     encode: Option<Encoding>,
     /// Measure every encoding (docs/design.md §2.10: each storage at 64², 32², 16² and 8²)
     /// on every light shape: CSV on stdout, a row per encoding, shape, α band and θo band,
@@ -180,20 +180,27 @@ fn measure_encodings(a: &Args) -> Result<()> {
     ))
 }
 
-/// `--encode NAME --out FILE`: the table as the encoding gives it back, as an .exr (f32
-/// holds every value of each storage exactly), written to the file the user named.
+/// `--encode NAME --out FILE`: the table as the encoding gives it back (its f32 cells, which
+/// `--encoding NAME` shades with too), as an .exr, written to the file the user named.
 fn write_encoded(a: &Args, encoding: Encoding, out: &std::path::Path) -> Result<()> {
-    if !out
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("exr"))
-    {
+    if !is_exr(out) {
         return Err(Error::input(
             out.display().to_string(),
             "an encoded table is written as OpenEXR: the output must end in .exr",
         ));
     }
+    if let Some(input) = &a.lut.lut {
+        check_distinct(&[("--lut", input), ("--out", out)])?;
+    }
     check_writable(out)?;
     let lut = a.lut.load()?;
+    let clamped = encoding.clamped(&lut);
+    if clamped > 0 {
+        eprintln!(
+            "ltc-lab: note: {clamped} values lie past what {} holds and were clamped to it",
+            encoding.name()
+        );
+    }
     let encoded = encoding.decoded(&lut);
     write_atomically(out, &encoded.to_exr_bytes())?;
     eprintln!(

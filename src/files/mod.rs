@@ -165,6 +165,12 @@ pub(super) fn probe_directory(dir: &Path) -> std::io::Result<()> {
     fs::remove_file(&probe)
 }
 
+/// Whether `path` ends in `.exr` (any case): an OpenEXR file by its name.
+pub fn is_exr(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("exr"))
+}
+
 /// Refuses two outputs of one command that name the same file (the second would replace
 /// the first): `outputs` are (flag, path) pairs, and the later flag of a pair is named.
 /// Paths match if they are equal once made absolute and rid of `.` and `..`, or if their

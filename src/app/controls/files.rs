@@ -143,10 +143,7 @@ pub(super) fn save_buttons(ui: &mut egui::Ui, lab: &mut Lab, files: &mut Control
         name(ui, &field, "screenshot file");
         if ui.small_button("screenshot").clicked() {
             let path = PathBuf::from(&files.screenshot_path);
-            let exr = path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("exr"));
-            lab.request(if exr {
+            lab.request(if crate::files::is_exr(&path) {
                 Request::SaveExr(path)
             } else {
                 Request::Screenshot(path)

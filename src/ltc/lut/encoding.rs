@@ -2,7 +2,6 @@
 //! a storage format for each value and a table size — and the table as that encoding gives it
 //! back, so that every measure can shade with what an engine would read.
 
-use crate::ltc::lut::taps::bilinear_taps;
 use crate::ltc::lut::{Channel, Lut, LutCell};
 use crate::named::named_enum;
 
@@ -117,6 +116,8 @@ impl Encoding {
         if self.storage == Storage::F32 {
             return out;
         }
+        // The cells change: a correction fitted to the old ones would not fit them.
+        out.nl_terms = Default::default();
         for c in SHADER_CHANNELS {
             let values: Vec<f64> = out.cells.iter().map(|cell| cell.shaded(c)).collect();
             let stored = store(self.storage, &values);
@@ -133,15 +134,34 @@ impl Encoding {
         }
         out
     }
+
+    /// How many of `lut`'s shaded values lie past what the storage holds (f16's largest
+    /// finite value, 65 504): `decoded` clamps them to it, and the command line says so.
+    pub fn clamped(&self, lut: &Lut) -> usize {
+        if self.storage != Storage::F16 {
+            return 0;
+        }
+        let limit = f64::from(half::f16::MAX);
+        lut.cells
+            .iter()
+            .flat_map(|cell| SHADER_CHANNELS.map(|c| cell.shaded(c)))
+            .filter(|v| v.abs() > limit)
+            .count()
+    }
 }
 
 /// `values` stored in `storage` and read back.
 fn store(storage: Storage, values: &[f64]) -> Vec<f64> {
     match storage {
         Storage::F32 => values.iter().map(|&v| f64::from(v as f32)).collect(),
+        // From the f32 an engine holds (as `lut --export ltc-code-dds` rounds), clamped to
+        // f16's finite range (`Encoding::clamped` counts what was).
         Storage::F16 => values
             .iter()
-            .map(|&v| f64::from(half::f16::from_f64(v)))
+            .map(|&v| {
+                let limit = f32::from(half::f16::MAX);
+                f64::from(half::f16::from_f32((v as f32).clamp(-limit, limit)))
+            })
             .collect(),
         Storage::Unorm8 => {
             let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
@@ -166,20 +186,13 @@ pub fn resampled(lut: &Lut, size: usize) -> Lut {
         for i in 0..size {
             let at = |k: usize| k as f64 / (size - 1) as f64;
             let (u, v) = lut.uv_of_axes(at(i), at(j));
-            let (i0, i1, fx) = bilinear_taps(lut.size, u);
-            let (j0, j1, fy) = bilinear_taps(lut.size, v);
             // As the sampler filters them: the specular magnitudes as the products it
             // shades with, stored back divided by the filtered scale.
-            let filtered = |c: Channel| {
-                let get = |i: usize, j: usize| lut.cell(i, j).shaded(c);
-                let top = get(i0, j0) * (1.0 - fx) + get(i1, j0) * fx;
-                let bottom = get(i0, j1) * (1.0 - fx) + get(i1, j1) * fx;
-                top * (1.0 - fy) + bottom * fy
-            };
-            let scale = filtered(Channel::SpecScale);
+            let filtered = lut.sample_uv(u, v);
+            let scale = filtered.get(Channel::SpecScale);
             let value = |c: Channel| match c {
-                Channel::SpecNorm | Channel::SpecFresnel => (filtered(c) / scale) as f32,
-                _ => filtered(c) as f32,
+                Channel::SpecNorm | Channel::SpecFresnel => (filtered.get(c) / scale) as f32,
+                _ => filtered.get(c) as f32,
             };
             cells.push(LutCell(Channel::ALL.map(value)));
         }
