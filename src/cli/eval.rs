@@ -56,14 +56,7 @@ pub fn run(a: &Args) -> Result<()> {
     }
     let mut lut = a.lut.load_for(a.horizon)?;
     if let Some(encoding) = a.encoding {
-        let clamped = encoding.clamped(&lut);
-        if clamped > 0 {
-            eprintln!(
-                "ltc-lab: note: {clamped} values of the table lie past what {} holds and were clamped to it",
-                encoding.name()
-            );
-        }
-        lut = std::borrow::Cow::Owned(encoding.decoded(&lut));
+        lut = std::borrow::Cow::Owned(super::decoded_saying(encoding, &lut));
     }
     let mut out = header_of(cases.kind) + "\n";
     for c in &cases.rows {

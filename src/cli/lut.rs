@@ -194,14 +194,7 @@ fn write_encoded(a: &Args, encoding: Encoding, out: &std::path::Path) -> Result<
     }
     check_writable(out)?;
     let lut = a.lut.load()?;
-    let clamped = encoding.clamped(&lut);
-    if clamped > 0 {
-        eprintln!(
-            "ltc-lab: note: {clamped} values lie past what {} holds and were clamped to it",
-            encoding.name()
-        );
-    }
-    let encoded = encoding.decoded(&lut);
+    let encoded = super::decoded_saying(encoding, &lut);
     write_atomically(out, &encoded.to_exr_bytes())?;
     eprintln!(
         "wrote {}: {} as {} ({}×{} cells, {} bytes in an engine)",

@@ -123,6 +123,15 @@ pub fn with_aniso(
     }
 }
 
+/// `lut` as `encoding` gives it back, what it clamped said on stderr as a note.
+pub fn decoded_saying(encoding: ltc_lab::ltc::lut::Encoding, lut: &Lut) -> Lut {
+    let (decoded, note) = encoding.decoded_saying(lut);
+    if let Some(note) = note {
+        eprintln!("ltc-lab: note: {note}");
+    }
+    decoded
+}
+
 /// `--horizon`'s help: what LTC does for lights near the horizon (docs/design.md §4.7).
 pub const HORIZON_HELP: &str = "What LTC does for lights near the horizon (docs/design.md §4.7): eq30 (the paper's clipping alone), arrival-fit and constrained-fit (shaded with the shipped arrival and constrained tables), nl-fit (each lobe scaled by a fitted quadratic in n·l below 30°), exact-band (the exact BRDF below 15°)";
 

@@ -6,6 +6,7 @@
 mod gpu_common;
 
 mod bench;
+mod encoding;
 mod eval;
 mod fit;
 mod lab;

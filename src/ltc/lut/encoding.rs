@@ -122,17 +122,22 @@ impl Encoding {
             let values: Vec<f64> = out.cells.iter().map(|cell| cell.shaded(c)).collect();
             let stored = store(self.storage, &values);
             for (cell, v) in out.cells.iter_mut().zip(stored) {
-                // The shaded magnitudes are scale × value: stored back unscaled.
-                let scale = match c {
-                    Channel::SpecNorm | Channel::SpecFresnel => {
-                        f64::from(cell.get(Channel::SpecScale))
-                    }
-                    _ => 1.0,
-                };
-                cell.0[c as usize] = (v / scale) as f32;
+                cell.set_shaded(c, v);
             }
         }
         out
+    }
+
+    /// `decoded`, with what was clamped said in words (`None` where nothing was).
+    pub fn decoded_saying(&self, lut: &Lut) -> (Lut, Option<String>) {
+        let clamped = self.clamped(lut);
+        let note = (clamped > 0).then(|| {
+            format!(
+                "{clamped} values of the table lie past what {} holds and were clamped to it",
+                self.name()
+            )
+        });
+        (self.decoded(lut), note)
     }
 
     /// How many of `lut`'s shaded values lie past what the storage holds (f16's largest
@@ -187,14 +192,13 @@ pub fn resampled(lut: &Lut, size: usize) -> Lut {
             let at = |k: usize| k as f64 / (size - 1) as f64;
             let (u, v) = lut.uv_of_axes(at(i), at(j));
             // As the sampler filters them: the specular magnitudes as the products it
-            // shades with, stored back divided by the filtered scale.
+            // shades with, stored back divided by the filtered scale (set after it).
             let filtered = lut.sample_uv(u, v);
-            let scale = filtered.get(Channel::SpecScale);
-            let value = |c: Channel| match c {
-                Channel::SpecNorm | Channel::SpecFresnel => (filtered.get(c) / scale) as f32,
-                _ => filtered.get(c) as f32,
-            };
-            cells.push(LutCell(Channel::ALL.map(value)));
+            let mut cell = LutCell(Channel::ALL.map(|c| filtered.get(c) as f32));
+            for c in [Channel::SpecNorm, Channel::SpecFresnel] {
+                cell.set_shaded(c, filtered.get(c));
+            }
+            cells.push(cell);
         }
     }
     Lut {

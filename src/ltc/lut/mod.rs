@@ -145,6 +145,16 @@ impl LutCell {
             _ => x,
         }
     }
+
+    /// Sets channel `c` to its shaded value `x` (`shaded`'s inverse): a specular magnitude is
+    /// stored divided by the cell's scale.
+    pub fn set_shaded(&mut self, c: Channel, x: f64) {
+        let stored = match c {
+            Channel::SpecNorm | Channel::SpecFresnel => x / f64::from(self.get(Channel::SpecScale)),
+            _ => x,
+        };
+        self.0[c as usize] = stored as f32;
+    }
 }
 
 /// An N×N table; `cells[j * size + i]`.

@@ -1,0 +1,169 @@
+//! The table's encodings (docs/design.md §2.10): `eval --encoding`, `lut --encode` and
+//! `lut --encodings`.
+
+use ltc_lab::ltc::lut::Lut;
+
+use crate::eval::numbers;
+use crate::{assert_no_panic, assert_refused, ltc_lab, stderr};
+
+/// `--encoding` shades with the table as an engine storing it so reads it back (docs/design.md
+/// §2.10): f32 is the table itself, to the bit; every encoding gives finite values and leaves
+/// the exact columns alone; f16 stays within 1e-3 of f32 from α = 0.2 up and is past it near
+/// α → 0, where `M⁻¹`'s entries grow like 1/α and a lobe amplifies their rounding (measured
+/// 4.6e-3 at α = 0.01); 8 bits over a channel's range lose the small entries there outright;
+/// and resampling costs more the smaller the table. The decoding is f64 arithmetic on the
+/// CPU, the same on every machine: the bounds hold the measured values (0.97e-3 at α ≥ 0.2
+/// for f16; 100% for unorm8 at α = 0.01) with the margins written beside them.
+#[test]
+fn eval_shades_with_the_table_as_an_encoding_reads_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases.csv");
+    let mut text = String::from("theta_o,alpha,lx,ly,lz,f0\n");
+    for theta in [0, 40, 75, 89] {
+        for alpha in [0.01, 0.05, 0.2, 0.4, 0.7, 1.0] {
+            // Lights high, low, behind, and 5° below the mirror direction (where a sharp
+            // lobe's value is large enough to weigh).
+            let near_mirror = 85.0 - f64::from(theta);
+            for (elevation, azimuth) in [
+                (80f64, 180f64),
+                (30.0, 0.0),
+                (15.0, 180.0),
+                (near_mirror, 180.0),
+            ] {
+                let (e, a) = (elevation.to_radians(), azimuth.to_radians());
+                text += &format!(
+                    "{theta},{alpha},{},{},{},0.04\n",
+                    e.cos() * a.cos(),
+                    e.cos() * a.sin(),
+                    e.sin()
+                );
+            }
+        }
+    }
+    std::fs::write(&cases, text).unwrap();
+    let eval = |encoding: Option<&str>| {
+        let mut args = vec!["eval", "--cases", cases.to_str().unwrap()];
+        args.extend(encoding.iter().flat_map(|e| ["--encoding", e]));
+        let o = ltc_lab(&args);
+        assert!(o.status.success(), "{encoding:?}: {}", stderr(&o));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let table = eval(None);
+    assert_eq!(eval(Some("f32")), table, "f32 is not the table itself");
+    let base = numbers(&table);
+    // The largest relative change of the LTC columns among rows of α in `alphas`.
+    let worst = |rows: &[Vec<f64>], alphas: std::ops::RangeInclusive<f64>| {
+        let mut worst = 0f64;
+        for (r, b) in rows.iter().zip(&base) {
+            assert_eq!(r[..8], b[..8], "the exact columns changed");
+            assert!(r.iter().all(|x| x.is_finite()), "{r:?}");
+            for col in [8, 9] {
+                if alphas.contains(&b[1]) && b[col] > 1e-9 {
+                    worst = worst.max((r[col] - b[col]).abs() / b[col]);
+                }
+            }
+        }
+        worst
+    };
+    let half = numbers(&eval(Some("f16")));
+    assert!(
+        worst(&half, 0.2..=1.0) <= 1e-3,
+        "f16: {}",
+        worst(&half, 0.2..=1.0)
+    );
+    assert!(
+        worst(&half, 0.01..=0.01) > 1e-3,
+        "f16 near α → 0 no longer fails: pin it anew"
+    );
+    let byte = numbers(&eval(Some("unorm8")));
+    assert!(worst(&byte, 0.01..=0.01) > 0.5, "unorm8 near α → 0");
+    let sized: Vec<f64> = ["f32-32", "f32-16", "f32-8"]
+        .map(|e| worst(&numbers(&eval(Some(e))), 0.2..=1.0))
+        .to_vec();
+    assert!(sized[0] < sized[1] && sized[1] < sized[2], "{sized:?}");
+    // A size the encodings do not have is refused, naming the flag and the value.
+    let o = ltc_lab(&[
+        "eval",
+        "--cases",
+        cases.to_str().unwrap(),
+        "--encoding",
+        "f16-99",
+    ]);
+    let err = stderr(&o);
+    assert_no_panic(o.status.code(), &err);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("--encoding") && err.contains("99"), "{err}");
+}
+
+/// `lut --encode NAME --out FILE.exr` writes the table as that encoding gives it back, and
+/// shading with the file (`--lut`) is shading with `--encoding NAME`, to the bit; the file is
+/// the encoding's size. What is not a table's place is refused, naming it.
+#[test]
+fn lut_encode_writes_what_eval_encoding_shades_with() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases.csv");
+    std::fs::write(
+        &cases,
+        "theta_o,alpha,lx,ly,lz,f0\n0,0.27,0,0,1,0.04\n\
+         60,0.5,-0.6,0.2,0.7745966692414834,1\n\
+         40,0.05,-0.7071067811865476,0,0.7071067811865475,0.04\n",
+    )
+    .unwrap();
+    let cases = cases.to_str().unwrap();
+    for (name, size) in [("f16", 64), ("unorm8-16", 16), ("f32-8", 8)] {
+        let file = dir.path().join(format!("{name}.exr"));
+        let o = ltc_lab(&["lut", "--encode", name, "--out", file.to_str().unwrap()]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let table = Lut::read(&file).unwrap();
+        assert_eq!(table.size, size, "{name}");
+        let by_file = ltc_lab(&["eval", "--cases", cases, "--lut", file.to_str().unwrap()]);
+        let by_name = ltc_lab(&["eval", "--cases", cases, "--encoding", name]);
+        assert!(by_file.status.success() && by_name.status.success());
+        assert_eq!(by_file.stdout, by_name.stdout, "{name}");
+    }
+    let out = dir.path().join("table.txt");
+    let o = ltc_lab(&["lut", "--encode", "f16", "--out", out.to_str().unwrap()]);
+    assert_refused(&o, "table.txt");
+    assert!(!out.exists());
+    let o = ltc_lab(&["lut", "--out", dir.path().join("t.exr").to_str().unwrap()]);
+    assert_refused(&o, "--out");
+}
+
+/// `lut --encodings`: a row per encoding, shape, α band and θo band; f32 at the table's size
+/// adds nothing anywhere (it is the table); every figure is finite and not negative; 8 bits
+/// add more than half floats near α → 0, and a smaller table adds more than a larger one.
+#[test]
+fn lut_encodings_measures_every_encoding_on_every_shape() {
+    let o = ltc_lab(&["lut", "--encodings", "--cases", "16"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    // 3 storages × 4 sizes, 4 shapes, 3 α bands × 3 θo bands.
+    assert_eq!(rows.len(), 12 * 4 * 9);
+    let value = |r: &Vec<&str>, k: usize| r[k].parse::<f64>().unwrap();
+    // Σ over a storage's rows of a shape and α band of the specular error it adds.
+    let added = |encoding: &str, shape: &str, alpha: &str| -> f64 {
+        rows.iter()
+            .filter(|r| r[0] == encoding && r[2] == shape && r[3] == alpha)
+            .map(|r| value(r, 6))
+            .sum()
+    };
+    for r in &rows {
+        for k in 6..10 {
+            assert!(value(r, k).is_finite() && value(r, k) >= 0.0, "{r:?}");
+        }
+        if r[0] == "f32" {
+            assert_eq!((value(r, 6), value(r, 7)), (0.0, 0.0), "{r:?}");
+        }
+    }
+    for shape in ["point", "sphere", "rect", "disk"] {
+        assert!(added("unorm8", shape, "0.01..0.1") > added("f16", shape, "0.01..0.1"));
+        assert!(added("f32-8", shape, "0.1..0.4") > added("f32-32", shape, "0.1..0.4"));
+    }
+    assert_refused(&ltc_lab(&["lut", "--encodings", "--cases", "0"]), "--cases");
+}
