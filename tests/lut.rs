@@ -315,6 +315,9 @@ fn each_storage_gives_back_its_values_within_its_rounding() {
         size: Some(8),
     };
     assert_eq!(byte8.bytes(64), 8 * 8 * 11 + 11 * 2 * 4);
+    // 10-bit values three to a 4-byte texel: 11 channels in 4 texels.
+    let packed = Encoding::parse("unorm10").unwrap();
+    assert_eq!(packed.bytes(64), 64 * 64 * 4 * 4 + 11 * 2 * 4);
 }
 
 fn stored_within_rounding(lut: &Lut) {
@@ -324,6 +327,7 @@ fn stored_within_rounding(lut: &Lut) {
     assert_eq!(&f32_table, lut);
     let half = Encoding::parse("f16").unwrap().decoded(lut);
     let byte = Encoding::parse("unorm8").unwrap().decoded(lut);
+    let packed = Encoding::parse("unorm10").unwrap().decoded(lut);
     for c in SHADER_CHANNELS {
         let values: Vec<f64> = lut.cells.iter().map(|cell| cell.shaded(c)).collect();
         let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
@@ -339,7 +343,12 @@ fn stored_within_rounding(lut: &Lut) {
                 (b - v).abs() <= (hi - lo) / 510.0 + 2f64.powi(-23) * (hi.abs() + lo.abs()),
                 "unorm8 {c:?} cell {k}: {v} read back as {b} over [{lo}, {hi}]"
             );
-            assert!(h.is_finite() && b.is_finite());
+            let p = packed.cells[k].shaded(c);
+            assert!(
+                (p - v).abs() <= (hi - lo) / 2046.0 + 2f64.powi(-23) * (hi.abs() + lo.abs()),
+                "unorm10 {c:?} cell {k}: {v} read back as {p} over [{lo}, {hi}]"
+            );
+            assert!(h.is_finite() && b.is_finite() && p.is_finite());
         }
     }
 }

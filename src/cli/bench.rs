@@ -10,7 +10,10 @@ use ltc_lab::measure::bench::{BenchRow, BenchSettings};
 
 use ltc_lab::ltc::remedy::Horizon;
 
-use super::{CullArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size, print};
+use super::{
+    CullArgs, EncodingArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size,
+    print,
+};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -38,6 +41,8 @@ pub struct Args {
     culling: CullArgs,
     #[command(flatten)]
     lut: LutArgs,
+    #[command(flatten)]
+    encoding: EncodingArgs,
     /// Horizon remedies, comma-separated: each LTC form is timed with eq30 and with each of
     /// these, in the same run (arrival-fit and constrained-fit with their own tables). See
     /// docs/design.md §4.7.
@@ -125,7 +130,7 @@ pub fn run(a: &Args) -> Result<()> {
             ltc_lab::gpu::work::file_work_line(f)
         );
     }
-    let lut = a.lut.load()?;
+    let lut = a.encoding.apply(a.lut.load()?);
     let ctx = GpuContext::new()?;
     ltc_lab::measure::bench::check(&ctx, &lights, a.size).map_err(super::flag_of)?;
     let device = ctx.describe();

@@ -6,10 +6,9 @@ use ltc_lab::error::{Error, Result};
 use ltc_lab::files::read_text;
 use ltc_lab::measure::eval::{Light, evaluate, header_of, parse_cases};
 
-use ltc_lab::ltc::lut::Encoding;
 use ltc_lab::ltc::remedy::Horizon;
 
-use super::{HORIZON_HELP, LutArgs, horizon_parser, print};
+use super::{EncodingArgs, HORIZON_HELP, LutArgs, horizon_parser, print};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -37,11 +36,8 @@ pub struct Args {
     lut: LutArgs,
     #[arg(long, value_parser = horizon_parser(), default_value = "eq30", help = HORIZON_HELP)]
     horizon: Horizon,
-    /// Shade with the table as an engine storing it so reads it back (docs/design.md §2.10):
-    /// STORAGE (f32, f16, unorm8) or STORAGE-SIZE (SIZE 64, 32, 16 or 8: resampled first);
-    /// f32 is the table itself.
-    #[arg(long, value_parser = |s: &str| Encoding::parse(s))]
-    encoding: Option<Encoding>,
+    #[command(flatten)]
+    encoding: EncodingArgs,
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -54,10 +50,7 @@ pub fn run(a: &Args) -> Result<()> {
             "the horizon remedies are for point lights; sphere and rect lights take eq30",
         ));
     }
-    let mut lut = a.lut.load_for(a.horizon)?;
-    if let Some(encoding) = a.encoding {
-        lut = std::borrow::Cow::Owned(super::decoded_saying(encoding, &lut));
-    }
+    let lut = a.encoding.apply(a.lut.load_for(a.horizon)?);
     let mut out = header_of(cases.kind) + "\n";
     for c in &cases.rows {
         out.push_str(&evaluate(c, &lut, a.horizon.rule()));

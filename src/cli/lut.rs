@@ -30,7 +30,7 @@ pub struct Args {
     #[arg(long, value_parser = one_of(&Written::ALL, Written::name), requires = "out")]
     export: Option<Written>,
     /// Write the table as an engine storing it in the encoding NAME reads it back
-    /// (docs/design.md §2.10: f32, f16 or unorm8, optionally -64, -32, -16 or -8 to resample),
+    /// (docs/design.md §2.10: f32, f16, unorm8 or unorm10, optionally -64, -32, -16 or -8 to resample),
     /// as this project's .exr, which --lut reads: shading with that file is shading with
     /// --encoding NAME. A resampled table's spec.err and diff.err are filtered, not measured.
     #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with_all = ["export", "dump", "atlas"])]
@@ -44,6 +44,10 @@ pub struct Args {
     /// Cases a band for --encodings (1–100000).
     #[arg(long, default_value_t = 64, requires = "encodings")]
     cases: usize,
+    /// With --encodings, also the classic table fitted at each of these sizes (32, 16, 8;
+    /// comma-separated) by `fit --size`, as rows `fit-SIZE` beside the resampled `f32-SIZE`.
+    #[arg(long, value_delimiter = ',', requires = "encodings")]
+    fitted: Vec<usize>,
     /// Where --export or --encode writes: a file, or for ltc-code-dds and aniso-texture a
     /// directory (made if missing).
     #[arg(long)]
@@ -156,7 +160,7 @@ pub fn run(a: &Args) -> Result<()> {
 fn measure_encodings(a: &Args) -> Result<()> {
     use ltc_lab::ltc::lut::Storage;
     use ltc_lab::ltc::lut::encoding::SIZES;
-    use ltc_lab::measure::encodings::{csv_rows, encoding_errors};
+    use ltc_lab::measure::encodings::{Candidate, csv_rows, encoding_errors};
     if !(1..=100_000).contains(&a.cases) {
         return Err(Error::input(
             "--cases",
@@ -173,10 +177,24 @@ fn measure_encodings(a: &Args) -> Result<()> {
             })
         })
         .collect();
-    let rows = encoding_errors(&lut, &encodings, a.cases, 1);
+    let mut candidates: Vec<Candidate> = encodings
+        .into_iter()
+        .map(|e| Candidate::encoded(&lut, e))
+        .collect();
+    for &n in &a.fitted {
+        if !SIZES[1..].contains(&n) {
+            return Err(Error::input(
+                "--fitted",
+                format!("each size is one of {:?}, got {n}", &SIZES[1..]),
+            ));
+        }
+        eprintln!("fitting the classic table at {n}×{n}…");
+        candidates.push(Candidate::fitted(n));
+    }
+    let rows = encoding_errors(&lut, &candidates, a.cases, 1);
     print(&format!(
         "encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff\n{}",
-        csv_rows(&rows, lut.size)
+        csv_rows(&rows)
     ))
 }
 

@@ -21,7 +21,7 @@ use ltc_lab::error::{Error, Result};
 use ltc_lab::gpu::limits::{LimitError, Limited};
 use ltc_lab::ltc::aniso::source::AnisoSource;
 use ltc_lab::ltc::formats;
-use ltc_lab::ltc::lut::{Lut, Table};
+use ltc_lab::ltc::lut::{Encoding, Lut, Table};
 use ltc_lab::ltc::remedy::Horizon;
 
 #[derive(Parser, Debug)]
@@ -124,12 +124,38 @@ pub fn with_aniso(
 }
 
 /// `lut` as `encoding` gives it back, what it clamped said on stderr as a note.
-pub fn decoded_saying(encoding: ltc_lab::ltc::lut::Encoding, lut: &Lut) -> Lut {
+pub fn decoded_saying(encoding: Encoding, lut: &Lut) -> Lut {
     let (decoded, note) = encoding.decoded_saying(lut);
     if let Some(note) = note {
         eprintln!("ltc-lab: note: {note}");
     }
     decoded
+}
+
+/// `--encoding`: the table as an engine storing it so reads it back (docs/design.md §2.10).
+#[derive(clap::Args, Debug, Clone)]
+pub struct EncodingArgs {
+    /// Shade with the table as an engine storing it so reads it back (docs/design.md §2.10):
+    /// STORAGE (f32, f16, unorm8, unorm10) or STORAGE-SIZE (SIZE 64, 32, 16 or 8: resampled first);
+    /// f32 is the table itself.
+    #[arg(long, value_parser = |s: &str| Encoding::parse(s))]
+    pub encoding: Option<Encoding>,
+}
+
+impl EncodingArgs {
+    /// `lut` as the encoding asked for decodes it (`lut` itself without one).
+    pub fn apply(&self, lut: Cow<'static, Lut>) -> Cow<'static, Lut> {
+        match self.encoding {
+            Some(encoding) => Cow::Owned(decoded_saying(encoding, &lut)),
+            None => lut,
+        }
+    }
+
+    /// What a table's name gains: ` as f16-32`, or nothing.
+    pub fn suffix(&self) -> String {
+        self.encoding
+            .map_or(String::new(), |e| format!(" as {}", e.name()))
+    }
 }
 
 /// `--horizon`'s help: what LTC does for lights near the horizon (docs/design.md §4.7).

@@ -16,14 +16,14 @@ use ltc_lab::light::rect::RectMethod;
 use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::aniso::source::AnisoSource;
 use ltc_lab::ltc::formats;
-use ltc_lab::ltc::lut::Table;
+use ltc_lab::ltc::lut::{Encoding, Table};
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::output::{ImageFormat, frame_bytes};
 use ltc_lab::render::{Frame, Method, RenderSettings, View};
 use ltc_lab::scene::Scene;
 use ltc_lab::tables::{NamedTable, NamedTables, Source};
 
-use super::{HORIZON_HELP, LutArgs, horizon_parser, one_of, parse_cull, parse_size};
+use super::{EncodingArgs, HORIZON_HELP, LutArgs, horizon_parser, one_of, parse_cull, parse_size};
 use ltc_lab::ltc::remedy::Horizon;
 
 /// What `--method` names: one method alone, or LTC against the BRDF.
@@ -100,6 +100,8 @@ pub struct Args {
     cull: bool,
     #[command(flatten)]
     lut: LutArgs,
+    #[command(flatten)]
+    encoding: EncodingArgs,
     #[arg(long, value_parser = horizon_parser(), default_value = "eq30", help = HORIZON_HELP)]
     horizon: Horizon,
     /// Compare with this table instead of the BRDF: split and diff show LTC with the table
@@ -115,6 +117,11 @@ pub struct Args {
     /// keep table A's 2D table).
     #[arg(long, value_parser = super::aniso_parser())]
     aniso_b: Option<AnisoSource>,
+    /// The right side's table as this encoding decodes it (as --encoding): split and diff
+    /// then compare two encodings, e.g. f32 | unorm8 (alone, table B is table A's table,
+    /// before A's own --encoding).
+    #[arg(long, value_parser = |s: &str| Encoding::parse(s))]
+    encoding_b: Option<Encoding>,
     /// How the lights with a size (a `radius` in the scene) are shaded by the method alone,
     /// or left of a split (docs/design.md §1.10): exact, ltc-point, ltc-disk or
     /// representative-point.
@@ -189,11 +196,11 @@ pub fn run(a: &Args) -> Result<()> {
     let scene = Scene::load(&a.scene)?;
     let table_a = a.horizon.table().unwrap_or(a.lut.table());
     let named_a = NamedTable {
-        lut: a.lut.load_for(a.horizon)?.into_owned(),
+        lut: a.encoding.apply(a.lut.load_for(a.horizon)?).into_owned(),
         name: match a.horizon.table() {
             Some(t) => format!("the embedded {} table ({})", t.name(), t.path()),
             None => a.lut.describe(),
-        },
+        } + &a.encoding.suffix(),
         source: a.lut.source(a.horizon),
     };
     let tables = match table_b(a)? {
@@ -201,7 +208,7 @@ pub fn run(a: &Args) -> Result<()> {
             if !matches!(a.method, Shown::Compared(_)) {
                 return Err(Error::input(
                     "--method",
-                    "--table-b, --lut-b and --aniso-b compare two tables: use split or diff",
+                    "--table-b, --lut-b, --aniso-b and --encoding-b compare two tables: use split or diff",
                 ));
             }
             settings.b.point = settings.a.point;
@@ -226,7 +233,8 @@ pub fn run(a: &Args) -> Result<()> {
     } else {
         render_gpu(&scene, &tables, &all, method_file.as_ref())?
     };
-    let (frame, caption) = sides_measured(frames, &settings, (&scene, method_file.as_ref()));
+    let (frame, caption) =
+        sides_measured(frames, &settings, (&scene, method_file.as_ref()), &tables);
     let seconds = start.elapsed().as_secs_f64();
     if let Some(file) = &method_file {
         // A file's light may be negative (a port's artifact, shown as it is), never NaN.
@@ -352,13 +360,13 @@ fn sides(a: &Args, settings: &mut RenderSettings) -> Result<Option<MethodFile>> 
 
 /// The second table of a comparison, if one is asked for.
 fn table_b(a: &Args) -> Result<Option<NamedTable>> {
-    if a.lut_b.is_none() && a.table_b.is_none() && a.aniso_b.is_none() {
+    if a.lut_b.is_none() && a.table_b.is_none() && a.aniso_b.is_none() && a.encoding_b.is_none() {
         return Ok(None);
     }
-    // Only a 4D table asked for: table A's 2D table beside it.
-    let (table, file) = match (a.table_b, &a.lut_b, &a.aniso_b) {
-        (None, None, Some(_)) => (a.lut.table(), a.lut.lut.as_deref()),
-        (t, f, _) => (t.unwrap_or(Table::Classic), f.as_deref()),
+    // Only a 4D table or an encoding asked for: table A's 2D table beside it.
+    let (table, file) = match (a.table_b, &a.lut_b) {
+        (None, None) => (a.lut.table(), a.lut.lut.as_deref()),
+        (t, f) => (t.unwrap_or(Table::Classic), f.as_deref()),
     };
     let loaded = formats::load(file, table)?;
     if let Some(note) = &loaded.note {
@@ -374,11 +382,12 @@ fn table_b(a: &Args) -> Result<Option<NamedTable>> {
     if let Some(aniso) = &a.aniso_b {
         name = format!("{name} with {}", aniso.name());
     }
-    Ok(Some(NamedTable {
-        lut: super::with_aniso(loaded.lut, a.aniso_b.as_ref())?.into_owned(),
-        name,
-        source,
-    }))
+    let mut lut = super::with_aniso(loaded.lut, a.aniso_b.as_ref())?.into_owned();
+    if let Some(encoding) = a.encoding_b {
+        lut = super::decoded_saying(encoding, &lut);
+        name = format!("{name} as {}", encoding.name());
+    }
+    Ok(Some(NamedTable { lut, name, source }))
 }
 
 /// The first of `frames` (the image asked for) and, for a difference (each side alone after
@@ -387,6 +396,7 @@ fn sides_measured(
     mut frames: Vec<Frame>,
     s: &RenderSettings,
     (scene, file): (&Scene, Option<&MethodFile>),
+    tables: &NamedTables,
 ) -> (Frame, Option<String>) {
     let sides = frames.split_off(1);
     let frame = frames.remove(0);
@@ -394,10 +404,17 @@ fn sides_measured(
         return (frame, None);
     };
     let e = ltc_lab::metrics::image_error(a, b);
+    // Where the sides read two tables (or two encodings of one), each side's is named too.
+    let table = |t: &NamedTable| match s.b_reads_table_b {
+        true => format!(", table {}", t.name),
+        false => String::new(),
+    };
     eprintln!(
-        "diff: A ({}) against B ({}): relative RMSE {:.2}%, p99 of the pixels' relative error {:.2}%",
+        "diff: A ({}{}) against B ({}{}): relative RMSE {:.2}%, p99 of the pixels' relative error {:.2}%",
         side_name(&s.a, scene, file),
+        table(&tables.a),
         side_name(&s.b, scene, file),
+        table(&tables.b),
         100.0 * e.rel_rmse,
         100.0 * e.p99_rel
     );

@@ -13,7 +13,10 @@ use ltc_lab::ltc::remedy::Horizon;
 use ltc_lab::measure::horizon;
 use ltc_lab::measure::study;
 
-use super::{CullArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size, print};
+use super::{
+    CullArgs, EncodingArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size,
+    print,
+};
 
 /// The directory `study` writes into unless told otherwise.
 const DEFAULT_DIR: &str = "study";
@@ -43,6 +46,8 @@ pub struct Args {
     /// ltc-nearest, ltc-f16, ltc-fast-nl-fit, ltc-fast-exact-band).
     #[command(flatten)]
     lut: LutArgs,
+    #[command(flatten)]
+    encoding: EncodingArgs,
     /// Horizon remedies, comma-separated, each run as an ltc-fast variant
     /// (ltc-fast-<remedy>) beside the others; eq30 alone runs none. See docs/design.md §4.7.
     #[arg(
@@ -144,7 +149,7 @@ pub fn run(a: &Args) -> Result<()> {
             ),
         ));
     }
-    let lut = a.lut.load()?;
+    let lut = a.encoding.apply(a.lut.load()?);
     let mut out = match &a.out {
         Some(d) => Outputs::new(d, &FILES)?,
         None => Outputs::claim_free_directory(Path::new(DEFAULT_DIR), &FILES)?,
@@ -197,7 +202,10 @@ pub fn run(a: &Args) -> Result<()> {
     out.stage("study.csv", csv.as_bytes())?;
     let png = study::pareto_png(&rows, &ctx.info.name, &a.scene)?;
     out.stage("study.png", &png)?;
-    out.stage("horizon.csv", horizon_csv(&lut, &a.lut.name()).as_bytes())?;
+    out.stage(
+        "horizon.csv",
+        horizon_csv(&lut, &(a.lut.name() + &a.encoding.suffix())).as_bytes(),
+    )?;
     out.commit()?;
     eprintln!(
         "study done in {:.0} s; wrote {}/study.csv, study.png and horizon.csv",

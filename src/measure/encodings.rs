@@ -12,6 +12,7 @@ use crate::brdf::{Alpha, Lobes, view_from_theta};
 use crate::light::disk::{DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::{RectMethod, RectShading, rect_exact, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
+use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::{Encoding, Lut, THETA_MAX};
 use crate::ltc::{Clipping, Normalization};
 use crate::measure::horizon::{F0, lobes};
@@ -40,11 +41,46 @@ pub const AREA_SOLID_ANGLE: f64 = 0.1;
 /// The `added` columns compare tables alone and do not use the exact rules.
 pub const NODES: usize = 32;
 
-/// One encoding, shape and band: what it adds to f32's error and its total error, per lobe
-/// (`[specular, diffuse]`).
+/// A table an engine might ship instead of the f32 one: an encoding of it as decoded, or a
+/// table fitted at a smaller size; its name and the bytes an engine stores for it.
+pub struct Candidate {
+    pub name: String,
+    pub bytes: usize,
+    pub lut: Lut,
+}
+
+impl Candidate {
+    /// `lut` as `encoding` gives it back.
+    pub fn encoded(lut: &Lut, encoding: Encoding) -> Self {
+        Self {
+            name: encoding.name(),
+            bytes: encoding.bytes(lut.size),
+            lut: encoding.decoded(lut),
+        }
+    }
+
+    /// The classic table fitted at `size` cells a side by `fit`'s own rule (`fit --size`),
+    /// stored in f32 as the shipped table is: `fit-SIZE`. Set beside `f32-SIZE`, the shipped
+    /// table resampled, it says which makes the better small table.
+    pub fn fitted(size: usize) -> Self {
+        let settings = FitSettings {
+            size,
+            ..FitSettings::default()
+        };
+        Self {
+            name: format!("fit-{size}"),
+            bytes: Encoding::default().bytes(size),
+            lut: fit_table(&settings, &|| {}).lut,
+        }
+    }
+}
+
+/// One candidate table, shape and band: what it adds to f32's error and its total error, per
+/// lobe (`[specular, diffuse]`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct EncodingError {
-    pub encoding: Encoding,
+    pub name: String,
+    pub bytes: usize,
     pub shape: &'static str,
     pub alpha: [f64; 2],
     pub theta: [f64; 2],
@@ -53,24 +89,24 @@ pub struct EncodingError {
     pub total: [f64; 2],
 }
 
-/// Every encoding of `encodings` over every shape and band, `cases` cases a band (seeded).
+/// Every candidate over every shape and band, `cases` cases a band (seeded), against `lut`.
 pub fn encoding_errors(
     lut: &Lut,
-    encodings: &[Encoding],
+    candidates: &[Candidate],
     cases: usize,
     seed: u64,
 ) -> Vec<EncodingError> {
-    let tables: Vec<Lut> = encodings.iter().map(|e| e.decoded(lut)).collect();
+    let tables: Vec<Lut> = candidates.iter().map(|c| c.lut.clone()).collect();
     let bands: Vec<(usize, usize)> = (0..ALPHA_BANDS.len())
         .flat_map(|a| (0..THETA_BANDS.len()).map(move |t| (a, t)))
         .collect();
     let per_band: Vec<Vec<EncodingError>> = bands
         .par_iter()
-        .map(|&(a, t)| band(lut, &tables, encodings, (a, t), cases, seed))
+        .map(|&(a, t)| band(lut, &tables, candidates, (a, t), cases, seed))
         .collect();
     let mut rows: Vec<EncodingError> = per_band.into_iter().flatten().collect();
     rows.sort_by_key(|r| {
-        let e = encodings.iter().position(|&e| e == r.encoding);
+        let e = candidates.iter().position(|c| c.name == r.name);
         let s = SHAPES.iter().position(|&s| s == r.shape);
         (e, s)
     });
@@ -83,7 +119,7 @@ type Case = [(Lobes<f64>, Vec<Lobes<f64>>); 4];
 fn band(
     lut: &Lut,
     tables: &[Lut],
-    encodings: &[Encoding],
+    candidates: &[Candidate],
     (a, t): (usize, usize),
     cases: usize,
     seed: u64,
@@ -120,10 +156,11 @@ fn band(
     }
     let ratio = |e: [f64; 2], t: [f64; 2]| [0, 1].map(|k| e[k] / t[k].max(1e-300));
     let mut rows = Vec::new();
-    for (k, &encoding) in encodings.iter().enumerate() {
+    for (k, candidate) in candidates.iter().enumerate() {
         for (s, &shape) in SHAPES.iter().enumerate() {
             rows.push(EncodingError {
-                encoding,
+                name: candidate.name.clone(),
+                bytes: candidate.bytes,
                 shape,
                 alpha: ALPHA_BANDS[a],
                 theta: THETA_BANDS[t],
@@ -197,14 +234,14 @@ fn one_case(
 
 /// The figures as CSV rows
 /// (`encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff`),
-/// bands as `lo..hi`; `size` is the full table's (for the bytes).
-pub fn csv_rows(errors: &[EncodingError], size: usize) -> String {
+/// bands as `lo..hi`.
+pub fn csv_rows(errors: &[EncodingError]) -> String {
     let mut out = String::new();
     for e in errors {
         out += &format!(
             "{},{},{},{}..{},{}..{},{},{:.3e},{:.3e},{:.3e},{:.3e}\n",
-            e.encoding.name(),
-            e.encoding.bytes(size),
+            e.name,
+            e.bytes,
             e.shape,
             e.alpha[0],
             e.alpha[1],

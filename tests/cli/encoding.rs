@@ -143,8 +143,8 @@ fn lut_encodings_measures_every_encoding_on_every_shape() {
         "encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    // 3 storages × 4 sizes, 4 shapes, 3 α bands × 3 θo bands.
-    assert_eq!(rows.len(), 12 * 4 * 9);
+    // 4 storages × 4 sizes, 4 shapes, 3 α bands × 3 θo bands.
+    assert_eq!(rows.len(), 16 * 4 * 9);
     let value = |r: &Vec<&str>, k: usize| r[k].parse::<f64>().unwrap();
     // Σ over a storage's rows of a shape and α band of the specular error it adds.
     let added = |encoding: &str, shape: &str, alpha: &str| -> f64 {
@@ -163,7 +163,143 @@ fn lut_encodings_measures_every_encoding_on_every_shape() {
     }
     for shape in ["point", "sphere", "rect", "disk"] {
         assert!(added("unorm8", shape, "0.01..0.1") > added("f16", shape, "0.01..0.1"));
+        // Four times the steps: a quarter of the rounding, where it is the error.
+        assert!(added("unorm8", shape, "0.1..0.4") > 2.0 * added("unorm10", shape, "0.1..0.4"));
         assert!(added("f32-8", shape, "0.1..0.4") > added("f32-32", shape, "0.1..0.4"));
     }
     assert_refused(&ltc_lab(&["lut", "--encodings", "--cases", "0"]), "--cases");
+}
+
+/// `render --encoding-b` compares the table with itself as an encoding decodes it, in a
+/// split or a difference (issue 52: "a split can show f32 | 8-bit"): f32 against the table
+/// is no difference at all, the same encoding on both sides none either, and an 8-bit 8²
+/// table differs from the table more than an f16 64² one does (measured on 5 shapes ×
+/// 9 bands, docs/design.md §2.10: f16 adds ≤ 0.07%, unorm8 at 8² some 3–6%). On the CPU, so
+/// that the numbers are f64's everywhere.
+#[test]
+fn render_compares_two_encodings_side_by_side() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = crate::preset("paper-100.toml");
+    let rmse = |extra: &[&str]| -> f64 {
+        let out = dir.path().join("d.png");
+        let mut args = vec![
+            "render", "--scene", &scene, "--cpu", "--size", "48x27", "--method", "diff",
+        ];
+        args.extend(extra);
+        args.extend(["--out", out.to_str().unwrap()]);
+        let o = ltc_lab(&args);
+        let err = stderr(&o);
+        assert!(o.status.success(), "{extra:?}: {err}");
+        std::fs::remove_file(&out).unwrap();
+        // Each side's table is named, B's as its encoding.
+        let b = extra.last().unwrap();
+        assert!(err.contains(&format!("table classic as {b})")), "{err}");
+        let after = err
+            .split("relative RMSE ")
+            .nth(1)
+            .unwrap_or_else(|| panic!("{extra:?}: no RMSE said: {err}"));
+        after.split('%').next().unwrap().parse().unwrap()
+    };
+    assert_eq!(rmse(&["--encoding-b", "f32"]), 0.0);
+    assert_eq!(
+        rmse(&["--encoding", "unorm8", "--encoding-b", "unorm8"]),
+        0.0
+    );
+    let (f16, unorm8) = (
+        rmse(&["--encoding-b", "f16"]),
+        rmse(&["--encoding-b", "unorm8-8"]),
+    );
+    assert!(
+        unorm8 > 0.0 && unorm8 > f16,
+        "f16 {f16}%, unorm8-8 {unorm8}%"
+    );
+
+    // A split of f32 | f32 is the table's own image, column for column.
+    let render = |name: &str, extra: &[&str]| {
+        let out = dir.path().join(name);
+        let mut args = vec!["render", "--scene", &scene, "--cpu", "--size", "48x27"];
+        args.extend(extra);
+        args.extend(["--out", out.to_str().unwrap()]);
+        let o = ltc_lab(&args);
+        assert!(o.status.success(), "{extra:?}: {}", stderr(&o));
+        crate::exr_pixels(&out)
+    };
+    assert_eq!(
+        render("split.exr", &["--method", "split", "--encoding-b", "f32"]),
+        render("ltc.exr", &["--method", "ltc"])
+    );
+
+    // One side alone has nothing to compare.
+    let o = ltc_lab(&[
+        "render",
+        "--scene",
+        &scene,
+        "--cpu",
+        "--size",
+        "8x8",
+        "--method",
+        "ltc",
+        "--encoding-b",
+        "f32",
+        "--out",
+        dir.path().join("x.png").to_str().unwrap(),
+    ]);
+    assert_refused(&o, "--method");
+    assert!(!dir.path().join("x.png").exists());
+}
+
+/// `bench` and `study` take `--encoding` as `eval` and `render` do, and refuse a name that
+/// is none (exit 2, naming the flag and the encodings there are).
+#[test]
+fn every_command_with_a_table_takes_an_encoding() {
+    for command in ["render", "bench", "study", "eval"] {
+        let o = ltc_lab(&[command, "--encoding", "f12"]);
+        assert_no_panic(o.status.code(), &stderr(&o));
+        assert_eq!(o.status.code(), Some(2), "{command}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("--encoding"),
+            "{command}: {}",
+            stderr(&o)
+        );
+    }
+}
+
+/// `lut --encodings --fitted 8` adds the classic table fitted at 8² (`fit --size 8`) beside
+/// the shipped table resampled to 8²: an 8² table's cells sit on the 64² table's own (cell
+/// `j` of 8 at `j/7 = 9j/63`), so resampling reads them as they are and fitting them again
+/// gives the same cells to the fit's convergence — the two add the same error to within a
+/// tenth (measured: equal to the second digit). A size that is not a smaller table's is
+/// refused.
+#[test]
+fn lut_encodings_sets_a_fitted_small_table_beside_the_resampled_one() {
+    let o = ltc_lab(&["lut", "--encodings", "--cases", "16", "--fitted", "8"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 17 * 4 * 9);
+    let added = |name: &str, shape: &str| -> f64 {
+        rows.iter()
+            .filter(|r| r[0] == name && r[2] == shape && r[3] == "0.1..0.4")
+            .map(|r| r[6].parse::<f64>().unwrap())
+            .sum()
+    };
+    for r in rows.iter().filter(|r| r[0] == "fit-8") {
+        assert_eq!(r[1], (8 * 8 * 11 * 4).to_string(), "{r:?}");
+    }
+    for shape in ["point", "sphere", "rect", "disk"] {
+        let (fitted, resampled) = (added("fit-8", shape), added("f32-8", shape));
+        assert!(resampled > 0.0, "{shape}");
+        assert!(
+            (fitted - resampled).abs() <= 0.1 * resampled,
+            "{shape}: fitted {fitted}, resampled {resampled}"
+        );
+    }
+    assert_refused(
+        &ltc_lab(&["lut", "--encodings", "--cases", "16", "--fitted", "64"]),
+        "--fitted",
+    );
 }

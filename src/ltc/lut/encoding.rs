@@ -17,16 +17,32 @@ named_enum! {
         /// 8 bits a value over each channel's own range, with a scale and a bias per channel
         /// (PlayCanvas's last fallback).
         Unorm8 = "unorm8",
+        /// The packed 10-bit form (RGB10A2: three 10-bit values in 4 bytes), over each
+        /// channel's own range as `unorm8`. (R11G11B10's 11- and 10-bit floats have no sign
+        /// bit, and `M⁻¹`'s off-diagonal entries are negative: they do not fit the table.)
+        Unorm10 = "unorm10",
     }
 }
 
 impl Storage {
-    /// Bytes of one stored value.
-    pub fn value_bytes(self) -> usize {
+    /// Bytes of one texel holding every shader channel: f32 and f16 a value each at their
+    /// width, 8-bit values a byte each, 10-bit ones three to a 4-byte texel.
+    pub fn cell_bytes(self) -> usize {
+        let n = SHADER_CHANNELS.len();
         match self {
-            Self::F32 => 4,
-            Self::F16 => 2,
-            Self::Unorm8 => 1,
+            Self::F32 => 4 * n,
+            Self::F16 => 2 * n,
+            Self::Unorm8 => n,
+            Self::Unorm10 => 4 * n.div_ceil(3),
+        }
+    }
+
+    /// Steps of a fixed-point storage over a channel's range (`None`: a float).
+    fn steps(self) -> Option<f64> {
+        match self {
+            Self::Unorm8 => Some(255.0),
+            Self::Unorm10 => Some(1023.0),
+            Self::F32 | Self::F16 => None,
         }
     }
 }
@@ -93,13 +109,13 @@ impl Encoding {
 
     /// Bytes an engine stores for a table of `size` cells a side in this encoding: the
     /// shader's channels at the storage's width, and a scale and a bias (f32) per channel
-    /// for 8-bit values.
+    /// for fixed-point values.
     pub fn bytes(&self, size: usize) -> usize {
         let n = self.size.unwrap_or(size);
-        let values = n * n * SHADER_CHANNELS.len() * self.storage.value_bytes();
-        let ranges = match self.storage {
-            Storage::Unorm8 => SHADER_CHANNELS.len() * 2 * 4,
-            _ => 0,
+        let values = n * n * self.storage.cell_bytes();
+        let ranges = match self.storage.steps() {
+            Some(_) => SHADER_CHANNELS.len() * 2 * 4,
+            None => 0,
         };
         values + ranges
     }
@@ -168,10 +184,11 @@ fn store(storage: Storage, values: &[f64]) -> Vec<f64> {
                 f64::from(half::f16::from_f32((v as f32).clamp(-limit, limit)))
             })
             .collect(),
-        Storage::Unorm8 => {
+        Storage::Unorm8 | Storage::Unorm10 => {
+            let steps = storage.steps().unwrap_or(1.0);
             let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
             let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            let step = (hi - lo) / 255.0;
+            let step = (hi - lo) / steps;
             values
                 .iter()
                 .map(|&v| match step > 0.0 {
