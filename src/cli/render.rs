@@ -382,12 +382,16 @@ fn table_b(a: &Args) -> Result<Option<NamedTable>> {
     if let Some(aniso) = &a.aniso_b {
         name = format!("{name} with {}", aniso.name());
     }
-    let mut lut = super::with_aniso(loaded.lut, a.aniso_b.as_ref())?.into_owned();
-    if let Some(encoding) = a.encoding_b {
-        lut = super::decoded_saying(encoding, &lut);
-        name = format!("{name} as {}", encoding.name());
-    }
-    Ok(Some(NamedTable { lut, name, source }))
+    let encoding = EncodingArgs {
+        encoding: a.encoding_b,
+    };
+    Ok(Some(NamedTable {
+        lut: encoding
+            .apply(super::with_aniso(loaded.lut, a.aniso_b.as_ref())?)
+            .into_owned(),
+        name: name + &encoding.suffix(),
+        source,
+    }))
 }
 
 /// The first of `frames` (the image asked for) and, for a difference (each side alone after

@@ -96,13 +96,12 @@ pub fn encoding_errors(
     cases: usize,
     seed: u64,
 ) -> Vec<EncodingError> {
-    let tables: Vec<Lut> = candidates.iter().map(|c| c.lut.clone()).collect();
     let bands: Vec<(usize, usize)> = (0..ALPHA_BANDS.len())
         .flat_map(|a| (0..THETA_BANDS.len()).map(move |t| (a, t)))
         .collect();
     let per_band: Vec<Vec<EncodingError>> = bands
         .par_iter()
-        .map(|&(a, t)| band(lut, &tables, candidates, (a, t), cases, seed))
+        .map(|&(a, t)| band(lut, candidates, (a, t), cases, seed))
         .collect();
     let mut rows: Vec<EncodingError> = per_band.into_iter().flatten().collect();
     rows.sort_by_key(|r| {
@@ -118,7 +117,6 @@ type Case = [(Lobes<f64>, Vec<Lobes<f64>>); 4];
 
 fn band(
     lut: &Lut,
-    tables: &[Lut],
     candidates: &[Candidate],
     (a, t): (usize, usize),
     cases: usize,
@@ -128,8 +126,8 @@ fn band(
     // Per shape: Σ exact, Σ f32, and per table Σ|table − f32|, Σ|table − exact| (per lobe).
     let mut exact_sum = [[0.0f64; 2]; 4];
     let mut f32_sum = [[0.0f64; 2]; 4];
-    let mut added = vec![[[0.0f64; 2]; 4]; tables.len()];
-    let mut total = vec![[[0.0f64; 2]; 4]; tables.len()];
+    let mut added = vec![[[0.0f64; 2]; 4]; candidates.len()];
+    let mut total = vec![[[0.0f64; 2]; 4]; candidates.len()];
     for _ in 0..cases {
         let theta_o = rng.uniform(THETA_BANDS[t]);
         let alpha = rng.uniform(ALPHA_BANDS[a]);
@@ -138,7 +136,7 @@ fn band(
         let phi = rng.uniform([0.0, std::f64::consts::TAU]);
         let r = (1.0 - z * z).sqrt();
         let l = DVec3::new(r * phi.cos(), r * phi.sin(), z);
-        let case = one_case(lut, tables, (theta_o, alpha), l, &mut rng);
+        let case = one_case(lut, candidates, (theta_o, alpha), l, &mut rng);
         for (s, (exact, got)) in case.iter().enumerate() {
             let f32_lobes = got[0];
             // Σ|x − y| per lobe (y zero: Σ|x|).
@@ -174,15 +172,17 @@ fn band(
 }
 
 /// One view and light direction: each shape's exact lobes and its lobes by `lut` (first)
-/// and then by each of `tables`.
+/// and then by each candidate's.
 fn one_case(
     lut: &Lut,
-    tables: &[Lut],
+    candidates: &[Candidate],
     (theta_o, alpha): (f64, f64),
     l: DVec3,
     rng: &mut SplitMix64,
 ) -> Case {
-    let all: Vec<&Lut> = std::iter::once(lut).chain(tables).collect();
+    let all: Vec<&Lut> = std::iter::once(lut)
+        .chain(candidates.iter().map(|c| &c.lut))
+        .collect();
     let rules = LtcRules::default();
     let point_exact = lobes(lut, &rules, (theta_o, alpha), l).0;
     let point = all.iter().map(|t| lobes(t, &rules, (theta_o, alpha), l).1);

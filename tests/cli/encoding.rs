@@ -171,7 +171,7 @@ fn lut_encodings_measures_every_encoding_on_every_shape() {
 }
 
 /// `render --encoding-b` compares the table with itself as an encoding decodes it, in a
-/// split or a difference (issue 52: "a split can show f32 | 8-bit"): f32 against the table
+/// split or a difference, so that an engineer sees f32 beside 8 bits: f32 against the table
 /// is no difference at all, the same encoding on both sides none either, and an 8-bit 8²
 /// table differs from the table more than an f16 64² one does (measured on 5 shapes ×
 /// 9 bands, docs/design.md §2.10: f16 adds ≤ 0.07%, unorm8 at 8² some 3–6%). On the CPU, so
