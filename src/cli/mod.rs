@@ -136,7 +136,8 @@ pub fn decoded_saying(encoding: Encoding, lut: &Lut) -> Lut {
 #[derive(clap::Args, Debug, Clone)]
 pub struct EncodingArgs {
     /// Shade with the table as an engine storing it so reads it back (docs/design.md §2.10):
-    /// STORAGE (f32, f16, unorm8, unorm10) or STORAGE-SIZE (SIZE 64, 32, 16 or 8: resampled first);
+    /// STORAGE (f32, f16, unorm8, unorm10) or STORAGE-SIZE (SIZE 64, 32, 16 or 8: resampled
+    /// first), or a formula rebuilt into the table's cells, chebD or rationalD (-STORAGE);
     /// f32 is the table itself.
     #[arg(long, value_parser = |s: &str| Encoding::parse(s))]
     pub encoding: Option<Encoding>,

@@ -6,6 +6,8 @@ mod axes;
 mod channel;
 pub mod encoding;
 mod exr;
+pub mod formula;
+pub mod layout;
 mod sample;
 pub mod taps;
 mod validate;
@@ -16,6 +18,7 @@ pub use axes::{ALPHA_MIN, THETA_MAX, axes, cell_alpha, cell_theta};
 pub use channel::Channel;
 pub use encoding::{Encoding, Storage};
 pub use exr::{MAX_SIZE, check_size};
+pub use formula::Formula;
 
 /// The most bytes of a table file this program reads (`files::read_bytes`; a DDS pair's
 /// each): the shipped 64² tables are ~100 kB, a 2048² table of 14 f32 channels uncompressed

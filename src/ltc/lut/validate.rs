@@ -2,7 +2,7 @@
 //! matrices' orientation. Every reader of a table file checks it before use.
 
 use crate::ltc::lobe::Lobe;
-use crate::ltc::lut::{Channel, Lut};
+use crate::ltc::lut::{Channel, Lut, LutCell};
 
 /// The values a channel may hold in a table that any fit could have made, and why.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -100,8 +100,7 @@ impl Lut {
                 }
             }
             for lobe in Lobe::ALL {
-                let [m00, m02, m20, m22] = Channel::entries(lobe).map(|c| f64::from(cell.get(c)));
-                let det = m00 * m22 - m02 * m20;
+                let det = determinant(cell, lobe);
                 if det <= 0.0 {
                     return Err(format!(
                         "the {} matrix at {at} has determinant {} (must be > 0)",
@@ -113,4 +112,18 @@ impl Lut {
         }
         Ok(())
     }
+
+    /// Cells whose `M⁻¹` (either lobe's) is singular or reflecting — flat or turned inside
+    /// out, as an encoding makes it where its error passes `M⁻¹`'s small entries
+    /// (docs/design.md §2.10).
+    pub fn inside_out_cells(&self) -> usize {
+        let inside_out = |cell: &&LutCell| Lobe::ALL.iter().any(|&l| determinant(cell, l) <= 0.0);
+        self.cells.iter().filter(inside_out).count()
+    }
+}
+
+/// The determinant of a lobe's stored `M⁻¹` (its middle entry 1).
+fn determinant(cell: &LutCell, lobe: Lobe) -> f64 {
+    let [m00, m02, m20, m22] = Channel::entries(lobe).map(|c| f64::from(cell.get(c)));
+    m00 * m22 - m02 * m20
 }

@@ -1,9 +1,12 @@
-//! `ltc-lab lut`: a table's summary, every cell as CSV, or the error atlas.
+//! `ltc-lab lut`: a table's summary, every cell as CSV, or the error atlas; its encodings
+//! (`encodings.rs`).
+
+mod encodings;
 
 use std::path::PathBuf;
 
 use ltc_lab::error::{Error, Result};
-use ltc_lab::files::{check_distinct, check_writable, is_exr, write_atomically};
+use ltc_lab::files::check_distinct;
 use ltc_lab::ltc::formats::dds::Precision;
 use ltc_lab::ltc::formats::{Export, Header, export};
 use ltc_lab::ltc::lut::{Channel, Encoding};
@@ -30,8 +33,8 @@ pub struct Args {
     #[arg(long, value_parser = one_of(&Written::ALL, Written::name), requires = "out")]
     export: Option<Written>,
     /// Write the table as an engine storing it in the encoding NAME reads it back
-    /// (docs/design.md §2.10: f32, f16, unorm8 or unorm10, optionally -64, -32, -16 or -8 to resample),
-    /// as this project's .exr, which --lut reads: shading with that file is shading with
+    /// (docs/design.md §2.10: f32, f16, unorm8 or unorm10, optionally -64, -32, -16 or -8 to
+    /// resample; or a formula, chebD or rationalD, optionally -STORAGE), as this project's .exr, which --lut reads: shading with that file is shading with
     /// --encoding NAME. A resampled table's spec.err and diff.err are filtered, not measured.
     #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with_all = ["export", "dump", "atlas"])]
     encode: Option<Encoding>,
@@ -41,6 +44,12 @@ pub struct Args {
     /// integral, per lobe.
     #[arg(long, conflicts_with_all = ["export", "encode", "dump", "atlas"])]
     encodings: bool,
+    /// Print what a lookup of every encoding (and --formulas) costs in each layout
+    /// (docs/design.md §2.10): two-texture (ltc_code's, widened to the diffuse lobe), fewest
+    /// (one texture array, one sampler) and per-lookup (a formula evaluated per pixel), as
+    /// CSV: bytes shipped and in texture memory, textures, samplers, fetches, multiply-adds.
+    #[arg(long, conflicts_with_all = ["export", "encode", "dump", "atlas", "encodings"])]
+    layouts: bool,
     /// Cases a band for --encodings (1–100000).
     #[arg(long, default_value_t = 64, requires = "encodings")]
     cases: usize,
@@ -48,6 +57,12 @@ pub struct Args {
     /// comma-separated) by `fit --size`, as rows `fit-SIZE` beside the resampled `f32-SIZE`.
     #[arg(long, value_delimiter = ',', requires = "encodings")]
     fitted: Vec<usize>,
+    /// With --encodings or --layouts, also these formulas (docs/design.md §2.10): chebD, a Chebyshev series
+    /// of degree D on each axis as three.js PR #34611 ships (1–40), rationalD, one rational
+    /// function of total degree D (1–8), each optionally -STORAGE (cheb16-f16 is #34611's
+    /// half-float rebuild), fitted to the table and rebuilt at its cells.
+    #[arg(long, value_delimiter = ',', value_parser = |s: &str| Encoding::parse(s))]
+    formulas: Vec<Encoding>,
     /// Where --export or --encode writes: a file, or for ltc-code-dds and aniso-texture a
     /// directory (made if missing).
     #[arg(long)]
@@ -89,10 +104,19 @@ pub fn run(a: &Args) -> Result<()> {
         ));
     }
     if let (Some(encoding), Some(out)) = (a.encode, &a.out) {
-        return write_encoded(a, encoding, out);
+        return encodings::write_encoded(a, encoding, out);
     }
     if a.encodings {
-        return measure_encodings(a);
+        return encodings::measure_encodings(a);
+    }
+    if a.layouts {
+        return encodings::layouts(a);
+    }
+    if !a.formulas.is_empty() {
+        return Err(Error::input(
+            "--formulas",
+            "is measured by --encodings or costed by --layouts: pass one of them",
+        ));
     }
     check_export_beside_atlas(a)?;
     if let (Some(Written::AnisoTexture), Some(dir)) = (a.export, &a.out) {
@@ -154,76 +178,6 @@ pub fn run(a: &Args) -> Result<()> {
         }
     }
     print(&out)
-}
-
-/// `--encodings`: every encoding measured on every shape, as CSV.
-fn measure_encodings(a: &Args) -> Result<()> {
-    use ltc_lab::ltc::lut::Storage;
-    use ltc_lab::ltc::lut::encoding::SIZES;
-    use ltc_lab::measure::encodings::{Candidate, csv_rows, encoding_errors};
-    if !(1..=100_000).contains(&a.cases) {
-        return Err(Error::input(
-            "--cases",
-            format!("must be in 1..=100000, got {}", a.cases),
-        ));
-    }
-    let lut = a.lut.load()?;
-    let encodings: Vec<Encoding> = Storage::ALL
-        .into_iter()
-        .flat_map(|storage| {
-            SIZES.map(|n| Encoding {
-                storage,
-                size: (n != lut.size).then_some(n),
-            })
-        })
-        .collect();
-    let mut candidates: Vec<Candidate> = encodings
-        .into_iter()
-        .map(|e| Candidate::encoded(&lut, e))
-        .collect();
-    for &n in &a.fitted {
-        if !SIZES[1..].contains(&n) {
-            return Err(Error::input(
-                "--fitted",
-                format!("each size is one of {:?}, got {n}", &SIZES[1..]),
-            ));
-        }
-        eprintln!("fitting the classic table at {n}×{n}…");
-        candidates.push(Candidate::fitted(n));
-    }
-    let rows = encoding_errors(&lut, &candidates, a.cases, 1);
-    print(&format!(
-        "encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff\n{}",
-        csv_rows(&rows)
-    ))
-}
-
-/// `--encode NAME --out FILE`: the table as the encoding gives it back (its f32 cells, which
-/// `--encoding NAME` shades with too), as an .exr, written to the file the user named.
-fn write_encoded(a: &Args, encoding: Encoding, out: &std::path::Path) -> Result<()> {
-    if !is_exr(out) {
-        return Err(Error::input(
-            out.display().to_string(),
-            "an encoded table is written as OpenEXR: the output must end in .exr",
-        ));
-    }
-    if let Some(input) = &a.lut.lut {
-        check_distinct(&[("--lut", input), ("--out", out)])?;
-    }
-    check_writable(out)?;
-    let lut = a.lut.load()?;
-    let encoded = super::decoded_saying(encoding, &lut);
-    write_atomically(out, &encoded.to_exr_bytes())?;
-    eprintln!(
-        "wrote {}: {} as {} ({}×{} cells, {} bytes in an engine)",
-        out.display(),
-        a.lut.describe(),
-        encoding.name(),
-        encoded.size,
-        encoded.size,
-        encoding.bytes(lut.size)
-    );
-    Ok(())
 }
 
 /// A file export must be neither the atlas directory nor one of its files: one output would

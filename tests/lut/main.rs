@@ -4,6 +4,9 @@
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::lut::{Channel, Lut, LutCell};
 
+mod formula;
+mod layout;
+
 #[test]
 fn embedded_lut_is_the_shipped_64x64_table() {
     let lut = Lut::embedded();
@@ -284,7 +287,11 @@ fn an_encoding_is_named_as_it_is_read() {
     use ltc_lab::ltc::lut::{Encoding, Storage};
     for storage in Storage::ALL {
         for size in SIZES.map(Some).into_iter().chain([None]) {
-            let e = Encoding { storage, size };
+            let e = Encoding {
+                storage,
+                size,
+                formula: None,
+            };
             assert_eq!(Encoding::parse(&e.name()), Ok(e));
         }
     }
@@ -313,6 +320,7 @@ fn each_storage_gives_back_its_values_within_its_rounding() {
     let byte8 = Encoding {
         storage: Storage::Unorm8,
         size: Some(8),
+        formula: None,
     };
     assert_eq!(byte8.bytes(64), 8 * 8 * 11 + 11 * 2 * 4);
     // 10-bit values three to a 4-byte texel: 11 channels in 4 texels.
