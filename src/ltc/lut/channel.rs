@@ -60,3 +60,20 @@ impl Channel {
         self == Self::err(self.lobe())
     }
 }
+
+/// The channels a shader reads: both lobes' four entries of `M⁻¹` and magnitudes, with
+/// `spec.scale` folded into the specular magnitudes (`LutCell::shaded`) as ltc_code's layout
+/// stores them. The pointwise errors are measurements, not read by a shader.
+pub const SHADER_CHANNELS: [Channel; 11] = [
+    Channel::SpecM00,
+    Channel::SpecM02,
+    Channel::SpecM20,
+    Channel::SpecM22,
+    Channel::SpecNorm,
+    Channel::SpecFresnel,
+    Channel::DiffM00,
+    Channel::DiffM02,
+    Channel::DiffM20,
+    Channel::DiffM22,
+    Channel::DiffNorm,
+];

@@ -3,6 +3,7 @@
 //! and the table as that encoding gives it back, so that every measure can shade with what an
 //! engine would read.
 
+pub use crate::ltc::lut::channel::SHADER_CHANNELS;
 use crate::ltc::lut::formula::Formula;
 use crate::ltc::lut::{Channel, Lut, LutCell};
 use crate::named::named_enum;
@@ -52,23 +53,6 @@ impl Storage {
 /// The table sizes an encoding may resample to: the shipped 64² and each halving down to 8²
 /// (below 8 cells the α axis no longer has a cell inside the specular range that matters).
 pub const SIZES: [usize; 4] = [64, 32, 16, 8];
-
-/// The channels a shader reads: both lobes' four entries of `M⁻¹` and magnitudes, with
-/// `spec.scale` folded into the specular magnitudes (`LutCell::shaded`) as ltc_code's layout
-/// stores them. The pointwise errors are measurements, not read by a shader.
-pub const SHADER_CHANNELS: [Channel; 11] = [
-    Channel::SpecM00,
-    Channel::SpecM02,
-    Channel::SpecM20,
-    Channel::SpecM22,
-    Channel::SpecNorm,
-    Channel::SpecFresnel,
-    Channel::DiffM00,
-    Channel::DiffM02,
-    Channel::DiffM20,
-    Channel::DiffM22,
-    Channel::DiffNorm,
-];
 
 /// A storage and a table size (`None`: the table's own), or a formula whose values are
 /// rebuilt into the table's own cells in that storage.

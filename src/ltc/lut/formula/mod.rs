@@ -13,7 +13,7 @@ pub use least_squares::least_squares;
 pub use rational::{rational_coefficients, rational_fit, rational_value};
 
 use crate::ltc::lut::Lut;
-use crate::ltc::lut::encoding::SHADER_CHANNELS;
+use crate::ltc::lut::channel::SHADER_CHANNELS;
 
 /// The largest degrees accepted: a Chebyshev series of degree 40 has 1 681 coefficients a
 /// channel (more than the 64² table's 4 096 cells hold as data, with a 41-column fit at 64
