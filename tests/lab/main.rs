@@ -10,6 +10,7 @@ mod aniso;
 mod chart;
 mod clipping;
 mod device_loss;
+mod encodings;
 mod harness;
 mod lesson;
 mod lobe;

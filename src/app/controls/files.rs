@@ -7,7 +7,7 @@ use crate::app::lab::{Lab, Request, TableId};
 use crate::app::ui::widgets::name;
 use crate::ltc::aniso::AnisoAxes;
 use crate::ltc::aniso::source::AnisoSource;
-use crate::ltc::lut::Table;
+use crate::ltc::lut::{Encoding, Table};
 use crate::scene::PRESETS;
 use crate::tables::Source;
 
@@ -92,9 +92,57 @@ pub(super) fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState)
             lab.use_table_b(None);
         }
     });
+    encodings(ui, lab);
     // The 4D tables matter only to an anisotropic material.
     if lab.material().is_anisotropic() {
         aniso_tables(ui, lab);
+    }
+}
+
+/// The encodings offered per side (docs/design.md §2.10): every storage at every size, and
+/// three.js #34611's Chebyshev form at three degrees (the rational fits, slower to fit and
+/// worse, stay on the command line: `lut --encodings --formulas`).
+fn offered_encodings(size: usize) -> Vec<Encoding> {
+    let formulas = ["cheb16-f16", "cheb24", "cheb40"].map(|n| Encoding::parse(n).ok());
+    let mut all = Encoding::tables(size);
+    all.extend(formulas.into_iter().flatten());
+    all
+}
+
+/// Each side's encoding, each offered with the bytes an engine ships for it.
+fn encodings(ui: &mut egui::Ui, lab: &mut Lab) {
+    let size = lab.tables().a().lut.size;
+    let label = |e: Option<Encoding>| match e {
+        None => "as read".to_string(),
+        Some(e) => format!("{} · {:.1} KB", e.name(), e.bytes(size) as f64 / 1024.0),
+    };
+    for (id, hover) in [
+        (
+            TableId::A,
+            "Shade side A with table A as an engine storing it in this encoding reads it back (docs/design.md §2.10), with the bytes it ships; `ltc-lab lut --encodings` measures each on every light shape",
+        ),
+        (
+            TableId::B,
+            "Compare with table B as this encoding gives it back; while B is the default table, B becomes table A's table in this encoding, so that the A | B split shows one table in two encodings",
+        ),
+    ] {
+        let current = lab.tables().encoding(id);
+        let mut chosen = current;
+        egui::ComboBox::from_label(format!("encoding {id:?}"))
+            .selected_text(label(current))
+            // Every entry on screen at once (20 rows), none behind a scroll.
+            .height(480.0)
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut chosen, None, label(None));
+                for e in offered_encodings(size) {
+                    ui.selectable_value(&mut chosen, Some(e), label(Some(e)));
+                }
+            })
+            .response
+            .on_hover_text(hover);
+        if chosen != current {
+            lab.use_encoding(id, chosen);
+        }
     }
 }
 

@@ -1,13 +1,13 @@
-//! Tables A and B: the 2D tables each side shades isotropic materials with, and the 4D
-//! tables each shades anisotropic ones with (docs/design.md §2.9), kept between runs as where
-//! they came from.
+//! Tables A and B: the 2D tables each side shades isotropic materials with, each as an
+//! encoding gives it back (docs/design.md §2.10), and the 4D tables each shades anisotropic
+//! ones with (§2.9), kept between runs as where they came from.
 
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::Checked;
 use crate::ltc::aniso::AnisoAxes;
 use crate::ltc::aniso::source::AnisoSource;
-use crate::ltc::lut::Table;
+use crate::ltc::lut::{Encoding, Table};
 use crate::tables::{NamedTable, NamedTables, Source};
 
 /// Which table a panel reads: A (shaded with) or B (compared with).
@@ -24,7 +24,14 @@ pub enum TableId {
 #[serde(from = "TableSources", into = "TableSources")]
 pub struct Tables {
     pub shipped: Table,
+    /// What each side shades with: its table as its encoding gives it back.
     pub named: NamedTables,
+    /// The tables as read, before their encodings.
+    plain: NamedTables,
+    /// Each side's encoding (`None`: the table as read). B's, while B is the default, is
+    /// table A's table in that encoding, as `render --encoding-b` makes it: the split then
+    /// shows one table in two encodings.
+    encodings: [Option<Encoding>; 2],
     /// The 4D tables of A and B (their luts carry them).
     aniso: [AnisoSource; 2],
     /// What could not be read again when the tables were made from their sources (said
@@ -41,6 +48,9 @@ pub struct TableSources {
     pub b_file: Option<String>,
     pub aniso_a: AnisoSource,
     pub aniso_b: AnisoSource,
+    /// Each side's encoding by name (`Encoding::parse`), checked where the state enters.
+    pub encoding_a: Option<String>,
+    pub encoding_b: Option<String>,
 }
 
 impl Default for TableSources {
@@ -52,6 +62,8 @@ impl Default for TableSources {
             b_file: None,
             aniso_a,
             aniso_b,
+            encoding_a: None,
+            encoding_b: None,
         }
     }
 }
@@ -72,6 +84,8 @@ impl Tables {
         Self {
             shipped: t,
             named: NamedTables::shipped(t),
+            plain: NamedTables::shipped(t),
+            encodings: [None; 2],
             aniso: DEFAULT_ANISO,
             lost: Vec::new(),
         }
@@ -88,12 +102,44 @@ impl Tables {
         let table = source.load()?;
         let mut out = self.clone();
         out.aniso[id as usize] = source;
-        let named = match id {
-            TableId::A => &mut out.named.a,
-            TableId::B => &mut out.named.b,
+        let plain = out.plain_mut(id);
+        plain.lut = plain.lut.clone().with_aniso(table);
+        Ok(out.encoded())
+    }
+
+    /// Side `id`'s table as read.
+    fn plain_mut(&mut self, id: TableId) -> &mut NamedTable {
+        match id {
+            TableId::A => &mut self.plain.a,
+            TableId::B => &mut self.plain.b,
+        }
+    }
+
+    /// Side `id`'s encoding (`None`: its table as read).
+    pub fn encoding(&self, id: TableId) -> Option<Encoding> {
+        self.encodings[id as usize]
+    }
+
+    /// The same with `encoding` as side `id`'s.
+    pub fn with_encoding(&self, id: TableId, encoding: Option<Encoding>) -> Self {
+        let mut out = self.clone();
+        out.encodings[id as usize] = encoding;
+        out.encoded()
+    }
+
+    /// Each side's shaded table made from its table as read and its encoding: B's, where B is
+    /// the default and has an encoding, from table A's table.
+    fn encoded(mut self) -> Self {
+        let [a, b] = self.encodings;
+        let b_base = match (b, self.b_is_default()) {
+            (Some(_), true) => &self.plain.a,
+            _ => &self.plain.b,
         };
-        named.lut = named.lut.clone().with_aniso(table);
-        Ok(out)
+        self.named = NamedTables {
+            a: encode(&self.plain.a, a),
+            b: encode(b_base, b),
+        };
+        self
     }
 
     /// Each side's lut with its 4D table; one that cannot be read (a file gone since) leaves
@@ -109,13 +155,10 @@ impl Tables {
                 self.aniso[id as usize] = AnisoSource::Lab;
                 AnisoSource::lab_table()
             });
-            let named = match id {
-                TableId::A => &mut self.named.a,
-                TableId::B => &mut self.named.b,
-            };
-            named.lut = named.lut.clone().with_aniso(table);
+            let plain = self.plain_mut(id);
+            plain.lut = plain.lut.clone().with_aniso(table);
         }
-        self
+        self.encoded()
     }
 
     pub fn a(&self) -> &NamedTable {
@@ -136,22 +179,24 @@ impl Tables {
     /// Whether table B is the one A's shipped table is compared with (not one the user
     /// named).
     pub fn b_is_default(&self) -> bool {
-        self.b().source == Source::Shipped(self.shipped.default_b())
+        self.plain.b.source == Source::Shipped(self.shipped.default_b())
     }
 
     /// The same with `a` as table A (standing in for `shipped`): a table B the user named
     /// stays, a default one follows A's shipped table.
     pub fn with_a(&self, a: NamedTable, shipped: Table) -> Self {
-        let named = match self.b_is_default() {
+        let plain = match self.b_is_default() {
             true => NamedTables::with_a(a, shipped),
             false => NamedTables {
                 a,
-                b: self.b().clone(),
+                b: self.plain.b.clone(),
             },
         };
         Self {
             shipped,
-            named,
+            named: plain.clone(),
+            plain,
+            encodings: self.encodings,
             aniso: self.aniso.clone(),
             lost: Vec::new(),
         }
@@ -162,8 +207,8 @@ impl Tables {
     pub fn with_b(&self, b: Option<NamedTable>) -> Self {
         let b = b.unwrap_or_else(|| NamedTable::shipped(self.shipped.default_b()));
         Self {
-            named: NamedTables {
-                a: self.a().clone(),
+            plain: NamedTables {
+                a: self.plain.a.clone(),
                 b,
             },
             ..self.clone()
@@ -178,12 +223,15 @@ impl From<Tables> for TableSources {
             Source::File(path) => Some(path.clone()),
             Source::Shipped(_) | Source::Given(_) => None,
         };
+        let encoding = |id: TableId| t.encoding(id).map(|e| e.name());
         Self {
             shipped: t.shipped,
-            a_file: file(t.a()),
-            b_file: file(t.b()),
+            a_file: file(&t.plain.a),
+            b_file: file(&t.plain.b),
             aniso_a: t.aniso(TableId::A).clone(),
             aniso_b: t.aniso(TableId::B).clone(),
+            encoding_a: encoding(TableId::A),
+            encoding_b: encoding(TableId::B),
         }
     }
 }
@@ -212,6 +260,13 @@ impl From<TableSources> for Tables {
             ..Tables::shipped(s.shipped)
         };
         let mut tables = tables.with_a(a, s.shipped).with_b(b);
+        for (id, name) in [(TableId::A, &s.encoding_a), (TableId::B, &s.encoding_b)] {
+            let Some(name) = name else { continue };
+            match Encoding::parse(name) {
+                Ok(e) => tables = tables.with_encoding(id, Some(e)),
+                Err(e) => lost.push(format!("table {id:?}'s encoding is not one ({e})")),
+            }
+        }
         lost.append(&mut tables.lost);
         Self { lost, ..tables }
     }
@@ -230,5 +285,35 @@ impl Checked for Tables {
             self.a().name,
             self.b().name
         )]
+    }
+}
+
+/// `table` as `encoding` gives it back, named for both (`classic as unorm8`).
+fn encode(table: &NamedTable, encoding: Option<Encoding>) -> NamedTable {
+    match encoding {
+        None => table.clone(),
+        Some(e) => NamedTable {
+            lut: e.decoded(&table.lut),
+            name: format!("{} as {}", table.name, e.name()),
+            source: table.source.clone(),
+        },
+    }
+}
+
+impl super::Lab {
+    /// Shades side `id` with its table as `encoding` gives it back from now on (`None`: as
+    /// read); cells the encoding turns inside out are said, as the command line says them.
+    pub fn use_encoding(&mut self, id: TableId, encoding: Option<Encoding>) {
+        let tables = self.tables().with_encoding(id, encoding);
+        let inside_out = tables.get(id).lut.inside_out_cells();
+        let name = tables.get(id).name.clone();
+        self.set(tables);
+        if inside_out > 0 {
+            self.say(super::Message::note(format!(
+                "{name}: {inside_out} cells have an M^-1 flat or turned inside out (a \
+                 determinant not above 0), where the encoding's error passes the small \
+                 entries near α = 0 or at grazing"
+            )));
+        }
     }
 }
