@@ -48,6 +48,12 @@ pub struct Args {
     lut: LutArgs,
     #[command(flatten)]
     encoding: EncodingArgs,
+    /// Table encodings, comma-separated (docs/design.md §2.10), each a variant
+    /// ltc-table-NAME on the generated lights: ltc with the table as the encoding gives it back,
+    /// timed and measured in the same run as ltc (the lab's GPU reads every decoded table as
+    /// f32 values, so the times differ only by the table's size).
+    #[arg(long, value_delimiter = ',', value_parser = |s: &str| ltc_lab::ltc::lut::Encoding::parse(s))]
+    encodings: Vec<ltc_lab::ltc::lut::Encoding>,
     /// Horizon remedies, comma-separated, each run as an ltc-fast variant
     /// (ltc-fast-<remedy>) beside the others; eq30 alone runs none. See docs/design.md §4.7.
     #[arg(
@@ -177,6 +183,7 @@ pub fn run(a: &Args) -> Result<()> {
             .map(ltc_lab::gpu::method_file::MethodFile::read)
             .transpose()?,
         scenes,
+        encodings: a.encodings.clone(),
     };
     let mut report = |r: &study::StudyRow| {
         eprintln!(

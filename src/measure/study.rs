@@ -11,7 +11,7 @@ use crate::light::Shape;
 use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::ltc::fit::{FitSettings, fit_table};
-use crate::ltc::lut::{Lut, Table};
+use crate::ltc::lut::{Encoding, Lut, Table};
 use crate::ltc::remedy::Horizon;
 use crate::ltc::{Clipping, Normalization};
 use crate::measure::bench::{as_disks, as_rects};
@@ -31,6 +31,8 @@ pub enum LutChoice {
     /// The horizon remedies' fits (`luts/ltc_arrival.exr`, `luts/ltc_constrained.exr`).
     Arrival,
     Constrained,
+    /// The shipped table as an encoding gives it back (docs/design.md §2.10).
+    Encoded(Encoding),
 }
 
 /// One shading variant of the study.
@@ -73,7 +75,7 @@ pub fn variants() -> Vec<Variant> {
     vec![
         v("brdf", Brdf, Corrected, Bilinear, Shipped),
         v("brdf-fast", BrdfFast, Corrected, Bilinear, Shipped),
-        v("ltc", Ltc, Corrected, Bilinear, Shipped),
+        LTC,
         v("ltc-fast", LtcFast, Corrected, Bilinear, Shipped),
         v("ltc-paper", Ltc, PaperLiteral, Bilinear, Shipped),
         v("ltc-nearest", Ltc, Corrected, Nearest, Shipped),
@@ -93,6 +95,32 @@ pub fn variants() -> Vec<Variant> {
         remedy("ltc-fast-nl-fit", Shipped, Horizon::NlFit),
         remedy("ltc-fast-exact-band", Shipped, Horizon::ExactBand),
     ]
+}
+
+/// The `ltc` variant, which each encoding's variant shades as.
+const LTC: Variant = Variant {
+    name: "ltc",
+    method: Method::Ltc,
+    normalization: Normalization::Corrected,
+    filter: LutFilter::Bilinear,
+    lut: LutChoice::Shipped,
+    horizon: Horizon::Eq30,
+};
+
+impl Variant {
+    /// How the variant renders at `size`, culling or not.
+    fn settings(&self, cull: bool, (width, height): (usize, usize)) -> RenderSettings {
+        RenderSettings {
+            rules: LtcRules {
+                clipping: Clipping::BOTH,
+                normalization: self.normalization,
+                filter: self.filter,
+                horizon: self.horizon.rule(),
+            },
+            cull,
+            ..RenderSettings::single(width, height, self.method)
+        }
+    }
 }
 
 /// The variant named `name`.
@@ -270,6 +298,20 @@ pub struct StudySettings {
     /// preset beside its generated lights): every method of each shape they hold against
     /// their exact image (`scene_study`).
     pub scenes: Vec<(String, Scene)>,
+    /// Table encodings, each a variant `ltc-table-NAME` on the generated lights: `ltc` with
+    /// the shipped table as the encoding gives it back, so that every encoding's time and
+    /// error come from one run beside `ltc`'s.
+    pub encodings: Vec<Encoding>,
+}
+
+/// The variant name of the shipped table in `encoding` (`ltc-table-unorm8`).
+pub fn encoded_variant(encoding: Encoding) -> String {
+    format!("ltc-table-{}", encoding.name())
+}
+
+/// The encoding a variant's name stands for, if it is one (`encoded_variant`'s inverse).
+pub fn variant_encoding(name: &str) -> Option<Encoding> {
+    Encoding::parse(name.strip_prefix("ltc-table-")?).ok()
 }
 
 /// The renderers of a study: one per table its variants shade with, and the method file's.
@@ -333,7 +375,9 @@ impl Study {
             .collect();
         let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
         // The scenes as given shade sized lights with the shipped table too.
+        let encoded = s.encodings.iter().map(|&e| LutChoice::Encoded(e));
         let tables = variants.iter().map(|v| v.lut).chain([LutChoice::Shipped]);
+        let tables = tables.chain(encoded);
         for lut in tables {
             if renderers.iter().any(|(c, _)| *c == lut) {
                 continue;
@@ -344,6 +388,7 @@ impl Study {
                 LutChoice::Point => Lut::embedded_point().clone(),
                 LutChoice::Arrival => Lut::shipped(Table::Arrival).clone(),
                 LutChoice::Constrained => Lut::shipped(Table::Constrained).clone(),
+                LutChoice::Encoded(e) => e.decoded(shipped),
                 LutChoice::Fitted(size) => {
                     fit_table(
                         &FitSettings {
@@ -395,19 +440,21 @@ impl Study {
                     let mut exact = None;
                     for v in variants {
                         let renderer = r.of(v.lut);
-                        let settings = RenderSettings {
-                            rules: LtcRules {
-                                clipping: Clipping::BOTH,
-                                normalization: v.normalization,
-                                filter: v.filter,
-                                horizon: v.horizon.rule(),
-                            },
-                            cull,
-                            ..RenderSettings::single(width, height, v.method)
-                        };
+                        let settings = v.settings(cull, s.size);
                         let (ms, image) = timed(ctx, renderer, &scene, &settings, s.frames)?;
                         let reference = exact.get_or_insert_with(|| image.clone());
                         let row = row(v.name, (alpha, lights, cull), s, ms, &image, reference);
+                        progress(&row);
+                        rows.push(row);
+                    }
+                    // Each encoding of the table, shaded as `ltc` is.
+                    for &e in &s.encodings {
+                        let settings = LTC.settings(cull, s.size);
+                        let renderer = r.of(LutChoice::Encoded(e));
+                        let (ms, image) = timed(ctx, renderer, &scene, &settings, s.frames)?;
+                        let Some(reference) = &exact else { break };
+                        let name = encoded_variant(e);
+                        let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
                         progress(&row);
                         rows.push(row);
                     }

@@ -98,7 +98,8 @@ fn study_writes_every_variant_and_the_pareto_chart() {
 /// each of the shape's methods against the shape's own exact image: its `exact` variant is
 /// the reference (error 0), the others differ from it, and the point limit by far the most
 /// on rects this close to the plane (the lights sit 0.05–0.6 above it, the rects 0.1 wide).
-/// Each shape's failure preset (rect-horizon, disk-limits) is studied beside them, as given.
+/// Each shape's failure preset (rect-horizon, disk-limits) is studied beside them, as given;
+/// `--encodings` adds a variant per encoding of the table, shaded as `ltc`.
 #[test]
 fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
     if gpu().is_none() {
@@ -109,6 +110,7 @@ fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
     let mut args = vec!["study", "--out", dir.to_str().unwrap(), "--horizon", "eq30"];
     args.extend(SMALL);
     args.extend(["--rect-half-edge", "0.05", "--disk-radius", "0.05"]);
+    args.extend(["--encodings", "f32,unorm8-8"]);
     let o = ltc_lab(&args);
     assert!(o.status.success(), "{}", stderr(&o));
     let rows = ltc_lab::measure::study::read_csv(&dir.join("study.csv")).unwrap();
@@ -137,6 +139,18 @@ fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
         assert!(err(v).is_finite() && err(v) > 0.0, "{v}: {}", err(v));
     }
     assert!(err("rect-ltc-point") > 2.0 * err("rect-ltc-polygon"));
+    // Each encoding of the table shaded as ltc is, in the same run: f32 is the table itself
+    // (the same image, the same error to the bit), an 8² 8-bit table another image.
+    assert_eq!(err("ltc-table-f32").to_bits(), err("ltc").to_bits());
+    let byte = err("ltc-table-unorm8-8");
+    assert!(byte.is_finite() && byte != err("ltc"), "{byte}");
+    // The chart, reading the study, plots each encoding as a point of the ltc form.
+    let chart = ltc_lab::app::chart::measure::Measurement::from_study(&rows, "study.csv");
+    let point = chart
+        .points
+        .iter()
+        .find(|p| p.label == "ltc-table-unorm8-8");
+    assert_eq!(point.unwrap().method, Some(ltc_lab::render::Method::Ltc));
     assert!(err("disk-ltc-point") > 2.0 * err("disk-ltc-disk"));
     // The failure presets, each against its own exact image.
     for (preset, methods) in [

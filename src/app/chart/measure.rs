@@ -72,7 +72,12 @@ impl Measurement {
                 .iter()
                 .map(|r| Point {
                     label: r.variant.clone(),
-                    method: crate::measure::study::variant(&r.variant).map(|v| v.method),
+                    method: crate::measure::study::variant(&r.variant)
+                        .map(|v| v.method)
+                        // An encoding's variant shades as `ltc` does.
+                        .or_else(|| {
+                            crate::measure::study::variant_encoding(&r.variant).map(|_| Method::Ltc)
+                        }),
                     ms: r.ms_median,
                     rel_rmse: r.rel_rmse,
                     ms_range: None,
