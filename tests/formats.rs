@@ -524,15 +524,7 @@ fn the_wgsl_export_validates() {
     let wgsl = ltc_lab::ltc::formats::source::wgsl(&packed, &header);
     let probe = "@compute @workgroup_size(1) fn main() { let t = ltc_lookup(0.3, 0.5); \
         let m = ltc_cos_from_brdf(t); _ = m; }";
-    let src = format!("{wgsl}\n{probe}");
-    let module = naga::front::wgsl::parse_str(&src)
-        .unwrap_or_else(|e| panic!("does not parse:\n{}", e.emit_to_string(&src)));
-    naga::valid::Validator::new(
-        naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::all(),
-    )
-    .validate(&module)
-    .unwrap_or_else(|e| panic!("does not validate:\n{}", e.emit_to_string(&src)));
+    common::validate_wgsl(&format!("{wgsl}\n{probe}"), "the export");
     assert!(wgsl.contains("alpha_min: 1e-4"), "the header");
 }
 

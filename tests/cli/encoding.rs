@@ -392,3 +392,36 @@ fn lut_encodings_measures_formulas_and_lut_layouts_costs_them() {
     let values = numbers(&String::from_utf8(o.stdout).unwrap());
     assert!(values.iter().flatten().all(|v| v.is_finite()), "{values:?}");
 }
+
+/// `lut --export c|wgsl --encode NAME` writes the encoding's texels with their decoding (the
+/// data checked value by value in tests/lut/export.rs); ltc_code's float layouts and a
+/// formula's run-time texels are refused, naming `--encode`, with nothing written.
+#[test]
+fn lut_exports_an_encoding_for_engines() {
+    let dir = tempfile::tempdir().unwrap();
+    let export = |format: &str, name: &str, file: &str| {
+        let out = dir.path().join(file);
+        let args = ["lut", "--export", format, "--encode", name, "--out"];
+        (
+            ltc_lab(&[&args[..], &[out.to_str().unwrap()]].concat()),
+            out,
+        )
+    };
+    for (format, name, file, marker) in [
+        ("wgsl", "f16", "ltc_f16.wgsl", "unpack2x16float"),
+        ("c", "unorm10-32", "ltc_unorm10.h", "g_ltc_scale[12]"),
+    ] {
+        let (o, out) = export(format, name, file);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(
+            text.contains(marker) && text.contains(&format!("encoding: {name}")),
+            "{name}"
+        );
+    }
+    for (format, name) in [("ltc-code-js", "f16"), ("c", "cheb16")] {
+        let (o, out) = export(format, name, "refused.txt");
+        assert_refused(&o, "--encode");
+        assert!(!out.exists(), "{format} {name}");
+    }
+}

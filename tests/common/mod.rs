@@ -58,3 +58,16 @@ pub fn black_spots(frame: &ltc_lab::render::Frame, exact: &ltc_lab::render::Fram
         .filter(|&(&x, &y)| luminance(y) > 0.05 * mean && luminance(x) < 1e-3 * luminance(y))
         .count()
 }
+
+/// Parses and validates WGSL with naga (every capability allowed: an export's own checks
+/// are for its consumer's device), panicking with naga's report naming `what`.
+pub fn validate_wgsl(src: &str, what: &str) {
+    let module = naga::front::wgsl::parse_str(src)
+        .unwrap_or_else(|e| panic!("{what} does not parse:\n{}", e.emit_to_string(src)));
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::all(),
+    )
+    .validate(&module)
+    .unwrap_or_else(|e| panic!("{what} does not validate:\n{}", e.emit_to_string(src)));
+}

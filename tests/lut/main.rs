@@ -4,6 +4,9 @@
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::lut::{Channel, Lut, LutCell};
 
+#[path = "../common/mod.rs"]
+mod common;
+mod export;
 mod formula;
 mod layout;
 

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use ltc_lab::error::{Error, Result};
 use ltc_lab::files::check_distinct;
 use ltc_lab::ltc::formats::dds::Precision;
-use ltc_lab::ltc::formats::{Export, Header, export};
+use ltc_lab::ltc::formats::{Export, Header, export, export_encoded};
 use ltc_lab::ltc::lut::{Channel, Encoding};
 use ltc_lab::measure::atlas::atlas_files;
 
@@ -34,9 +34,11 @@ pub struct Args {
     export: Option<Written>,
     /// Write the table as an engine storing it in the encoding NAME reads it back
     /// (docs/design.md §2.10: f32, f16, unorm8 or unorm10, optionally -64, -32, -16 or -8 to
-    /// resample; or a formula, chebD or rationalD, optionally -STORAGE), as this project's .exr, which --lut reads: shading with that file is shading with
-    /// --encoding NAME. A resampled table's spec.err and diff.err are filtered, not measured.
-    #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with_all = ["export", "dump", "atlas"])]
+    /// resample; or a formula, chebD or rationalD, optionally -STORAGE), as this project's
+    /// .exr, which --lut reads: shading with that file is shading with --encoding NAME. A
+    /// resampled table's spec.err and diff.err are filtered, not measured. With --export c or
+    /// wgsl, the table's texels in that storage instead, with their decoding.
+    #[arg(long, value_parser = |s: &str| Encoding::parse(s), requires = "out", conflicts_with_all = ["dump", "atlas"])]
     encode: Option<Encoding>,
     /// Measure every encoding (docs/design.md §2.10: each storage at 64², 32², 16² and 8²)
     /// on every light shape: CSV on stdout, a row per encoding, shape, α band and θo band,
@@ -103,7 +105,7 @@ pub fn run(a: &Args) -> Result<()> {
             "names where --export or --encode writes",
         ));
     }
-    if let (Some(encoding), Some(out)) = (a.encode, &a.out) {
+    if let (Some(encoding), Some(out), None) = (a.encode, &a.out, a.export) {
         return encodings::write_encoded(a, encoding, out);
     }
     if a.encodings {
@@ -131,7 +133,10 @@ pub fn run(a: &Args) -> Result<()> {
     if let (Some(Written::Table(format)), Some(out)) = (a.export, &a.out) {
         let shipped = a.lut.lut.is_none().then_some(a.lut.table());
         let header = Header::new(&lut, &a.lut.describe(), shipped);
-        let written = export(&lut, &header, format, a.precision, out)?;
+        let written = match a.encode {
+            Some(encoding) => export_encoded(&lut, &header, format, encoding, out)?,
+            None => export(&lut, &header, format, a.precision, out)?,
+        };
         let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
         eprintln!("wrote {}", names.join(", "));
         if a.atlas.is_none() && !a.dump {

@@ -4,6 +4,7 @@
 //! content is unreadable.
 
 pub mod dds;
+pub mod encoded;
 pub mod js;
 pub mod packing;
 pub mod source;
@@ -314,6 +315,33 @@ named_enum! {
 
 impl Export {}
 
+/// Writes `lut` as `encoding` gives it (`encoded::EncodedTable`) to the file `out` as a C
+/// header or WGSL; ltc_code's layouts hold floats alone and are refused, as is a formula.
+pub fn export_encoded(
+    lut: &Lut,
+    header: &Header,
+    format: Export,
+    encoding: crate::ltc::lut::Encoding,
+    out: &Path,
+) -> Result<Vec<PathBuf>> {
+    let table =
+        encoded::EncodedTable::new(lut, encoding).map_err(|e| Error::input("--encode", e))?;
+    let text = match format {
+        Export::C => encoded::c_header(&table, header),
+        Export::Wgsl => encoded::wgsl(&table, header),
+        Export::LtcCodeJs | Export::LtcCodeDds => {
+            return Err(Error::input(
+                "--encode",
+                format!(
+                    "{} holds ltc_code's float textures; an encoding is exported as c or wgsl",
+                    format.name()
+                ),
+            ));
+        }
+    };
+    write_one(out, text.into_bytes())
+}
+
 /// Writes `lut` as `format` to `out` (for DDS: a directory, made if missing, receiving
 /// `ltc_1.dds`, `ltc_2.dds` and the header as `ltc_dds.txt`); all files or none. Returns the
 /// files written.
@@ -325,42 +353,47 @@ pub fn export(
     out: &Path,
 ) -> Result<Vec<PathBuf>> {
     let packed = packing::pack(lut);
-    let (dir, files): (PathBuf, Vec<(String, Vec<u8>)>) = match format {
-        Export::LtcCodeDds => (
-            out.to_path_buf(),
-            vec![
+    let text = match format {
+        Export::LtcCodeDds => {
+            let files = [
                 (
-                    "ltc_1.dds".into(),
+                    "ltc_1.dds",
                     dds::write(&packed.tex1, packed.size, precision),
                 ),
                 (
-                    "ltc_2.dds".into(),
+                    "ltc_2.dds",
                     dds::write(&packed.tex2, packed.size, precision),
                 ),
-                (DDS_HEADER_FILE.into(), header.comment("").into_bytes()),
-            ],
-        ),
-        _ => {
-            let text = match format {
-                Export::LtcCodeJs => js::write(&packed, header),
-                Export::C => source::c_header(&packed, header),
-                _ => source::wgsl(&packed, header),
-            };
-            let name = out
-                .file_name()
-                .ok_or_else(|| Error::input(out.display().to_string(), "not a file path"))?
-                .to_string_lossy()
-                .into_owned();
-            let dir = match out.parent() {
-                Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-                _ => PathBuf::from("."),
-            };
-            (dir, vec![(name, text.into_bytes())])
+                (DDS_HEADER_FILE, header.comment("").into_bytes()),
+            ];
+            return write_files(out, &files);
         }
+        Export::LtcCodeJs => js::write(&packed, header),
+        Export::C => source::c_header(&packed, header),
+        Export::Wgsl => source::wgsl(&packed, header),
     };
-    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
-    let mut outputs = Outputs::new(&dir, &names)?;
-    for (name, bytes) in &files {
+    write_one(out, text.into_bytes())
+}
+
+/// Writes `bytes` to the file `out` alone (staged, then moved into place).
+fn write_one(out: &Path, bytes: Vec<u8>) -> Result<Vec<PathBuf>> {
+    let name = out
+        .file_name()
+        .ok_or_else(|| Error::input(out.display().to_string(), "not a file path"))?
+        .to_string_lossy()
+        .into_owned();
+    let dir = match out.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    write_files(&dir, &[(name.as_str(), bytes)])
+}
+
+/// Writes each `(name, bytes)` into `dir`: all of them or none.
+fn write_files(dir: &Path, files: &[(&str, Vec<u8>)]) -> Result<Vec<PathBuf>> {
+    let names: Vec<&str> = files.iter().map(|(n, _)| *n).collect();
+    let mut outputs = Outputs::new(dir, &names)?;
+    for (name, bytes) in files {
         outputs.stage(name, bytes)?;
     }
     outputs.commit()?;

@@ -44,9 +44,33 @@ pub fn wgsl(p: &Packed, header: &Header) -> String {
         }
         out.push_str(");\n\n");
     }
+    out.push_str(WGSL_TAPS);
     out.push_str(WGSL_LOOKUP);
     out
 }
+
+/// Where a lookup reads, as `lut_sample_uv` and `lut_uv` in the lab's shaders address: the
+/// four texels' columns and rows and the bilinear weights (every WGSL export's).
+pub const WGSL_TAPS: &str = r#"// uv = (sqrt(alpha), sqrt(1 - cos theta_o)) * (N - 1)/N + 0.5/N, then bilinear filtering with
+// clamp-to-edge addressing, texel centres at (k + 1/2)/N: the columns i, rows j and weights f.
+struct LtcTaps {
+    i: vec2<u32>,
+    j: vec2<u32>,
+    f: vec2<f32>,
+}
+
+fn ltc_taps(alpha: f32, cos_theta_o: f32, size: u32) -> LtcTaps {
+    let n = f32(size);
+    let rs = vec2<f32>(sqrt(max(alpha, 0.0)), sqrt(1.0 - clamp(cos_theta_o, 0.0, 1.0)));
+    let x = (rs * ((n - 1.0) / n) + 0.5 / n) * n - 0.5;
+    let x0 = floor(x);
+    let last = n - 1.0;
+    let i = vec2<u32>(u32(clamp(x0.x, 0.0, last)), u32(clamp(x0.x + 1.0, 0.0, last)));
+    let j = vec2<u32>(u32(clamp(x0.y, 0.0, last)), u32(clamp(x0.y + 1.0, 0.0, last)));
+    return LtcTaps(i, j, x - x0);
+}
+
+"#;
 
 /// The lookup, as `lut_sample_uv` and `lut_uv` in `shaders/ltc.wgsl` do it.
 const WGSL_LOOKUP: &str = r#"// One filtered texel of both textures.
@@ -60,26 +84,15 @@ fn ltc_texel(i: u32, j: u32) -> LtcTexel {
     return LtcTexel(LTC_1[k], LTC_2[k]);
 }
 
-// uv = (sqrt(alpha), sqrt(1 - cos theta_o)) * (N - 1)/N + 0.5/N, then bilinear filtering with
-// clamp-to-edge addressing, texel centres at (k + 1/2)/N.
 fn ltc_lookup(alpha: f32, cos_theta_o: f32) -> LtcTexel {
-    let n = f32(LTC_LUT_SIZE);
-    let rs = vec2<f32>(sqrt(max(alpha, 0.0)), sqrt(1.0 - clamp(cos_theta_o, 0.0, 1.0)));
-    let x = (rs * ((n - 1.0) / n) + 0.5 / n) * n - 0.5;
-    let x0 = floor(x);
-    let f = x - x0;
-    let last = n - 1.0;
-    let i0 = u32(clamp(x0.x, 0.0, last));
-    let i1 = u32(clamp(x0.x + 1.0, 0.0, last));
-    let j0 = u32(clamp(x0.y, 0.0, last));
-    let j1 = u32(clamp(x0.y + 1.0, 0.0, last));
-    let a = ltc_texel(i0, j0);
-    let b = ltc_texel(i1, j0);
-    let c = ltc_texel(i0, j1);
-    let d = ltc_texel(i1, j1);
+    let t = ltc_taps(alpha, cos_theta_o, LTC_LUT_SIZE);
+    let a = ltc_texel(t.i.x, t.j.x);
+    let b = ltc_texel(t.i.y, t.j.x);
+    let c = ltc_texel(t.i.x, t.j.y);
+    let d = ltc_texel(t.i.y, t.j.y);
     return LtcTexel(
-        mix(mix(a.tex1, b.tex1, f.x), mix(c.tex1, d.tex1, f.x), f.y),
-        mix(mix(a.tex2, b.tex2, f.x), mix(c.tex2, d.tex2, f.x), f.y),
+        mix(mix(a.tex1, b.tex1, t.f.x), mix(c.tex1, d.tex1, t.f.x), t.f.y),
+        mix(mix(a.tex2, b.tex2, t.f.x), mix(c.tex2, d.tex2, t.f.x), t.f.y),
     );
 }
 

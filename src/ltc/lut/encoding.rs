@@ -40,14 +40,42 @@ impl Storage {
         }
     }
 
+    /// One channel's `values` in a fixed-point storage (`None`: a float): its bias (the least
+    /// value), its step (`(max − min)` over the storage's steps) and each value's whole steps
+    /// above the bias, what a texel holds.
+    pub fn quantized(self, values: &[f64]) -> Option<Quantized> {
+        let steps = self.steps()?;
+        let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let step = (hi - lo) / steps;
+        let whole = |v: f64| match step > 0.0 {
+            true => ((v - lo) / step).round() as u32,
+            false => 0,
+        };
+        Some(Quantized {
+            bias: lo,
+            step,
+            steps: values.iter().map(|&v| whole(v)).collect(),
+        })
+    }
+
     /// Steps of a fixed-point storage over a channel's range (`None`: a float).
-    fn steps(self) -> Option<f64> {
+    pub fn steps(self) -> Option<f64> {
         match self {
             Self::Unorm8 => Some(255.0),
             Self::Unorm10 => Some(1023.0),
             Self::F32 | Self::F16 => None,
         }
     }
+}
+
+/// One channel in a fixed-point storage (`Storage::quantized`): value `k` is
+/// `bias + steps[k] · step`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Quantized {
+    pub bias: f64,
+    pub step: f64,
+    pub steps: Vec<u32>,
 }
 
 /// The table sizes an encoding may resample to: the shipped 64² and each halving down to 8²
@@ -163,11 +191,7 @@ impl Encoding {
     /// (the stored magnitudes carry the scale); f32 at the table's own size is `lut` itself.
     /// A formula's table is its values at the table's own cells, then stored.
     pub fn decoded(&self, lut: &Lut) -> Lut {
-        let mut out = match (self.formula, self.size) {
-            (Some(f), _) => f.fitted(lut).rebuilt(lut),
-            (None, Some(n)) if n != lut.size => resampled(lut, n),
-            _ => lut.clone(),
-        };
+        let mut out = self.prepared(lut);
         if self.storage == Storage::F32 && self.formula.is_none() {
             return out;
         }
@@ -184,6 +208,16 @@ impl Encoding {
     }
 
     /// `decoded`, with what was clamped said in words (`None` where nothing was).
+    /// The table before its values are stored: resampled to the encoding's size, or a
+    /// formula's values at the table's cells.
+    pub fn prepared(&self, lut: &Lut) -> Lut {
+        match (self.formula, self.size) {
+            (Some(f), _) => f.fitted(lut).rebuilt(lut),
+            (None, Some(n)) if n != lut.size => resampled(lut, n),
+            _ => lut.clone(),
+        }
+    }
+
     /// A formula's degree lowered to what a small table can be fitted with is said too, and
     /// cells the encoding turns inside out (a formula's ringing, 8 bits' rounding).
     pub fn decoded_saying(&self, lut: &Lut) -> (Lut, Option<String>) {
@@ -232,32 +266,26 @@ impl Encoding {
     }
 }
 
+/// `v` as an f16 from the f32 an engine holds (as `lut --export ltc-code-dds` rounds), clamped
+/// to f16's finite range (`Encoding::clamped` counts what was).
+pub fn half_of(v: f64) -> half::f16 {
+    let limit = f32::from(half::f16::MAX);
+    half::f16::from_f32((v as f32).clamp(-limit, limit))
+}
+
 /// `values` stored in `storage` and read back.
 fn store(storage: Storage, values: &[f64]) -> Vec<f64> {
     match storage {
         Storage::F32 => values.iter().map(|&v| f64::from(v as f32)).collect(),
-        // From the f32 an engine holds (as `lut --export ltc-code-dds` rounds), clamped to
-        // f16's finite range (`Encoding::clamped` counts what was).
-        Storage::F16 => values
-            .iter()
-            .map(|&v| {
-                let limit = f32::from(half::f16::MAX);
-                f64::from(half::f16::from_f32((v as f32).clamp(-limit, limit)))
-            })
-            .collect(),
-        Storage::Unorm8 | Storage::Unorm10 => {
-            let steps = storage.steps().unwrap_or(1.0);
-            let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
-            let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            let step = (hi - lo) / steps;
-            values
+        Storage::F16 => values.iter().map(|&v| f64::from(half_of(v))).collect(),
+        Storage::Unorm8 | Storage::Unorm10 => match storage.quantized(values) {
+            Some(q) => q
+                .steps
                 .iter()
-                .map(|&v| match step > 0.0 {
-                    true => lo + ((v - lo) / step).round() * step,
-                    false => v,
-                })
-                .collect()
-        }
+                .map(|&k| q.bias + f64::from(k) * q.step)
+                .collect(),
+            None => values.to_vec(),
+        },
     }
 }
 
