@@ -67,6 +67,8 @@ pub(super) fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState)
                 lab.use_shipped(t);
             }
         }
+        // On the row's wrapped end, which holds one table's name: no row of its own.
+        encoding(ui, lab, TableId::A);
     });
     if let Source::File(file) | Source::Given(file) = &lab.tables().a().source {
         ui.small(format!("table A: {file}"));
@@ -85,14 +87,14 @@ pub(super) fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState)
             lab.request(Request::Open(Purpose::TableB, files.lut_path.clone()));
         }
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.small(format!("table B: {}", lab.tables().b().name))
             .on_hover_text("The other fit: the lobe overlay and the matrix panel show it beside table A, and the plane's A | B comparison shades with it");
         if !lab.tables().b_is_default() && ui.small_button("reset").on_hover_text("Table B back to the other shipped table").clicked() {
             lab.use_table_b(None);
         }
+        encoding(ui, lab, TableId::B);
     });
-    encodings(ui, lab);
     // The 4D tables matter only to an anisotropic material.
     if lab.material().is_anisotropic() {
         aniso_tables(ui, lab);
@@ -109,40 +111,36 @@ fn offered_encodings(size: usize) -> Vec<Encoding> {
     all
 }
 
-/// Each side's encoding, each offered with the bytes an engine ships for it.
-fn encodings(ui: &mut egui::Ui, lab: &mut Lab) {
+/// Side `id`'s encoding, each offered with the bytes an engine ships for it.
+fn encoding(ui: &mut egui::Ui, lab: &mut Lab, id: TableId) {
     let size = lab.tables().a().lut.size;
-    let label = |e: Option<Encoding>| match e {
-        None => "as read".to_string(),
-        Some(e) => format!("{} · {:.1} KB", e.name(), e.bytes(size) as f64 / 1024.0),
-    };
-    for (id, hover) in [
-        (
-            TableId::A,
-            "Shade side A with table A as an engine storing it in this encoding reads it back (docs/design.md §2.10), with the bytes it ships; `ltc-lab lut --encodings` measures each on every light shape",
-        ),
-        (
-            TableId::B,
-            "Compare with table B as this encoding gives it back; while B is the default table, B becomes table A's table in this encoding, so that the A | B split shows one table in two encodings",
-        ),
-    ] {
-        let current = lab.tables().encoding(id);
-        let mut chosen = current;
-        egui::ComboBox::from_label(format!("encoding {id:?}"))
-            .selected_text(label(current))
-            // Every entry on screen at once (20 rows), none behind a scroll.
-            .height(480.0)
-            .show_ui(ui, |ui| {
-                ui.selectable_value(&mut chosen, None, label(None));
-                for e in offered_encodings(size) {
-                    ui.selectable_value(&mut chosen, Some(e), label(Some(e)));
-                }
-            })
-            .response
-            .on_hover_text(hover);
-        if chosen != current {
-            lab.use_encoding(id, chosen);
+    let name = |e: Option<Encoding>| e.map_or("as read".to_string(), |e| e.name());
+    let hover = match id {
+        TableId::A => {
+            "Shade side A with table A as an engine storing it in this encoding reads it back (docs/design.md §2.10), with the bytes it ships; `ltc-lab lut --encodings` measures each on every light shape"
         }
+        TableId::B => {
+            "Compare with table B as this encoding gives it back; while B is the default table, B becomes table A's table in this encoding, so that the A | B split shows one table in two encodings"
+        }
+    };
+    let current = lab.tables().encoding(id);
+    let mut chosen = current;
+    egui::ComboBox::from_label(format!("encoding {id:?}"))
+        .selected_text(name(current))
+        .width(90.0)
+        // Every entry on screen at once (20 rows), none behind a scroll.
+        .height(480.0)
+        .show_ui(ui, |ui| {
+            ui.selectable_value(&mut chosen, None, name(None));
+            for e in offered_encodings(size) {
+                let bytes = format!("{} · {:.1} KB", e.name(), e.bytes(size) as f64 / 1024.0);
+                ui.selectable_value(&mut chosen, Some(e), bytes);
+            }
+        })
+        .response
+        .on_hover_text(hover);
+    if chosen != current {
+        lab.use_encoding(id, chosen);
     }
 }
 
