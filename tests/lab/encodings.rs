@@ -39,6 +39,8 @@ fn a_split_shows_one_table_in_two_encodings() {
     pick(&mut h, "encoding B", "unorm8-8 · 0.8 KB");
     let tables = h.state().lab().tables();
     assert_eq!(tables.b().name, "classic as unorm8-8");
+    // B's anisotropic materials keep B's 4D table (I3D 2022's), not A's.
+    assert_ne!(tables.b().lut.aniso(), tables.a().lut.aniso());
     let expected = Encoding::parse("unorm8-8")
         .unwrap()
         .decoded(Lut::embedded());

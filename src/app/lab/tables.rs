@@ -135,9 +135,12 @@ impl Tables {
             (Some(_), true) => &self.plain.a,
             _ => &self.plain.b,
         };
+        let mut b_table = encode(b_base, b);
+        // Side B's anisotropic materials keep B's own 4D table, whichever 2D table it reads.
+        b_table.lut.aniso = self.plain.b.lut.aniso.clone();
         self.named = NamedTables {
             a: encode(&self.plain.a, a),
-            b: encode(b_base, b),
+            b: b_table,
         };
         self
     }
