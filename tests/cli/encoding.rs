@@ -138,6 +138,15 @@ fn lut_encode_writes_what_eval_encoding_shades_with() {
     assert_refused(&o, "--out");
 }
 
+/// The rows of `lut --encodings ARGS`' CSV (header skipped), each split at its commas.
+fn encodings_rows(args: &[&str]) -> Vec<Vec<String>> {
+    let o = ltc_lab(&[&["lut", "--encodings"][..], args].concat());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let split = |l: &str| l.split(',').map(String::from).collect();
+    text.lines().skip(1).map(split).collect()
+}
+
 /// `lut --encodings`: a row per encoding, shape, α band and θo band; f32 at the table's size
 /// adds nothing anywhere (it is the table); every figure is finite and not negative; 8 bits
 /// add more than half floats near α → 0, and a smaller table adds more than a larger one.
@@ -281,14 +290,7 @@ fn every_command_with_a_table_takes_an_encoding() {
 /// refused.
 #[test]
 fn lut_encodings_sets_a_fitted_small_table_beside_the_resampled_one() {
-    let o = ltc_lab(&["lut", "--encodings", "--cases", "16", "--fitted", "8"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8(o.stdout).unwrap();
-    let rows: Vec<Vec<&str>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').collect())
-        .collect();
+    let rows = encodings_rows(&["--cases", "16", "--fitted", "8"]);
     assert_eq!(rows.len(), 17 * 4 * 9);
     let added = |name: &str, shape: &str| -> f64 {
         rows.iter()
@@ -321,21 +323,7 @@ fn lut_encodings_sets_a_fitted_small_table_beside_the_resampled_one() {
 /// encoding's cost, a formula's per-lookup form with no texture.
 #[test]
 fn lut_encodings_measures_formulas_and_lut_layouts_costs_them() {
-    let o = ltc_lab(&[
-        "lut",
-        "--encodings",
-        "--cases",
-        "32",
-        "--formulas",
-        "cheb8,cheb24,rational4",
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8(o.stdout).unwrap();
-    let rows: Vec<Vec<&str>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').collect())
-        .collect();
+    let rows = encodings_rows(&["--cases", "32", "--formulas", "cheb8,cheb24,rational4"]);
     assert_eq!(rows.len(), 19 * 4 * 9);
     let added = |name: &str, shape: &str| -> f64 {
         rows.iter()

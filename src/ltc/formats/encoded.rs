@@ -70,17 +70,9 @@ impl EncodedTable {
         })
     }
 
-    /// Values one texel holds.
-    pub fn per_texel(&self) -> usize {
-        match self.storage {
-            Storage::Unorm10 => 3,
-            _ => 4,
-        }
-    }
-
     /// Texels a cell: the layers of the texture array.
     pub fn layers(&self) -> usize {
-        SLOTS.div_ceil(self.per_texel())
+        SLOTS.div_ceil(self.storage.values_per_texel())
     }
 
     /// The texels as the words a shader reads, layer by layer within each cell: f32 bits

@@ -36,7 +36,15 @@ impl Storage {
             Self::F32 => 4 * n,
             Self::F16 => 2 * n,
             Self::Unorm8 => n,
-            Self::Unorm10 => 4 * n.div_ceil(3),
+            Self::Unorm10 => 4 * n.div_ceil(self.values_per_texel()),
+        }
+    }
+
+    /// Values one texel holds: RGBA's four, RGB10A2's three (its 2-bit alpha holds none).
+    pub fn values_per_texel(self) -> usize {
+        match self {
+            Self::Unorm10 => 3,
+            Self::F32 | Self::F16 | Self::Unorm8 => 4,
         }
     }
 

@@ -68,7 +68,7 @@ impl Layout {
                 multiply_adds: formula.multiply_adds(),
             });
         }
-        let per_texel = values_per_texel(encoding.storage);
+        let per_texel = encoding.storage.values_per_texel();
         let texels_per_cell: usize = match self {
             Self::TwoTexture => GROUPS.iter().map(|g| g.div_ceil(per_texel)).sum(),
             _ => SHADER_CHANNELS.len().div_ceil(per_texel),
@@ -90,14 +90,6 @@ impl Layout {
             fetches: texels_per_cell,
             multiply_adds: UV_OPS + decode,
         })
-    }
-}
-
-/// Values one texel holds: RGBA's four, RGB10A2's three (its 2-bit alpha holds none).
-fn values_per_texel(storage: Storage) -> usize {
-    match storage {
-        Storage::Unorm10 => 3,
-        _ => 4,
     }
 }
 
