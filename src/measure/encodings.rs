@@ -2,7 +2,8 @@
 //! it adds against the f32 table (Σ|encoded − f32| / Σ f32 per lobe) and its total error
 //! against the exact integral (Σ|encoded − exact| / Σ exact), by shape, α band and θo band,
 //! over the same drawn cases for every encoding. Each shape by the LTC method engines ship
-//! for it: a point by the LTC, a sphere and a disk by `ltc-disk`, a rect by `ltc-polygon`.
+//! for it: a point by the LTC, a sphere and a disk by `ltc-disk`, a rect by `ltc-polygon`;
+//! and an anisotropic material (which reads the 4D table) under the point and the rect.
 //! `lut --encodings` prints it.
 
 use glam::DVec3;
@@ -12,8 +13,10 @@ use crate::brdf::{Alpha, Lobes, view_from_theta};
 use crate::light::disk::{DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::{RectMethod, RectShading, rect_exact, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
+use crate::ltc::aniso::AnisoLut;
+use crate::ltc::aniso::encoded::bytes as aniso_bytes;
 use crate::ltc::fit::{FitSettings, fit_table};
-use crate::ltc::lut::{Encoding, Lut, THETA_MAX};
+use crate::ltc::lut::{ALPHA_MIN, Encoding, Lut, Storage, THETA_MAX};
 use crate::ltc::{Clipping, Normalization};
 use crate::measure::horizon::{F0, lobes};
 use crate::measure::shape_error::lights;
@@ -21,8 +24,24 @@ use crate::measure::sphere_error::one_sphere;
 use crate::render::LtcRules;
 use crate::scene::SplitMix64;
 
-/// The light shapes measured, in the rows' order.
-pub const SHAPES: [&str; 4] = ["point", "sphere", "rect", "disk"];
+/// The light shapes measured, in the rows' order: on the isotropic material, then on an
+/// anisotropic one.
+pub const SHAPES: [&str; 6] = [
+    "point",
+    "sphere",
+    "rect",
+    "disk",
+    "aniso-point",
+    "aniso-rect",
+];
+
+/// The anisotropic material's α_y/α_x, drawn uniformly (its α_x is the band's α): from the
+/// most brushed of §4.11's rows to isotropic.
+pub const ANISO_RATIO: [f64; 2] = [0.1, 1.0];
+
+/// The seed of the anisotropic draws is the band's, offset by this, so that the isotropic
+/// shapes' cases are the ones measured before the anisotropic rows were added.
+const ANISO_SEED: u64 = 0x4d5f_616e_6973_6f00;
 
 /// α bands: near the mirror (where `M⁻¹`'s entries grow like 1/α), glossy, rough.
 pub const ALPHA_BANDS: [[f64; 2]; 3] = [[0.01, 0.1], [0.1, 0.4], [0.4, 1.0]];
@@ -42,10 +61,12 @@ pub const AREA_SOLID_ANGLE: f64 = 0.1;
 pub const NODES: usize = 32;
 
 /// A table an engine might ship instead of the f32 one: an encoding of it as decoded, or a
-/// table fitted at a smaller size; its name and the bytes an engine stores for it.
+/// table fitted at a smaller size; its name and the bytes an engine stores for its 2D table
+/// and for its 4D table.
 pub struct Candidate {
     pub name: String,
     pub bytes: usize,
+    pub aniso_bytes: usize,
     pub lut: Lut,
 }
 
@@ -55,6 +76,7 @@ impl Candidate {
         Self {
             name: encoding.name(),
             bytes: encoding.bytes(lut.size),
+            aniso_bytes: aniso_bytes(lut.aniso().dims, encoding.storage),
             lut: encoding.decoded(lut),
         }
     }
@@ -70,6 +92,7 @@ impl Candidate {
         Self {
             name: format!("fit-{size}"),
             bytes: Encoding::default().bytes(size),
+            aniso_bytes: aniso_bytes(AnisoLut::shipped().dims, Storage::F32),
             lut: fit_table(&settings, &|| {}).lut,
         }
     }
@@ -113,7 +136,7 @@ pub fn encoding_errors(
 }
 
 /// Each shape's lobes at one case: exact, and by each table.
-type Case = [(Lobes<f64>, Vec<Lobes<f64>>); 4];
+type Case = [(Lobes<f64>, Vec<Lobes<f64>>); SHAPES.len()];
 
 fn band(
     lut: &Lut,
@@ -122,12 +145,15 @@ fn band(
     cases: usize,
     seed: u64,
 ) -> Vec<EncodingError> {
-    let mut rng = SplitMix64(seed.wrapping_add((a * THETA_BANDS.len() + t) as u64));
+    let band_seed = seed.wrapping_add((a * THETA_BANDS.len() + t) as u64);
+    let mut rng = SplitMix64(band_seed);
+    let mut aniso_rng = SplitMix64(band_seed ^ ANISO_SEED);
     // Per shape: Σ exact, Σ f32, and per table Σ|table − f32|, Σ|table − exact| (per lobe).
-    let mut exact_sum = [[0.0f64; 2]; 4];
-    let mut f32_sum = [[0.0f64; 2]; 4];
-    let mut added = vec![[[0.0f64; 2]; 4]; candidates.len()];
-    let mut total = vec![[[0.0f64; 2]; 4]; candidates.len()];
+    let n = SHAPES.len();
+    let mut exact_sum = vec![[0.0f64; 2]; n];
+    let mut f32_sum = vec![[0.0f64; 2]; n];
+    let mut added = vec![vec![[0.0f64; 2]; n]; candidates.len()];
+    let mut total = vec![vec![[0.0f64; 2]; n]; candidates.len()];
     for _ in 0..cases {
         let theta_o = rng.uniform(THETA_BANDS[t]);
         let alpha = rng.uniform(ALPHA_BANDS[a]);
@@ -136,7 +162,11 @@ fn band(
         let phi = rng.uniform([0.0, std::f64::consts::TAU]);
         let r = (1.0 - z * z).sqrt();
         let l = DVec3::new(r * phi.cos(), r * phi.sin(), z);
-        let case = one_case(lut, candidates, (theta_o, alpha), l, &mut rng);
+        let aniso = Aniso {
+            ratio: aniso_rng.uniform(ANISO_RATIO),
+            phi_o: aniso_rng.uniform([0.0, std::f64::consts::TAU]),
+        };
+        let case = one_case(lut, candidates, (theta_o, alpha), l, &mut rng, aniso);
         for (s, (exact, got)) in case.iter().enumerate() {
             let f32_lobes = got[0];
             // Σ|x − y| per lobe (y zero: Σ|x|).
@@ -156,9 +186,13 @@ fn band(
     let mut rows = Vec::new();
     for (k, candidate) in candidates.iter().enumerate() {
         for (s, &shape) in SHAPES.iter().enumerate() {
+            let anisotropic = shape.starts_with("aniso");
             rows.push(EncodingError {
                 name: candidate.name.clone(),
-                bytes: candidate.bytes,
+                bytes: match anisotropic {
+                    true => candidate.aniso_bytes,
+                    false => candidate.bytes,
+                },
                 shape,
                 alpha: ALPHA_BANDS[a],
                 theta: THETA_BANDS[t],
@@ -171,6 +205,14 @@ fn band(
     rows
 }
 
+/// The anisotropic material of a case beside its isotropic one: α_y/α_x and the view's
+/// azimuth from the tangent.
+#[derive(Clone, Copy)]
+struct Aniso {
+    ratio: f64,
+    phi_o: f64,
+}
+
 /// One view and light direction: each shape's exact lobes and its lobes by `lut` (first)
 /// and then by each candidate's.
 fn one_case(
@@ -179,6 +221,7 @@ fn one_case(
     (theta_o, alpha): (f64, f64),
     l: DVec3,
     rng: &mut SplitMix64,
+    aniso: Aniso,
 ) -> Case {
     let all: Vec<&Lut> = std::iter::once(lut)
         .chain(candidates.iter().map(|c| &c.lut))
@@ -224,11 +267,62 @@ fn one_case(
         };
         disk_light(DiskMethod::LtcDisk, &s)
     });
+    let [aniso_point, aniso_rect] = anisotropic(&all, (theta_o, alpha), aniso, l, &rect);
     [
         (point_exact, point.collect()),
         (sphere_exact, sphere.collect()),
         (rect_exact(v, &rect, a, F0, NODES), rects.collect()),
         (disk_exact(v, &disk, a, F0, NODES), disks.collect()),
+        aniso_point,
+        aniso_rect,
+    ]
+}
+
+/// The anisotropic material under the point light `l` and under `rect`: exact, and by each
+/// table's 4D table (`Lut::aniso_pair`), as §4.11 measures them.
+fn anisotropic(
+    all: &[&Lut],
+    (theta_o, alpha): (f64, f64),
+    aniso: Aniso,
+    l: DVec3,
+    rect: &crate::light::rect::Rect,
+) -> [(Lobes<f64>, Vec<Lobes<f64>>); 2] {
+    let a = Alpha {
+        x: alpha,
+        y: (aniso.ratio * alpha).max(ALPHA_MIN),
+    };
+    let theta = theta_o.to_radians().min(THETA_MAX);
+    let v = DVec3::new(
+        theta.sin() * aniso.phi_o.cos(),
+        theta.sin() * aniso.phi_o.sin(),
+        theta.cos(),
+    );
+    let pairs: Vec<_> = all.iter().map(|t| t.aniso_pair(a, v)).collect();
+    let point = |pair, method| sphere_light(method, &SphereShading::unit(v, l, 0.0, a, F0, pair));
+    let rect_by = |pair| {
+        let s = RectShading {
+            v,
+            rect: *rect,
+            alpha: a,
+            f0: F0,
+            ltc: pair,
+            clip: Clipping::BOTH,
+            normalization: Normalization::Corrected,
+        };
+        rect_light(RectMethod::LtcPolygon, &s)
+    };
+    [
+        (
+            point(&pairs[0], SphereMethod::Exact),
+            pairs
+                .iter()
+                .map(|p| point(p, SphereMethod::LtcPoint))
+                .collect(),
+        ),
+        (
+            rect_exact(v, rect, a, F0, NODES),
+            pairs.iter().map(rect_by).collect(),
+        ),
     ]
 }
 

@@ -150,6 +150,9 @@ fn encodings_rows(args: &[&str]) -> Vec<Vec<String>> {
 /// `lut --encodings`: a row per encoding, shape, α band and θo band; f32 at the table's size
 /// adds nothing anywhere (it is the table); every figure is finite and not negative; 8 bits
 /// add more than half floats near α → 0, and a smaller table adds more than a larger one.
+/// The anisotropic material's rows give the 4D table's bytes; a size changes only the 2D
+/// table, so the 4D table's specular lobe gains nothing from it, and 8 bits there add more
+/// than half floats.
 #[test]
 fn lut_encodings_measures_every_encoding_on_every_shape() {
     let o = ltc_lab(&["lut", "--encodings", "--cases", "16"]);
@@ -161,8 +164,8 @@ fn lut_encodings_measures_every_encoding_on_every_shape() {
         "encoding,bytes,shape,alpha,theta_o,cases,added_spec,added_diff,total_spec,total_diff"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    // 4 storages × 4 sizes, 4 shapes, 3 α bands × 3 θo bands.
-    assert_eq!(rows.len(), 16 * 4 * 9);
+    // 4 storages × 4 sizes, 6 shapes, 3 α bands × 3 θo bands.
+    assert_eq!(rows.len(), 16 * 6 * 9);
     let value = |r: &Vec<&str>, k: usize| r[k].parse::<f64>().unwrap();
     // Σ over a storage's rows of a shape and α band of the specular error it adds.
     let added = |encoding: &str, shape: &str, alpha: &str| -> f64 {
@@ -184,6 +187,21 @@ fn lut_encodings_measures_every_encoding_on_every_shape() {
         // Four times the steps: a quarter of the rounding, where it is the error.
         assert!(added("unorm8", shape, "0.1..0.4") > 2.0 * added("unorm10", shape, "0.1..0.4"));
         assert!(added("f32-8", shape, "0.1..0.4") > added("f32-32", shape, "0.1..0.4"));
+    }
+    let bytes = |encoding: &str, shape: &str| -> usize {
+        let r = rows.iter().find(|r| r[0] == encoding && r[2] == shape);
+        r.unwrap()[1].parse().unwrap()
+    };
+    for shape in ["aniso-point", "aniso-rect"] {
+        assert_eq!(bytes("f32", shape), 2 * bytes("f16", shape), "{shape}");
+        // The 2D table at 8² is a 64th of its 64² bytes; the 4D table keeps its grid.
+        assert_eq!(
+            bytes("f16", shape),
+            bytes("f16-8", shape),
+            "{shape}: one 4D grid"
+        );
+        assert_eq!(added("f32-8", shape, "0.1..0.4"), 0.0, "{shape}");
+        assert!(added("unorm8", shape, "0.01..0.1") > added("f16", shape, "0.01..0.1"));
     }
     assert_refused(&ltc_lab(&["lut", "--encodings", "--cases", "0"]), "--cases");
 }
@@ -291,14 +309,17 @@ fn every_command_with_a_table_takes_an_encoding() {
 #[test]
 fn lut_encodings_sets_a_fitted_small_table_beside_the_resampled_one() {
     let rows = encodings_rows(&["--cases", "16", "--fitted", "8"]);
-    assert_eq!(rows.len(), 17 * 4 * 9);
+    assert_eq!(rows.len(), 17 * 6 * 9);
     let added = |name: &str, shape: &str| -> f64 {
         rows.iter()
             .filter(|r| r[0] == name && r[2] == shape && r[3] == "0.1..0.4")
             .map(|r| r[6].parse::<f64>().unwrap())
             .sum()
     };
-    for r in rows.iter().filter(|r| r[0] == "fit-8") {
+    for r in rows
+        .iter()
+        .filter(|r| r[0] == "fit-8" && !r[2].starts_with("aniso"))
+    {
         assert_eq!(r[1], (8 * 8 * 11 * 4).to_string(), "{r:?}");
     }
     for shape in ["point", "sphere", "rect", "disk"] {
@@ -324,7 +345,7 @@ fn lut_encodings_sets_a_fitted_small_table_beside_the_resampled_one() {
 #[test]
 fn lut_encodings_measures_formulas_and_lut_layouts_costs_them() {
     let rows = encodings_rows(&["--cases", "32", "--formulas", "cheb8,cheb24,rational4"]);
-    assert_eq!(rows.len(), 19 * 4 * 9);
+    assert_eq!(rows.len(), 19 * 6 * 9);
     let added = |name: &str, shape: &str| -> f64 {
         rows.iter()
             .filter(|r| r[0] == name && r[2] == shape && r[3] != "0.01..0.1")
@@ -381,9 +402,10 @@ fn lut_encodings_measures_formulas_and_lut_layouts_costs_them() {
     assert!(values.iter().flatten().all(|v| v.is_finite()), "{values:?}");
 }
 
-/// `lut --export c|wgsl --encode NAME` writes the encoding's texels with their decoding (the
-/// data checked value by value in tests/lut/export.rs); ltc_code's float layouts and a
-/// formula's run-time texels are refused, naming `--encode`, with nothing written.
+/// `lut --export c|wgsl --encode NAME` writes the encoding's texels with their decoding, or a
+/// formula's coefficients with the formula (the data checked value by value in
+/// tests/lut/export.rs); ltc_code's float layouts are refused, naming `--encode`, with
+/// nothing written.
 #[test]
 fn lut_exports_an_encoding_for_engines() {
     let dir = tempfile::tempdir().unwrap();
@@ -398,16 +420,30 @@ fn lut_exports_an_encoding_for_engines() {
     for (format, name, file, marker) in [
         ("wgsl", "f16", "ltc_f16.wgsl", "unpack2x16float"),
         ("c", "unorm10-32", "ltc_unorm10.h", "g_ltc_scale[12]"),
+        (
+            "c",
+            "cheb16",
+            "ltc_cheb16.h",
+            "#define LTC_FORMULA_COEFFICIENTS 289",
+        ),
+        (
+            "wgsl",
+            "rational4-f16",
+            "ltc_rational4.wgsl",
+            "fn ltc_formula_lookup",
+        ),
     ] {
         let (o, out) = export(format, name, file);
         assert!(o.status.success(), "{name}: {}", stderr(&o));
         let text = std::fs::read_to_string(&out).unwrap();
         assert!(
-            text.contains(marker) && text.contains(&format!("encoding: {name}")),
+            text.contains(marker)
+                && (text.contains(&format!("encoding: {name}"))
+                    || text.contains(&format!("formula: {name}"))),
             "{name}"
         );
     }
-    for (format, name) in [("ltc-code-js", "f16"), ("c", "cheb16")] {
+    for (format, name) in [("ltc-code-js", "f16"), ("ltc-code-dds", "cheb16")] {
         let (o, out) = export(format, name, "refused.txt");
         assert_refused(&o, "--encode");
         assert!(!out.exists(), "{format} {name}");

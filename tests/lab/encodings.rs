@@ -7,7 +7,8 @@ use egui_kittest::kittest::{NodeT, Queryable};
 use ltc_lab::app::LabApp;
 use ltc_lab::app::lab::part::Checked;
 use ltc_lab::app::lab::{TableId, TableSources, Tables};
-use ltc_lab::ltc::lut::{Encoding, Lut};
+use ltc_lab::ltc::aniso::encoded::stored_in;
+use ltc_lab::ltc::lut::{Encoding, Lut, Storage};
 
 use crate::harness::{lab, plane_image, plane_state, settle};
 
@@ -39,8 +40,14 @@ fn a_split_shows_one_table_in_two_encodings() {
     pick(&mut h, "encoding B", "unorm8-8 · 0.8 KB");
     let tables = h.state().lab().tables();
     assert_eq!(tables.b().name, "classic as unorm8-8");
-    // B's anisotropic materials keep B's 4D table (I3D 2022's), not A's.
+    // B's anisotropic materials keep B's 4D table (I3D 2022's), not A's, in B's encoding.
     assert_ne!(tables.b().lut.aniso(), tables.a().lut.aniso());
+    let b_own = tables.aniso(TableId::B).load().unwrap();
+    assert_eq!(
+        *tables.b().lut.aniso(),
+        stored_in(&b_own, Storage::Unorm8),
+        "B's 4D table in 8 bits"
+    );
     let expected = Encoding::parse("unorm8-8")
         .unwrap()
         .decoded(Lut::embedded());

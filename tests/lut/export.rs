@@ -1,9 +1,10 @@
 //! An encoding exported for engines (docs/design.md §2.10, `lut --export c|wgsl --encode NAME`):
-//! the data, decoded as the format defines it, is the table every measure shades with, and
-//! the WGSL validates.
+//! the data, decoded as the format defines it (a formula: its coefficients evaluated), is the
+//! table every measure shades with, and the WGSL validates.
 
 use ltc_lab::ltc::formats::Header;
 use ltc_lab::ltc::formats::encoded::{EncodedTable, SLOTS, c_header, wgsl};
+use ltc_lab::ltc::formats::formula::{self, FormulaSource};
 use ltc_lab::ltc::lut::encoding::SHADER_CHANNELS;
 use ltc_lab::ltc::lut::{Encoding, Lut, Storage, Table};
 
@@ -104,4 +105,106 @@ fn an_exported_encoding_decodes_to_the_table_measured() {
         crate::common::validate_wgsl(&format!("{source}\n{probe}"), name);
     }
     assert!(EncodedTable::new(lut, Encoding::parse("cheb16").unwrap()).is_err());
+}
+
+/// `T_0(x) … T_d(x)`, written here from Chebyshev's recurrence as the export's comment states it.
+fn chebyshev(d: usize, x: f64) -> Vec<f64> {
+    let mut t = vec![1.0, x];
+    for k in 2..=d {
+        t.push(2.0 * x * t[k - 1] - t[k - 2]);
+    }
+    t
+}
+
+/// One channel of an exported formula at `(r, s)` from its coefficients, as the header's
+/// comment defines it (a series, or `P / Q` over the products `a + b ≤ D` in the order it
+/// names), before the clamp; and a bound on the f32 rounding of the coefficients there (the
+/// products are at most 1: Σ|c| · 2⁻²⁴, divided by `|Q|` for a ratio, with `|value|` times
+/// `Q`'s own).
+fn formula_at(rational: bool, d: usize, c: &[f64], r: f64, s: f64) -> (f64, f64) {
+    let (tr, ts) = (chebyshev(d, 2.0 * r - 1.0), chebyshev(d, 2.0 * s - 1.0));
+    let ulp = 2f64.powi(-24);
+    if !rational {
+        let mut sum = 0.0;
+        for a in 0..=d {
+            for b in 0..=d {
+                sum += c[a * (d + 1) + b] * tr[a] * ts[b];
+            }
+        }
+        return (sum, c.iter().map(|x| x.abs()).sum::<f64>() * ulp);
+    }
+    let products: Vec<f64> = (0..=d)
+        .flat_map(|a| (0..=d - a).map(move |b| (a, b)))
+        .map(|(a, b)| tr[a] * ts[b])
+        .collect();
+    let n = products.len();
+    let p: f64 = c[..n].iter().zip(&products).map(|(c, x)| c * x).sum();
+    let q = 1.0
+        + c[n..]
+            .iter()
+            .zip(&products[1..])
+            .map(|(c, x)| c * x)
+            .sum::<f64>();
+    let sum_abs = |c: &[f64]| c.iter().map(|x| x.abs()).sum::<f64>();
+    let value = p / q;
+    (
+        value,
+        (sum_abs(&c[..n]) + value.abs() * sum_abs(&c[n..])) * ulp / q.abs(),
+    )
+}
+
+/// A formula exported: its C header's coefficients, evaluated as its comment says and clamped
+/// into each channel's range, rebuild the table every measure shades with (`decoded`) —
+/// within the f32 rounding of the coefficients (`formula_at`'s bound) and of the lab's own
+/// values (2⁻²⁴), and for a half-float rebuild within one f16 step of the value (a rounding
+/// that lands on the other side of a half step; subnormal values have f16's smallest step). The WGSL validates (naga) with both its
+/// rebuild and its per-lookup form called.
+#[test]
+fn an_exported_formula_rebuilds_the_table_measured() {
+    let lut = Lut::embedded();
+    let header = Header::new(lut, "test", Some(Table::Classic));
+    for (name, rational, d) in [
+        ("cheb6", false, 6),
+        ("cheb16-f16", false, 16),
+        ("rational3", true, 3),
+    ] {
+        let e = Encoding::parse(name).unwrap();
+        let source = FormulaSource::new(lut, e).unwrap();
+        let text = formula::c_header(&source, &header);
+        let floats = |array: &str| -> Vec<f64> {
+            c_array(&text, array)
+                .iter()
+                .map(|x| x.trim_end_matches('f').parse().unwrap())
+                .collect()
+        };
+        let (coefficients, ranges) = (floats("g_ltc_formula["), floats("g_ltc_formula_range["));
+        let per_channel = coefficients.len() / SHADER_CHANNELS.len();
+        let decoded = e.decoded(lut);
+        let n = lut.size;
+        for (index, cell) in decoded.cells.iter().enumerate() {
+            let (r, s) = ((index % n) as f64 / 63.0, (index / n) as f64 / 63.0);
+            for (k, &c) in SHADER_CHANNELS.iter().enumerate() {
+                let own = &coefficients[k * per_channel..(k + 1) * per_channel];
+                let (value, rounding) = formula_at(rational, d, own, r, s);
+                let value = value.clamp(ranges[2 * k], ranges[2 * k + 1]);
+                let want = cell.shaded(c);
+                let storage = match e.storage {
+                    // One step: 2⁻¹⁰ of the value, or f16's subnormal step 2⁻²⁴.
+                    Storage::F16 => (want.abs() * 2f64.powi(-10)).max(2f64.powi(-24)),
+                    _ => 0.0,
+                };
+                let tolerance = rounding + 2f64.powi(-24) * want.abs() + storage;
+                assert!(
+                    (value - want).abs() <= tolerance,
+                    "{name} cell {index} {}: {value} against {want}",
+                    c.name()
+                );
+            }
+        }
+        let source = formula::wgsl(&source, &header);
+        let probe = "@compute @workgroup_size(1) fn main() { \
+                     let v = ltc_formula_lookup(0.3, 0.5); let c = ltc_formula_cell(3u, 60u); \
+                     _ = v; _ = c; }";
+        crate::common::validate_wgsl(&format!("{source}\n{probe}"), name);
+    }
 }

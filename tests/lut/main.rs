@@ -4,6 +4,7 @@
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::lut::{Channel, Lut, LutCell};
 
+mod aniso_encoding;
 #[path = "../common/mod.rs"]
 mod common;
 mod export;

@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::Checked;
 use crate::ltc::aniso::AnisoAxes;
+use crate::ltc::aniso::encoded::improper_nodes;
 use crate::ltc::aniso::source::AnisoSource;
 use crate::ltc::lut::{Encoding, Table};
 use crate::tables::{NamedTable, NamedTables, Source};
@@ -135,12 +136,13 @@ impl Tables {
             (Some(_), true) => &self.plain.a,
             _ => &self.plain.b,
         };
-        let mut b_table = encode(b_base, b);
-        // Side B's anisotropic materials keep B's own 4D table, whichever 2D table it reads.
-        b_table.lut.aniso = self.plain.b.lut.aniso.clone();
+        // Side B's anisotropic materials keep B's own 4D table (in B's encoding), whichever
+        // 2D table it reads.
+        let mut b_base = b_base.clone();
+        b_base.lut.aniso = self.plain.b.lut.aniso.clone();
         self.named = NamedTables {
             a: encode(&self.plain.a, a),
-            b: b_table,
+            b: encode(&b_base, b),
         };
         self
     }
@@ -308,14 +310,17 @@ impl super::Lab {
     /// read); cells the encoding turns inside out are said, as the command line says them.
     pub fn use_encoding(&mut self, id: TableId, encoding: Option<Encoding>) {
         let tables = self.tables().with_encoding(id, encoding);
-        let inside_out = tables.get(id).lut.inside_out_cells();
+        let lut = &tables.get(id).lut;
+        let inside_out = lut.inside_out_cells();
+        let improper = improper_nodes(lut.aniso());
         let name = tables.get(id).name.clone();
         self.set(tables);
-        if inside_out > 0 {
+        if inside_out > 0 || improper > 0 {
             self.say(super::Message::note(format!(
                 "{name}: {inside_out} cells have an M^-1 flat or turned inside out (a \
-                 determinant not above 0), where the encoding's error passes the small \
-                 entries near α = 0 or at grazing"
+                 determinant not above 0), and {improper} nodes of its 4D table no longer \
+                 hold a proper lobe, where the encoding's error passes the small entries near \
+                 α = 0 or at grazing"
             )));
         }
     }

@@ -7,6 +7,7 @@
 pub mod anchor;
 pub mod axes;
 pub mod canonical;
+pub mod encoded;
 pub mod exr;
 pub mod fit;
 pub mod lobe;

@@ -98,7 +98,7 @@ impl EncodedTable {
     /// WGSL both).
     fn comment(&self, header: &Header) -> String {
         let lines = self.describe().into_iter().map(|l| format!("// {l}\n"));
-        header.comment("// ") + &lines.collect::<String>()
+        header.origin("// ") + &lines.collect::<String>() + "\n"
     }
 
     /// The lines of what the data is.

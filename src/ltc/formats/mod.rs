@@ -5,6 +5,7 @@
 
 pub mod dds;
 pub mod encoded;
+pub mod formula;
 pub mod js;
 pub mod packing;
 pub mod source;
@@ -281,24 +282,33 @@ impl Header {
         }
     }
 
-    /// The header as comment lines, each starting with `prefix`.
+    /// The header as comment lines, each starting with `prefix`: where the table comes from,
+    /// then ltc_code's packing.
     pub fn comment(&self, prefix: &str) -> String {
+        let packing = [
+            "packing: selfshadow/ltc_code (fit/fitLTC.cpp packTab). Texel (a, t), index a + t*N:",
+            "  ltc_1 = M^-1 / M^-1[1][1] as (m00, m20, m02, m22): M^-1 = mat3(vec3(x, 0, y), vec3(0, 1, 0), vec3(z, 0, w)) (columns)",
+            "  ltc_2 = (magnitude, fresnel, 0, horizon-clipped sphere form factor); any fitted scale is folded into the first two",
+            "  specular = F0 * ltc_2.x + (1 - F0) * ltc_2.y times D(l) = max((M^-1 l).z, 0) |det M^-1| / (pi |M^-1 l|^4), l unit",
+            "lookup: uv = (sqrt(alpha), sqrt(1 - cos theta_o)) * (N - 1)/N + 0.5/N, bilinear, clamp to edge",
+        ];
+        let packing: String = packing.iter().map(|l| format!("{prefix}{l}\n")).collect();
+        self.origin(prefix) + &packing + "\n"
+    }
+
+    /// Where the table comes from, as comment lines: what an encoding's export says before
+    /// its own layout.
+    pub fn origin(&self, prefix: &str) -> String {
         let n = self.size;
         [
             "LTC table for point lights (GGX specular), written by ltc-lab.".to_string(),
             format!("source: {}", self.source),
             format!("fit objective: {}", self.objective),
             format!("size: {n} x {n}, alpha_min: {:e}", self.alpha_min),
-            "packing: selfshadow/ltc_code (fit/fitLTC.cpp packTab). Texel (a, t), index a + t*N:".into(),
-            "  ltc_1 = M^-1 / M^-1[1][1] as (m00, m20, m02, m22): M^-1 = mat3(vec3(x, 0, y), vec3(0, 1, 0), vec3(z, 0, w)) (columns)".into(),
-            "  ltc_2 = (magnitude, fresnel, 0, horizon-clipped sphere form factor); any fitted scale is folded into the first two".into(),
-            "  specular = F0 * ltc_2.x + (1 - F0) * ltc_2.y times D(l) = max((M^-1 l).z, 0) |det M^-1| / (pi |M^-1 l|^4), l unit".into(),
-            "lookup: uv = (sqrt(alpha), sqrt(1 - cos theta_o)) * (N - 1)/N + 0.5/N, bilinear, clamp to edge".into(),
         ]
         .iter()
         .map(|l| format!("{prefix}{l}\n"))
         .collect::<String>()
-            + "\n"
     }
 }
 
@@ -315,8 +325,9 @@ named_enum! {
 
 impl Export {}
 
-/// Writes `lut` as `encoding` gives it (`encoded::EncodedTable`) to the file `out` as a C
-/// header or WGSL; ltc_code's layouts hold floats alone and are refused, as is a formula.
+/// Writes `lut` as `encoding` gives it to the file `out` as a C header or WGSL: a table's
+/// texels (`encoded::EncodedTable`), or a formula's coefficients (`formula::FormulaSource`);
+/// ltc_code's layouts hold floats alone and are refused.
 pub fn export_encoded(
     lut: &Lut,
     header: &Header,
@@ -324,12 +335,18 @@ pub fn export_encoded(
     encoding: crate::ltc::lut::Encoding,
     out: &Path,
 ) -> Result<Vec<PathBuf>> {
-    let table =
-        encoded::EncodedTable::new(lut, encoding).map_err(|e| Error::input("--encode", e))?;
-    let text = match format {
-        Export::C => encoded::c_header(&table, header),
-        Export::Wgsl => encoded::wgsl(&table, header),
-        Export::LtcCodeJs | Export::LtcCodeDds => {
+    let text = match (format, formula::FormulaSource::new(lut, encoding)) {
+        (Export::C, Some(f)) => formula::c_header(&f, header),
+        (Export::Wgsl, Some(f)) => formula::wgsl(&f, header),
+        (Export::C | Export::Wgsl, None) => {
+            let table = encoded::EncodedTable::new(lut, encoding)
+                .map_err(|e| Error::input("--encode", e))?;
+            match format {
+                Export::C => encoded::c_header(&table, header),
+                _ => encoded::wgsl(&table, header),
+            }
+        }
+        (Export::LtcCodeJs | Export::LtcCodeDds, _) => {
             return Err(Error::input(
                 "--encode",
                 format!(

@@ -3,6 +3,7 @@
 //! and the table as that encoding gives it back, so that every measure can shade with what an
 //! engine would read.
 
+use crate::ltc::aniso::encoded::{improper_nodes, with_aniso_stored};
 pub use crate::ltc::lut::channel::SHADER_CHANNELS;
 use crate::ltc::lut::formula::Formula;
 use crate::ltc::lut::{Channel, Lut, LutCell};
@@ -31,7 +32,11 @@ impl Storage {
     /// Bytes of one texel holding every shader channel: f32 and f16 a value each at their
     /// width, 8-bit values a byte each, 10-bit ones three to a 4-byte texel.
     pub fn cell_bytes(self) -> usize {
-        let n = SHADER_CHANNELS.len();
+        self.bytes_of(SHADER_CHANNELS.len())
+    }
+
+    /// Bytes of `n` values in texels of this storage (RGB10A2 texels whole).
+    pub fn bytes_of(self, n: usize) -> usize {
         match self {
             Self::F32 => 4 * n,
             Self::F16 => 2 * n,
@@ -197,7 +202,8 @@ impl Encoding {
     /// (bilinearly, as its sampler would read the full table there), then each value of the
     /// shader's channels stored and read. The errors and `spec.scale` are kept as they were
     /// (the stored magnitudes carry the scale); f32 at the table's own size is `lut` itself.
-    /// A formula's table is its values at the table's own cells, then stored.
+    /// A formula's table is its values at the table's own cells, then stored. The 4D table
+    /// takes the storage alone, at its own grid (`aniso::encoded`).
     pub fn decoded(&self, lut: &Lut) -> Lut {
         let mut out = self.prepared(lut);
         if self.storage == Storage::F32 && self.formula.is_none() {
@@ -212,10 +218,9 @@ impl Encoding {
                 cell.set_shaded(c, v);
             }
         }
-        out
+        with_aniso_stored(out, self.storage)
     }
 
-    /// `decoded`, with what was clamped said in words (`None` where nothing was).
     /// The table before its values are stored: resampled to the encoding's size, or a
     /// formula's values at the table's cells.
     pub fn prepared(&self, lut: &Lut) -> Lut {
@@ -226,7 +231,8 @@ impl Encoding {
         }
     }
 
-    /// A formula's degree lowered to what a small table can be fitted with is said too, and
+    /// `decoded`, with what was clamped said in words (`None` where nothing was). A formula's
+    /// degree lowered to what a small table can be fitted with is said too, and
     /// cells the encoding turns inside out (a formula's ringing, 8 bits' rounding).
     pub fn decoded_saying(&self, lut: &Lut) -> (Lut, Option<String>) {
         let clamped = self.clamped(lut);
@@ -253,6 +259,16 @@ impl Encoding {
                  (determinant ≤ 0), where its error passes the small entries near α → 0 or \
                  grazing; they are shaded as an engine would shade them",
                 self.name()
+            ));
+        }
+        let improper = improper_nodes(decoded.aniso());
+        if improper > 0 {
+            notes.push(format!(
+                "{improper} of the 4D table's {} nodes in {} no longer hold a proper lobe (their \
+                 smallest entries, near α → 0, round away); they are shaded as an engine would \
+                 shade them",
+                decoded.aniso().cells.len(),
+                self.storage.name()
             ));
         }
         let note = (!notes.is_empty()).then(|| notes.join("; "));
@@ -282,7 +298,7 @@ pub fn half_of(v: f64) -> half::f16 {
 }
 
 /// `values` stored in `storage` and read back.
-fn store(storage: Storage, values: &[f64]) -> Vec<f64> {
+pub fn store(storage: Storage, values: &[f64]) -> Vec<f64> {
     match storage {
         Storage::F32 => values.iter().map(|&v| f64::from(v as f32)).collect(),
         Storage::F16 => values.iter().map(|&v| f64::from(half_of(v))).collect(),
