@@ -5,6 +5,7 @@
 mod check;
 mod light;
 mod lists;
+mod table_presets;
 
 use std::path::Path;
 
@@ -19,6 +20,7 @@ pub use check::MIN_NORMAL;
 use check::{check_light, check_radius, check_range, finite, within};
 pub use light::{Light, MIN_RADIUS, RandomLights, SplitMix64, generate_lights};
 use lists::exactly as exact_list;
+pub use table_presets::{ENCODING_FAILURES, EncodingFailure, TABLE_PRESETS};
 
 /// The shipped presets, embedded so that the lab and the benchmarks run from anywhere.
 pub const PRESETS: [(&str, &str); 4] = [
@@ -100,7 +102,7 @@ pub const ANISO_PRESETS: [(&str, &str); 2] = [
 ];
 
 /// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`, `RECT_PRESETS`, `DISK_PRESETS`,
-/// `ANISO_PRESETS`).
+/// `ANISO_PRESETS`, `TABLE_PRESETS`).
 pub fn preset(name: &str) -> Scene {
     let (_, text) = PRESETS
         .iter()
@@ -108,6 +110,7 @@ pub fn preset(name: &str) -> Scene {
         .chain(&RECT_PRESETS)
         .chain(&DISK_PRESETS)
         .chain(&ANISO_PRESETS)
+        .chain(&TABLE_PRESETS)
         .find(|(n, _)| *n == name)
         .expect("a shipped preset");
     Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")

@@ -6,9 +6,10 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use ltc_lab::app::LabApp;
 use ltc_lab::app::lab::part::Checked;
-use ltc_lab::app::lab::{TableId, TableSources, Tables};
+use ltc_lab::app::lab::{SideB, TableId, TableSources, Tables};
 use ltc_lab::ltc::aniso::encoded::stored_in;
 use ltc_lab::ltc::lut::{Encoding, Lut, Storage};
+use ltc_lab::scene::preset;
 
 use crate::harness::{lab, plane_image, plane_state, settle};
 
@@ -91,6 +92,32 @@ fn an_encoding_that_breaks_cells_says_so() {
         notice.text
     );
     assert_eq!(h.state().lab().tables().a().name, "classic as unorm8");
+}
+
+/// Encoding B's first entries load where an encoding fails, as a user picks them: the
+/// near-mirror preset with table A as read against table A in 8 bits on the plane's A | B
+/// tables, and the notice counting what 8 bits break (the 2D table's cells and the 4D
+/// table's nodes).
+#[test]
+fn a_failure_entry_loads_its_scene_with_the_failing_encoding() {
+    let Some(mut h) = lab((1000.0, 900.0), plane_state(10)) else {
+        return;
+    };
+    pick(&mut h, "encoding A", "f16 · 88.0 KB");
+    pick(&mut h, "encoding B", "unorm8: table-mirror");
+    let lab = h.state().lab();
+    assert_eq!(lab.tables().b().name, "classic as unorm8");
+    assert_eq!(lab.material().alpha, preset("table-mirror").material.alpha);
+    assert_eq!(lab.lights().list.len(), preset("table-mirror").lights.len());
+    assert_eq!(lab.tables().encoding(TableId::A), None, "A as read");
+    assert_eq!(lab.tables().b().name, "classic as unorm8");
+    assert_eq!(**lab.side_b(), SideB::TableB);
+    let notice = lab.message().cloned().expect("no notice");
+    assert!(
+        notice.text.contains("153 cells") && notice.text.contains("nodes of its 4D table"),
+        "{}",
+        notice.text
+    );
 }
 
 /// A kept state whose encoding is not one (hand-edited, or from a later version) is said

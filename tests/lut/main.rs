@@ -1,5 +1,7 @@
 //! The LUT file and its sampler: bit-exact EXR round trip, cell values at cell centres,
-//! GPU-style clamping at the edges, and clear errors for broken files.
+//! GPU-style clamping at the edges, and clear errors for broken files; and the table's
+//! encodings (docs/design.md §2.10): storages, formulas, layouts, exports, the 4D table's
+//! storage and the presets where encodings fail.
 
 use ltc_lab::ltc::fit::{FitSettings, fit_table};
 use ltc_lab::ltc::lut::{Channel, Lut, LutCell};
@@ -7,6 +9,7 @@ use ltc_lab::ltc::lut::{Channel, Lut, LutCell};
 mod aniso_encoding;
 #[path = "../common/mod.rs"]
 mod common;
+mod encoding_failures;
 mod export;
 mod formula;
 mod layout;

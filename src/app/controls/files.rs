@@ -8,7 +8,7 @@ use crate::app::ui::widgets::name;
 use crate::ltc::aniso::AnisoAxes;
 use crate::ltc::aniso::source::AnisoSource;
 use crate::ltc::lut::{Encoding, Table};
-use crate::scene::PRESETS;
+use crate::scene::{ENCODING_FAILURES, EncodingFailure, PRESETS};
 use crate::tables::Source;
 
 use super::lights::preset_buttons;
@@ -120,18 +120,22 @@ fn encoding(ui: &mut egui::Ui, lab: &mut Lab, id: TableId) {
             "Shade side A with table A as an engine storing it in this encoding reads it back (docs/design.md §2.10), with the bytes it ships; `ltc-lab lut --encodings` measures each on every light shape"
         }
         TableId::B => {
-            "Compare with table B as this encoding gives it back; while B is the default table, B becomes table A's table in this encoding, so that the A | B split shows one table in two encodings"
+            "Compare with table B as this encoding gives it back; while B is the default table, B becomes table A's table in this encoding, so that the A | B split shows one table in two encodings. Its first entries load a scene where an encoding fails, A as read against B in that encoding"
         }
     };
     let current = lab.tables().encoding(id);
     let mut chosen = current;
+    let mut failure = None;
     egui::ComboBox::from_label(format!("encoding {id:?}"))
         .selected_text(name(current))
         .width(90.0)
-        // Every entry on screen at once (20 rows), none behind a scroll.
         .height(480.0)
         .show_ui(ui, |ui| {
             ui.selectable_value(&mut chosen, None, name(None));
+            // B's failure cases first: the list below them scrolls.
+            if id == TableId::B {
+                failure = failure_entries(ui);
+            }
             for e in offered_encodings(size) {
                 let bytes = format!("{} · {:.1} KB", e.name(), e.bytes(size) as f64 / 1024.0);
                 ui.selectable_value(&mut chosen, Some(e), bytes);
@@ -139,9 +143,28 @@ fn encoding(ui: &mut egui::Ui, lab: &mut Lab, id: TableId) {
         })
         .response
         .on_hover_text(hover);
-    if chosen != current {
+    if let Some(f) = failure {
+        lab.show_encoding_failure(f);
+    } else if chosen != current {
         lab.use_encoding(id, chosen);
     }
+}
+
+/// Encoding B's first entries: the presets where an encoding fails, each loading its scene
+/// with table A against its failing encoding (docs/design.md §2.10).
+fn failure_entries(ui: &mut egui::Ui) -> Option<EncodingFailure> {
+    ui.label("where one fails (a scene):");
+    let mut picked = None;
+    for f in ENCODING_FAILURES {
+        ui.selectable_value(
+            &mut picked,
+            Some(f),
+            format!("{}: {}", f.encoding, f.preset),
+        )
+        .on_hover_text(f.what);
+    }
+    ui.separator();
+    picked
 }
 
 /// The 4D tables anisotropic materials shade with on each side: the lab's or one of I3D

@@ -9,6 +9,7 @@ use crate::ltc::aniso::AnisoAxes;
 use crate::ltc::aniso::encoded::improper_nodes;
 use crate::ltc::aniso::source::AnisoSource;
 use crate::ltc::lut::{Encoding, Table};
+use crate::scene::{EncodingFailure, preset};
 use crate::tables::{NamedTable, NamedTables, Source};
 
 /// Which table a panel reads: A (shaded with) or B (compared with).
@@ -306,6 +307,18 @@ fn encode(table: &NamedTable, encoding: Option<Encoding>) -> NamedTable {
 }
 
 impl super::Lab {
+    /// Shows where an encoding fails: `failure`'s preset, table A as read against table A in
+    /// the failing encoding as side B, on the plane's *A | B tables*.
+    pub fn show_encoding_failure(&mut self, failure: EncodingFailure) {
+        let Ok(encoding) = Encoding::parse(failure.encoding) else {
+            return;
+        };
+        self.use_scene(preset(failure.preset));
+        self.use_encoding(TableId::A, None);
+        self.use_encoding(TableId::B, Some(encoding));
+        self.set(super::SideB::TableB);
+    }
+
     /// Shades side `id` with its table as `encoding` gives it back from now on (`None`: as
     /// read); cells the encoding turns inside out are said, as the command line says them.
     pub fn use_encoding(&mut self, id: TableId, encoding: Option<Encoding>) {
