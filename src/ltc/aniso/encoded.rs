@@ -4,8 +4,8 @@
 //! table's; the 4D table keeps its own grid, as no engine resamples it.
 
 use crate::ltc::aniso::{AnisoCell, AnisoLut};
-use crate::ltc::lut::encoding::store;
-use crate::ltc::lut::{Lut, Storage};
+use crate::ltc::lut::Lut;
+use crate::ltc::lut::storage::{Storage, store};
 
 /// Values a node holds for the shader: the stored matrix's nine and the two magnitudes (the
 /// node's error is the lab's, not shaded).

@@ -9,6 +9,7 @@ mod exr;
 pub mod formula;
 pub mod layout;
 mod sample;
+pub mod storage;
 pub mod taps;
 mod validate;
 
