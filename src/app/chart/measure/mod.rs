@@ -3,6 +3,8 @@
 //! number of lights. Each render is summed in chunks that fit the frame's budget, so that the
 //! window stays live; the result is kept with the lab's state.
 
+mod tasks;
+
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -15,16 +17,11 @@ use crate::gpu::plane::ShaderChecks;
 use crate::gpu::plane_render::{Kept, PlaneRender};
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::target::PendingRead;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
-use crate::ltc::Normalization;
 use crate::ltc::lut::Lut;
-use crate::measure::bench::{DEFAULT_RANGE, PAPER_LIGHTS, bench_scene};
 use crate::metrics::image_error;
-use crate::render::{Frame, LtcRules, Method, RenderSettings, ShapeMethods};
+use crate::render::{Frame, Method, RenderSettings};
 use crate::scene::Scene;
+use tasks::{curve_tasks, method_tasks, shape_tasks};
 
 /// Size of the measured frames: small enough for a CPU driver to finish in seconds.
 pub const MEASURE_SIZE: (usize, usize) = (320, 180);
@@ -262,104 +259,9 @@ impl MeasureJob {
             .set_method_file(&ctx, file.cloned())
             .map_err(|e| e.to_string())?;
         let (w, h) = MEASURE_SIZE;
-        let mut tasks = Vec::new();
-        // The reference shades every light exactly, whatever its shape; the LTC forms shade
-        // lights with a size by the lab's defaults (ltc-disk, ltc-polygon, ltc-disk).
-        let exact = ShapeMethods {
-            point: Method::Brdf,
-            sphere: SphereMethod::Exact,
-            rect: RectMethod::Exact,
-            disk: DiskMethod::Exact,
-        };
-        for (label, method, normalization) in [
-            ("brdf", Method::Brdf, Normalization::Corrected),
-            ("brdf-fast", Method::BrdfFast, Normalization::Corrected),
-            ("ltc", Method::Ltc, Normalization::Corrected),
-            ("ltc-fast", Method::LtcFast, Normalization::Corrected),
-            ("ltc-paper", Method::Ltc, Normalization::PaperLiteral),
-        ] {
-            let single = RenderSettings::single(w, h, method);
-            let a = if method.is_ltc() {
-                single.a
-            } else {
-                ShapeMethods {
-                    point: method,
-                    ..exact
-                }
-            };
-            tasks.push(Task {
-                label: label.into(),
-                method: Some(method),
-                scene: scene.clone(),
-                settings: RenderSettings {
-                    rules: LtcRules {
-                        normalization,
-                        ..LtcRules::default()
-                    },
-                    a,
-                    ..single
-                },
-                curve: None,
-            });
-        }
-        // The method file: each shape by its function where it has one, the rest as the lab.
-        if let Some(f) = file {
-            tasks.push(Task {
-                label: format!("file: {}", f.name),
-                method: Some(Method::File),
-                scene: scene.clone(),
-                settings: RenderSettings::single(w, h, Method::File),
-                curve: None,
-            });
-        }
-        // Each method of each shape the scene holds, its points by ltc-fast and its other
-        // sized lights by the defaults: what that shape's method costs and misses.
-        let fast = RenderSettings::single(w, h, Method::LtcFast);
-        let has = |shape: fn(&Shape) -> bool| scene.lights.iter().any(|l| shape(&l.shape));
-        let mut sized = |label: String, a: ShapeMethods| {
-            tasks.push(Task {
-                label,
-                method: None,
-                scene: scene.clone(),
-                settings: RenderSettings { a, ..fast },
-                curve: None,
-            });
-        };
-        if has(|s| matches!(s, Shape::Sphere { .. })) {
-            for sphere in SphereMethod::ALL.into_iter().skip(1) {
-                sized(
-                    format!("sphere {}", sphere.name()),
-                    ShapeMethods { sphere, ..fast.a },
-                );
-            }
-        }
-        if has(|s| matches!(s, Shape::Rect { .. })) {
-            for rect in RectMethod::ALL.into_iter().skip(1) {
-                sized(
-                    format!("rect {}", rect.name()),
-                    ShapeMethods { rect, ..fast.a },
-                );
-            }
-        }
-        if has(|s| matches!(s, Shape::Disk { .. })) {
-            for disk in DiskMethod::ALL.into_iter().skip(1) {
-                sized(
-                    format!("disk {}", disk.name()),
-                    ShapeMethods { disk, ..fast.a },
-                );
-            }
-        }
-        for method in Method::F32 {
-            for &n in &PAPER_LIGHTS {
-                tasks.push(Task {
-                    label: format!("{} at {n} lights", method.name()),
-                    method: Some(method),
-                    scene: bench_scene(n, Some(DEFAULT_RANGE)),
-                    settings: RenderSettings::single(w, h, method),
-                    curve: Some((method, n)),
-                });
-            }
-        }
+        let mut tasks = method_tasks(scene, file);
+        tasks.extend(shape_tasks(scene));
+        tasks.extend(curve_tasks());
         for t in &tasks {
             renderer
                 .check(&ctx, &t.scene, &t.settings)
