@@ -5,17 +5,20 @@
 //! most, pinned on request; a pixel inspector, shaded on the CPU in f64, with both
 //! radiances, their relative difference and the lights in clipping cases 1 and 2.
 
+mod interaction;
 pub mod paint;
 pub mod pixel_table;
+mod save;
 pub mod shading;
 pub mod sphere_cases;
 pub mod spots;
+mod toolbar;
 
-use egui::{Pos2, Vec2};
+use egui::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::part::Notes;
-use crate::app::lab::{Checked, Exposure, Lab, Lights, LobeView, Selection, SideB};
+use crate::app::lab::{Checked, Lab, SideB};
 use crate::app::panel::Panel;
 use crate::app::plane::paint::{
     Placed, inspect, markers, paint_divider, paint_image, paint_markers, paint_outlines, paint_pin,
@@ -24,13 +27,13 @@ use crate::app::plane::paint::{
 use crate::app::plane::pixel_table::{LightColumn, PinnedLights};
 use crate::app::plane::shading::Shading;
 use crate::app::plane::sphere_cases::SphereCases;
-use crate::app::plane::spots::{free_spot, worst_pixel};
 use crate::app::ui::display::{ShownImage, colour_bar, difference_scale};
 use crate::gpu::GpuContext;
 use crate::light::Shape;
 use crate::render::ShapeMethods;
-use crate::render::{Frame, Method, RenderSettings, View};
-use crate::scene::Light;
+use crate::render::{Method, RenderSettings, View};
+use interaction::image_area;
+use toolbar::{below_plane_note, exposure_slider};
 
 /// The largest image the panel shades (its pixels beyond are upscaled): 960 px wide fills
 /// 20 000 lights in under a minute on a CPU driver (lavapipe, ~0.2 G light-px/s), and in
@@ -282,197 +285,6 @@ impl PlanePanel {
     fn cases_shown(&self, lab: &Lab) -> bool {
         self.state.sphere_cases && sized(lab)
     }
-
-    fn divider_x(&self, rect: egui::Rect) -> f32 {
-        rect.min.x + rect.width() * self.state.divider as f32
-    }
-
-    /// The comparison's switch, the views, adding and removing lights, the worst pixel.
-    fn toolbar(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
-        let (a, b) = side_names(**lab.side_b());
-        let b_name = lab.tables().b().name.clone();
-        lab.edit(|side: &mut SideB| {
-            ui.selectable_value(side, SideB::Brdf, "LTC | BRDF")
-                .on_hover_text("Side B is the exact BRDF (the BRDF form in the side panel)");
-            ui.selectable_value(side, SideB::TableB, "A | B tables")
-                .on_hover_text(format!("Two tables compared: side B is the same LTC form with table B ({b_name}) instead of the BRDF; the difference map is then |L_A − L_B| / L_B"));
-        });
-        ui.separator();
-        for (v, name, hover) in [
-            (
-                View::Split,
-                "split".to_string(),
-                format!("{a} left of the divider, {b} right of it; drag the divider"),
-            ),
-            (
-                View::Diff,
-                "difference".to_string(),
-                format!("|L_{a} − L_{b}| / max(L_{b}, 1% of the mean), log colour scale 0.1%–100%"),
-            ),
-            (View::A, a.to_string(), format!("{a} alone")),
-            (View::B, b.to_string(), format!("{b} alone")),
-        ] {
-            ui.selectable_value(&mut self.state.view, v, name)
-                .on_hover_text(hover);
-        }
-        if ui
-            .small_button("worst pixel")
-            .on_hover_text(format!("Pin the pixel where {a} and {b} differ most: the largest |L_{a} − L_{b}| / max(L_{b}, 1% of the mean) of the finished difference map (shown for it)"))
-            .clicked()
-        {
-            self.state.view = View::Diff;
-            self.worst_pending = true;
-        }
-        self.light_buttons(ui, lab);
-    }
-
-    /// *+ light* where it is seen, and *− light* for the selected one.
-    fn light_buttons(&mut self, ui: &mut egui::Ui, lab: &mut Lab) {
-        if ui
-            .small_button("+ light")
-            .on_hover_text("Add a light where it is seen: over the plane, away from the divider and from the other lights")
-            .clicked()
-        {
-            let size = self.shown.map_or((1600, 900), |i| i.size);
-            let position = free_spot(&lab.scene(), self.state.divider, size);
-            lab.edit(|l: &mut Lights| {
-                l.list.push(Light {
-                    position,
-                    color: [1.0; 3],
-                    intensity: 0.2,
-                    range: None,
-                    shape: Shape::Point,
-                });
-            });
-            let added = lab.lights().list.len().checked_sub(1);
-            lab.edit(|s: &mut Selection| s.light = added);
-        }
-        if let Some(k) = lab.selection().light
-            && ui
-                .small_button("− light")
-                .on_hover_text("Remove the selected light")
-                .clicked()
-        {
-            lab.edit(|l: &mut Lights| {
-                l.list.remove(k);
-            });
-            lab.edit(|s: &mut Selection| s.light = None);
-        }
-    }
-
-    /// Pins the worst pixel once the difference view asked for by *worst pixel* is finished
-    /// (the request goes if the view is left before).
-    fn pin_worst(&mut self, lab: &mut Lab) {
-        if !self.worst_pending {
-            return;
-        }
-        if self.state.view != View::Diff {
-            self.worst_pending = false;
-            return;
-        }
-        if self.shading.in_flight() {
-            return;
-        }
-        let Some(frame) = self.shading.read() else {
-            // The image is on its way back: asked for again next frame (`busy` until then).
-            if !self.shading.read_pending() {
-                self.worst_pending = false;
-            }
-            return;
-        };
-        self.worst_pending = false;
-        if let Some((x, y)) = worst_pixel(&frame) {
-            self.state.pinned = Some([
-                (x as f64 + 0.5) / frame.width as f64,
-                (y as f64 + 0.5) / frame.height as f64,
-            ]);
-            lab.set(Selection::default());
-            lab.edit(|v: &mut LobeView| v.light = None);
-        }
-    }
-
-    /// A press on a marker or the divider starts dragging it; a click selects a light or
-    /// pins the pixel under it; a drag moves what it started on.
-    fn interact(
-        &mut self,
-        response: &egui::Response,
-        lab: &mut Lab,
-        placed: Placed,
-        markers: &[(usize, Pos2)],
-    ) {
-        let near = |pos: Pos2| {
-            markers
-                .iter()
-                .map(|(k, p)| (*k, p.distance(pos)))
-                .filter(|(_, d)| *d < 8.0)
-                .min_by(|a, b| a.1.total_cmp(&b.1))
-                .map(|(k, _)| k)
-        };
-        // Where the press began: by the time egui calls it a drag, the pointer has moved.
-        if response.drag_started()
-            && let Some(pos) = response.ctx.input(|i| i.pointer.press_origin())
-        {
-            let on_divider =
-                self.state.view == View::Split && (pos.x - self.divider_x(placed.rect)).abs() < 8.0;
-            self.drag = match near(pos) {
-                Some(k) => {
-                    lab.edit(|s: &mut Selection| s.light = Some(k));
-                    Some(Drag::Light(k))
-                }
-                None if on_divider => Some(Drag::Divider),
-                None => None,
-            };
-        }
-        if response.clicked()
-            && let Some(pos) = response.interact_pointer_pos()
-        {
-            let hit = near(pos);
-            lab.edit(|s: &mut Selection| s.light = hit);
-            // A click beside the markers pins the pixel under it.
-            if hit.is_none() {
-                let u = (pos - placed.rect.min) / placed.rect.size();
-                self.state.pinned = Some([
-                    f64::from(u.x.clamp(0.0, 1.0)),
-                    f64::from(u.y.clamp(0.0, 1.0)),
-                ]);
-                lab.edit(|v: &mut LobeView| v.light = None);
-            }
-        }
-        if response.dragged()
-            && let Some(pos) = response.interact_pointer_pos()
-        {
-            match self.drag {
-                Some(Drag::Divider) => {
-                    let u = (pos.x - placed.rect.min.x) / placed.rect.width();
-                    self.state.divider = f64::from(u).clamp(0.0, 1.0);
-                }
-                Some(Drag::Light(k)) => drag_light(response, lab, placed, pos, k),
-                None => {}
-            }
-        }
-        if response.drag_stopped() {
-            self.drag = None;
-        }
-    }
-
-    /// Writes the finished image's linear values as EXR (only the path the user named), once
-    /// it is read back: `None` until then.
-    pub fn save_exr(
-        &mut self,
-        path: &std::path::Path,
-        exposure: f64,
-    ) -> Option<Result<String, String>> {
-        if self.shading.in_flight() {
-            return Some(Err(
-                "the image is still being rendered: try again when it is done".into(),
-            ));
-        }
-        match self.shading.read() {
-            Some(frame) => Some(encode_exr(&frame, path, exposure)),
-            None if self.shading.read_pending() => None,
-            None => Some(Err("there is no image to save yet".into())),
-        }
-    }
 }
 
 /// What the plane renders at `size` with the panel's settings `state`: LTC (A) against the
@@ -510,88 +322,6 @@ pub fn render_settings(
         cull: forms.cull,
         ..RenderSettings::single(width, height, forms.ltc)
     }
-}
-
-/// `frame` saved as the EXR the user named.
-fn encode_exr(frame: &Frame, path: &std::path::Path, exposure: f64) -> Result<String, String> {
-    let format = crate::output::ImageFormat::of(path).map_err(|e| e.to_string())?;
-    let bytes = crate::output::frame_bytes(frame, format, exposure);
-    crate::app::files::save(path, &bytes, "image/x-exr")
-}
-
-/// Moves light `k` with the pointer at `pos`: along the plane at its height, or (Shift) up
-/// and down.
-fn drag_light(response: &egui::Response, lab: &mut Lab, placed: Placed, pos: Pos2, k: usize) {
-    let shift = response.ctx.input(|i| i.modifiers.shift);
-    let dy = f64::from(response.drag_delta().y);
-    let (x, y) = placed.pixel(pos);
-    let (width, height) = placed.size;
-    // Keep the height; follow the pointer's ray to that height.
-    let (eye, dir) = lab.scene_camera_ray(x, y, (width, height));
-    let h = lab.stage().plane.half_size * 1.5;
-    lab.edit_light(k, |light| {
-        if shift {
-            light.position[2] -= dy * 0.01;
-            return;
-        }
-        let t = (light.position[2] - eye.z) / dir.z;
-        if dir.z != 0.0 && t > 0.0 {
-            let p = eye + t * dir;
-            light.position[0] = p.x.clamp(-h, h);
-            light.position[1] = p.y.clamp(-h, h);
-        }
-    });
-}
-
-/// The image's place: as large as fits `avail` at 16:9; the render's size in pixels: as
-/// large as the image would be in `unpinned`, the area without the pinned pixel's table, so
-/// that pinning a pixel shows the same render smaller instead of restarting it at a new size
-/// (and the pinned pixel stays the pixel it was).
-fn image_area(ui: &mut egui::Ui, avail: Vec2, unpinned: Vec2) -> (Placed, egui::Response) {
-    let fit = |avail: Vec2| {
-        if avail.x / avail.y > ASPECT {
-            Vec2::new(avail.y * ASPECT, avail.y)
-        } else {
-            Vec2::new(avail.x, avail.x / ASPECT)
-        }
-        .max(Vec2::new(32.0, 18.0))
-    };
-    let (rect, response) = ui.allocate_exact_size(fit(avail), egui::Sense::click_and_drag());
-    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "plane image"));
-    let ppp = ui.ctx().pixels_per_point();
-    let width = (fit(unpinned).x * ppp)
-        .min(MAX_RENDER_WIDTH)
-        .round()
-        .max(16.0) as usize;
-    let height = ((width as f32) / ASPECT).round().max(9.0) as usize;
-    let placed = Placed {
-        rect,
-        size: (width, height),
-    };
-    (placed, response)
-}
-
-/// A black plane is the right answer where every light is below it, but would look like a
-/// fault: say why.
-fn below_plane_note(ui: &mut egui::Ui, lab: &Lab) {
-    let lights = &lab.lights().list;
-    let clipped = lab.rules().clipping.case1;
-    if clipped && !lights.is_empty() && lights.iter().all(|l| l.position[2] <= 0.0) {
-        ui.small("every light is at or below the plane: the case-1 rule (n·l ≤ 0 -> 0) keeps it black; turn the rule off, or see the Clipping panel, for the glow M^-1 would lift");
-    }
-}
-
-/// The scene's exposure: shown radiance and saved PNGs are `L · exposure` before the tone map.
-fn exposure_slider(ui: &mut egui::Ui, lab: &mut Lab) {
-    // 1/64..64: six stops each way covers paper-100 (peaks near 1) down to the clipping
-    // scenes' faint light without leaving the slider's fine range.
-    let [lo, hi] = crate::app::lab::parts::EXPOSURE_RANGE;
-    lab.edit(|e: &mut Exposure| ui.add(
-        egui::Slider::new(&mut e.0, lo..=hi)
-            .logarithmic(true)
-            .text("exposure"),
-    )
-    .on_hover_text("Display only: each pixel shows L · exposure through the tone map x/(1+x) and sRGB; it does not restart the render. Saved PNGs use it, EXRs keep L. The difference view has its own fixed scale"));
 }
 
 /// What sides A and B of the plane are called.
