@@ -14,12 +14,12 @@ use egui::Color32;
 use serde::{Deserialize, Serialize};
 
 use crate::app::chart::measure::{MEASURE_SIZE, MeasureJob, Measurement, REPEATS};
-pub use crate::app::chart::plots::decade_span;
+pub use crate::app::chart::plots::{decade_span, speed_ratio};
 use crate::app::chart::plots::{fps_plot, time_error_plot};
 use crate::app::chart::studies::{ShippedStudy, reference_study};
 use crate::app::chart::work_table::work_table;
 use crate::app::files::Purpose;
-use crate::app::lab::{Checked, Forms, Lab, Message, Request};
+use crate::app::lab::{Checked, Lab, Message, Request};
 use crate::app::panel::Panel;
 use crate::app::plane::shading::FRAME_BUDGET_MS;
 use crate::gpu::work::{Work, work_per_light};
@@ -225,22 +225,4 @@ impl ChartPanel {
             Err(e) => self.error = Some(e),
         }
     }
-}
-
-/// The lab's LTC and BRDF forms' `Measurement::fps_ratios`, in words: the paper's Table 1 comparison.
-pub fn speed_ratio(m: &Measurement, forms: &Forms) -> Option<String> {
-    let (ltc, brdf, ratios) = m.fps_ratios(forms.ltc, forms.brdf)?;
-    let ratios: Vec<String> = ratios
-        .iter()
-        // Plain counts: a thin space between thousands is where a line would break.
-        .map(|(n, r)| format!("×{r:.2} at {n} lights"))
-        .collect();
-    (!ratios.is_empty()).then(|| {
-        format!(
-            "LTC/BRDF speed ({} over {}): {}",
-            ltc.name(),
-            brdf.name(),
-            ratios.join(", ")
-        )
-    })
 }

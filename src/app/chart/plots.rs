@@ -8,7 +8,6 @@ use crate::app::chart::markers::{
     Entry, PAPER_BRDF_COLOUR, PAPER_LTC_COLOUR, legend, method_colour, point_marker,
 };
 use crate::app::chart::measure::{Measurement, Point};
-use crate::app::chart::speed_ratio;
 use crate::app::lab::Forms;
 use crate::app::ui::axes::log_axis;
 use crate::colormap::{round_sig, short_number};
@@ -209,4 +208,22 @@ pub(super) fn log_reading(pos: &egui_plot::HoverPosition<'_>, x: &str, y: &str) 
         )),
         egui_plot::HoverPosition::Elsewhere { .. } => None,
     }
+}
+
+/// The lab's LTC and BRDF forms' `Measurement::fps_ratios`, in words: the paper's Table 1 comparison.
+pub fn speed_ratio(m: &Measurement, forms: &Forms) -> Option<String> {
+    let (ltc, brdf, ratios) = m.fps_ratios(forms.ltc, forms.brdf)?;
+    let ratios: Vec<String> = ratios
+        .iter()
+        // Plain counts: a thin space between thousands is where a line would break.
+        .map(|(n, r)| format!("×{r:.2} at {n} lights"))
+        .collect();
+    (!ratios.is_empty()).then(|| {
+        format!(
+            "LTC/BRDF speed ({} over {}): {}",
+            ltc.name(),
+            brdf.name(),
+            ratios.join(", ")
+        )
+    })
 }
