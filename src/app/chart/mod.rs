@@ -137,7 +137,9 @@ impl ChartPanel {
             None => {
                 if ui
                     .button("measure")
-                    .on_hover_text(format!("Times every method on the current scene at {}×{} (median of {REPEATS} renders, timestamp queries) and its error against the exact BRDF; then fps at 100–5000 lights. Each render is summed over frames within the frame budget, so the window stays live", MEASURE_SIZE.0, MEASURE_SIZE.1))
+                    .on_hover_text(format!("Times every method on the current scene at {}×{} (median of {REPEATS} renders, timestamp \
+                        queries) and its error against the exact BRDF; then fps at 100–5000 lights. Each render \
+                        is summed over frames within the frame budget, so the window stays live", MEASURE_SIZE.0, MEASURE_SIZE.1))
                     .clicked()
                 {
                     self.start(lab);

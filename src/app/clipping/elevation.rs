@@ -68,7 +68,9 @@ impl ElevationView {
             });
         let (theta_o, alpha) = (lab.lobe_view().theta_o_deg, lab.alpha());
         ui.add(egui::Slider::new(&mut self.sigma_deg, 0.0..=MAX_SIGMA_DEG).text("sphere σ (°)"))
-            .on_hover_text("The light's angular radius: 0 is the paper's point light; above it a sphere, its exact integral over the cap against the point formula, the LTC disk and the representative point (docs/design.md §4.9)");
+            .on_hover_text("The light's angular radius: 0 is the paper's point light; above it a sphere, its exact \
+                integral over the cap against the point formula, the LTC disk and the representative \
+                point (docs/design.md §4.9)");
         if self.sigma_deg > 0.0 {
             self.show_sphere(ui, lab, which);
             return;
@@ -114,7 +116,9 @@ impl ElevationView {
                 });
         let (theta_o, alpha) = (lab.lobe_view().theta_o_deg, lab.alpha());
         ui.small(format!(
-            "a sphere of σ = {sigma:.1}° over its centre's elevation at θo = {theta_o:.1}°, α = {alpha:.4}, specular lobe, table {which:?} (eq. 30's rules); error Σ|method − exact| / Σ exact per band:"
+            "a sphere of σ = {sigma:.1}° over its centre's elevation at θo = {theta_o:.1}°, α = \
+                {alpha:.4}, specular lobe, table {which:?} (eq. 30's rules); error Σ|method − exact| / Σ \
+                exact per band:"
         ));
         for e in errors {
             let cells: Vec<String> = APPROXIMATIONS

@@ -113,11 +113,13 @@ impl ClippingPanel {
             [
                 (
                     "case 1 rule (n·l ≤ 0 -> 0)",
-                    "The lab's rule (the side panel's \"clip case 1\"). Off: the light below the plane is lifted above the horizon by M^-1 and the LTC glows (c), while the BRDF (d) stays black",
+                    "The lab's rule (the side panel's \"clip case 1\"). Off: the light below the plane is \
+                        lifted above the horizon by M^-1 and the LTC glows (c), while the BRDF (d) stays black",
                 ),
                 (
                     "case 2 rule ((M^-1 l).z ≤ 0 -> 0)",
-                    "The lab's rule (the side panel's \"clip case 2\"). Off: a light above the horizon that M^-1 pushes below contributes negative light (blue)",
+                    "The lab's rule (the side panel's \"clip case 2\"). Off: a light above the horizon that \
+                        M^-1 pushes below contributes negative light (blue)",
                 ),
             ],
         );
@@ -133,7 +135,8 @@ impl ClippingPanel {
         )
         .on_hover_text("Table B, the other fit");
         ui.toggle_value(&mut self.state.elevation_first, "elevation on top")
-            .on_hover_text("The elevation view (one light's error over its height above the surface, by band) above the Figure 2 pictures instead of under them");
+            .on_hover_text("The elevation view (one light's error over its height above the surface, by band) above \
+                the Figure 2 pictures instead of under them");
         if ui
             .small_button("reset")
             .on_hover_text("The presets' α and lights")
@@ -463,7 +466,9 @@ fn class_hover(case: ClipCase) -> &'static str {
     match case {
         ClipCase::Visible => "Above the horizon before and after M^-1: shaded as fitted",
         ClipCase::Lifted => {
-            "Below the horizon but lifted above it by M^-1 (of either lobe, specular or diffuse): glows unless the case-1 rule clips it. The other lobe may stay below: with both rules off, that part is negative"
+            "Below the horizon but lifted above it by M^-1 (of either lobe, specular or diffuse): \
+                glows unless the case-1 rule clips it. The other lobe may stay below: with both rules \
+                off, that part is negative"
         }
         ClipCase::PushedBelow => {
             "Above the horizon but pushed below by M^-1 (of either lobe): negative light unless the case-2 rule clips it"

@@ -57,8 +57,10 @@ pub(super) fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState)
         for (t, hover) in [
             (Table::Classic, "ltc_code's fit (luts/ltc.exr): made for area lights' integrals"),
             (Table::Point, "The point-light fit (luts/ltc_point.exr): minimizes ∫|n·D − f·cos| / ∫ f·cos, what one point light sees"),
-            (Table::Arrival, "The arrival fit (luts/ltc_arrival.exr): the point-light objective weighted by where lights above a plane arrive from, the horizon included (the arrival-fit remedy)"),
-            (Table::Constrained, "The constrained fit (luts/ltc_constrained.exr): the point-light objective with m20 = 0, so M^-1 never carries a light across the horizon (the constrained-fit remedy)"),
+            (Table::Arrival, "The arrival fit (luts/ltc_arrival.exr): the point-light objective weighted by where \
+                lights above a plane arrive from, the horizon included (the arrival-fit remedy)"),
+            (Table::Constrained, "The constrained fit (luts/ltc_constrained.exr): the point-light objective with m20 = 0, \
+                so M^-1 never carries a light across the horizon (the constrained-fit remedy)"),
         ] {
             // A shipped table is lit only while no file shades instead of it.
             let chosen = lab.tables().a().source == Source::Shipped(t);
@@ -77,13 +79,16 @@ pub(super) fn table(ui: &mut egui::Ui, lab: &mut Lab, files: &mut ControlsState)
         // A browser picks the file instead.
         if !PICKS {
             let field = ui.add(egui::TextEdit::singleline(&mut files.lut_path).desired_width(120.0).hint_text("embedded LUT"))
-                .on_hover_text("An LTC table: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
+                .on_hover_text("An LTC table: .exr as `ltc-lab fit` writes it, ltc_code's ltc.js (or three.js's copy), \
+                    or its ltc_1.dds/ltc_2.dds (either file or their directory); empty for the embedded one");
             name(ui, &field, "table file");
         }
-        if ui.small_button("use LUT").on_hover_text("Shade with the table named on the left (table A), or one dropped on the window; a missing or broken file is reported here and the current table stays").clicked() {
+        if ui.small_button("use LUT").on_hover_text("Shade with the table named on the left (table A), or one dropped on the window; a \
+            missing or broken file is reported here and the current table stays").clicked() {
             lab.request(Request::Open(Purpose::Table, files.lut_path.clone()));
         }
-        if ui.small_button("as B").on_hover_text("Make the table named on the left table B, the other fit: the lobe overlay, the matrix panel and the plane's A | B comparison show it beside table A").clicked() {
+        if ui.small_button("as B").on_hover_text("Make the table named on the left table B, the other fit: the lobe overlay, the matrix \
+            panel and the plane's A | B comparison show it beside table A").clicked() {
             lab.request(Request::Open(Purpose::TableB, files.lut_path.clone()));
         }
     });
@@ -117,10 +122,15 @@ fn encoding(ui: &mut egui::Ui, lab: &mut Lab, id: TableId) {
     let name = |e: Option<Encoding>| e.map_or("as read".to_string(), |e| e.name());
     let hover = match id {
         TableId::A => {
-            "Shade side A with table A as an engine storing it in this encoding reads it back (docs/design.md §2.10), with the bytes it ships; `ltc-lab lut --encodings` measures each on every light shape"
+            "Shade side A with table A as an engine storing it in this encoding reads it back \
+                (docs/design.md §2.10), with the bytes it ships; `ltc-lab lut --encodings` measures each \
+                on every light shape"
         }
         TableId::B => {
-            "Compare with table B as this encoding gives it back; while B is the default table, B becomes table A's table in this encoding, so that the A | B split shows one table in two encodings. Its first entries load a scene where an encoding fails, A as read against B in that encoding"
+            "Compare with table B as this encoding gives it back; while B is the default table, B \
+                becomes table A's table in this encoding, so that the A | B split shows one table in two \
+                encodings. Its first entries load a scene where an encoding fails, A as read against B \
+                in that encoding"
         }
     };
     let current = lab.tables().encoding(id);

@@ -50,7 +50,10 @@ pub(super) fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.horizontal(|ui| {
         if ui
             .add(egui::Slider::new(&mut count, 0..=max).logarithmic(true).text("lights"))
-            .on_hover_text(format!("Regenerates the lights with the seeded generator (replaces the current ones): N point lights over the plane, heights 0.05–0.6, range 2, paper-100's intensities (past 100 lights scaled down so that the total power stays paper-100's). At most {max} here: {}", if max < MAX_LIGHT_SLIDER { "this adapter's limit" } else { "the slider's" }))
+            .on_hover_text(format!("Regenerates the lights with the seeded generator (replaces the current ones): N point \
+                lights over the plane, heights 0.05–0.6, range 2, paper-100's intensities (past 100 \
+                lights scaled down so that the total power stays paper-100's). At most {max} here: {}",
+                if max < MAX_LIGHT_SLIDER { "this adapter's limit" } else { "the slider's" }))
             .changed()
         {
             lab.set_light_count(count);
@@ -62,7 +65,8 @@ pub(super) fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
     }
     lab.edit(|f: &mut Forms| {
         ui.checkbox(&mut f.cull, "cull by range")
-            .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. The image is the same to the bit; with short ranges it is much faster")
+            .on_hover_text("Tiled culling: each 16×16 tile of the plane sums only the lights whose range reaches it. \
+                The image is the same to the bit; with short ranges it is much faster")
     });
     egui::CollapsingHeader::new("lights with a size")
         .id_salt("sized lights")
@@ -171,7 +175,10 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
                 .smallest_positive(RADIUS_RANGE[0])
                 .text("radius r"),
         )
-        .on_hover_text("Every light a sphere of radius r, lighting a distant point as its point light does (radiance I/(π r²)); 0 keeps each light's own radius (absent = a point)");
+        .on_hover_text(
+            "Every light a sphere of radius r, lighting a distant point as its point light does \
+            (radiance I/(π r²)); 0 keeps each light's own radius (absent = a point)",
+        );
         explain(
             ui,
             if o.radius > 0.0 {
@@ -244,7 +251,9 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
             let label = ui.label("r");
             ui.add(egui::DragValue::new(radius).speed(0.004).range(RADIUS_RANGE[0]..=RADIUS_RANGE[1]).max_decimals(4))
                 .labelled_by(label.id)
-                .on_hover_text("The disk's radius, 0.0001 to 1 (a value typed beyond is brought into that range): it keeps its normal and its intensity, so a larger disk lights a distant point alike and is dimmer per area");
+                .on_hover_text("The disk's radius, 0.0001 to 1 (a value typed beyond is brought into that range): it \
+                    keeps its normal and its intensity, so a larger disk lights a distant point alike and is \
+                    dimmer per area");
             return;
         }
         // The shape by its radius: 0 a point, more a sphere.

@@ -50,7 +50,8 @@ fn anisotropic_switch(ui: &mut egui::Ui, m: &mut Material) {
     let mut anisotropic = m.alpha_y.is_some();
     if ui
         .checkbox(&mut anisotropic, "anisotropic")
-        .on_hover_text("Brushed metal: α_x along the tangent, α_y along the bitangent, shaded with the 4D table (table A's, and B's on side B); off, one α and the 2D table as before")
+        .on_hover_text("Brushed metal: α_x along the tangent, α_y along the bitangent, shaded with the 4D table \
+            (table A's, and B's on side B); off, one α and the 2D table as before")
         .changed()
     {
         // Starts stretched along the tangent, so that the change is seen at once.
@@ -61,8 +62,15 @@ fn anisotropic_switch(ui: &mut egui::Ui, m: &mut Material) {
 /// One α while the material is isotropic; α_x, α_y and the tangent's angle once it is not.
 fn roughness(ui: &mut egui::Ui, m: &mut Material) {
     let Some(alpha_y) = m.alpha_y.as_mut() else {
-        ui.add(egui::Slider::new(&mut m.alpha, 1e-3..=1.0).logarithmic(true).text("α"))
-            .on_hover_text("GGX α: D = α² / (π ((n·h)²(α²−1)+1)²), Λ = (−1+sqrt(1+α² tan²θ))/2; also the LUT column (r = sqrt α) the LTC comes from");
+        ui.add(
+            egui::Slider::new(&mut m.alpha, 1e-3..=1.0)
+                .logarithmic(true)
+                .text("α"),
+        )
+        .on_hover_text(
+            "GGX α: D = α² / (π ((n·h)²(α²−1)+1)²), Λ = (−1+sqrt(1+α² tan²θ))/2; also the LUT \
+                 column (r = sqrt α) the LTC comes from",
+        );
         let mut r = m.alpha.sqrt();
         if ui
             .add(egui::Slider::new(&mut r, 0.0316..=1.0).text("roughness r = √α"))

@@ -81,7 +81,8 @@ fn horizon_remedy(ui: &mut egui::Ui, lab: &mut Lab) {
             }
         })
         .response
-        .on_hover_text("What LTC does for lights near the horizon, where eq. 30 is wrong by half: the clipping panel plots one light over its elevation and each band's error");
+        .on_hover_text("What LTC does for lights near the horizon, where eq. 30 is wrong by half: the clipping \
+            panel plots one light over its elevation and each band's error");
     if let Some(h) = chosen.filter(|&h| h != current) {
         lab.use_horizon(h);
     }

@@ -369,7 +369,9 @@ impl Lab {
             *part.value_mut() = kept;
             part.touch();
             self.say(Message::error(
-                "a side named the method file `file`, which is not loaded: a link, a lesson or the stored state never carries shader code. Load it with load method (or drop the .wgsl) to shade with it".to_string(),
+                "a side named the method file `file`, which is not loaded: a link, a lesson or the stored \
+                    state never carries shader code. Load it with load method (or drop the .wgsl) to shade \
+                    with it".to_string(),
             ));
         }
     }

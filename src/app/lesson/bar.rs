@@ -353,7 +353,8 @@ impl LessonBar {
                 ui.horizontal(|ui| {
                     if ui
                         .button("add step")
-                        .on_hover_text("A step after this one, of the lab as it is now (its view, as share view writes it), showing the panel shown alone or this step's panels")
+                        .on_hover_text("A step after this one, of the lab as it is now (its view, as share view writes it), \
+                            showing the panel shown alone or this step's panels")
                         .clicked()
                     {
                         action = Some(Action::AddStep);
@@ -374,7 +375,8 @@ impl LessonBar {
                     if ui.button("save lesson").on_hover_text("Write the lesson to the file named on the left (a download in a browser)").clicked() {
                         action = Some(Action::Save(PathBuf::from(w.path.trim()), w.named));
                     }
-                    if ui.button("load lesson").on_hover_text("Open the lesson in the file named on the left, or a shipped lesson by its name (paper, polygon); a browser picks a file; or drop a .lesson.toml on the window").clicked() {
+                    if ui.button("load lesson").on_hover_text("Open the lesson in the file named on the left, or a shipped lesson by its name (paper, \
+                        polygon); a browser picks a file; or drop a .lesson.toml on the window").clicked() {
                         action = Some(Action::Load(w.path.trim().to_string()));
                     }
                 });

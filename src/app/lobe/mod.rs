@@ -102,7 +102,9 @@ impl Panel for LobePanel {
         );
         let (rect, response) = ui.allocate_exact_size(size, egui::Sense::drag());
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "lobe view"));
-        let response = response.on_hover_text("Drag to orbit. Orange: the exact lobe f·cos; blue: the LTC n·D. White: the normal, yellow: the view, red/green/blue: the LTC's frame (columns of M); magenta and cyan: the pinned pixel's light ω (or rect P) and its image under M^-1");
+        let response = response.on_hover_text("Drag to orbit. Orange: the exact lobe f·cos; blue: the LTC n·D. White: the normal, \
+            yellow: the view, red/green/blue: the LTC's frame (columns of M); magenta and cyan: the \
+            pinned pixel's light ω (or rect P) and its image under M^-1");
         if response.dragged() {
             let d = response.drag_delta();
             self.state.orbit_yaw += d.x * 0.01;
@@ -200,7 +202,8 @@ impl LobePanel {
                     .on_hover_text("Burley fd·cos with c = 1 against n_d·D_d");
             });
             ui.checkbox(&mut st.overlay_table_b, format!("table B ({b_name})"))
-                .on_hover_text("Overlay table B's LTC (green): by default the other shipped table (the point-light fit over the classic one, or the reverse); \"as B\" in the side panel loads another");
+                .on_hover_text("Overlay table B's LTC (green): by default the other shipped table (the point-light fit \
+                    over the classic one, or the reverse); \"as B\" in the side panel loads another");
             ui.checkbox(&mut st.colour_difference, "difference")
                 .on_hover_text("Colour the unit sphere by n·D − f·cos in 1/sr, the slice plot's units (orange: LTC too bright, blue: too dark)");
         });

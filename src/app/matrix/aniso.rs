@@ -109,14 +109,16 @@ impl AnisoSlice {
         ui.add(egui::Slider::new(&mut self.ratio, 0.0..=1.0).text("α_y / α_x"))
             .on_hover_text("The slice's third axis: α_y = max(ratio · α_x, α_min) at every point");
         ui.add(egui::Slider::new(&mut self.phi_deg, 0.0..=90.0).text("slice φo (°)"))
-            .on_hover_text("The slice's fourth axis: the view's azimuth from the tangent (the tables fold every other azimuth onto 0°…90° by the lobe's mirror symmetries)");
+            .on_hover_text("The slice's fourth axis: the view's azimuth from the tangent (the tables fold every \
+                other azimuth onto 0°…90° by the lobe's mirror symmetries)");
         let ctx = ui.ctx().clone();
         let inputs = (lab.tables(), Own((self.ratio, self.phi_deg)));
         let maps = self.maps.get(inputs, |(t, Own(axes))| {
             SliceMaps::new(aniso_of(t), axes, &ctx)
         });
         ui.small(format!(
-            "each map: x: √(α_x − α_min) from α_min to 1, y (down): θo from 0° to {:.0}° (by √(1 − cos θo)); the lab table's nodes every {} points",
+            "each map: x: √(α_x − α_min) from α_min to 1, y (down): θo from 0° to {:.0}° (by \
+             √(1 − cos θo)); the lab table's nodes every {} points",
             THETA_MAX.to_degrees(),
             (SLICE - 1) / 7
         ));
@@ -229,7 +231,8 @@ fn material_matrices(ui: &mut egui::Ui, lab: &Lab) {
         for (t, table) in tables.iter().enumerate() {
             let m = table.ltc(point.alpha, view).cos_from_brdf;
             let title = format!("M^-1, {} 4D table, error {:.1}%", ["A", "B"][t], 100.0 * errors[t]);
-            matrix(ui, &title, m, "cos_from_brdf in the tangent frame: maps a lobe direction to the clamped-cosine domain; a full 3×3 matrix, read from the 4D table's 16 nodes about this point");
+            matrix(ui, &title, m, "cos_from_brdf in the tangent frame: maps a lobe direction to the clamped-cosine domain; \
+                a full 3×3 matrix, read from the 4D table's 16 nodes about this point");
             ui.add_space(12.0);
         }
     });

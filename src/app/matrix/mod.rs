@@ -142,7 +142,9 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
         (
             "M^-1 at (θo, α), bilinear (÷ middle)",
             inv,
-            "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it divided by its middle element, and this is the four cells about (θo, α) interpolated as the shader does",
+            "cos_from_brdf: maps a lobe direction to the clamped-cosine domain; the LUT stores it \
+                divided by its middle element, and this is the four cells about (θo, α) interpolated as \
+                the shader does",
         ),
         (
             "M (its inverse)",
@@ -174,7 +176,9 @@ fn cell_readout(ui: &mut egui::Ui, lab: &Lab) {
         ltc.scale,
         100.0 * err
     ))
-    .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4)");
+    .on_hover_text("norm = ∫ f·cos (the albedo, F = 1 / c = 1); fresnel = ∫ (1 − v·h)⁵ f·cos; scale = the \
+        point fit's factor on the magnitude (1 in the classic table); error = ∫|s·n·D − f·cos| / \
+        ∫ f·cos (docs/design.md §4)");
     both_tables(ui, lab);
 }
 
@@ -197,7 +201,9 @@ fn both_tables(ui: &mut egui::Ui, lab: &Lab) {
                 scale,
                 100.0 * t.get(e)
             ))
-            .on_hover_text("Table A (the one shaded with) and table B (the other fit: the other shipped table, or one loaded with \"as B\") at this (θo, α), bilinear; error is each table's pointwise error (docs/design.md §4) of this lobe");
+            .on_hover_text("Table A (the one shaded with) and table B (the other fit: the other shipped table, or \
+                one loaded with \"as B\") at this (θo, α), bilinear; error is each table's pointwise \
+                error (docs/design.md §4) of this lobe");
         }
     });
 }
@@ -395,12 +401,14 @@ impl MatrixPanel {
                     for objective in Objective::ALL {
                         let what = match objective {
                             Objective::LtcCode => "ltc_code's fit (Nelder–Mead on m00, m22, m02 from 32² strata of both distributions, |·|³ error)",
-                            Objective::Point => "the point fit (Nelder–Mead on m00, m02, m20, m22 and the specular scale, relative L1 error by a 64² quadrature that follows the lobe, three restarts)",
+                            Objective::Point => "the point fit (Nelder–Mead on m00, m02, m20, m22 and the specular scale, relative L1 \
+                                error by a 64² quadrature that follows the lobe, three restarts)",
                         };
                         let made = if objective == made_by { " Table A minimizes this objective." } else { "" };
                         if ui
                             .add(egui::Button::new(objective.name()).selected(objective == made_by))
-                            .on_hover_text(format!("Runs {what} on the nearest cell from the stored cell's parameters, live; then compares stored and refitted lobes by the same pointwise error.{made}"))
+                            .on_hover_text(format!("Runs {what} on the nearest cell from the stored cell's parameters, live; then compares \
+                                stored and refitted lobes by the same pointwise error.{made}"))
                             .clicked()
                         {
                             self.refit = Some(Refit::start(lobe, cell, lut, objective));
@@ -468,13 +476,16 @@ fn refit_result(ui: &mut egui::Ui, r: &RefitResult) {
         .on_hover_text("The point fit's factor on the specular magnitude (spec.scale)");
     }
     ui.label(format!(
-            "pointwise error: stored {:.2}%, refitted {:.2}% ({}: {} iterations, {how})",
-            100.0 * r.stored_error,
-            100.0 * r.error,
-            r.objective.name(),
-            r.iterations
-        ))
-        .on_hover_text("∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4), both lobes measured alike with 64² strata from both distributions, whichever objective the refit minimized");
+        "pointwise error: stored {:.2}%, refitted {:.2}% ({}: {} iterations, {how})",
+        100.0 * r.stored_error,
+        100.0 * r.error,
+        r.objective.name(),
+        r.iterations
+    ))
+    .on_hover_text(
+        "∫|s·n·D − f·cos| / ∫ f·cos (docs/design.md §4), both lobes measured alike with 64² \
+            strata from both distributions, whichever objective the refit minimized",
+    );
 }
 
 /// The refit's objective per iteration, on a log axis.

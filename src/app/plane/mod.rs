@@ -125,7 +125,8 @@ impl Panel for PlanePanel {
                 .on_hover_text("The GPU milliseconds in the progress line; off for a slide or a screenshot that should not change from run to run");
             if sized(lab) {
                 ui.checkbox(&mut self.state.sphere_cases, "sphere cases")
-                    .on_hover_text("Colour each pixel by where its lights with a size are: above the surface, below it, cut by its horizon, or around the point (the failure cases of lights with a size)");
+                    .on_hover_text("Colour each pixel by where its lights with a size are: above the surface, below it, cut \
+                        by its horizon, or around the point (the failure cases of lights with a size)");
             }
         });
         progress_line(ui, self.shading.progress(), !self.state.show_gpu_times);

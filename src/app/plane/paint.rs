@@ -73,7 +73,9 @@ pub fn progress_line(ui: &mut egui::Ui, p: &Progress, hide_timings: bool) {
     // moved the image, and a new image size restarts the render.
     let line = egui::Label::new(egui::RichText::new(text).small()).truncate();
     ui.add(line).on_hover_text(format!(
-        "The image is summed over frames in chunks of lights, each within {FRAME_BUDGET_MS:.0} ms (GPU timestamp queries; the wall clock on a CPU driver), so that the window never waits for it; a change restarts it"
+        "The image is summed over frames in chunks of lights, each within {FRAME_BUDGET_MS:.0} ms \
+            (GPU timestamp queries; the wall clock on a CPU driver), so that the window never waits \
+            for it; a change restarts it"
     ));
 }
 

@@ -407,7 +407,8 @@ fn readout(
                 short_number(a),
                 short_number(b),
             ),
-            "Side A against the same LTC form with table B, the rules in force, in f64 on the CPU (a method file's values on the GPU); it updates with every change",
+            "Side A against the same LTC form with table B, the rules in force, in f64 on the CPU (a \
+                method file's values on the GPU); it updates with every change",
         )
     } else {
         (
@@ -416,7 +417,8 @@ fn readout(
                 short_number(a),
                 short_number(b),
             ),
-            "Side A (LTC with table A and the rules in force, in f64 on the CPU; a method file's sum over the lights, on the GPU) against the exact BRDF in f64; it updates with every change",
+            "Side A (LTC with table A and the rules in force, in f64 on the CPU; a method file's sum \
+                over the lights, on the GPU) against the exact BRDF in f64; it updates with every change",
         )
     };
     ui.horizontal_wrapped(|ui| {

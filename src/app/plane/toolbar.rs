@@ -17,7 +17,8 @@ impl PlanePanel {
             ui.selectable_value(side, SideB::Brdf, "LTC | BRDF")
                 .on_hover_text("Side B is the exact BRDF (the BRDF form in the side panel)");
             ui.selectable_value(side, SideB::TableB, "A | B tables")
-                .on_hover_text(format!("Two tables compared: side B is the same LTC form with table B ({b_name}) instead of the BRDF; the difference map is then |L_A − L_B| / L_B"));
+                .on_hover_text(format!("Two tables compared: side B is the same LTC form with table B ({b_name}) instead of the \
+                    BRDF; the difference map is then |L_A − L_B| / L_B"));
         });
         ui.separator();
         for (v, name, hover) in [
@@ -39,7 +40,8 @@ impl PlanePanel {
         }
         if ui
             .small_button("worst pixel")
-            .on_hover_text(format!("Pin the pixel where {a} and {b} differ most: the largest |L_{a} − L_{b}| / max(L_{b}, 1% of the mean) of the finished difference map (shown for it)"))
+            .on_hover_text(format!("Pin the pixel where {a} and {b} differ most: the largest |L_{a} − L_{b}| / max(L_{b}, 1% \
+                of the mean) of the finished difference map (shown for it)"))
             .clicked()
         {
             self.state.view = View::Diff;
@@ -120,7 +122,10 @@ pub(super) fn below_plane_note(ui: &mut egui::Ui, lab: &Lab) {
     let lights = &lab.lights().list;
     let clipped = lab.rules().clipping.case1;
     if clipped && !lights.is_empty() && lights.iter().all(|l| l.position[2] <= 0.0) {
-        ui.small("every light is at or below the plane: the case-1 rule (n·l ≤ 0 -> 0) keeps it black; turn the rule off, or see the Clipping panel, for the glow M^-1 would lift");
+        ui.small(
+            "every light is at or below the plane: the case-1 rule (n·l ≤ 0 -> 0) keeps it black; \
+            turn the rule off, or see the Clipping panel, for the glow M^-1 would lift",
+        );
     }
 }
 
@@ -129,10 +134,16 @@ pub(super) fn exposure_slider(ui: &mut egui::Ui, lab: &mut Lab) {
     // 1/64..64: six stops each way covers paper-100 (peaks near 1) down to the clipping
     // scenes' faint light without leaving the slider's fine range.
     let [lo, hi] = crate::app::lab::parts::EXPOSURE_RANGE;
-    lab.edit(|e: &mut Exposure| ui.add(
-        egui::Slider::new(&mut e.0, lo..=hi)
-            .logarithmic(true)
-            .text("exposure"),
-    )
-    .on_hover_text("Display only: each pixel shows L · exposure through the tone map x/(1+x) and sRGB; it does not restart the render. Saved PNGs use it, EXRs keep L. The difference view has its own fixed scale"));
+    lab.edit(|e: &mut Exposure| {
+        ui.add(
+            egui::Slider::new(&mut e.0, lo..=hi)
+                .logarithmic(true)
+                .text("exposure"),
+        )
+        .on_hover_text(
+            "Display only: each pixel shows L · exposure through the tone map x/(1+x) and sRGB; it \
+        does not restart the render. Saved PNGs use it, EXRs keep L. The difference view has its \
+        own fixed scale",
+        )
+    });
 }
