@@ -207,7 +207,7 @@ fn a_screenshot_of_a_step_whose_view_does_not_open_says_so() {
         "title = \"cut\"\n{}{}",
         step("view.lab.material.alpha = 0.3"),
         // A share-view string that does not open (a table's unknown setting is refused as
-        // the file is read: tests/lesson.rs).
+        // the file is read: tests/inputs/lesson.rs).
         step("view = \"v1.not-a-view\"")
     );
     std::fs::write(&lesson, text).unwrap();

@@ -212,7 +212,7 @@ fn merge(into: &mut toml::Table, view: &toml::Table) {
 }
 
 /// Every setting a view can hold, by its dotted path (`lab.material.alpha`), as the lab's
-/// defaults write them: the list the README's "Writing a lesson" gives (tests/lesson.rs keeps
+/// defaults write them: the list the README's "Writing a lesson" gives (tests/inputs/lesson.rs keeps
 /// the two the same).
 pub fn setting_paths() -> Vec<String> {
     toml::Table::try_from(link_of(&LabState::default()))

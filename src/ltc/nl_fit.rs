@@ -34,7 +34,7 @@ pub struct NlFitSettings {
 
 impl Default for NlFitSettings {
     /// 8 × 24 nodes per band and 12 passes keep a 64² table's fit near a second on two
-    /// cores; tests/horizon.rs checks that twice as many of each moves the measured band
+    /// cores; tests/math/horizon.rs checks that twice as many of each moves the measured band
     /// errors by under 2% of themselves or 0.1 percentage point.
     fn default() -> Self {
         Self {

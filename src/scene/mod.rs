@@ -113,7 +113,7 @@ pub fn preset(name: &str) -> Scene {
         .chain(&TABLE_PRESETS)
         .find(|(n, _)| *n == name)
         .expect("a shipped preset");
-    Scene::from_toml(text, name).expect("shipped presets are valid (tests/presets.rs)")
+    Scene::from_toml(text, name).expect("shipped presets are valid (tests/math/presets.rs)")
 }
 
 /// The square plane `|x|, |y| ≤ half_size`, `z = 0`, normal `+z`.

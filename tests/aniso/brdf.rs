@@ -40,7 +40,7 @@ fn d_integrates_to_one_over_projected_normals() {
         });
         // The rule's error on a lobe as narrow as α = 0.016 along one axis: 600 rings crowded
         // as t³ resolve it to ~1e-4 (the same rule holds the isotropic albedo to 1e-3 with
-        // 400, tests/brdf.rs).
+        // 400, tests/math/brdf.rs).
         assert!(
             (total - 1.0).abs() < 2e-4,
             "∫ D (h·n) dh = {total} at α = ({ax}, {ay})"
@@ -173,7 +173,7 @@ fn f32_and_f64_agree() {
             }
         }
     }
-    // tests/brdf.rs's bound for the isotropic path: f32's unit roundoff 6e-8, amplified by up
+    // tests/math/brdf.rs's bound for the isotropic path: f32's unit roundoff 6e-8, amplified by up
     // to 1/α² = 2500 at α = 0.02 through D's denominator, over ~30 operations: 5e-3.
     assert!(worst < 5e-3, "worst relative f32/f64 difference {worst}");
 }

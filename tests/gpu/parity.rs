@@ -18,7 +18,7 @@ const W: usize = 48;
 const H: usize = 40;
 
 /// A shipped preset (embedded in the library from `assets/scenes/`; loading the files
-/// themselves is tests/presets.rs's subject).
+/// themselves is tests/math/presets.rs's subject).
 fn preset(name: &str) -> Scene {
     ltc_lab::scene::preset(name.trim_end_matches(".toml"))
 }

@@ -347,7 +347,7 @@ const SHADER_ONLY: [(&str, &str); 6] = [
     // bin.wgsl's workgroup: Rust dispatches its passes by tile, not by it.
     ("WORKGROUP", "bin.wgsl's workgroup size"),
     // Which shapes a method file shades: written by Rust as it composes the file
-    // (method_file::MethodFile::composed, checked by tests/method_file.rs).
+    // (method_file::MethodFile::composed, checked by tests/inputs/method_file.rs).
     (
         "METHOD_FILE_POINT",
         "written when a method file is composed",

@@ -1,9 +1,7 @@
 //! LTC evaluation: it is a distribution (∫ D = 1), the identity gives the clamped cosine,
 //! scaling M⁻¹ changes nothing, and each clipping rule does exactly what docs/design.md §1 says.
 
-mod common;
-
-use common::sphere_integral;
+use crate::common::sphere_integral;
 use glam::{DMat3, DQuat, DVec3};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Ltc, Normalization, mat3_from_rows};

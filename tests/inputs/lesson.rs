@@ -414,7 +414,7 @@ fn a_lesson_link_names_a_shipped_lesson_and_a_step() {
 #[test]
 fn the_readme_lists_every_reading_quantity_and_field() {
     use ltc_lab::app::lesson::condition::Quantity;
-    let readme = include_str!("../README.md");
+    let readme = include_str!("../../README.md");
     let section = readme
         .split("### Writing a lesson")
         .nth(1)

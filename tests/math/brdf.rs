@@ -1,8 +1,6 @@
 //! The exact BRDF: reciprocity, white-furnace bounds, and agreement of the f32 and f64 paths.
 
-mod common;
-
-use common::{mirror, sphere_integral, view};
+use crate::common::{mirror, sphere_integral, view};
 use glam::DVec3;
 use ltc_lab::brdf::{Dots, brdf_cos, diffuse_cos, specular_cos};
 use proptest::prelude::*;
