@@ -111,7 +111,7 @@ fn dragging_a_light_redraws_only_what_reads_the_lights() {
 }
 
 /// Each edit the side panel makes changes the parts it names, and exactly the caches that
-/// read those parts are made again: what each panel's work reads (app/lab/parts.rs names the
+/// read those parts are made again: what each panel's work reads (app/lab/parts/ names the
 /// parts) is the specification here.
 #[test]
 fn every_side_panel_edit_invalidates_exactly_the_caches_that_read_it() {
