@@ -1,0 +1,202 @@
+//! The constants Rust shares with the shaders are the WGSL's, value for value; the few the
+//! shaders keep alone are listed with why.
+
+use ltc_lab::gpu::{bin_module_source, ltc_aniso, plane_module_source};
+
+use crate::validate;
+
+/// A WGSL constant's value, its components flattened (a scalar is one number, a vector or
+/// an array its components in order), as naga's constant evaluation left it.
+fn constant_value(module: &naga::Module, name: &str) -> Vec<f64> {
+    let (_, c) = module
+        .constants
+        .iter()
+        .find(|(_, c)| c.name.as_deref() == Some(name))
+        .unwrap_or_else(|| panic!("no constant {name} in the WGSL"));
+    expression_value(module, c.init, name)
+}
+
+fn expression_value(
+    module: &naga::Module,
+    e: naga::Handle<naga::Expression>,
+    name: &str,
+) -> Vec<f64> {
+    use naga::{Expression, Literal};
+    match &module.global_expressions[e] {
+        Expression::Literal(Literal::U32(v)) => vec![f64::from(*v)],
+        Expression::Literal(Literal::I32(v)) => vec![f64::from(*v)],
+        Expression::Literal(Literal::F32(v)) => vec![f64::from(*v)],
+        Expression::Literal(Literal::Bool(v)) => vec![f64::from(u8::from(*v))],
+        Expression::Constant(c) => expression_value(module, module.constants[*c].init, name),
+        Expression::Compose { components, .. } => components
+            .iter()
+            .flat_map(|&c| expression_value(module, c, name))
+            .collect(),
+        other => panic!("{name} is {other:?}: not a value this test reads"),
+    }
+}
+
+/// The shaders' constants that only the shaders read, each with why Rust has no twin.
+const SHADER_ONLY: [(&str, &str); 6] = [
+    // bin.wgsl's workgroup: Rust dispatches its passes by tile, not by it.
+    ("WORKGROUP", "bin.wgsl's workgroup size"),
+    // Which shapes a method file shades: written by Rust as it composes the file
+    // (method_file::MethodFile::composed, checked by tests/inputs/method_file.rs).
+    (
+        "METHOD_FILE_POINT",
+        "written when a method file is composed",
+    ),
+    (
+        "METHOD_FILE_SPHERE",
+        "written when a method file is composed",
+    ),
+    ("METHOD_FILE_RECT", "written when a method file is composed"),
+    ("METHOD_FILE_DISK", "written when a method file is composed"),
+    // plane.wgsl's largest finite f32, the floor of an empty min.
+    ("F32_MAX", "a bound inside plane.wgsl"),
+];
+
+/// Every constant the WGSL and Rust share, as Rust has it: `(name in the WGSL, value)`.
+fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
+    use ltc_lab::gpu::light_shape::{disk_constant, rect_constant, sphere_constant};
+    use ltc_lab::gpu::limits::LOAD;
+    use ltc_lab::gpu::ltc::{
+        CLIP_HORIZON, CLIP_TRANSFORMED, LUT_VEC4S_PER_CELL, horizon_constant,
+        normalization_constant,
+    };
+    use ltc_lab::gpu::plane::{ViewConstant, method_constant};
+    use ltc_lab::gpu::scene::TILE_SIDE;
+    use ltc_lab::light::Shape;
+    use ltc_lab::light::sphere::SphereMethod;
+    use ltc_lab::ltc::Normalization;
+    use ltc_lab::ltc::remedy::HorizonRule;
+    use ltc_lab::render::Method;
+    // A WGSL f32 literal holds the Rust f64 rounded to f32: compare in that rounding.
+    let f32s = |v: &[f64]| v.iter().map(|&x| f64::from(x as f32)).collect::<Vec<_>>();
+    let codes = Method::ALL
+        .map(method_constant)
+        .into_iter()
+        .chain(SphereMethod::ALL.map(sphere_constant))
+        .chain(ltc_lab::light::rect::RectMethod::ALL.map(rect_constant))
+        .chain(ltc_lab::light::disk::DiskMethod::ALL.map(disk_constant))
+        .chain(ViewConstant::ALL.map(ViewConstant::constant))
+        .chain(
+            [
+                HorizonRule::Eq30,
+                HorizonRule::NlFit,
+                HorizonRule::ExactBand,
+            ]
+            .map(horizon_constant),
+        )
+        .chain(Normalization::ALL.map(normalization_constant))
+        .chain(
+            [
+                Shape::Point,
+                Shape::Sphere { radius: 1.0 },
+                Shape::Rect {
+                    half_u: glam::DVec3::X,
+                    half_v: glam::DVec3::Y,
+                },
+                Shape::Disk {
+                    normal: glam::DVec3::Z,
+                    radius: 1.0,
+                },
+            ]
+            .map(ltc_lab::gpu::scene::shape_constant),
+        )
+        .chain([
+            (CLIP_HORIZON, "CLIP_HORIZON"),
+            (CLIP_TRANSFORMED, "CLIP_TRANSFORMED"),
+        ])
+        .chain(ltc_lab::ltc::aniso::AnisoAxes::ALL.map(ltc_aniso::axes_constant))
+        .chain(ltc_lab::ltc::aniso::Stored::ALL.map(ltc_aniso::stored_constant))
+        .map(|(value, name)| (name, vec![f64::from(value)]));
+    // The positive half of the 8-point rule in increasing order, as sphere_light.wgsl's
+    // `gl8` unfolds it.
+    let mut gl8 = ltc_lab::light::sphere::quadrature::gauss_legendre(8);
+    gl8.retain(|&(x, _)| x > 0.0);
+    gl8.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let half = |pick: fn(&(f64, f64)) -> f64| f32s(&gl8.iter().map(pick).collect::<Vec<_>>());
+    let background = ltc_lab::output::BACKGROUND.map(|c| f64::from(c) / 255.0);
+    codes
+        .chain([
+            ("LUT_VEC4S_PER_CELL", vec![LUT_VEC4S_PER_CELL as f64]),
+            (
+                "ANISO_VEC4S_PER_NODE",
+                vec![ltc_aniso::ANISO_VEC4S_PER_NODE as f64],
+            ),
+            ("ANISO_ALPHA_MIN", f32s(&[ltc_lab::ltc::lut::ALPHA_MIN])),
+            ("COS_THETA_MAX", f32s(&[ltc_lab::ltc::lut::THETA_MAX.cos()])),
+            (
+                "I3D_THETA_MAX",
+                f32s(&[ltc_lab::ltc::aniso::axes::I3D_THETA_MAX]),
+            ),
+            (
+                "I3D_ALPHA_MIN",
+                f32s(&[ltc_lab::ltc::aniso::axes::I3D_ALPHA_MIN]),
+            ),
+            ("TILE_SIDE", vec![TILE_SIDE as f64]),
+            ("LOAD", vec![LOAD as f64]),
+            ("PI", f32s(&[std::f64::consts::PI])),
+            (
+                "MIN_LIGHT_DISTANCE",
+                f32s(&[ltc_lab::brdf::MIN_LIGHT_DISTANCE]),
+            ),
+            ("EXACT_BAND_Z", f32s(&[ltc_lab::ltc::remedy::EXACT_BAND_Z])),
+            ("NL_BAND_Z", f32s(&[ltc_lab::ltc::nl_fit::NL_BAND_Z])),
+            (
+                "POINT_LIMIT_SIN_SIGMA",
+                f32s(&[ltc_lab::light::sphere::POINT_LIMIT_SIN_SIGMA]),
+            ),
+            ("F32_EPSILON", vec![f64::from(f32::EPSILON)]),
+            (
+                "RECT_POINT_LIMIT",
+                f32s(&[ltc_lab::light::rect::RECT_POINT_LIMIT]),
+            ),
+            (
+                "DISK_POINT_LIMIT",
+                f32s(&[ltc_lab::light::disk::DISK_POINT_LIMIT]),
+            ),
+            ("GL8_NODES", half(|&(x, _)| x)),
+            ("GL8_WEIGHTS", half(|&(_, w)| w)),
+            ("BACKGROUND", f32s(&background)),
+            (
+                "METHOD_FILE_STEPS",
+                vec![f64::from(ltc_lab::gpu::method_file::STEPS)],
+            ),
+        ])
+        .collect()
+}
+
+/// Every constant the shaders and Rust share has one value on both sides, and every constant
+/// of the shaders is either shared (and so checked) or listed as the shaders' own: a value
+/// changed or a constant added on one side only fails here. The codes the pipelines pass
+/// (methods, sphere methods, views, horizon rules) would otherwise shade every pixel with
+/// another method.
+#[test]
+fn the_constants_rust_shares_are_the_wgsl_ones() {
+    let modules = [
+        validate("plane", &plane_module_source(true)),
+        validate("scene.wgsl + bin.wgsl", &bin_module_source()),
+        validate("display.wgsl", ltc_lab::gpu::display::SOURCE),
+    ];
+    let shared = shared_constants();
+    let mut found = Vec::new();
+    for module in &modules {
+        for (_, c) in module.constants.iter() {
+            let name = c.name.as_deref().unwrap_or_default();
+            if SHADER_ONLY.iter().any(|&(n, _)| n == name) {
+                continue;
+            }
+            let rust = shared
+                .iter()
+                .find(|(n, _)| *n == name)
+                .unwrap_or_else(|| panic!("the WGSL constant {name} has no Rust twin"));
+            assert_eq!(constant_value(module, name), rust.1, "{name}");
+            found.push(name);
+        }
+    }
+    for (name, _) in &shared {
+        assert!(found.contains(name), "Rust's {name} is in no shader");
+    }
+}

@@ -1,0 +1,168 @@
+//! The functions mirrored between Rust and WGSL carry the same names (docs/design.md §5.1):
+//! the BRDF's and the LTC's, the sphere light's and the disk light's.
+
+use ltc_lab::gpu::{ltc, plane_module_source, sphere_light};
+
+use crate::{brdf_sources, function_names, validate};
+
+#[test]
+fn mirrored_functions_have_the_same_names() {
+    let module = validate("plane", &plane_module_source(false));
+    let wgsl = function_names(&module);
+    // Each exists in Rust under this name (src/brdf/mod.rs, src/ltc/mod.rs, src/ltc/lut/); the
+    // `use` below fails to compile if one is renamed.
+    #[allow(unused_imports)]
+    use ltc_lab::brdf::{
+        d_ggx, diffuse_cos, f_schlick, fd_burley, g2_correlated, irradiance_scale, lambda_ggx,
+        specular_cos, v_smith_ggx_correlated, window_falloff_d2,
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::ltc::cos_from_brdf_from_entries;
+    // The horizon rules and the sampler's taps.
+    #[allow(unused_imports)]
+    use ltc_lab::ltc::{
+        lut::bilinear_taps,
+        nl_fit::{nl_sample_nearest, nl_sample_uv, nl_weight},
+        remedy::in_exact_band,
+    };
+    for f in [
+        "d_ggx",
+        "lambda_ggx",
+        "g2_correlated",
+        "f_schlick",
+        "fd_burley",
+        "specular_cos",
+        "diffuse_cos",
+        "irradiance_scale",
+        "window_falloff_d2",
+        "v_smith_ggx_correlated",
+        "ltc_eval",
+        "cos_from_brdf_from_entries",
+        "lut_sample_uv",
+        "lut_uv",
+        "spec_magnitude",
+        "surface_point",
+        "camera_ray",
+        "luminance",
+        "bilinear_taps",
+        "nl_sample_uv",
+        "nl_sample_nearest",
+        "nl_weight",
+        "in_exact_band",
+    ] {
+        assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
+
+/// The sphere lights' functions carry their Rust names (a method `Cap::f` as `cap_f`).
+#[test]
+fn sphere_light_functions_have_the_rust_names() {
+    let source = [&brdf_sources(), ltc::SOURCE, sphere_light::SOURCE].join("\n");
+    let module = validate("sphere_light", &source);
+    let wgsl = function_names(&module);
+    // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
+    #[allow(unused_imports)]
+    use ltc_lab::light::sphere::quadrature::visible_half_azimuth;
+    #[allow(unused_imports)]
+    use ltc_lab::light::sphere::{
+        cap::Cap,
+        disk::{ltc_disk, negative_eigenvalue, transformed_cone},
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::light::sphere::{
+        fd_toward, mirror, sphere_exact, sphere_ltc_disk, sphere_point, sphere_radiance,
+        sphere_representative_point,
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::ltc::sphere::illuminance_sphere;
+    let _ = (
+        Cap::of_sphere,
+        Cap::encloses,
+        Cap::below_horizon,
+        Cap::illuminance,
+    );
+    for f in [
+        "cap_of_sphere",
+        "cap_encloses",
+        "cap_below_horizon",
+        "cap_illuminance",
+        "illuminance_sphere",
+        "negative_eigenvalue",
+        "transformed_cone",
+        "ltc_disk",
+        "sphere_radiance",
+        "sphere_ltc_disk",
+        "sphere_representative_point",
+        "fd_toward",
+        "sphere_exact",
+        "sphere_point",
+        "visible_half_azimuth",
+        "mirror",
+    ] {
+        assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
+
+/// The disk lights' functions carry their Rust names (a method `Disk::f` as `disk_f`,
+/// `Segment::f` as `segment_f`).
+#[test]
+fn disk_light_functions_have_the_rust_names() {
+    use ltc_lab::gpu::{disk_light, rect_light};
+    let source = [
+        &brdf_sources(),
+        ltc::SOURCE,
+        sphere_light::SOURCE,
+        rect_light::SOURCE,
+        disk_light::SOURCE,
+        // The method codes plane.wgsl defines.
+        "const RECT_EXACT: u32 = 0u; const RECT_LTC_POLYGON: u32 = 1u; const RECT_LTC_PROXY: u32 = 2u; const RECT_LTC_PROXY_FAST: u32 = 3u; const DISK_EXACT: u32 = 0u; const DISK_LTC_DISK: u32 = 1u;",
+    ]
+    .join("\n");
+    let module = validate("disk_light", &source);
+    let wgsl = function_names(&module);
+    // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
+    #[allow(unused_imports)]
+    use ltc_lab::light::disk::quadrature::Segment;
+    #[allow(unused_imports)]
+    use ltc_lab::light::disk::{
+        Disk, disk_exact, disk_light, disk_ltc, disk_point, ltc_disk_light,
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::light::sphere::disk::{cone_image, cone_integral, hemisphere};
+    let _ = (
+        Disk::area,
+        Disk::faces_origin,
+        Disk::angular_size,
+        Disk::below_horizon,
+        Disk::point_irradiance,
+        Disk::half_axes,
+        Segment::above,
+        Segment::point,
+        Segment::hit_inside,
+        Segment::pieces,
+        Segment::reach,
+    );
+    for f in [
+        "disk_area",
+        "disk_faces_origin",
+        "disk_angular_size",
+        "disk_below_horizon",
+        "disk_point_irradiance",
+        "disk_half_axes",
+        "segment_above",
+        "segment_point",
+        "segment_hit_inside",
+        "segment_pieces",
+        "segment_reach",
+        "disk_point",
+        "disk_exact",
+        "disk_ltc",
+        "ltc_disk_light",
+        "disk_light",
+        "cone_image",
+        "cone_integral",
+        "hemisphere",
+    ] {
+        assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
