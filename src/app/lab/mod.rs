@@ -4,13 +4,14 @@
 //! Work made from parts keys on the parts it reads (`app::work::cache`). A panel's own settings are
 //! its own.
 
+mod derived;
 mod light_check;
+mod method_file_door;
 pub mod part;
 pub mod parts;
 pub mod refit_result;
 pub mod tables;
 
-use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 pub use part::{Checked, Part, Stamp};
@@ -22,9 +23,9 @@ pub use tables::{TableId, TableSources, Tables};
 
 use crate::gpu::GpuContext;
 use crate::gpu::method_file::MethodFile;
-use crate::ltc::lut::{THETA_MAX, Table};
-use crate::ltc::remedy::{Horizon, HorizonRule};
-use crate::ltc::{Ltc, LtcPair};
+use crate::ltc::Ltc;
+use crate::ltc::lut::Table;
+use crate::ltc::remedy::Horizon;
 use crate::render::{LtcRules, Method};
 use crate::scene::{Light, Material, Scene};
 use crate::tables::NamedTable;
@@ -307,75 +308,6 @@ impl Lab {
         }
     }
 
-    /// The method file loaded, if any.
-    pub fn method_file(&self) -> Option<&MethodFile> {
-        self.method_file.as_ref()
-    }
-
-    /// Shades with `file` from now on: side A takes it unless a side has it already (the
-    /// render begins again, with the new file, either way). Refused where the plane shades
-    /// on the CPU, which runs no WGSL. What was done, in words.
-    pub fn use_method_file(&mut self, file: MethodFile) -> Message {
-        if self.device().is_none() {
-            return Message::error(format!(
-                "{}: a method file runs on the GPU, and this lab shades on the CPU ({})",
-                file.name,
-                self.device_error().unwrap_or("no device")
-            ));
-        }
-        let text = format!(
-            "method file {} (shades {}; the lab's methods the rest) loaded",
-            file.name,
-            file.shapes()
-        );
-        self.method_file = Some(file);
-        let mut forms = **HasPart::<Forms>::part(self);
-        if forms.ltc != Method::File && forms.brdf != Method::File {
-            forms.ltc = Method::File;
-        }
-        // A new file with the same forms renders again by its identity (`MethodFile::id` is
-        // in the plane's render key).
-        self.set(forms);
-        Message::note(format!(
-            "{text}: {} | {}",
-            forms.ltc.name(),
-            forms.brdf.name()
-        ))
-    }
-
-    /// The method file's render was stopped (`why`): the sides that shade with it go back to
-    /// the lab's forms, the file stays loaded (pick `file` again to retry), and why is said.
-    pub fn stop_method_file(&mut self, why: &str) {
-        let kept = without_file(**HasPart::<Forms>::part(self));
-        self.set(kept);
-        self.say(Message::error(format!(
-            "{why} — the sides are back to {} | {}",
-            kept.ltc.name(),
-            kept.brdf.name()
-        )));
-    }
-
-    /// A side that names the method file without one loaded (from a link, a lesson or
-    /// stored state, which never carry shader code) goes back to the lab's form, and says
-    /// why.
-    fn keep_method_file(&mut self) {
-        if self.method_file.is_some() {
-            return;
-        }
-        let forms = **HasPart::<Forms>::part(self);
-        let kept = without_file(forms);
-        if kept != forms {
-            let part = HasPart::<Forms>::part_mut(self, Key(()));
-            *part.value_mut() = kept;
-            part.touch();
-            self.say(Message::error(
-                "a side named the method file `file`, which is not loaded: a link, a lesson or the stored \
-                    state never carries shader code. Load it with load method (or drop the .wgsl) to shade \
-                    with it".to_string(),
-            ));
-        }
-    }
-
     /// The device, if there is one.
     pub fn device(&self) -> Option<&GpuContext> {
         self.device.as_ref().ok()
@@ -397,93 +329,6 @@ impl Lab {
     /// The most lights the plane shades at once: the GPU's limit, or the scene's on the CPU.
     pub fn max_lights(&self) -> usize {
         self.max_lights
-    }
-
-    /// The scene the parts make.
-    pub fn scene(&self) -> Scene {
-        parts::scene(
-            self.stage(),
-            self.material(),
-            self.lights(),
-            self.exposure(),
-        )
-    }
-
-    /// The scene as shaded: every light's intensity multiplied, its range replaced where the
-    /// overrides say.
-    pub fn shaded_scene(&self) -> Scene {
-        parts::shaded(self.scene(), self.overrides())
-    }
-
-    /// The scene without its lights: what camera rays and projections need (a drag reads it
-    /// every frame, among up to 100 000 lights).
-    pub fn stage_scene(&self) -> Scene {
-        let no_lights = Lights {
-            list: Vec::new(),
-            seed: 0,
-        };
-        parts::scene(self.stage(), self.material(), &no_lights, self.exposure())
-    }
-
-    /// The camera's ray through pixel `(x, y)` of an image of `size`: eye and direction.
-    pub fn scene_camera_ray(&self, x: f64, y: f64, size: (usize, usize)) -> (DVec3, DVec3) {
-        self.stage_scene().camera_ray(x, y, size.0, size.1)
-    }
-
-    pub fn alpha(&self) -> f64 {
-        self.material().alpha
-    }
-
-    /// θo in radians, within the tables' rows.
-    pub fn theta_o(&self) -> f64 {
-        self.lobe_view().theta_o_deg.to_radians().min(THETA_MAX)
-    }
-
-    /// The LTC pair of `lut` at the lobe and matrix panels' (θo, α), in the view's frame (x
-    /// toward the view's azimuth): an anisotropic material's lobes come from the 4D table at
-    /// (θo, φo) in its tangent frame, turned into the view's (`tangent_from_view`).
-    pub fn ltc_pair(&self, lut: &crate::ltc::lut::Lut) -> LtcPair {
-        let m = self.material();
-        if !m.is_anisotropic() {
-            return lut.sample(self.alpha(), self.theta_o().cos()).ltc_pair();
-        }
-        let turn = self.tangent_from_view();
-        let v = turn * DVec3::new(self.theta_o().sin(), 0.0, self.theta_o().cos());
-        let pair = lut.aniso_pair(m.roughness(), v);
-        let turned = |l: &Ltc| Ltc::from_cos_from_brdf(l.cos_from_brdf * turn, l.norm, l.fresnel);
-        LtcPair {
-            spec: turned(&pair.spec),
-            diff: turned(&pair.diff),
-        }
-    }
-
-    /// The turn from the lobe view's frame (x toward the view's azimuth) to the material's
-    /// tangent frame: by φo while the material is anisotropic, none while it is not.
-    pub fn tangent_from_view(&self) -> glam::DMat3 {
-        match self.material().is_anisotropic() {
-            true => glam::DMat3::from_rotation_z(self.lobe_view().phi_o_deg.to_radians()),
-            false => glam::DMat3::IDENTITY,
-        }
-    }
-
-    /// The cell of table A nearest (θo, α): (column of α, row of θo).
-    pub fn nearest_cell(&self) -> (usize, usize) {
-        let lut = &self.tables().a().lut;
-        lut.nearest_cell(self.alpha(), self.theta_o().cos())
-    }
-
-    /// The horizon remedy in use: the rule's, or the remedy whose table shades.
-    pub fn horizon_remedy(&self) -> Horizon {
-        let t = self.tables();
-        let shipped = t.a().source == crate::tables::Source::Shipped(t.shipped);
-        let by_table = Horizon::ALL
-            .into_iter()
-            .find(|h| shipped && h.table() == Some(t.shipped));
-        match self.rules().horizon {
-            HorizonRule::Eq30 => by_table.unwrap_or(Horizon::Eq30),
-            HorizonRule::NlFit => Horizon::NlFit,
-            HorizonRule::ExactBand => Horizon::ExactBand,
-        }
     }
 
     /// Shows `scene` (a preset, a loaded file, the one the lab started with), its lights cut
