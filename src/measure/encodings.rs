@@ -13,7 +13,6 @@ use crate::brdf::{Alpha, Lobes, view_from_theta};
 use crate::light::disk::{DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::{RectMethod, RectShading, rect_exact, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
-use crate::ltc::aniso::AnisoLut;
 use crate::ltc::aniso::encoded::bytes as aniso_bytes;
 use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::{ALPHA_MIN, Encoding, Lut, Storage, THETA_MAX};
@@ -89,11 +88,13 @@ impl Candidate {
             size,
             ..FitSettings::default()
         };
+        let lut = fit_table(&settings, &|| {}).lut;
         Self {
             name: format!("fit-{size}"),
             bytes: Encoding::default().bytes(size),
-            aniso_bytes: aniso_bytes(AnisoLut::shipped().dims, Storage::F32),
-            lut: fit_table(&settings, &|| {}).lut,
+            // The 4D table it carries, in f32, as `encoded` counts its own.
+            aniso_bytes: aniso_bytes(lut.aniso().dims, Storage::F32),
+            lut,
         }
     }
 }
