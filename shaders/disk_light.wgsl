@@ -12,6 +12,9 @@ struct Disk {
 // DISK_POINT_LIMIT: below this r/|c| a disk is shaded as its oriented point light.
 const DISK_POINT_LIMIT: f32 = 1e-7;
 
+// Nodes a dimension and piece of the renders' exact rule (src/light/disk/mod.rs RENDER_NODES).
+const DISK_RENDER_NODES: u32 = 12u;
+
 fn disk_area(d: Disk) -> f32 {
     return PI * d.radius * d.radius;
 }
@@ -148,8 +151,8 @@ fn disk_point(s: DiskShading, pair: LtcPair, exact: bool) -> vec2<f32> {
 }
 
 // disk_exact: ∫ f cos dω over the disk above the surface at unit radiance, by
-// disk_integral_about's rule with 8 nodes per dimension and piece (src/light/disk/mod.rs
-// GPU_EXACT_NODES): polar about the mirror direction's hit where it is inside, else the
+// disk_integral_about's rule with DISK_RENDER_NODES per dimension and piece (src/light/disk/
+// mod.rs RENDER_NODES): polar about the mirror direction's hit where it is inside, else the
 // segment's middle, in the four pieces of segment_pieces.
 fn disk_exact(s: DiskShading) -> vec2<f32> {
     let d = s.disk;
@@ -169,8 +172,8 @@ fn disk_exact(s: DiskShading) -> vec2<f32> {
         let chord = p == 3u && seg.x0 > -1.0;
         let start = pieces[p].x;
         let width = pieces[p].y;
-        for (var i = 0u; i < 8u; i++) {
-            let ns = gl8(i);
+        for (var i = 0u; i < DISK_RENDER_NODES; i++) {
+            let ns = rule(DISK_RENDER_NODES, i);
             var phi = start + 0.5 * width * (ns.x + 1.0);
             if phi > PI {
                 phi -= 2.0 * PI;
@@ -178,8 +181,8 @@ fn disk_exact(s: DiskShading) -> vec2<f32> {
             let sc = sincos_precise(phi);
             let dir = vec2<f32>(sc.y, sc.x);
             let reach = segment_reach(seg, apex, dir, chord);
-            for (var j = 0u; j < 8u; j++) {
-                let nt = gl8(j);
+            for (var j = 0u; j < DISK_RENDER_NODES; j++) {
+                let nt = rule(DISK_RENDER_NODES, j);
                 let rho = 0.5 * reach * (nt.x + 1.0);
                 let x = segment_point(seg, d, apex + dir * rho);
                 let len2 = dot(x, x);

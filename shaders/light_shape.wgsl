@@ -81,7 +81,7 @@ fn add_sphere(
         lobes = sphere_point(shading, ltc.pair, exact);
     } else {
         switch sphere {
-            case SPHERE_EXACT: { lobes = sphere_exact(shading, cap); }
+            case SPHERE_EXACT: { lobes = sphere_rule(shading, cap); }
             case SPHERE_LTC_DISK: { lobes = sphere_ltc_disk(shading, ltc.pair, cap); }
             case SPHERE_REPRESENTATIVE_POINT: { lobes = sphere_representative_point(shading, cap); }
             default: { lobes = sphere_ltc_point(shading, ltc.pair); }

@@ -321,131 +321,82 @@ fn rect_point(s: RectShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     return rect_point_irradiance(s.rect) * lobes;
 }
 
-// hit_inside: where the ray from the origin along `dir` meets the polygon's plane, w = 1 if
-// inside it (src/light/rect/quadrature.rs).
-fn hit_inside(poly: Polygon, dir: vec3<f32>) -> vec4<f32> {
-    let normal = cross(poly.p[1] - poly.p[0], poly.p[2] - poly.p[0]);
-    let along = dot(dir, normal);
-    if along == 0.0 {
-        return vec4<f32>(0.0);
-    }
-    let t = dot(poly.p[0], normal) / along;
-    if t <= 0.0 {
-        return vec4<f32>(0.0);
-    }
-    let x = dir * t;
-    var all_in = true;
-    var all_out = true;
-    for (var k = 0u; k < poly.n; k++) {
-        let a = poly.p[k];
-        let b = poly.p[(k + 1u) % poly.n];
-        let side = dot(cross(b - a, x - a), normal);
-        all_in = all_in && side >= 0.0;
-        all_out = all_out && side <= 0.0;
-    }
-    return vec4<f32>(x, select(0.0, 1.0, all_in || all_out));
-}
-
-// nearest_point: the point of the convex planar polygon nearest the origin (xyz) — the foot of
-// the perpendicular where it falls inside (w = 1), else the nearest point of its edges (w = 0)
-// (src/light/rect/quadrature.rs).
-fn nearest_point(poly: Polygon) -> vec4<f32> {
-    let normal = cross(poly.p[1] - poly.p[0], poly.p[2] - poly.p[0]);
-    let n2 = dot(normal, normal);
-    if n2 > 0.0 {
-        let foot = normal * (dot(poly.p[0], normal) / n2);
-        var all_in = true;
-        var all_out = true;
-        for (var k = 0u; k < poly.n; k++) {
-            let a = poly.p[k];
-            let side = dot(cross(poly.p[(k + 1u) % poly.n] - a, foot - a), normal);
-            all_in = all_in && side >= 0.0;
-            all_out = all_out && side <= 0.0;
-        }
-        if all_in || all_out {
-            return vec4<f32>(foot, 1.0);
+// rect_rule: both lobes of a rect of unit radiance by the renders' rule (src/light/rect/
+// region.rs, docs/design.md §1.14): the specular lobe by the polar rule, the diffuse lobe by
+// the fan from the corners' mean.
+fn rect_rule(s: RectShading) -> vec2<f32> {
+    let above = clip_horizon(rect_corners(s.rect));
+    var corners: Polygon;
+    corners.n = 0u;
+    var sum = vec3<f32>(0.0);
+    for (var k = 0u; k < above.n; k++) {
+        let p = above.p[k];
+        if dot(p, p) > 0.0 {
+            corners.p[corners.n] = normalize(p);
+            sum += corners.p[corners.n];
+            corners.n += 1u;
         }
     }
-    var best = poly.p[0];
-    for (var k = 0u; k < poly.n; k++) {
-        let a = poly.p[k];
-        let e = poly.p[(k + 1u) % poly.n] - a;
-        let e2 = dot(e, e);
-        var t = 0.0;
-        if e2 > 0.0 {
-            t = clamp(-dot(a, e) / e2, 0.0, 1.0);
-        }
-        let x = a + e * t;
-        if dot(x, x) < dot(best, best) {
-            best = x;
-        }
-    }
-    return vec4<f32>(best, 0.0);
-}
-
-// One triangle's both lobes at unit radiance, 8 × 8 nodes collapsed onto its first corner
-// p0 (Duffy): p0 + s e1 + s t (e2 − e1), Jacobian s |e1 × e2|.
-fn exact_triangle(s: RectShading, p0: vec3<f32>, a: vec3<f32>, b: vec3<f32>) -> vec2<f32> {
-    let e1 = a - p0;
-    let e2 = b - p0;
-    let normal = cross(e1, e2);
-    let twice_area = length(normal);
-    if twice_area == 0.0 {
+    if corners.n < 3u {
         return vec2<f32>(0.0);
     }
-    let unit = normal / twice_area;
-    var sum = vec2<f32>(0.0);
-    for (var i = 0u; i < 8u; i++) {
-        let ns = gl8(i);
-        let sx = 0.5 * (ns.x + 1.0);
-        for (var j = 0u; j < 8u; j++) {
-            let nt = gl8(j);
-            let tx = 0.5 * (nt.x + 1.0);
-            let x = p0 + e1 * sx + (e2 - e1) * (sx * tx);
-            let r2 = dot(x, x);
-            if r2 > 0.0 {
-                let r = sqrt(r2);
-                let l = x / r;
-                if l.z > 0.0 {
-                    let weight = 0.25 * ns.y * nt.y * sx * twice_area * abs(dot(x, unit)) / (r * r2);
-                    sum += weight * exact_lobes(s.v, l, s.alpha, s.f0);
-                }
+    let middle = normalize(sum);
+    let polar = polygon_polar(corners, middle, mirror(s.v), s.v, s.alpha, s.f0);
+    let lobe = lobe_within(lobe_specular(polar.pole, s.v, s.alpha), polar.bounds, middle);
+    return vec2<f32>(
+        polar_integral(polar, lobe, rule_nodes(s.alpha), s.v, s.alpha, s.f0, 0u),
+        fan_integral(corners, middle, RULE_NODES, s.v, s.alpha, s.f0),
+    );
+}
+
+// polygon_polar: the convex spherical polygon of unit corners as a polar region, its pole at
+// focus where it holds it, else at its edges' brightest point, cut at every corner and at the
+// feet of the perpendiculars from the pole to its edges (src/light/rect/region.rs).
+fn polygon_polar(
+    corners: Polygon,
+    middle: vec3<f32>,
+    focus: vec3<f32>,
+    v: vec3<f32>,
+    alpha: vec2<f32>,
+    f0: f32,
+) -> Polar {
+    var bounds: Bounds;
+    bounds.count = 0u;
+    bounds.cap = vec4<f32>(0.0, 0.0, 0.0, -1.0);
+    var edges: array<Arc, 5>;
+    for (var k = 0u; k < corners.n; k++) {
+        let a = corners.p[k];
+        let b = corners.p[(k + 1u) % corners.n];
+        let c = cross(a, b);
+        if dot(c, c) > 0.0 && bounds.count < MAX_PLANES {
+            let n = normalize(c);
+            edges[bounds.count] = Arc(a, b, vec3<f32>(0.0), vec4<f32>(0.0));
+            bounds_push(&bounds, select(n, -n, dot(n, middle) < 0.0));
+        }
+    }
+    var pole = focus;
+    if !bounds_contains(bounds, focus) {
+        let best = brightest(edges, bounds.count, v, alpha, f0);
+        pole = arc_at(edges[u32(best.x)], best.y);
+    }
+    var polar = polar_new(bounds, pole);
+    for (var k = 0u; k < corners.n; k++) {
+        polar_cut_toward(&polar, corners.p[k]);
+    }
+    for (var k = 0u; k < bounds.count; k++) {
+        let n = bounds.planes[k];
+        let foot = pole - n * dot(n, pole);
+        if dot(foot, foot) > 0.0 {
+            let f = normalize(foot);
+            let a = edges[k].a;
+            let b = edges[k].b;
+            let turn = cross(a, b);
+            if dot(cross(a, f), turn) > 0.0 && dot(cross(f, b), turn) > 0.0 {
+                polar_cut_foot(&polar, n);
             }
         }
     }
-    return sum;
-}
-
-// rect_exact: ∫ f cos dω over the rect above the surface at unit radiance, by
-// polygon_integral_about's rule with 8 nodes per dimension and triangle (src/light/rect/mod.rs
-// GPU_EXACT_NODES): a fan from the mirror direction's hit where it is inside (else from the
-// polygon's point nearest the shading point), each fan triangle split into three at its own
-// point nearest the shading point, each triangle's nodes collapsed onto its apex (Duffy).
-fn rect_exact(s: RectShading) -> vec2<f32> {
-    let poly = clip_horizon(rect_corners(s.rect));
-    if poly.n < 3u {
-        return vec2<f32>(0.0);
-    }
-    let hit = hit_inside(poly, mirror(s.v));
-    var apex = nearest_point(poly).xyz;
-    if hit.w > 0.0 {
-        apex = hit.xyz;
-    }
-    var sum = vec2<f32>(0.0);
-    for (var k = 0u; k < poly.n; k++) {
-        let a = poly.p[k];
-        let b = poly.p[(k + 1u) % poly.n];
-        var fan = poly;
-        fan.n = 3u;
-        fan.p[0] = apex;
-        fan.p[1] = a;
-        fan.p[2] = b;
-        let x = nearest_point(fan).xyz;
-        sum += exact_triangle(s, x, apex, a);
-        sum += exact_triangle(s, x, a, b);
-        sum += exact_triangle(s, x, b, apex);
-    }
-    return sum;
+    return polar;
 }
 
 // rect_light: both lobes of a rect of unit radiance by `method` (RECT_* of plane.wgsl): 0
@@ -459,7 +410,7 @@ fn rect_light(method: u32, s: RectShading, pair: LtcPair) -> vec2<f32> {
     }
     let corners = rect_quad(s.rect);
     switch method {
-        case RECT_EXACT: { return rect_exact(s); }
+        case RECT_EXACT: { return rect_rule(s); }
         case RECT_LTC_POLYGON: {
             return lobe_weights(pair, s.f0, s.normalization) * vec2<f32>(
                 ltc_polygon(pair.spec, corners, s.clip, s.normalization),

@@ -432,11 +432,6 @@ fn widening_energy(alpha: vec2<f32>, spread: f32) -> f32 {
     return (alpha.x / alpha_wide) * (alpha.x / alpha_wide);
 }
 
-// mirror: the mirror direction of v about the normal, where a glossy lobe peaks.
-fn mirror(v: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>(-v.x, -v.y, v.z);
-}
-
 // fd_toward: Burley's diffuse toward a direction that may lie below the horizon (n·l at 0).
 fn fd_toward(v: vec3<f32>, l: vec3<f32>, alpha: f32) -> f32 {
     let sum = v + l;
@@ -445,34 +440,6 @@ fn fd_toward(v: vec3<f32>, l: vec3<f32>, alpha: f32) -> f32 {
     }
     let h = normalize(sum);
     return fd_burley(v.z, max(l.z, 0.0), dot(l, h), alpha);
-}
-
-// The 8-point Gauss–Legendre rule on [−1, 1], as src/light/sphere/quadrature.rs gauss_legendre(8) computes
-// it (nodes and weights of the positive half; the rule is symmetric). tests/gpu/sphere_light.rs
-// checks sphere_exact against the Rust rule with the same nodes.
-const GL8_NODES: array<f32, 4> = array<f32, 4>(
-    0.18343464249564980, 0.52553240991632899, 0.79666647741362684, 0.96028985649753629,
-);
-const GL8_WEIGHTS: array<f32, 4> = array<f32, 4>(
-    0.36268378337836199, 0.31370664587788738, 0.22238103445337445, 0.10122853629037679,
-);
-
-// The rule's i-th node (0…7) and weight.
-fn gl8(i: u32) -> vec2<f32> {
-    if i < 4u {
-        return vec2<f32>(-GL8_NODES[3u - i], GL8_WEIGHTS[3u - i]);
-    }
-    return vec2<f32>(GL8_NODES[i - 4u], GL8_WEIGHTS[i - 4u]);
-}
-
-// crowded: node i of the rule on [lo, hi], crowded to both ends by x ↦ x(3 − x²)/2
-// (src/light/sphere/quadrature.rs): the point and its weight.
-fn crowded(i: u32, lo: f32, hi: f32) -> vec2<f32> {
-    let r = gl8(i);
-    let mid = 0.5 * (lo + hi);
-    let half = 0.5 * (hi - lo);
-    let x = r.x;
-    return vec2<f32>(mid + half * 0.5 * x * (3.0 - x * x), r.y * half * 1.5 * (1.0 - x * x));
 }
 
 // sin and cos of φ in [−π, π] within a few ulps (WGSL allows 2⁻¹¹ absolute, which would move a
@@ -512,104 +479,99 @@ fn visible_half_azimuth(c: f32, k: f32) -> f32 {
     return acos_precise(clamp(-c / k, -1.0, 1.0));
 }
 
-// Both lobes integrated over one ring of the cap at ν = 1 − μ (src/light/sphere/quadrature.rs
-// cap_integral_about's ring), the ring split at the mirror direction's azimuth where it holds it.
-fn exact_ring(
-    s: SphereShading,
-    axis: vec3<f32>,
-    t: vec3<f32>,
-    b: vec3<f32>,
-    nu: f32,
-    focus_phi: f32,
-) -> vec2<f32> {
-    let mu = 1.0 - nu;
-    let sin_theta = sqrt(max(nu * (2.0 - nu), 0.0));
-    let half = visible_half_azimuth(mu * axis.z, sin_theta * t.z);
-    if half < 0.0 {
+// sphere_rule: w(d) · L · ∫ f cos dω over the cap above the surface by the renders' rule
+// (src/light/sphere/mod.rs sphere_rule, docs/design.md §1.14).
+fn sphere_rule(s: SphereShading, cap: Cap) -> vec2<f32> {
+    let d2 = dot(s.u, s.u);
+    return window_falloff_d2(d2, s.range) * sphere_radiance(s.intensity, s.radius)
+        * cap_rule(s.v, cap, s.alpha, s.f0);
+}
+
+// cap_rule: both lobes over the cap above the surface at unit radiance by the polar rule
+// (src/light/sphere/region.rs).
+fn cap_rule(v: vec3<f32>, cap: Cap, alpha: vec2<f32>, f0: f32) -> vec2<f32> {
+    if cap_below_horizon(cap) {
         return vec2<f32>(0.0);
     }
-    var sum = vec2<f32>(0.0);
-    let split = abs(focus_phi) < half;
-    var pieces = 1u;
-    if split {
-        pieces = 2u;
+    let polar = cap_polar(cap, mirror(v), v, alpha, f0);
+    if polar.pole.z < -1.0 {
+        return vec2<f32>(0.0);
     }
-    for (var p = 0u; p < pieces; p++) {
-        for (var i = 0u; i < 8u; i++) {
-            var node = half * gl8(i);
-            if split {
-                let lo = select(focus_phi, -half, p == 0u);
-                let hi = select(half, focus_phi, p == 0u);
-                node = crowded(i, lo, hi);
-            }
-            let sc = sincos_precise(node.x);
-            let l = axis * mu + (t * sc.y + b * sc.x) * sin_theta;
-            if l.z > 0.0 {
-                sum += node.y * exact_lobes(s.v, l, s.alpha, s.f0);
-            }
-        }
-    }
-    return sum;
+    let lobe = lobe_within(lobe_specular(polar.pole, v, alpha), polar.bounds, cap_middle(cap));
+    return vec2<f32>(
+        polar_integral(polar, lobe, rule_nodes(alpha), v, alpha, f0, 0u),
+        polar_integral(polar, lobe_round(polar.pole), RULE_NODES, v, alpha, f0, 1u),
+    );
 }
 
-// ring_frame: t in the plane of the axis and +z with t.z ≥ 0 (+x where the axis is ±z), and
-// b = axis × t (src/light/sphere/quadrature.rs).
-fn ring_frame(axis: vec3<f32>) -> mat2x3<f32> {
-    var t = vec3<f32>(1.0, 0.0, 0.0);
-    let up = vec3<f32>(0.0, 0.0, 1.0) - axis * axis.z;
+// cap_polar: the cap above the surface as a polar region, its pole at focus where the cap
+// holds it, else at its boundary's brightest point; cut where the horizon meets the circle,
+// along the circle and the horizon as they pass the pole and toward the horizon's foot
+// (src/light/sphere/region.rs). A pole below −1 says no part of the cap is visible.
+fn cap_polar(cap: Cap, focus: vec3<f32>, v: vec3<f32>, alpha: vec2<f32>, f0: f32) -> Polar {
+    let zenith = vec3<f32>(0.0, 0.0, 1.0);
+    if cap_encloses(cap) {
+        var polar = polar_new(bounds_above(vec4<f32>(0.0, 0.0, 0.0, -1.0)), focus);
+        polar_cut_both(&polar, cross(zenith, focus));
+        polar_cut_foot(&polar, zenith);
+        return polar;
+    }
+    let a = cap.axis;
+    let depth = cap.sin_sigma * cap.sin_sigma / (1.0 + cap.cos_sigma);
+    let bounds = bounds_above(vec4<f32>(a, depth));
+    let t1 = cap_up(cap);
+    let t2 = cross(a, t1);
+    let half = visible_half_azimuth(a.z * cap.cos_sigma, t1.z * cap.sin_sigma);
+    if half < 0.0 {
+        return polar_new(bounds, vec3<f32>(0.0, 0.0, -2.0));
+    }
+    var arcs: array<Arc, 5>;
+    arcs[0] = Arc(a, t1, t2, vec4<f32>(cap.cos_sigma, cap.sin_sigma, -half, 2.0 * half));
+    let cut = half < PI;
+    let e0 = arc_at(arcs[0], 1.0);
+    let e1 = arc_at(arcs[0], 0.0);
+    let c0 = normalize(vec3<f32>(e0.xy, 0.0));
+    let c1 = normalize(vec3<f32>(e1.xy, 0.0));
+    arcs[1] = Arc(c0, c1, vec3<f32>(0.0), vec4<f32>(0.0));
+    var pole = focus;
+    if !bounds_contains(bounds, focus) {
+        let best = brightest(arcs, select(1u, 2u, cut), v, alpha, f0);
+        pole = arc_at(arcs[u32(best.x)], best.y);
+    }
+    var polar = polar_new(bounds, pole);
+    polar_cut_both(&polar, cross(a, pole));
+    if cut {
+        polar_cut_both(&polar, cross(zenith, pole));
+        polar_cut_foot(&polar, zenith);
+        polar_cut_toward(&polar, c0);
+        polar_cut_toward(&polar, c1);
+    }
+    return polar;
+}
+
+// The unit vector in the plane of the cap's axis and +z, pointing up (+x where the axis is
+// vertical): a circle point's height is a.z cos σ + t1.z sin σ cos ψ.
+fn cap_up(cap: Cap) -> vec3<f32> {
+    let up = vec3<f32>(0.0, 0.0, 1.0) - cap.axis * cap.axis.z;
     if dot(up, up) > 0.0 {
-        t = normalize(up);
+        return normalize(up);
     }
-    return mat2x3<f32>(t, cross(axis, t));
+    return vec3<f32>(1.0, 0.0, 0.0);
 }
 
-// sphere_exact: w(d) · L · ∫ f cos dω over the cap's directions above the surface, by the
-// rule of src/light/sphere/quadrature.rs with 8 nodes per dimension and piece (src/light/sphere/mod.rs
-// GPU_EXACT_NODES): rings placed by ν = 1 − μ (f32 keeps a small cap's rings apart that way),
-// the ν range split where rings start to be cut (1 ∓ t_z) and at the mirror direction, each
-// piece's nodes crowded to its ends.
-fn sphere_exact(s: SphereShading, cap: Cap) -> vec2<f32> {
-    let axis = cap.axis;
-    let frame = ring_frame(axis);
-    let t = frame[0];
-    let b = frame[1];
-    let peak = mirror(s.v);
-    let focus_phi = atan2(dot(peak, b), dot(peak, t));
-    // 1 − cos σ = sin²σ/(1 + cos σ), without the cancellation; 2 for the whole sphere.
-    var widest = 2.0;
-    if !cap_encloses(cap) {
-        widest = cap.sin_sigma * cap.sin_sigma / (1.0 + cap.cos_sigma);
+// cap_middle: a point well inside the cap above the surface (src/light/sphere/region.rs).
+fn cap_middle(cap: Cap) -> vec3<f32> {
+    let a = cap.axis;
+    if cap_encloses(cap) {
+        return vec3<f32>(0.0, 0.0, 1.0);
     }
-    // The cuts, sorted: the pole, 1 ∓ t_z and the mirror's ν where inside, the rim.
-    var cuts = array<f32, 5>(0.0, 3.0, 3.0, 3.0, 3.0);
-    var count = 1u;
-    let inner = array<f32, 3>(1.0 + t.z, 1.0 - t.z, 1.0 - dot(peak, axis));
-    for (var j = 0u; j < 3u; j++) {
-        let k = inner[j];
-        if k > 0.0 && k < widest {
-            var at = count;
-            // No index below 0, even one a condition would not read.
-            while at > 0u {
-                if cuts[at - 1u] <= k {
-                    break;
-                }
-                cuts[at] = cuts[at - 1u];
-                at -= 1u;
-            }
-            cuts[at] = k;
-            count += 1u;
-        }
+    let t1 = cap_up(cap);
+    let half = visible_half_azimuth(a.z * cap.cos_sigma, t1.z * cap.sin_sigma);
+    if half < 0.0 || half >= PI {
+        return a;
     }
-    cuts[count] = widest;
-    var sum = vec2<f32>(0.0);
-    for (var p = 0u; p < count; p++) {
-        if cuts[p + 1u] > cuts[p] {
-            for (var i = 0u; i < 8u; i++) {
-                let node = crowded(i, cuts[p], cuts[p + 1u]);
-                sum += node.y * exact_ring(s, axis, t, b, node.x, focus_phi);
-            }
-        }
-    }
-    let d2 = dot(s.u, s.u);
-    return window_falloff_d2(d2, s.range) * sphere_radiance(s.intensity, s.radius) * sum;
+    let arc = Arc(a, t1, cross(a, t1), vec4<f32>(cap.cos_sigma, cap.sin_sigma, 0.0, half));
+    let edge = arc_at(arc, 1.0);
+    let top = arc_at(arc, 0.0);
+    return normalize(top + normalize(vec3<f32>(edge.xy, 0.0)));
 }

@@ -10,15 +10,12 @@ use rayon::prelude::*;
 use crate::brdf::{
     Lobes, brdf_cos_aniso, irradiance_scale, point_light_exact_aniso, window_falloff,
 };
+use crate::light::ExactRule;
 use crate::light::Shape;
-use crate::light::disk::{
-    Disk, DiskMethod, DiskShading, GPU_EXACT_NODES as DISK_GPU_EXACT_NODES, disk_light_with,
-};
-use crate::light::rect::{
-    GPU_EXACT_NODES as RECT_GPU_EXACT_NODES, Rect, RectMethod, RectShading, rect_light_with,
-};
+use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_light_with};
+use crate::light::rect::{Rect, RectMethod, RectShading, rect_light_with};
 use crate::light::sphere::cap::{Cap, SphereCase};
-use crate::light::sphere::{GPU_EXACT_NODES, SphereMethod, SphereShading, sphere_light_with};
+use crate::light::sphere::{SphereMethod, SphereShading, sphere_light_with};
 use crate::ltc::lut::Lut;
 use crate::ltc::nl_fit::{self, NlTerms};
 use crate::ltc::remedy::HorizonRule;
@@ -211,7 +208,7 @@ pub fn sphere_term(
         clip: rules.clipping,
         normalization: rules.normalization,
     };
-    let lobes = sphere_light_with(method, &shading, GPU_EXACT_NODES);
+    let lobes = sphere_light_with(method, &shading, ExactRule::Render);
     light.radiant_intensity() * combine(lobes, m.base_color)
 }
 
@@ -242,7 +239,7 @@ pub fn rect_term(
         clip: rules.clipping,
         normalization: rules.normalization,
     };
-    let lobes = rect_light_with(method, &shading, RECT_GPU_EXACT_NODES);
+    let lobes = rect_light_with(method, &shading, ExactRule::Render);
     let scale = window_falloff(centre.length(), light.range_or_infinity()) / rect.area();
     light.radiant_intensity() * scale * combine(lobes, m.base_color)
 }
@@ -274,7 +271,7 @@ pub fn disk_term(
         clip: rules.clipping,
         normalization: rules.normalization,
     };
-    let lobes = disk_light_with(method, &shading, DISK_GPU_EXACT_NODES);
+    let lobes = disk_light_with(method, &shading, ExactRule::Render);
     let scale = window_falloff(centre.length(), light.range_or_infinity()) / disk.area();
     light.radiant_intensity() * scale * combine(lobes, m.base_color)
 }

@@ -8,6 +8,8 @@
 //! `gpu::scene::light_elements` and light_shape.wgsl's `add_light`.
 
 pub mod disk;
+pub mod fan;
+pub mod polar;
 pub mod rect;
 pub mod sphere;
 
@@ -15,6 +17,16 @@ use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes};
 use crate::ltc::{Clipping, LtcPair, Normalization};
+
+/// Which rule a light's exact method integrates by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExactRule {
+    /// The shape's own rule at this many Gauss–Legendre nodes a dimension and piece: `eval`'s
+    /// (`EXACT_NODES`), the measures' and the tests' references (docs/design.md §1.10–§1.12).
+    Nodes(usize),
+    /// The renders' rule, on the CPU and the GPU alike (docs/design.md §1.14).
+    Render,
+}
 
 /// Where a light's light comes from.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

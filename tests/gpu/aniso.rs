@@ -7,7 +7,7 @@ use crate::gpu_common::{assert_close, gpu, run_probe};
 use glam::DVec3;
 use ltc_lab::brdf::Alpha;
 use ltc_lab::cpu::render;
-use ltc_lab::gpu::{brdf, brdf_aniso, ltc, ltc_aniso, sphere_light};
+use ltc_lab::gpu::{brdf, brdf_aniso, ltc, ltc_aniso};
 use ltc_lab::light::disk::DiskMethod;
 use ltc_lab::light::rect::RectMethod;
 use ltc_lab::light::sphere::SphereMethod;
@@ -86,7 +86,8 @@ fn the_gpu_lookup_is_the_cpu_lookup() {
         brdf_aniso::SOURCE,
         ltc::SOURCE,
         ltc_aniso::SOURCE,
-        sphere_light::SOURCE,
+        &ltc_lab::gpu::light::sources(),
+        crate::gpu_common::METHOD_CODES,
         PROBE,
     ]
     .join("\n");

@@ -4,11 +4,11 @@
 //! edge-on, from 0.1° to some 90° across; then renders of the failure preset by every
 //! method, GPU against CPU.
 
-use crate::gpu_common::{PROBE_LTC, condition, gpu, pack_pair, run_probe};
+use crate::gpu_common::{PROBE_LTC, condition, gpu, lights_probe_source, pack_pair, run_probe};
 use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
-use ltc_lab::gpu::{brdf, disk_light, ltc, rect_light, sphere_light};
-use ltc_lab::light::disk::{Disk, DiskMethod, DiskShading, GPU_EXACT_NODES, disk_light_with};
+use ltc_lab::light::ExactRule;
+use ltc_lab::light::disk::{Disk, DiskMethod, DiskShading, disk_light_with};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{Clipping, LtcPair, Normalization};
 use ltc_lab::measure::parity::RADIANCE_TOLERANCE;
@@ -120,17 +120,7 @@ fn gpu_disk_lights_match_the_cpu_methods() {
     let mut rng = SplitMix64(43);
     let cases: Vec<Case> = (0..4096).map(|_| draw(&mut rng, lut)).collect();
     let input: Vec<[f32; 4]> = cases.iter().flat_map(pack).collect();
-    let source = [
-        brdf::SOURCE,
-        ltc_lab::gpu::brdf_aniso::SOURCE,
-        ltc::SOURCE,
-        sphere_light::SOURCE,
-        rect_light::SOURCE,
-        disk_light::SOURCE,
-        PROBE,
-        PROBE_LTC,
-    ]
-    .join("\n");
+    let source = lights_probe_source(&[PROBE, PROBE_LTC].concat());
     let got = run_probe(
         &source,
         &[],
@@ -152,7 +142,7 @@ fn gpu_disk_lights_match_the_cpu_methods() {
             };
             let mut out = [0.0; 6];
             for m in DiskMethod::ALL {
-                let lobes = disk_light_with(m, &s, GPU_EXACT_NODES);
+                let lobes = disk_light_with(m, &s, ExactRule::Render);
                 out[2 * m.index()] = lobes.specular;
                 out[2 * m.index() + 1] = lobes.diffuse;
             }

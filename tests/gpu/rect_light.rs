@@ -4,11 +4,13 @@
 //! rects: across the horizon, below it, facing away, from 0.1° to some 90° across; then
 //! renders of the failure preset by every method, GPU against CPU.
 
-use crate::gpu_common::{PROBE_LTC, condition, gpu, pack_pair, run_probe};
+use crate::gpu_common::{
+    METHOD_CODES, PROBE_LTC, condition, gpu, lights_probe_source, pack_pair, run_probe,
+};
 use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
-use ltc_lab::gpu::{brdf, ltc, rect_light, sphere_light};
-use ltc_lab::light::rect::{GPU_EXACT_NODES, Rect, RectMethod, RectShading, rect_light_with};
+use ltc_lab::light::ExactRule;
+use ltc_lab::light::rect::{Rect, RectMethod, RectShading, rect_light_with};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{Clipping, LtcPair, Normalization};
 use ltc_lab::measure::parity::RADIANCE_TOLERANCE;
@@ -18,10 +20,6 @@ const PROBE: &str = "
 @group(0) @binding(0) var<storage, read> probe_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> probe_out: array<vec4<f32>>;
 const PER_CASE: u32 = 12u;
-const RECT_EXACT: u32 = 0u;
-const RECT_LTC_POLYGON: u32 = 1u;
-const RECT_LTC_PROXY: u32 = 2u;
-const RECT_LTC_PROXY_FAST: u32 = 3u;
 @compute @workgroup_size(64)
 fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x;
@@ -124,16 +122,7 @@ fn gpu_rect_lights_match_the_cpu_methods() {
     let mut rng = SplitMix64(41);
     let cases: Vec<Case> = (0..4096).map(|_| draw(&mut rng, lut)).collect();
     let input: Vec<[f32; 4]> = cases.iter().flat_map(pack).collect();
-    let source = [
-        brdf::SOURCE,
-        ltc_lab::gpu::brdf_aniso::SOURCE,
-        ltc::SOURCE,
-        sphere_light::SOURCE,
-        rect_light::SOURCE,
-        PROBE,
-        PROBE_LTC,
-    ]
-    .join("\n");
+    let source = lights_probe_source(&[METHOD_CODES, PROBE, PROBE_LTC].concat());
     let got = run_probe(
         &source,
         &[],
@@ -155,7 +144,7 @@ fn gpu_rect_lights_match_the_cpu_methods() {
             };
             let mut out = [0.0; 10];
             for m in RectMethod::ALL {
-                let lobes = rect_light_with(m, &s, GPU_EXACT_NODES);
+                let lobes = rect_light_with(m, &s, ExactRule::Render);
                 out[2 * m.index()] = lobes.specular;
                 out[2 * m.index() + 1] = lobes.diffuse;
             }

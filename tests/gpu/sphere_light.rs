@@ -3,13 +3,14 @@
 //! representative point — measured directly on random spheres: cut by the horizon, below it,
 //! enclosing the point, from a tenth of a degree to 60°.
 
-use crate::gpu_common::{PROBE_LTC, condition, gpu, gpu_frame, pack_pair, run_probe};
+use crate::gpu_common::{
+    METHOD_CODES, PROBE_LTC, condition, gpu, gpu_frame, lights_probe_source, pack_pair, run_probe,
+};
 use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
-use ltc_lab::gpu::{brdf, ltc, sphere_light};
 use ltc_lab::light::sphere::cap::Cap;
 use ltc_lab::light::sphere::{
-    GPU_EXACT_NODES, SphereShading, sphere_exact, sphere_ltc_disk, sphere_representative_point,
+    SphereShading, sphere_ltc_disk, sphere_representative_point, sphere_rule,
 };
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{Clipping, LtcPair, Normalization};
@@ -36,7 +37,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     let cap = cap_of_sphere(s.u, s.radius);
     let disk = sphere_ltc_disk(s, pair, cap);
     probe_out[2u * i] = vec4<f32>(disk, sphere_representative_point(s, cap));
-    probe_out[2u * i + 1u] = vec4<f32>(sphere_exact(s, cap), 0.0, 0.0);
+    probe_out[2u * i + 1u] = vec4<f32>(sphere_rule(s, cap), 0.0, 0.0);
 }
 ";
 
@@ -93,14 +94,7 @@ fn pack(c: &Case) -> Vec<[f32; 4]> {
 
 /// The probe `tail` composed after the sphere lights' shaders, run over `input`.
 fn probe(tail: &str, input: &[[f32; 4]], outputs: usize) -> Vec<[f32; 4]> {
-    let source = [
-        brdf::SOURCE,
-        ltc_lab::gpu::brdf_aniso::SOURCE,
-        ltc::SOURCE,
-        sphere_light::SOURCE,
-        tail,
-    ]
-    .join("\n");
+    let source = lights_probe_source(&[METHOD_CODES, tail].concat());
     run_probe(&source, &[], bytemuck::cast_slice(input), &[], outputs)
 }
 
@@ -134,7 +128,7 @@ fn gpu_sphere_lights_match_the_cpu_methods() {
                 sphere_ltc_disk(&s, &cap),
                 sphere_representative_point(&s, &cap),
             );
-            let exact = sphere_exact(&s, &cap, GPU_EXACT_NODES);
+            let exact = sphere_rule(&s, &cap);
             [
                 disk.specular,
                 disk.diffuse,

@@ -8,7 +8,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 use ltc_lab::brdf::{self, Alpha, brdf_cos};
 use ltc_lab::light::disk::{
-    Disk, DiskMethod, DiskShading, GPU_EXACT_NODES, disk_exact, disk_integral_about, disk_light,
+    Disk, DiskMethod, DiskShading, RENDER_NODES, disk_exact, disk_integral_about, disk_light,
     disk_light_with, ltc_disk_light,
 };
 use ltc_lab::light::rect::{clip_horizon, polygon_form_factor, polygon_integral};
@@ -243,7 +243,7 @@ fn the_renders_rule_at(v: DVec3) {
             .into_iter()
             .filter(|d| d.radius <= d.centre.length())
         {
-            let coarse = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, GPU_EXACT_NODES);
+            let coarse = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, RENDER_NODES);
             let fine = disk_exact(v, &disk, Alpha::isotropic(alpha), 0.04, 64);
             assert!(
                 (coarse.specular - fine.specular).abs() <= 0.02 * fine.specular,
@@ -309,7 +309,7 @@ fn every_method_is_finite_and_non_negative_at_the_limits() {
                 normalization: Normalization::Corrected,
             };
             for method in DiskMethod::ALL {
-                let lobes = disk_light_with(method, &s, GPU_EXACT_NODES);
+                let lobes = disk_light_with(method, &s, ltc_lab::light::ExactRule::Render);
                 for x in [lobes.specular, lobes.diffuse] {
                     let ok =
                         x.is_finite() && (x >= 0.0 || (!clip.case2 && method != DiskMethod::Exact));

@@ -37,7 +37,9 @@ fn expression_value(
 }
 
 /// The shaders' constants that only the shaders read, each with why Rust has no twin.
-const SHADER_ONLY: [(&str, &str); 6] = [
+const SHADER_ONLY: [(&str, &str); 7] = [
+    // polar.wgsl's stand-in for T = tan(u/2) at u = π, where Rust has f64::INFINITY.
+    ("T_INFINITE", "an infinite end f32 cannot hold"),
     // bin.wgsl's workgroup: Rust dispatches its passes by tile, not by it.
     ("WORKGROUP", "bin.wgsl's workgroup size"),
     // Which shapes a method file shades: written by Rust as it composes the file
@@ -111,12 +113,14 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         .chain(ltc_lab::ltc::aniso::AnisoAxes::ALL.map(ltc_aniso::axes_constant))
         .chain(ltc_lab::ltc::aniso::Stored::ALL.map(ltc_aniso::stored_constant))
         .map(|(value, name)| (name, vec![f64::from(value)]));
-    // The positive half of the 8-point rule in increasing order, as sphere_light.wgsl's
-    // `gl8` unfolds it.
-    let mut gl8 = ltc_lab::light::sphere::quadrature::gauss_legendre(8);
-    gl8.retain(|&(x, _)| x > 0.0);
-    gl8.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let half = |pick: fn(&(f64, f64)) -> f64| f32s(&gl8.iter().map(pick).collect::<Vec<_>>());
+    // The positive half of a rule in increasing order, as polar.wgsl's `rule` unfolds it.
+    let half = |n: usize, pick: fn(&(f64, f64)) -> f64| {
+        let mut rule = ltc_lab::light::sphere::quadrature::gauss_legendre(n);
+        rule.retain(|&(x, _)| x > 0.0);
+        rule.sort_by(|a, b| a.0.total_cmp(&b.0));
+        f32s(&rule.iter().map(pick).collect::<Vec<_>>())
+    };
+    use ltc_lab::light::polar;
     let background = ltc_lab::output::BACKGROUND.map(|c| f64::from(c) / 255.0);
     codes
         .chain([
@@ -157,8 +161,22 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
                 "DISK_POINT_LIMIT",
                 f32s(&[ltc_lab::light::disk::DISK_POINT_LIMIT]),
             ),
-            ("GL8_NODES", half(|&(x, _)| x)),
-            ("GL8_WEIGHTS", half(|&(_, w)| w)),
+            ("GL12_NODES", half(12, |&(x, _)| x)),
+            ("GL12_WEIGHTS", half(12, |&(_, w)| w)),
+            ("GL24_NODES", half(24, |&(x, _)| x)),
+            ("GL24_WEIGHTS", half(24, |&(_, w)| w)),
+            ("RULE_NODES", vec![polar::RULE_NODES as f64]),
+            ("RULE_NODES_ANISO", vec![polar::RULE_NODES_ANISO as f64]),
+            ("MAX_PLANES", vec![polar::MAX_PLANES as f64]),
+            ("MAX_CUTS", vec![polar::MAX_CUTS as f64]),
+            ("BRIGHTEST_SAMPLES", vec![polar::BRIGHTEST_SAMPLES as f64]),
+            ("BRIGHTEST_STEPS", vec![polar::BRIGHTEST_STEPS as f64]),
+            ("PIECE_MIN_WIDTH", f32s(&[polar::PIECE_MIN_WIDTH])),
+            ("SAME_DIRECTION", f32s(&[polar::SAME_DIRECTION])),
+            (
+                "DISK_RENDER_NODES",
+                vec![ltc_lab::light::disk::RENDER_NODES as f64],
+            ),
             ("BACKGROUND", f32s(&background)),
             (
                 "METHOD_FILE_STEPS",

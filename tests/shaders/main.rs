@@ -3,7 +3,7 @@
 //! between Rust and WGSL carry the same names, and the constants and bindings Rust writes
 //! for the shaders are the WGSL's.
 
-use ltc_lab::gpu::{bin_module_source, brdf, brdf_aniso, ltc, plane_module_source, sphere_light};
+use ltc_lab::gpu::{bin_module_source, brdf, brdf_aniso, light, ltc, plane_module_source};
 
 mod aniso;
 mod constants;
@@ -14,6 +14,17 @@ mod names;
 /// material: `exact_lobes`).
 fn brdf_sources() -> String {
     [brdf::SOURCE, brdf_aniso::SOURCE].join("\n")
+}
+
+/// brdf, ltc and the lights' files, with the method codes light_shape.wgsl defines.
+fn lights_source() -> String {
+    [
+        &brdf_sources(),
+        ltc::SOURCE,
+        &light::sources(),
+        "const RECT_EXACT: u32 = 0u; const RECT_LTC_POLYGON: u32 = 1u; const RECT_LTC_PROXY: u32 = 2u; const RECT_LTC_PROXY_FAST: u32 = 3u; const DISK_EXACT: u32 = 0u; const DISK_LTC_DISK: u32 = 1u;",
+    ]
+    .join("\n")
 }
 
 fn validate(name: &str, src: &str) -> naga::Module {
@@ -49,8 +60,8 @@ fn every_wgsl_file_validates() {
         }
     }
     validate(
-        "brdf.wgsl + brdf_aniso.wgsl + ltc.wgsl + sphere_light.wgsl",
-        &[&brdf_sources(), ltc::SOURCE, sphere_light::SOURCE].join("\n"),
+        "brdf.wgsl + brdf_aniso.wgsl + ltc.wgsl + the lights' files",
+        &lights_source(),
     );
     let module = validate("scene.wgsl + bin.wgsl", &bin_module_source());
     for entry in ["bin_count", "bin_scan", "bin_write"] {

@@ -1,9 +1,9 @@
 //! The functions mirrored between Rust and WGSL carry the same names (docs/design.md §5.1):
 //! the BRDF's and the LTC's, the sphere light's and the disk light's.
 
-use ltc_lab::gpu::{ltc, plane_module_source, sphere_light};
+use ltc_lab::gpu::plane_module_source;
 
-use crate::{brdf_sources, function_names, validate};
+use crate::{function_names, lights_source, validate};
 
 #[test]
 fn mirrored_functions_have_the_same_names() {
@@ -57,8 +57,7 @@ fn mirrored_functions_have_the_same_names() {
 /// The sphere lights' functions carry their Rust names (a method `Cap::f` as `cap_f`).
 #[test]
 fn sphere_light_functions_have_the_rust_names() {
-    let source = [&brdf_sources(), ltc::SOURCE, sphere_light::SOURCE].join("\n");
-    let module = validate("sphere_light", &source);
+    let module = validate("sphere_light", &lights_source());
     let wgsl = function_names(&module);
     // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
     #[allow(unused_imports)]
@@ -70,8 +69,8 @@ fn sphere_light_functions_have_the_rust_names() {
     };
     #[allow(unused_imports)]
     use ltc_lab::light::sphere::{
-        fd_toward, mirror, sphere_exact, sphere_ltc_disk, sphere_point, sphere_radiance,
-        sphere_representative_point,
+        fd_toward, mirror, region::cap_polar, region::cap_rule, sphere_ltc_disk, sphere_point,
+        sphere_radiance, sphere_representative_point, sphere_rule,
     };
     #[allow(unused_imports)]
     use ltc_lab::ltc::sphere::illuminance_sphere;
@@ -94,7 +93,9 @@ fn sphere_light_functions_have_the_rust_names() {
         "sphere_ltc_disk",
         "sphere_representative_point",
         "fd_toward",
-        "sphere_exact",
+        "sphere_rule",
+        "cap_rule",
+        "cap_polar",
         "sphere_point",
         "visible_half_azimuth",
         "mirror",
@@ -107,18 +108,7 @@ fn sphere_light_functions_have_the_rust_names() {
 /// `Segment::f` as `segment_f`).
 #[test]
 fn disk_light_functions_have_the_rust_names() {
-    use ltc_lab::gpu::{disk_light, rect_light};
-    let source = [
-        &brdf_sources(),
-        ltc::SOURCE,
-        sphere_light::SOURCE,
-        rect_light::SOURCE,
-        disk_light::SOURCE,
-        // The method codes plane.wgsl defines.
-        "const RECT_EXACT: u32 = 0u; const RECT_LTC_POLYGON: u32 = 1u; const RECT_LTC_PROXY: u32 = 2u; const RECT_LTC_PROXY_FAST: u32 = 3u; const DISK_EXACT: u32 = 0u; const DISK_LTC_DISK: u32 = 1u;",
-    ]
-    .join("\n");
-    let module = validate("disk_light", &source);
+    let module = validate("disk_light", &lights_source());
     let wgsl = function_names(&module);
     // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
     #[allow(unused_imports)]
@@ -162,6 +152,66 @@ fn disk_light_functions_have_the_rust_names() {
         "cone_image",
         "cone_integral",
         "hemisphere",
+    ] {
+        assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
+
+/// The renders' exact rule carries its Rust names in polar.wgsl and the shapes' files (a
+/// method `Bounds::f` as `bounds_f`, `Lobe::f` as `lobe_f`, `Polar::f` as `polar_f`, `Arc::f`
+/// as `arc_f`).
+#[test]
+fn exact_rule_functions_have_the_rust_names() {
+    let module = validate("plane", &plane_module_source(false));
+    let wgsl = function_names(&module);
+    // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
+    #[allow(unused_imports)]
+    use ltc_lab::light::fan::fan_integral;
+    #[allow(unused_imports)]
+    use ltc_lab::light::polar::{
+        Arc, Bounds, Lobe, Polar, brightest, cap_meridian, mirror, plane_meridian, rule,
+        rule_nodes, toward,
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::light::rect::region::{polygon_polar, rect_rule};
+    let _ = (
+        Bounds::above,
+        Bounds::push,
+        Bounds::contains,
+        Bounds::meridian,
+        Lobe::round,
+        Lobe::specular,
+        Lobe::within,
+        Polar::new,
+        Polar::cut_toward,
+        Polar::cut_both,
+        Arc::at,
+        Arc::tangent,
+    );
+    for f in [
+        "bounds_above",
+        "bounds_push",
+        "bounds_contains",
+        "bounds_meridian",
+        "plane_meridian",
+        "cap_meridian",
+        "lobe_round",
+        "lobe_specular",
+        "lobe_within",
+        "polar_new",
+        "polar_cut_toward",
+        "polar_cut_both",
+        "polar_integral",
+        "arc_at",
+        "arc_tangent",
+        "brightest",
+        "fan_integral",
+        "rule",
+        "rule_nodes",
+        "toward",
+        "mirror",
+        "rect_rule",
+        "polygon_polar",
     ] {
         assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
     }

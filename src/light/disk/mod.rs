@@ -10,8 +10,8 @@ use std::f64::consts::PI;
 use glam::{DMat3, DVec3};
 
 use crate::brdf::{self, Alpha, Lobes};
-use crate::light::point_lobes;
 use crate::light::sphere::disk::{cone_image, cone_integral, hemisphere};
+use crate::light::{ExactRule, point_lobes};
 use crate::ltc::{Clipping, Ltc, LtcPair, Normalization};
 use crate::named::named_enum;
 
@@ -97,9 +97,11 @@ impl DiskMethod {
 /// holds the rule to its bound against Lambert's edge formula over a fine polygon.
 pub const EXACT_NODES: usize = 64;
 
-/// Nodes per dimension and piece of the renders' exact method, on the CPU and in
-/// shaders/disk_light.wgsl alike: 4 pieces of 64 BRDF evaluations per light.
-pub const GPU_EXACT_NODES: usize = 8;
+/// Nodes per dimension and piece of the renders' exact method (`ExactRule::Render`), on the
+/// CPU and in shaders/disk_light.wgsl alike: 4 pieces of 144 BRDF evaluations per light. The
+/// disk keeps its plane rule (docs/design.md §1.14): in the disk's own polar coordinates a disk
+/// seen edge-on stays round, where the directions' polar rule sees a needle.
+pub const RENDER_NODES: usize = 12;
 
 /// Below this `angular_size` every method shades a disk as its oriented point light, as a
 /// sphere is below `sphere::POINT_LIMIT_SIN_SIGMA` (the same bound, for the same reason: the
@@ -124,11 +126,11 @@ pub struct DiskShading<'a> {
 /// The radiance toward `v` of a disk of unit radiance, per lobe (base colour 1), the exact
 /// method by `EXACT_NODES`. A disk facing away gives 0.
 pub fn disk_light(method: DiskMethod, s: &DiskShading<'_>) -> Lobes<f64> {
-    disk_light_with(method, s, EXACT_NODES)
+    disk_light_with(method, s, ExactRule::Nodes(EXACT_NODES))
 }
 
-/// `disk_light` with `exact_nodes` nodes per dimension and piece for the exact method.
-pub fn disk_light_with(method: DiskMethod, s: &DiskShading<'_>, exact_nodes: usize) -> Lobes<f64> {
+/// `disk_light` with the exact method by `rule` (the renders take `ExactRule::Render`).
+pub fn disk_light_with(method: DiskMethod, s: &DiskShading<'_>, rule: ExactRule) -> Lobes<f64> {
     if !s.disk.faces_origin() {
         return Lobes::default();
     }
@@ -136,7 +138,13 @@ pub fn disk_light_with(method: DiskMethod, s: &DiskShading<'_>, exact_nodes: usi
         return disk_point(method, s);
     }
     match method {
-        DiskMethod::Exact => disk_exact(s.v, &s.disk, s.alpha, s.f0, exact_nodes),
+        DiskMethod::Exact => {
+            let nodes = match rule {
+                ExactRule::Nodes(nodes) => nodes,
+                ExactRule::Render => RENDER_NODES,
+            };
+            disk_exact(s.v, &s.disk, s.alpha, s.f0, nodes)
+        }
         DiskMethod::LtcDisk => disk_ltc(s),
         DiskMethod::LtcPoint => disk_point(method, s),
     }

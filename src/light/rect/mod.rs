@@ -6,11 +6,12 @@
 
 pub mod polygon;
 pub mod quadrature;
+pub mod region;
 
 use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes};
-use crate::light::point_lobes;
+use crate::light::{ExactRule, point_lobes};
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
 
@@ -111,12 +112,6 @@ impl RectMethod {
 /// tests/lights/rect_light.rs holds the rule to its bound against Lambert's closed form.
 pub const EXACT_NODES: usize = 64;
 
-/// Nodes per dimension and triangle of the renders' exact method, on the CPU and in
-/// shaders/rect_light.wgsl alike (the sphere's `GPU_EXACT_NODES`): at most 15 triangles of 64
-/// BRDF evaluations per light (the clipped polygon's fan of up to 5, each split in three at
-/// its point nearest the shading point).
-pub const GPU_EXACT_NODES: usize = 8;
-
 /// Below this `angular_size` every method shades a rect as its oriented point light. The
 /// edge formula sums terms of size `s/d` to a value of size `(s/d)²`: its f32 rounding is
 /// some `2⁻²⁴ d/s` of the value, 6e-5 here, while the point light differs from the rect by
@@ -140,11 +135,11 @@ pub struct RectShading<'a> {
 /// The radiance toward `v` of a rect of unit radiance, per lobe (base colour 1), the exact
 /// method by `EXACT_NODES`. A rect facing away gives 0.
 pub fn rect_light(method: RectMethod, s: &RectShading<'_>) -> Lobes<f64> {
-    rect_light_with(method, s, EXACT_NODES)
+    rect_light_with(method, s, ExactRule::Nodes(EXACT_NODES))
 }
 
-/// `rect_light` with `exact_nodes` nodes per dimension and triangle for the exact method.
-pub fn rect_light_with(method: RectMethod, s: &RectShading<'_>, exact_nodes: usize) -> Lobes<f64> {
+/// `rect_light` with the exact method by `rule` (the renders take `ExactRule::Render`).
+pub fn rect_light_with(method: RectMethod, s: &RectShading<'_>, rule: ExactRule) -> Lobes<f64> {
     if !s.rect.faces_origin() {
         return Lobes::default();
     }
@@ -154,7 +149,10 @@ pub fn rect_light_with(method: RectMethod, s: &RectShading<'_>, exact_nodes: usi
     let corners = s.rect.corners();
     let (clip, normalization) = (s.clip, s.normalization);
     match method {
-        RectMethod::Exact => rect_exact(s.v, &s.rect, s.alpha, s.f0, exact_nodes),
+        RectMethod::Exact => match rule {
+            ExactRule::Nodes(nodes) => rect_exact(s.v, &s.rect, s.alpha, s.f0, nodes),
+            ExactRule::Render => region::rect_rule(s.v, &s.rect, s.alpha, s.f0),
+        },
         RectMethod::LtcPolygon => {
             by_lobe(s, &|ltc| ltc_polygon(ltc, &corners, clip, normalization))
         }

@@ -7,10 +7,13 @@
 pub mod cap;
 pub mod disk;
 pub mod quadrature;
+pub mod region;
 
 use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes, MIN_LIGHT_DISTANCE};
+use crate::light::ExactRule;
+pub use crate::light::polar::mirror;
 use crate::light::sphere::cap::Cap;
 use crate::light::sphere::quadrature::cap_integral_about;
 use crate::ltc::{Clipping, LtcPair, Normalization};
@@ -81,12 +84,6 @@ pub struct SphereShading<'a> {
 /// (tests/lights/sphere_light.rs compares it with 128 nodes).
 pub const EXACT_NODES: usize = 64;
 
-/// Gauss–Legendre nodes per dimension and piece of the GPU's exact method
-/// (`shaders/sphere_light.wgsl` `sphere_exact`, the same rule): within 2% of `EXACT_NODES`'s
-/// specular lobe for α ≥ 0.2 and 1e-3 of its diffuse lobe (tests/lights/sphere_light.rs), at up to
-/// 512 BRDF evaluations per light where 64 nodes would take 32 768.
-pub const GPU_EXACT_NODES: usize = 8;
-
 /// Below this `sin σ = r/d` every method shades a sphere as its point light: the cap's mean
 /// differs from its centre's value by O((σ/α)²) ≤ 1e-6 even at the table's smallest α
 /// (1e-4), far inside each method's own error, while the closed forms cancel or overflow as
@@ -122,22 +119,25 @@ impl<'a> SphereShading<'a> {
 
 /// The radiance toward `v`, per lobe (base colour 1): `specular + c · diffuse`.
 pub fn sphere_light(method: SphereMethod, s: &SphereShading<'_>) -> Lobes<f64> {
-    sphere_light_with(method, s, EXACT_NODES)
+    sphere_light_with(method, s, ExactRule::Nodes(EXACT_NODES))
 }
 
-/// `sphere_light` with `exact_nodes` nodes per dimension for the exact method: the renders
-/// take `GPU_EXACT_NODES` on the CPU too, so that the two renderers integrate by one rule.
+/// `sphere_light` with the exact method by `rule`: the renders take `ExactRule::Render` on
+/// the CPU, as the GPU does.
 pub fn sphere_light_with(
     method: SphereMethod,
     s: &SphereShading<'_>,
-    exact_nodes: usize,
+    rule: ExactRule,
 ) -> Lobes<f64> {
     let cap = Cap::of_sphere(s.u, s.radius).filter(|c| c.sin_sigma >= POINT_LIMIT_SIN_SIGMA);
     let Some(cap) = cap else {
         return sphere_point(method, s);
     };
     match method {
-        SphereMethod::Exact => sphere_exact(s, &cap, exact_nodes),
+        SphereMethod::Exact => match rule {
+            ExactRule::Nodes(nodes) => sphere_exact(s, &cap, nodes),
+            ExactRule::Render => sphere_rule(s, &cap),
+        },
         SphereMethod::LtcPoint => sphere_ltc_point(s),
         SphereMethod::LtcDisk => sphere_ltc_disk(s, &cap),
         SphereMethod::RepresentativePoint => sphere_representative_point(s, &cap),
@@ -178,6 +178,17 @@ pub fn sphere_exact(s: &SphereShading<'_>, cap: &Cap, nodes: usize) -> Lobes<f64
     Lobes {
         specular: scale * specular,
         diffuse: scale * diffuse,
+    }
+}
+
+/// The exact radiance by the renders' rule (`region::cap_rule`): `w(d) · L` times the
+/// integral over the visible cap.
+pub fn sphere_rule(s: &SphereShading<'_>, cap: &Cap) -> Lobes<f64> {
+    let scale = window(s) * sphere_radiance(s.intensity, s.radius);
+    let lobes = region::cap_rule(s.v, cap, s.alpha, s.f0);
+    Lobes {
+        specular: scale * lobes.specular,
+        diffuse: scale * lobes.diffuse,
     }
 }
 
@@ -250,11 +261,6 @@ pub fn widening_energy(alpha: Alpha<f64>, spread: f64) -> f64 {
         return (alpha.x / wide(alpha.x)).powi(2);
     }
     (alpha.x / wide(alpha.x)) * (alpha.y / wide(alpha.y))
-}
-
-/// The mirror direction of `v` about the normal `+z`: where a glossy lobe peaks.
-pub fn mirror(v: DVec3) -> DVec3 {
-    DVec3::new(-v.x, -v.y, v.z)
 }
 
 /// Burley's diffuse BRDF (base colour 1) toward a light direction that may lie below the
