@@ -191,7 +191,7 @@ pub fn sphere_term(
     p: &SurfacePoint,
     (light, radius): (&Light, f64),
     rules: &LtcRules,
-    method: SphereMethod,
+    (method, rule): (SphereMethod, ExactRule),
 ) -> DVec3 {
     let m = &scene.material;
     let shading = SphereShading {
@@ -208,7 +208,7 @@ pub fn sphere_term(
         clip: rules.clipping,
         normalization: rules.normalization,
     };
-    let lobes = sphere_light_with(method, &shading, ExactRule::Render);
+    let lobes = sphere_light_with(method, &shading, rule);
     light.radiant_intensity() * combine(lobes, m.base_color)
 }
 
@@ -221,7 +221,7 @@ pub fn rect_term(
     p: &SurfacePoint,
     (light, half_u, half_v): (&Light, DVec3, DVec3),
     rules: &LtcRules,
-    method: RectMethod,
+    (method, rule): (RectMethod, ExactRule),
 ) -> DVec3 {
     let m = &scene.material;
     let centre = DVec3::from(light.position) - p.position;
@@ -239,7 +239,7 @@ pub fn rect_term(
         clip: rules.clipping,
         normalization: rules.normalization,
     };
-    let lobes = rect_light_with(method, &shading, ExactRule::Render);
+    let lobes = rect_light_with(method, &shading, rule);
     let scale = window_falloff(centre.length(), light.range_or_infinity()) / rect.area();
     light.radiant_intensity() * scale * combine(lobes, m.base_color)
 }
@@ -253,7 +253,7 @@ pub fn disk_term(
     p: &SurfacePoint,
     (light, normal, radius): (&Light, DVec3, f64),
     rules: &LtcRules,
-    method: DiskMethod,
+    (method, rule): (DiskMethod, ExactRule),
 ) -> DVec3 {
     let m = &scene.material;
     let centre = DVec3::from(light.position) - p.position;
@@ -271,17 +271,19 @@ pub fn disk_term(
         clip: rules.clipping,
         normalization: rules.normalization,
     };
-    let lobes = disk_light_with(method, &shading, ExactRule::Render);
+    let lobes = disk_light_with(method, &shading, rule);
     let scale = window_falloff(centre.length(), light.range_or_infinity()) / disk.area();
     light.radiant_intensity() * scale * combine(lobes, m.base_color)
 }
 
-/// One side of a render: its method for each light shape, and the table its LTC methods
-/// read.
+/// One side of a render: its method for each light shape, the table its LTC methods read,
+/// and the rule its exact methods integrate by (the renders' own, but for a reference made
+/// by another: `measure::exact_rule`).
 #[derive(Clone, Copy, Debug)]
 pub struct Side<'a> {
     pub methods: ShapeMethods,
     pub lut: &'a Lut,
+    pub rule: ExactRule,
 }
 
 impl<'a> Side<'a> {
@@ -290,6 +292,7 @@ impl<'a> Side<'a> {
         Self {
             methods: s.a,
             lut: tables.a,
+            rule: ExactRule::Render,
         }
     }
 
@@ -298,6 +301,7 @@ impl<'a> Side<'a> {
         Self {
             methods: s.b,
             lut: tables.for_b(s),
+            rule: ExactRule::Render,
         }
     }
 }
@@ -315,16 +319,21 @@ pub fn light_term(
     match light.shape {
         Shape::Point if side.methods.point.is_ltc() => ltc_term(scene, px, p, light, rules),
         Shape::Point => exact_term(scene, &px.frame, p, light),
-        Shape::Sphere { radius } => {
-            sphere_term(scene, px, p, (light, radius), rules, side.methods.sphere)
-        }
+        Shape::Sphere { radius } => sphere_term(
+            scene,
+            px,
+            p,
+            (light, radius),
+            rules,
+            (side.methods.sphere, side.rule),
+        ),
         Shape::Rect { half_u, half_v } => rect_term(
             scene,
             px,
             p,
             (light, half_u, half_v),
             rules,
-            side.methods.rect,
+            (side.methods.rect, side.rule),
         ),
         Shape::Disk { normal, radius } => disk_term(
             scene,
@@ -332,7 +341,7 @@ pub fn light_term(
             p,
             (light, normal, radius),
             rules,
-            side.methods.disk,
+            (side.methods.disk, side.rule),
         ),
     }
 }

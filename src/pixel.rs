@@ -10,6 +10,7 @@ use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
 use crate::cpu::{LtcPixel, disk_term, exact_term, ltc_term, rect_term, sphere_term};
+use crate::light::ExactRule;
 use crate::light::Shape;
 use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
@@ -173,28 +174,36 @@ pub fn pixel_terms(
                 Shape::Sphere { radius } => {
                     // Every sphere method, made once; each side's value its method's.
                     let sphere = (light, radius);
-                    let all =
-                        SphereMethod::ALL.map(|m| sphere_term(scene, &px, p, sphere, rules, m));
+                    let all = SphereMethod::ALL
+                        .map(|m| sphere_term(scene, &px, p, sphere, rules, (m, ExactRule::Render)));
                     term.ltc = all[spheres[0].index()];
                     term.exact = all[spheres[1].index()];
-                    term.ltc_b = px_b.map(|b| sphere_term(scene, &b, p, sphere, rules, spheres[0]));
+                    term.ltc_b = px_b.map(|b| {
+                        sphere_term(scene, &b, p, sphere, rules, (spheres[0], ExactRule::Render))
+                    });
                     term.spheres = Some(all);
                 }
                 Shape::Rect { half_u, half_v } => {
                     let rect = (light, half_u, half_v);
-                    let all = RectMethod::ALL.map(|m| rect_term(scene, &px, p, rect, rules, m));
+                    let all = RectMethod::ALL
+                        .map(|m| rect_term(scene, &px, p, rect, rules, (m, ExactRule::Render)));
                     term.ltc = all[rects[0].index()];
                     term.exact = all[rects[1].index()];
-                    term.ltc_b = px_b.map(|b| rect_term(scene, &b, p, rect, rules, rects[0]));
+                    term.ltc_b = px_b.map(|b| {
+                        rect_term(scene, &b, p, rect, rules, (rects[0], ExactRule::Render))
+                    });
                     term.rects = Some(all);
                     term.corners = Some(rect_corners(&px, p, (light, half_u, half_v)));
                 }
                 Shape::Disk { normal, radius } => {
                     let disk = (light, normal, radius);
-                    let all = DiskMethod::ALL.map(|m| disk_term(scene, &px, p, disk, rules, m));
+                    let all = DiskMethod::ALL
+                        .map(|m| disk_term(scene, &px, p, disk, rules, (m, ExactRule::Render)));
                     term.ltc = all[disks[0].index()];
                     term.exact = all[disks[1].index()];
-                    term.ltc_b = px_b.map(|b| disk_term(scene, &b, p, disk, rules, disks[0]));
+                    term.ltc_b = px_b.map(|b| {
+                        disk_term(scene, &b, p, disk, rules, (disks[0], ExactRule::Render))
+                    });
                     term.disks = Some(all);
                 }
             }

@@ -10,6 +10,7 @@ pub mod bench;
 pub mod bench_table;
 pub mod encodings;
 pub mod eval;
+pub mod exact_rule;
 pub mod horizon;
 pub mod parity;
 pub mod scene_study;

@@ -101,16 +101,21 @@ pub const ANISO_PRESETS: [(&str, &str); 2] = [
     ),
 ];
 
-/// A shipped preset by name (`PRESETS`, `SPHERE_PRESETS`, `RECT_PRESETS`, `DISK_PRESETS`,
-/// `ANISO_PRESETS`, `TABLE_PRESETS`).
-pub fn preset(name: &str) -> Scene {
-    let (_, text) = PRESETS
+/// Every shipped preset, its name and its text (`PRESETS`, `SPHERE_PRESETS`,
+/// `RECT_PRESETS`, `DISK_PRESETS`, `ANISO_PRESETS`, `TABLE_PRESETS`).
+pub fn shipped_presets() -> impl Iterator<Item = &'static (&'static str, &'static str)> {
+    PRESETS
         .iter()
         .chain(&SPHERE_PRESETS)
         .chain(&RECT_PRESETS)
         .chain(&DISK_PRESETS)
         .chain(&ANISO_PRESETS)
         .chain(&TABLE_PRESETS)
+}
+
+/// A shipped preset by name (`shipped_presets`).
+pub fn preset(name: &str) -> Scene {
+    let (_, text) = shipped_presets()
         .find(|(n, _)| *n == name)
         .expect("a shipped preset");
     Scene::from_toml(text, name).expect("shipped presets are valid (tests/math/presets.rs)")

@@ -8,6 +8,7 @@ mod gpu_common;
 
 mod aniso;
 mod disk_light;
+mod exact_rule;
 mod failures;
 mod lut;
 mod method_file;

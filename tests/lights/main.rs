@@ -9,5 +9,6 @@ mod disk_light;
 mod disk_render;
 mod rect_light;
 mod rect_render;
+mod render_rule;
 mod sphere_light;
 mod sphere_render;
