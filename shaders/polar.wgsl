@@ -5,6 +5,11 @@
 // rect_light.wgsl and disk_light.wgsl (WGSL's own sin, cos and atan may be 2⁻¹¹ off, which
 // would bend the substitutions the weights assume).
 
+// Writes: an array written at an index computed at run time is written at a constant index
+// in a loop over the array (`if k == at`). Mesa's GLSL compiler turns each such write into a
+// conditional write of every element, again in every copy it inlines, which took a rect's
+// rule 44 s to compile on llvmpipe's OpenGL (3.8 s written so; docs/design.md §1.14).
+
 // Bounds::planes' length: a rect clipped by the horizon has five edges.
 const MAX_PLANES: u32 = 5u;
 // Polar::cuts' length: a clipped rect's five corners and five feet, and the four quarter turns.
@@ -12,15 +17,24 @@ const MAX_CUTS: u32 = 16u;
 // Nodes a dimension and piece (src/light/polar.rs RULE_NODES, RULE_NODES_ANISO).
 const RULE_NODES: u32 = 12u;
 const RULE_NODES_ANISO: u32 = 24u;
+const DIFFUSE_NODES: u32 = 8u;
 // brightest's samples an arc and golden-section steps (src/light/polar.rs).
 const BRIGHTEST_SAMPLES: u32 = 16u;
 const BRIGHTEST_STEPS: u32 = 24u;
+// Where the brightest point is an arc's corner (src/light/polar.rs CORNER_SNAP).
+const CORNER_SNAP: f32 = 0.05;
 // "No end": T = tan(u/2) at u = π.
 const T_INFINITE: f32 = 1e30;
 
-// The 12- and 24-point Gauss–Legendre rules on [−1, 1], as src/light/sphere/quadrature.rs
+// The 8-, 12- and 24-point Gauss–Legendre rules on [−1, 1], as src/light/sphere/quadrature.rs
 // gauss_legendre computes them (the positive half; the rules are symmetric).
 // tests/shaders/constants.rs checks them against the Rust rule.
+const GL8_NODES: array<f32, 4> = array<f32, 4>(
+    0.18343464249564980, 0.52553240991632899, 0.79666647741362684, 0.96028985649753629,
+);
+const GL8_WEIGHTS: array<f32, 4> = array<f32, 4>(
+    0.36268378337836199, 0.31370664587788738, 0.22238103445337445, 0.10122853629037679,
+);
 const GL12_NODES: array<f32, 6> = array<f32, 6>(
     0.12523340851146894, 0.36783149899818018, 0.58731795428661748,
     0.76990267419430469, 0.90411725637047480, 0.98156063424671924,
@@ -40,7 +54,7 @@ const GL24_WEIGHTS: array<f32, 12> = array<f32, 12>(
     0.05929858491543666, 0.04427743881741968, 0.02853138862893381, 0.01234122979998733,
 );
 
-// rule: node i (ascending) of the n-point rule (12 or 24) and its weight.
+// rule: node i (ascending) of the n-point rule (8, 12 or 24) and its weight.
 fn rule(n: u32, i: u32) -> vec2<f32> {
     let half = n / 2u;
     var k = i - half;
@@ -51,6 +65,9 @@ fn rule(n: u32, i: u32) -> vec2<f32> {
     }
     if n == RULE_NODES_ANISO {
         return vec2<f32>(sign * GL24_NODES[k], GL24_WEIGHTS[k]);
+    }
+    if n == DIFFUSE_NODES {
+        return vec2<f32>(sign * GL8_NODES[k], GL8_WEIGHTS[k]);
     }
     return vec2<f32>(sign * GL12_NODES[k], GL12_WEIGHTS[k]);
 }
@@ -87,9 +104,15 @@ fn bounds_above(cap: vec4<f32>) -> Bounds {
 
 // Bounds::push: the great circle of inward normal n.
 fn bounds_push(b: ptr<function, Bounds>, n: vec3<f32>) {
-    if (*b).count < MAX_PLANES {
-        (*b).planes[(*b).count] = n;
-        (*b).count += 1u;
+    let at = (*b).count;
+    if at < MAX_PLANES {
+        // Written at a constant index (see "Writes" above).
+        for (var k = 0u; k < MAX_PLANES; k++) {
+            if k == at {
+                (*b).planes[k] = n;
+            }
+        }
+        (*b).count = at + 1u;
     }
 }
 
@@ -270,15 +293,17 @@ struct Polar {
     count: u32,
 }
 
-// Polar::new: cut at the quarter turns of the pole's tangent basis.
-fn polar_new(bounds: Bounds, pole: vec3<f32>) -> Polar {
+// Polar::new: cut at the `turns` (2 or 4) equal turns of the pole's tangent basis.
+fn polar_new(bounds: Bounds, pole: vec3<f32>, turns: u32) -> Polar {
     var p: Polar;
     p.bounds = bounds;
     p.pole = pole;
     p.count = 0u;
     let basis = tangent_basis(pole);
     polar_cut_both(&p, basis[0]);
-    polar_cut_both(&p, basis[1]);
+    if turns > 2u {
+        polar_cut_both(&p, basis[1]);
+    }
     return p;
 }
 
@@ -323,9 +348,15 @@ fn polar_cut_both(p: ptr<function, Polar>, t: vec3<f32>) {
 }
 
 fn polar_cut(p: ptr<function, Polar>, t: vec3<f32>) {
-    if (*p).count < MAX_CUTS {
-        (*p).cuts[(*p).count] = t;
-        (*p).count += 1u;
+    let at = (*p).count;
+    if at < MAX_CUTS {
+        // Written at a constant index (see "Writes" above).
+        for (var k = 0u; k < MAX_CUTS; k++) {
+            if k == at {
+                (*p).cuts[k] = t;
+            }
+        }
+        (*p).count = at + 1u;
     }
 }
 
@@ -338,40 +369,44 @@ fn lobe_value(v: vec3<f32>, l: vec3<f32>, alpha: vec2<f32>, f0: f32, which: u32)
 // Polar::integral: ∫ g dω over the region about its pole, stretched to `lobe`, n × n nodes a
 // piece; g the lobe `which` of v, alpha, f0 (src/light/polar.rs).
 fn polar_integral(p: Polar, lobe: Lobe, n: u32, v: vec3<f32>, alpha: vec2<f32>, f0: f32, which: u32) -> f32 {
-    // The cuts' angles, sorted (insertion: no index below 0, even one a condition would not read).
+    // The cuts' angles, each written at a constant index (see "Writes" above).
     var angles: array<f32, 16>;
-    var count = 0u;
-    for (var k = 0u; k < p.count; k++) {
+    for (var k = 0u; k < MAX_CUTS; k++) {
         let t = p.cuts[k];
-        let a = atan2_full(dot(t, lobe.b2), dot(t, lobe.b1));
-        var at = count;
-        while at > 0u {
-            if angles[at - 1u] <= a {
-                break;
-            }
-            angles[at] = angles[at - 1u];
-            at -= 1u;
-        }
-        angles[at] = a;
-        count += 1u;
+        angles[k] = atan2_full(dot(t, lobe.b2), dot(t, lobe.b1));
     }
-    if count == 0u {
+    let count = max(p.count, 1u);
+    if p.count == 0u {
         angles[0] = 0.0;
-        count = 1u;
     }
     let det = lobe.s0.x * lobe.s1.y - lobe.s1.x * lobe.s0.y;
     var total = 0.0;
     for (var k = 0u; k < count; k++) {
         let start = angles[k];
-        var end = angles[0] + 2.0 * PI;
-        if k + 1u < count {
-            end = angles[k + 1u];
-        }
-        if end - start > PIECE_MIN_WIDTH && piece_meets(p, lobe, 0.5 * (start + end)) {
-            total += polar_piece(p, lobe, det, vec2<f32>(start, end), n, v, alpha, f0, which);
+        let width = piece_width(angles, count, k);
+        if width > PIECE_MIN_WIDTH && piece_meets(p, lobe, start + 0.5 * width) {
+            total += polar_piece(p, lobe, det, vec2<f32>(start, start + width), n, v, alpha, f0, which);
         }
     }
     return total;
+}
+
+// The width of the piece from cut k to the next cut counterclockwise, in the order of
+// (angle, index): the pieces Polar::integral takes between its sorted cuts, without a sort's
+// writes; a cut tied with one before it starts a piece of width 0, which is dropped.
+fn piece_width(angles: array<f32, 16>, count: u32, k: u32) -> f32 {
+    let start = angles[k];
+    var width = 2.0 * PI;
+    for (var j = 0u; j < MAX_CUTS; j++) {
+        if j < count && j != k {
+            var d = angles[j] - start;
+            if d < 0.0 || (d == 0.0 && j < k) {
+                d += 2.0 * PI;
+            }
+            width = min(width, d);
+        }
+    }
+    return width;
 }
 
 // Pieces narrower than this are dropped: two cuts at one direction (src/light/polar.rs).
@@ -401,9 +436,9 @@ fn piece_meets(p: Polar, lobe: Lobe, phi: f32) -> bool {
     return m.y > m.x;
 }
 
-// One piece [ab.x, ab.y] of azimuth: n nodes in τ, each meridian's n nodes in t four at a
-// time (llvmpipe ends an invocation's loops after 65 535 iterations in all, docs/design.md
-// §5.14).
+// One piece [ab.x, ab.y] of azimuth: n nodes in τ, each meridian's n nodes in t. Every call
+// of these functions is a copy of them where a driver inlines (Mesa's do, all of them), and a
+// pipeline compiles for as long as its copies take: each shape calls the rule from one place.
 fn polar_piece(
     p: Polar,
     lobe: Lobe,
@@ -433,11 +468,8 @@ fn polar_piece(
             let t1 = atan_precise(2.0 * m.y / r);
             let w_phi = 0.5 * span * node.y * det / (r * r) * 0.5 * (t1 - t0);
             var radial = 0.0;
-            for (var j = 0u; j < n; j += 4u) {
-                radial += radial_node(p.pole, d, r, t0, t1, rule(n, j), v, alpha, f0, which)
-                    + radial_node(p.pole, d, r, t0, t1, rule(n, j + 1u), v, alpha, f0, which)
-                    + radial_node(p.pole, d, r, t0, t1, rule(n, j + 2u), v, alpha, f0, which)
-                    + radial_node(p.pole, d, r, t0, t1, rule(n, j + 3u), v, alpha, f0, which);
+            for (var j = 0u; j < n; j++) {
+                radial += radial_node(p.pole, d, r, t0, t1, rule(n, j), v, alpha, f0, which);
             }
             total += w_phi * radial;
         }
@@ -515,19 +547,22 @@ fn brightest(arcs: array<Arc, 5>, count: u32, v: vec3<f32>, alpha: vec2<f32>, f0
     // The golden ratio's conjugate, (√5 − 1)/2.
     let ratio = 0.6180339887498949;
     for (var i = 0u; i < BRIGHTEST_STEPS; i++) {
-        let m1 = hi - ratio * (hi - lo);
-        let m2 = lo + ratio * (hi - lo);
-        if lobe_value(v, arc_at(arc, m1), alpha, f0, 0u) >= lobe_value(v, arc_at(arc, m2), alpha, f0, 0u) {
-            hi = m2;
+        // Both points' values from one call of the lobe (see polar_piece).
+        var g = vec2<f32>(0.0);
+        for (var q = 0u; q < 2u; q++) {
+            let m = select(lo + ratio * (hi - lo), hi - ratio * (hi - lo), q == 0u);
+            g[q] = lobe_value(v, arc_at(arc, m), alpha, f0, 0u);
+        }
+        if g.x >= g.y {
+            hi = lo + ratio * (hi - lo);
         } else {
-            lo = m1;
+            lo = hi - ratio * (hi - lo);
         }
     }
     var s = 0.5 * (lo + hi);
-    let at_s = lobe_value(v, arc_at(arc, s), alpha, f0, 0u);
-    if lobe_value(v, arc_at(arc, 0.0), alpha, f0, 0u) >= at_s {
+    if s < CORNER_SNAP {
         s = 0.0;
-    } else if lobe_value(v, arc_at(arc, 1.0), alpha, f0, 0u) >= at_s {
+    } else if s > 1.0 - CORNER_SNAP {
         s = 1.0;
     }
     return vec2<f32>(best.y, s);
@@ -556,11 +591,8 @@ fn fan_integral(corners: Polygon, pole: vec3<f32>, n: u32, v: vec3<f32>, alpha: 
                     let d = (point - pole * dot(pole, point)) / sin_b;
                     let dpsi = dot(pole, cross(point, along)) / (sin_b * sin_b);
                     var radial = 0.0;
-                    for (var j = 0u; j < n; j += 4u) {
-                        radial += fan_node(pole, d, u_b, rule(n, j), v, alpha, f0)
-                            + fan_node(pole, d, u_b, rule(n, j + 1u), v, alpha, f0)
-                            + fan_node(pole, d, u_b, rule(n, j + 2u), v, alpha, f0)
-                            + fan_node(pole, d, u_b, rule(n, j + 3u), v, alpha, f0);
+                    for (var j = 0u; j < n; j++) {
+                        radial += fan_node(pole, d, u_b, rule(n, j), v, alpha, f0);
                     }
                     total += 0.25 * node.y * dpsi * u_b * radial;
                 }

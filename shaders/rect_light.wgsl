@@ -63,17 +63,26 @@ fn clip_horizon(poly: Polygon) -> Polygon {
         let a = poly.p[k];
         let b = poly.p[(k + 1u) % poly.n];
         if a.z >= 0.0 {
-            out.p[out.n] = a;
-            out.n += 1u;
+            polygon_push(&out, a);
         }
         if (a.z >= 0.0) != (b.z >= 0.0) {
             let t = a.z / (a.z - b.z);
             let x = a + (b - a) * t;
-            out.p[out.n] = vec3<f32>(x.x, x.y, 0.0);
-            out.n += 1u;
+            polygon_push(&out, vec3<f32>(x.x, x.y, 0.0));
         }
     }
     return out;
+}
+
+// A corner after the polygon's last, written at a constant index (polar.wgsl's "Writes").
+fn polygon_push(poly: ptr<function, Polygon>, x: vec3<f32>) {
+    let at = (*poly).n;
+    for (var k = 0u; k < 6u; k++) {
+        if k == at {
+            (*poly).p[k] = x;
+        }
+    }
+    (*poly).n = at + 1u;
 }
 
 // atan2(y, x) for y ≥ 0 by atan_precise: the angle in [0, π].
@@ -332,9 +341,8 @@ fn rect_rule(s: RectShading) -> vec2<f32> {
     for (var k = 0u; k < above.n; k++) {
         let p = above.p[k];
         if dot(p, p) > 0.0 {
-            corners.p[corners.n] = normalize(p);
-            sum += corners.p[corners.n];
-            corners.n += 1u;
+            polygon_push(&corners, normalize(p));
+            sum += normalize(p);
         }
     }
     if corners.n < 3u {
@@ -345,7 +353,7 @@ fn rect_rule(s: RectShading) -> vec2<f32> {
     let lobe = lobe_within(lobe_specular(polar.pole, s.v, s.alpha), polar.bounds, middle);
     return vec2<f32>(
         polar_integral(polar, lobe, rule_nodes(s.alpha), s.v, s.alpha, s.f0, 0u),
-        fan_integral(corners, middle, RULE_NODES, s.v, s.alpha, s.f0),
+        fan_integral(corners, middle, DIFFUSE_NODES, s.v, s.alpha, s.f0),
     );
 }
 
@@ -370,7 +378,12 @@ fn polygon_polar(
         let c = cross(a, b);
         if dot(c, c) > 0.0 && bounds.count < MAX_PLANES {
             let n = normalize(c);
-            edges[bounds.count] = Arc(a, b, vec3<f32>(0.0), vec4<f32>(0.0));
+            // Written at a constant index (polar.wgsl's "Writes").
+            for (var e = 0u; e < MAX_PLANES; e++) {
+                if e == bounds.count {
+                    edges[e] = Arc(a, b, vec3<f32>(0.0), vec4<f32>(0.0));
+                }
+            }
             bounds_push(&bounds, select(n, -n, dot(n, middle) < 0.0));
         }
     }
@@ -379,7 +392,7 @@ fn polygon_polar(
         let best = brightest(edges, bounds.count, v, alpha, f0);
         pole = arc_at(edges[u32(best.x)], best.y);
     }
-    var polar = polar_new(bounds, pole);
+    var polar = polar_new(bounds, pole, 2u);
     for (var k = 0u; k < corners.n; k++) {
         polar_cut_toward(&polar, corners.p[k]);
     }

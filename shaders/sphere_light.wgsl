@@ -497,11 +497,17 @@ fn cap_rule(v: vec3<f32>, cap: Cap, alpha: vec2<f32>, f0: f32) -> vec2<f32> {
     if polar.pole.z < -1.0 {
         return vec2<f32>(0.0);
     }
-    let lobe = lobe_within(lobe_specular(polar.pole, v, alpha), polar.bounds, cap_middle(cap));
-    return vec2<f32>(
-        polar_integral(polar, lobe, rule_nodes(alpha), v, alpha, f0, 0u),
-        polar_integral(polar, lobe_round(polar.pole), RULE_NODES, v, alpha, f0, 1u),
+    let lobes = array<Lobe, 2>(
+        lobe_within(lobe_specular(polar.pole, v, alpha), polar.bounds, cap_middle(cap)),
+        lobe_round(polar.pole),
     );
+    // Both lobes from one call of the rule (see polar_piece).
+    var out = vec2<f32>(0.0);
+    for (var which = 0u; which < 2u; which++) {
+        let n = select(DIFFUSE_NODES, rule_nodes(alpha), which == 0u);
+        out[which] = polar_integral(polar, lobes[which], n, v, alpha, f0, which);
+    }
+    return out;
 }
 
 // cap_polar: the cap above the surface as a polar region, its pole at focus where the cap
@@ -511,7 +517,7 @@ fn cap_rule(v: vec3<f32>, cap: Cap, alpha: vec2<f32>, f0: f32) -> vec2<f32> {
 fn cap_polar(cap: Cap, focus: vec3<f32>, v: vec3<f32>, alpha: vec2<f32>, f0: f32) -> Polar {
     let zenith = vec3<f32>(0.0, 0.0, 1.0);
     if cap_encloses(cap) {
-        var polar = polar_new(bounds_above(vec4<f32>(0.0, 0.0, 0.0, -1.0)), focus);
+        var polar = polar_new(bounds_above(vec4<f32>(0.0, 0.0, 0.0, -1.0)), focus, 4u);
         polar_cut_both(&polar, cross(zenith, focus));
         polar_cut_foot(&polar, zenith);
         return polar;
@@ -523,7 +529,7 @@ fn cap_polar(cap: Cap, focus: vec3<f32>, v: vec3<f32>, alpha: vec2<f32>, f0: f32
     let t2 = cross(a, t1);
     let half = visible_half_azimuth(a.z * cap.cos_sigma, t1.z * cap.sin_sigma);
     if half < 0.0 {
-        return polar_new(bounds, vec3<f32>(0.0, 0.0, -2.0));
+        return polar_new(bounds, vec3<f32>(0.0, 0.0, -2.0), 4u);
     }
     var arcs: array<Arc, 5>;
     arcs[0] = Arc(a, t1, t2, vec4<f32>(cap.cos_sigma, cap.sin_sigma, -half, 2.0 * half));
@@ -538,7 +544,7 @@ fn cap_polar(cap: Cap, focus: vec3<f32>, v: vec3<f32>, alpha: vec2<f32>, f0: f32
         let best = brightest(arcs, select(1u, 2u, cut), v, alpha, f0);
         pole = arc_at(arcs[u32(best.x)], best.y);
     }
-    var polar = polar_new(bounds, pole);
+    var polar = polar_new(bounds, pole, 4u);
     polar_cut_both(&polar, cross(a, pole));
     if cut {
         polar_cut_both(&polar, cross(zenith, pole));

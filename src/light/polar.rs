@@ -22,19 +22,23 @@ use crate::light::sphere::quadrature::gauss_legendre;
 /// The most planes a region has: a rect clipped by the horizon has five edges.
 pub const MAX_PLANES: usize = 5;
 
-/// The Gauss–Legendre rule of `n` nodes, computed once for the renders' node counts.
+/// The Gauss–Legendre rule of `n` nodes (up to `MAX_RULE_NODES`), computed once.
 pub fn rule(n: usize) -> &'static [(f64, f64)] {
-    static RULES: [OnceLock<Vec<(f64, f64)>>; 2] = [OnceLock::new(), OnceLock::new()];
-    match n {
-        RULE_NODES => RULES[0].get_or_init(|| gauss_legendre(RULE_NODES)),
-        RULE_NODES_ANISO => RULES[1].get_or_init(|| gauss_legendre(RULE_NODES_ANISO)),
-        _ => Vec::leak(gauss_legendre(n)),
-    }
+    static RULES: [OnceLock<Vec<(f64, f64)>>; MAX_RULE_NODES + 1] =
+        [const { OnceLock::new() }; MAX_RULE_NODES + 1];
+    RULES[n.min(MAX_RULE_NODES)].get_or_init(|| gauss_legendre(n.min(MAX_RULE_NODES)))
 }
+
+/// The most nodes `rule` keeps a rule of.
+pub const MAX_RULE_NODES: usize = 128;
 
 /// Nodes per dimension and piece of the renders' exact rule (docs/design.md §1.14: every
 /// shipped preset within 2e-4 of a converged integral at 64 × 36 pixels).
 pub const RULE_NODES: usize = 12;
+
+/// Nodes a dimension and piece of the diffuse lobe, smooth everywhere: every shipped preset
+/// within 1e-5 of the converged integral at 8 (9e-8 at 12, at twice the cost).
+pub const DIFFUSE_NODES: usize = 8;
 
 /// The same for an anisotropic material's specular lobe, whose ellipse the stretch follows
 /// less well (the brushed presets within 1.1e-4 at 24, 5.4e-3 at 12).
@@ -303,10 +307,11 @@ pub struct Polar {
 }
 
 impl Polar {
-    /// The region of `bounds` about `pole`, cut at the quarter turns of the pole's tangent
-    /// basis: no piece is wider than a quarter turn, whatever the other cuts, and the pieces
-    /// move with the cuts continuously (an f32 and an f64 rule differ where their pieces do).
-    pub fn new(bounds: Bounds, pole: DVec3) -> Self {
+    /// The region of `bounds` about `pole`, cut at the `turns` (2 or 4) equal turns of the
+    /// pole's tangent basis: no piece is wider than that, whatever the other cuts, and the
+    /// pieces move with the cuts continuously (an f32 and an f64 rule differ where their
+    /// pieces do). A polygon's corners cut it enough to take 2, a cap's circle 4.
+    pub fn new(bounds: Bounds, pole: DVec3, turns: usize) -> Self {
         let mut polar = Self {
             bounds,
             pole,
@@ -315,7 +320,9 @@ impl Polar {
         };
         let (b1, b2) = tangent_basis(pole);
         polar.cut_both(b1);
-        polar.cut_both(b2);
+        if turns > 2 {
+            polar.cut_both(b2);
+        }
         polar
     }
 
@@ -472,6 +479,11 @@ pub const BRIGHTEST_SAMPLES: usize = 16;
 /// Golden-section steps that narrow the brightest sample's neighbourhood.
 pub const BRIGHTEST_STEPS: usize = 24;
 
+/// How near an arc's end (in its parameter) the brightest point is taken to be its corner. A
+/// pole a twentieth of an edge from its corner leaves the next edge that far from it, a
+/// sliver the rule still integrates to its bound.
+pub const CORNER_SNAP: f64 = 0.05;
+
 /// The point of the boundary `arcs` where `g` is largest (a glossy lobe's peak restricted to
 /// a light it misses): the best of `BRIGHTEST_SAMPLES + 1` samples an arc, then narrowed by
 /// golden sections between its neighbours; the arc and its parameter.
@@ -501,14 +513,14 @@ pub fn brightest(arcs: &[Arc], g: impl Fn(DVec3) -> f64) -> (usize, f64) {
             lo = m1;
         }
     }
-    // A corner at least as bright as the search's end is the point: the search narrows a
-    // rounding-noisy plateau, which would leave the pole just off the corner and an edge's
-    // sliver beside it.
+    // A point within `CORNER_SNAP` of the arc's end is its corner: a pole just off a corner
+    // leaves a sliver of the next edge beside it, which the rule integrates badly, and f32's
+    // search ends there where f64's reaches the corner (a lobe's plateau at the corner is
+    // rounding noise to f32).
     let s = 0.5 * (lo + hi);
-    let at_s = g(arc.at(s));
-    let s = if g(arc.at(0.0)) >= at_s {
+    let s = if s < CORNER_SNAP {
         0.0
-    } else if g(arc.at(1.0)) >= at_s {
+    } else if s > 1.0 - CORNER_SNAP {
         1.0
     } else {
         s

@@ -24,8 +24,40 @@ pub struct Gpu {
     pub renderer: Mutex<PlaneRenderer>,
 }
 
-/// One device for the whole test binary (device creation on lavapipe takes ~100 ms).
+/// One device for the whole test binary (device creation on lavapipe takes ~100 ms). On
+/// OpenGL the calling test first waits for its turn (`take_gl_turn`).
 pub fn gpu() -> Option<&'static Gpu> {
+    let gpu = shared_gpu();
+    if gpu.is_some_and(|g| g.ctx.info.backend == wgpu::Backend::Gl) {
+        take_gl_turn();
+    }
+    gpu
+}
+
+/// On OpenGL the tests take turns with the device, each for the rest of its thread (libtest
+/// runs every test on a thread of its own), its drops included. wgpu's GL backend has one
+/// context for every thread, which a pipeline holds while Mesa compiles it (a few seconds for
+/// the renders' exact rule on llvmpipe), and a thread that waits for it more than 6 s panics
+/// (wgpu-hal's `CONTEXT_LOCK_TIMEOUT_SECS`); a panic in a drop aborts the whole test binary.
+/// Vulkan has no such lock, and its tests run side by side.
+fn take_gl_turn() {
+    static TURN: Mutex<()> = Mutex::new(());
+    thread_local! {
+        static HELD: std::cell::RefCell<Option<std::sync::MutexGuard<'static, ()>>> =
+            const { std::cell::RefCell::new(None) };
+    }
+    HELD.with_borrow_mut(|held| {
+        if held.is_none() {
+            // A test that failed in its turn leaves the lock poisoned; the device is whole.
+            *held = Some(
+                TURN.lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner),
+            );
+        }
+    });
+}
+
+fn shared_gpu() -> Option<&'static Gpu> {
     static GPU: OnceLock<Option<Gpu>> = OnceLock::new();
     GPU.get_or_init(|| match GpuContext::new() {
         Ok(ctx) => {

@@ -7,7 +7,7 @@ use glam::DVec3;
 
 use crate::brdf::{Alpha, Lobes, brdf_cos_aniso};
 use crate::light::fan::fan_integral;
-use crate::light::polar::{Arc, Bounds, Lobe, Polar, RULE_NODES, brightest, mirror, rule_nodes};
+use crate::light::polar::{Arc, Bounds, DIFFUSE_NODES, Lobe, Polar, brightest, mirror, rule_nodes};
 use crate::light::rect::{Rect, clip_horizon};
 
 /// The exact radiance of a rect of unit radiance toward `v`, per lobe (base colour 1), by
@@ -27,7 +27,7 @@ pub fn rect_rule(v: DVec3, rect: &Rect, alpha: Alpha<f64>, f0: f64) -> Lobes<f64
     let lobe = Lobe::specular(polar.pole, v, (alpha.x, alpha.y)).within(&polar.bounds, middle);
     Lobes {
         specular: polar.integral(&lobe, rule_nodes(alpha), |l| lobes(l).specular),
-        diffuse: fan_integral(&corners, middle, RULE_NODES, |l| lobes(l).diffuse),
+        diffuse: fan_integral(&corners, middle, DIFFUSE_NODES, |l| lobes(l).diffuse),
     }
 }
 
@@ -56,7 +56,7 @@ pub fn polygon_polar(
         let (k, s) = brightest(&edges, g);
         edges[k].at(s)
     };
-    let mut polar = Polar::new(bounds, pole);
+    let mut polar = Polar::new(bounds, pole, 2);
     for &p in corners {
         polar.cut_toward(p);
     }

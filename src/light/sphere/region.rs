@@ -5,7 +5,7 @@
 use glam::{DVec2, DVec3};
 
 use crate::brdf::{Alpha, Lobes, brdf_cos_aniso};
-use crate::light::polar::{Arc, Bounds, Lobe, Polar, RULE_NODES, brightest, mirror, rule_nodes};
+use crate::light::polar::{Arc, Bounds, DIFFUSE_NODES, Lobe, Polar, brightest, mirror, rule_nodes};
 use crate::light::sphere::cap::Cap;
 use crate::light::sphere::quadrature::visible_half_azimuth;
 
@@ -20,7 +20,9 @@ pub fn cap_rule(v: DVec3, cap: &Cap, alpha: Alpha<f64>, f0: f64) -> Lobes<f64> {
         Lobe::specular(polar.pole, v, (alpha.x, alpha.y)).within(&polar.bounds, cap_middle(cap));
     Lobes {
         specular: polar.integral(&lobe, rule_nodes(alpha), |l| lobes(l).specular),
-        diffuse: polar.integral(&Lobe::round(polar.pole), RULE_NODES, |l| lobes(l).diffuse),
+        diffuse: polar.integral(&Lobe::round(polar.pole), DIFFUSE_NODES, |l| {
+            lobes(l).diffuse
+        }),
     }
 }
 
@@ -34,7 +36,7 @@ pub fn cap_polar(cap: &Cap, g: impl Fn(DVec3) -> f64, focus: DVec3) -> Option<Po
         return None;
     }
     if cap.encloses() {
-        let mut polar = Polar::new(Bounds::above(None), focus);
+        let mut polar = Polar::new(Bounds::above(None), focus, 4);
         polar.cut_both(DVec3::Z.cross(focus));
         polar.cut_foot(DVec3::Z);
         return Some(polar);
@@ -73,7 +75,7 @@ pub fn cap_polar(cap: &Cap, g: impl Fn(DVec3) -> f64, focus: DVec3) -> Option<Po
         let (k, s) = brightest(&arcs, g);
         arcs[k].at(s)
     };
-    let mut polar = Polar::new(bounds, pole);
+    let mut polar = Polar::new(bounds, pole, 4);
     polar.cut_both(a.cross(pole));
     if cut {
         polar.cut_both(DVec3::Z.cross(pole));
