@@ -53,7 +53,7 @@ fn add_lobes(method: u32, s: ptr<function, Sums>, ltc: LtcShading, light: GpuLig
     }
 }
 
-// A light with a size by the side's sphere method (src/cpu.rs sphere_term), in the shading
+// A light with a size by the side's sphere method (src/cpu/mod.rs sphere_term), in the shading
 // frame; into factored sums divided by the factors, as add_brdf_factored does.
 fn add_sphere(
     method: u32,
@@ -90,7 +90,7 @@ fn add_sphere(
     add_lobes(method, s, ltc, light, lobes);
 }
 
-// A rect by the side's rect method (src/cpu.rs rect_term): its radiance I/A times the
+// A rect by the side's rect method (src/cpu/mod.rs rect_term): its radiance I/A times the
 // unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
 fn add_rect(
     method: u32,
@@ -116,7 +116,7 @@ fn add_rect(
     add_lobes(method, s, ltc, light, lobes);
 }
 
-// A disk by the side's disk method (src/cpu.rs disk_term): its radiance I/(π r²) times the
+// A disk by the side's disk method (src/cpu/mod.rs disk_term): its radiance I/(π r²) times the
 // unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
 fn add_disk(
     method: u32,
@@ -143,7 +143,7 @@ fn add_disk(
 }
 
 // One light by one side: by the side's method for the light's shape, one arm per shape
-// (src/cpu.rs light_term). Where every light is a point (SIZED off) the loop has no test of
+// (src/cpu/mod.rs light_term). Where every light is a point (SIZED off) the loop has no test of
 // the shape at all; without a rect (RECTS off), no rect arm, and without a disk no disk arm.
 fn add_light(
     method: u32,

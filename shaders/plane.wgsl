@@ -5,7 +5,7 @@
 // sums into the image. Composed after brdf.wgsl, ltc.wgsl, sphere_light.wgsl,
 // rect_light.wgsl, disk_light.wgsl, scene.wgsl and light_shape.wgsl (each light by its
 // shape: add_light), and followed by method_file.wgsl and a method file's text. The CPU
-// reference is src/cpu.rs; the Rust side of this file is src/gpu/plane.rs.
+// reference is src/cpu/mod.rs; the Rust side of this file is src/gpu/plane.rs.
 
 // Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
 const METHOD_BRDF: u32 = 0u;      // the exact BRDF as docs/design.md §1 writes it
@@ -120,7 +120,7 @@ fn surface_point_at(pos: vec2<f32>) -> Pixel {
     return p;
 }
 
-// An anisotropic material's lobes (src/cpu.rs LtcPixel::anisotropic): the specular lobe from
+// An anisotropic material's lobes (src/cpu/mod.rs LtcPixel::anisotropic): the specular lobe from
 // the 4D table in the tangent frame; the diffuse lobe from the 2D table at Burley's α, turned
 // from the view's frame into the tangent's (a tangent-frame direction has view-frame
 // coordinates turned by −φ, φ the view's azimuth).

@@ -1,9 +1,9 @@
-// The renders' exact rule (src/light/polar.rs, src/light/fan.rs; docs/design.md §1.14): the
-// integral over a convex region of directions in polar coordinates about a pole, stretched to
-// the lobe, and the fan from a pole to a polygon's edges. The same functions by name and the
-// same nodes as the f64 rule, in f32 with the precise trigonometry of sphere_light.wgsl,
-// rect_light.wgsl and disk_light.wgsl (WGSL's own sin, cos and atan may be 2⁻¹¹ off, which
-// would bend the substitutions the weights assume).
+// The renders' exact rule (src/light/polar.rs; docs/design.md §1.14): the integral over a
+// convex region of directions in polar coordinates about a pole, stretched to the lobe
+// (boundary.wgsl finds the pole off the light, fan.wgsl a polygon's diffuse lobe). The
+// same functions by name and the same nodes as the f64 rule, in f32 with the precise
+// trigonometry of sphere_light.wgsl, rect_light.wgsl and disk_light.wgsl (WGSL's own sin, cos
+// and atan may be 2⁻¹¹ off, which would bend the substitutions the weights assume).
 
 // Writes: an array written at an index computed at run time is written at a constant index
 // in a loop over the array (`if k == at`). Mesa's GLSL compiler turns each such write into a
@@ -18,11 +18,6 @@ const MAX_CUTS: u32 = 16u;
 const RULE_NODES: u32 = 12u;
 const RULE_NODES_ANISO: u32 = 24u;
 const DIFFUSE_NODES: u32 = 8u;
-// brightest's samples an arc and golden-section steps (src/light/polar.rs).
-const BRIGHTEST_SAMPLES: u32 = 16u;
-const BRIGHTEST_STEPS: u32 = 24u;
-// Where the brightest point is an arc's corner (src/light/polar.rs CORNER_SNAP).
-const CORNER_SNAP: f32 = 0.05;
 // "No end": T = tan(u/2) at u = π.
 const T_INFINITE: f32 = 1e30;
 
@@ -498,112 +493,4 @@ fn radial_node(
     let sin_u = 2.0 * half / (1.0 + h2);
     let du_dt = r * (1.0 + tan_t * tan_t) / (1.0 + h2);
     return node.y * sin_u * du_dt * lobe_value(v, c * cos_u + d * sin_u, alpha, f0, which);
-}
-
-// A smooth piece of a region's boundary (src/light/polar.rs Arc): a great circle's arc from a
-// to b (circle.y = 0), or a cap's circle cos σ axis + sin σ (t1 cos ψ + t2 sin ψ),
-// ψ = from + sweep s, with a = axis, b = t1, circle = (cos σ, sin σ, from, sweep).
-struct Arc {
-    a: vec3<f32>,
-    b: vec3<f32>,
-    t2: vec3<f32>,
-    circle: vec4<f32>,
-}
-
-// Arc::at: the arc's direction at s ∈ [0, 1].
-fn arc_at(arc: Arc, s: f32) -> vec3<f32> {
-    if arc.circle.y == 0.0 {
-        return normalize(arc.a + (arc.b - arc.a) * s);
-    }
-    let sc = sincos_precise(arc.circle.z + arc.circle.w * s);
-    return arc.a * arc.circle.x + (arc.b * sc.y + arc.t2 * sc.x) * arc.circle.y;
-}
-
-// Arc::tangent: the unit tangent along the arc at its point x.
-fn arc_tangent(arc: Arc, x: vec3<f32>) -> vec3<f32> {
-    if arc.circle.y == 0.0 {
-        return normalize(cross(cross(arc.a, arc.b), x));
-    }
-    return normalize(cross(arc.a, x));
-}
-
-// brightest: the point of the boundary arcs where the specular lobe is largest: the best of
-// BRIGHTEST_SAMPLES + 1 samples an arc, narrowed by golden sections; (arc, s).
-fn brightest(arcs: array<Arc, 5>, count: u32, v: vec3<f32>, alpha: vec2<f32>, f0: f32) -> vec2<f32> {
-    let step = 1.0 / f32(BRIGHTEST_SAMPLES);
-    var best = vec3<f32>(-1.0, 0.0, 0.0);
-    for (var k = 0u; k < count; k++) {
-        for (var i = 0u; i <= BRIGHTEST_SAMPLES; i++) {
-            let s = f32(i) * step;
-            let g = lobe_value(v, arc_at(arcs[k], s), alpha, f0, 0u);
-            if g > best.x {
-                best = vec3<f32>(g, f32(k), s);
-            }
-        }
-    }
-    let arc = arcs[u32(best.y)];
-    var lo = max(best.z - step, 0.0);
-    var hi = min(best.z + step, 1.0);
-    // The golden ratio's conjugate, (√5 − 1)/2.
-    let ratio = 0.6180339887498949;
-    for (var i = 0u; i < BRIGHTEST_STEPS; i++) {
-        // Both points' values from one call of the lobe (see polar_piece).
-        var g = vec2<f32>(0.0);
-        for (var q = 0u; q < 2u; q++) {
-            let m = select(lo + ratio * (hi - lo), hi - ratio * (hi - lo), q == 0u);
-            g[q] = lobe_value(v, arc_at(arc, m), alpha, f0, 0u);
-        }
-        if g.x >= g.y {
-            hi = lo + ratio * (hi - lo);
-        } else {
-            lo = hi - ratio * (hi - lo);
-        }
-    }
-    var s = 0.5 * (lo + hi);
-    if s < CORNER_SNAP {
-        s = 0.0;
-    } else if s > 1.0 - CORNER_SNAP {
-        s = 1.0;
-    }
-    return vec2<f32>(best.y, s);
-}
-
-// fan_integral: the diffuse lobe over the spherical polygon of unit corners, by the fan from
-// the unit pole inside it, n × n nodes an edge (src/light/fan.rs).
-fn fan_integral(corners: Polygon, pole: vec3<f32>, n: u32, v: vec3<f32>, alpha: vec2<f32>, f0: f32) -> f32 {
-    var total = 0.0;
-    for (var k = 0u; k < corners.n; k++) {
-        let a = corners.p[k];
-        let b = corners.p[(k + 1u) % corners.n];
-        let turn = atan2_precise(length(cross(a, b)), dot(a, b));
-        if turn > 0.0 {
-            let k_sin = 1.0 / sincos_precise(turn).x;
-            for (var i = 0u; i < n; i++) {
-                let node = rule(n, i);
-                let s = 0.5 * (node.x + 1.0);
-                let sp = sincos_precise((1.0 - s) * turn);
-                let sq = sincos_precise(s * turn);
-                let point = (a * sp.x + b * sq.x) * k_sin;
-                let along = (b * sq.y - a * sp.y) * (turn * k_sin);
-                let sin_b = length(cross(pole, point));
-                if sin_b > 0.0 {
-                    let u_b = atan2_precise(sin_b, dot(pole, point));
-                    let d = (point - pole * dot(pole, point)) / sin_b;
-                    let dpsi = dot(pole, cross(point, along)) / (sin_b * sin_b);
-                    var radial = 0.0;
-                    for (var j = 0u; j < n; j++) {
-                        radial += fan_node(pole, d, u_b, rule(n, j), v, alpha, f0);
-                    }
-                    total += 0.25 * node.y * dpsi * u_b * radial;
-                }
-            }
-        }
-    }
-    return abs(total);
-}
-
-// One node of a fan's meridian: the diffuse lobe at u, weighted by sin u.
-fn fan_node(c: vec3<f32>, d: vec3<f32>, u_b: f32, node: vec2<f32>, v: vec3<f32>, alpha: vec2<f32>, f0: f32) -> f32 {
-    let su = sincos_precise(0.5 * u_b * (node.x + 1.0));
-    return node.y * su.x * lobe_value(v, c * su.y + d * su.x, alpha, f0, 1u);
 }

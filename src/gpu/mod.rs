@@ -36,7 +36,8 @@ pub fn plane_module_source(f16: bool) -> String {
 }
 
 /// The WGSL of the plane shader: brdf.wgsl, brdf_aniso.wgsl, ltc.wgsl, ltc_aniso.wgsl,
-/// sphere_light.wgsl, rect_light.wgsl, disk_light.wgsl, polar.wgsl, scene.wgsl, light_shape.wgsl, plane.wgsl, method_file.wgsl and
+/// sphere_light.wgsl, rect_light.wgsl, disk_light.wgsl, polar.wgsl, boundary.wgsl, fan.wgsl,
+/// scene.wgsl, light_shape.wgsl, plane.wgsl, method_file.wgsl and
 /// ltc_f16.wgsl (behind `enable f16;`) — or, without f16, a stub in place of the last — and
 /// then `file` as composed after them (or, without one, the stubs of its functions).
 pub fn plane_module_source_with(f16: bool, file: Option<&method_file::MethodFile>) -> String {

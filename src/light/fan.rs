@@ -1,7 +1,7 @@
 //! A smooth integrand over a spherical polygon as a fan from a pole to its edges
 //! (docs/design.md §1.14): `∫ g dω = Σ_edges ∫ (∫_0^{u_B} g sin u du) dψ`, each edge's
 //! points `B` uniform in the angle they turn, each meridian from the pole to `B` in `u`.
-//! `shaders/polar.wgsl` has it by name.
+//! `shaders/fan.wgsl` has it by name.
 //!
 //! Against the polar rule's azimuth, an edge's own parameter keeps a thin polygon (a strip
 //! light, a rect seen edge-on) smooth: where an edge passes close to the pole the azimuth

@@ -7,6 +7,7 @@
 //! in each dispatch: the CPU's `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
 //! `gpu::scene::light_elements` and light_shape.wgsl's `add_light`.
 
+pub mod boundary;
 pub mod disk;
 pub mod fan;
 pub mod polar;

@@ -127,12 +127,12 @@ fn the_clipping_case_map_is_the_cpu_classification() {
     let mut counts = Vec::new();
     for which in [ClipScene::Case1, ClipScene::Case2] {
         let scene = setup.scene(which, which);
-        let reference = ltc_lab::cpu::clip_counts_map(&scene, lut, w, hgt);
+        let reference = ltc_lab::cpu::cases::clip_counts_map(&scene, lut, w, hgt);
         let mut per_class = [0usize; 4];
         for c in reference
             .iter()
             .flatten()
-            .filter_map(ltc_lab::cpu::ClipCounts::class)
+            .filter_map(ltc_lab::cpu::cases::ClipCounts::class)
         {
             per_class[c.index()] += 1;
         }

@@ -9,7 +9,7 @@ use egui_kittest::kittest::Queryable;
 use ltc_lab::app::lab::Selection;
 use ltc_lab::app::{LabApp, PanelId};
 use ltc_lab::colormap::short_number;
-use ltc_lab::cpu::sphere_case_map;
+use ltc_lab::cpu::cases::sphere_case_map;
 use ltc_lab::light::Shape;
 use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::light::sphere::cap::SphereCase;

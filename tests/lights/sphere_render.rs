@@ -1,4 +1,4 @@
-//! Lights with a size in renders (the CPU reference, src/cpu.rs): a radius of zero changes
+//! Lights with a size in renders (the CPU reference, src/cpu/mod.rs): a radius of zero changes
 //! nothing, a shrinking sphere becomes its point light in every method, bad radii are refused
 //! by name, and the failure presets give finite, non-negative images without black spots.
 

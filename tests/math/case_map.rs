@@ -1,11 +1,12 @@
-//! The four-class case map (`cpu::clip_counts_map`) against a classification read off the
+//! The four-class case map (`cpu::cases::clip_counts_map`) against a classification read off the
 //! rules themselves: a light is visible where both one-rule evaluations agree and are
 //! positive, case 1 where only the horizon rule removes it, case 2 where only the transformed
 //! rule removes it (and without it, it is negative), and "stays below" where either removes
 //! it — pixel by pixel, for the three Figure-2 scenes and many lights.
 
 use glam::DVec3;
-use ltc_lab::cpu::{LtcPixel, clip_counts_map};
+use ltc_lab::cpu::LtcPixel;
+use ltc_lab::cpu::cases::clip_counts_map;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Ltc, Normalization};
 use ltc_lab::render::LtcRules;

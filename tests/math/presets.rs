@@ -3,7 +3,8 @@
 
 use std::path::Path;
 
-use ltc_lab::cpu::{ClipCounts, clip_counts_map, render};
+use ltc_lab::cpu::cases::{ClipCounts, clip_counts_map};
+use ltc_lab::cpu::render;
 use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::luminance_range;

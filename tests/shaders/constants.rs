@@ -120,7 +120,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         rule.sort_by(|a, b| a.0.total_cmp(&b.0));
         f32s(&rule.iter().map(pick).collect::<Vec<_>>())
     };
-    use ltc_lab::light::polar;
+    use ltc_lab::light::{boundary, polar};
     let background = ltc_lab::output::BACKGROUND.map(|c| f64::from(c) / 255.0);
     codes
         .chain([
@@ -172,11 +172,14 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             ("DIFFUSE_NODES", vec![polar::DIFFUSE_NODES as f64]),
             ("MAX_PLANES", vec![polar::MAX_PLANES as f64]),
             ("MAX_CUTS", vec![polar::MAX_CUTS as f64]),
-            ("BRIGHTEST_SAMPLES", vec![polar::BRIGHTEST_SAMPLES as f64]),
-            ("BRIGHTEST_STEPS", vec![polar::BRIGHTEST_STEPS as f64]),
+            (
+                "BRIGHTEST_SAMPLES",
+                vec![boundary::BRIGHTEST_SAMPLES as f64],
+            ),
+            ("BRIGHTEST_STEPS", vec![boundary::BRIGHTEST_STEPS as f64]),
             ("PIECE_MIN_WIDTH", f32s(&[polar::PIECE_MIN_WIDTH])),
             ("SAME_DIRECTION", f32s(&[polar::SAME_DIRECTION])),
-            ("CORNER_SNAP", f32s(&[polar::CORNER_SNAP])),
+            ("CORNER_SNAP", f32s(&[boundary::CORNER_SNAP])),
             (
                 "DISK_RENDER_NODES",
                 vec![ltc_lab::light::disk::RENDER_NODES as f64],

@@ -157,7 +157,8 @@ fn disk_light_functions_have_the_rust_names() {
     }
 }
 
-/// The renders' exact rule carries its Rust names in polar.wgsl and the shapes' files (a
+/// The renders' exact rule carries its Rust names in polar.wgsl, boundary.wgsl, fan.wgsl and the shapes'
+/// files (a
 /// method `Bounds::f` as `bounds_f`, `Lobe::f` as `lobe_f`, `Polar::f` as `polar_f`, `Arc::f`
 /// as `arc_f`).
 #[test]
@@ -166,11 +167,12 @@ fn exact_rule_functions_have_the_rust_names() {
     let wgsl = function_names(&module);
     // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
     #[allow(unused_imports)]
+    use ltc_lab::light::boundary::{Arc, brightest};
+    #[allow(unused_imports)]
     use ltc_lab::light::fan::fan_integral;
     #[allow(unused_imports)]
     use ltc_lab::light::polar::{
-        Arc, Bounds, Lobe, Polar, brightest, cap_meridian, mirror, plane_meridian, rule,
-        rule_nodes, toward,
+        Bounds, Lobe, Polar, cap_meridian, mirror, plane_meridian, rule, rule_nodes, toward,
     };
     #[allow(unused_imports)]
     use ltc_lab::light::rect::region::{polygon_polar, rect_rule};

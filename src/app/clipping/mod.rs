@@ -25,7 +25,7 @@ use crate::app::ui::axes::symlog_y;
 use crate::app::ui::widgets::clipping_rules;
 use crate::app::work::cache::{Cached, Own};
 use crate::colormap::{round_sig, short_number};
-use crate::cpu::ClipCounts;
+use crate::cpu::cases::ClipCounts;
 use crate::ltc::ClipCase;
 use crate::render::Frame;
 

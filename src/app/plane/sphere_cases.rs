@@ -7,7 +7,7 @@ use egui::Color32;
 
 use crate::app::lab::{Exposure, Lab, parts};
 use crate::app::work::cache::{Cached, Own};
-use crate::cpu::sphere_case_map;
+use crate::cpu::cases::sphere_case_map;
 use crate::light::sphere::cap::SphereCase;
 
 /// The map's pixels per render pixel, each way: a quarter keeps it under a few milliseconds

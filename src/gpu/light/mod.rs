@@ -1,10 +1,12 @@
 //! The lights' shaders (docs/design.md §1.10–§1.12, §5.12), one module per WGSL file: each
 //! shape's methods (`sphere_light`, `rect_light`, `disk_light`, twins of `crate::light`), the
-//! renders' exact rule they share (`polar`, twin of `crate::light::polar` and `fan`) and the
+//! renders' exact rule they share (`polar`, `boundary` and `fan`, twins of `crate::light`'s) and the
 //! dispatch of a light to its shape's method (`light_shape`). `gpu` re-exports them, so their
 //! paths are `gpu::sphere_light` and so on.
 
+pub mod boundary;
 pub mod disk_light;
+pub mod fan;
 pub mod light_shape;
 pub mod polar;
 pub mod rect_light;
@@ -19,6 +21,8 @@ pub fn sources() -> String {
         rect_light::SOURCE,
         disk_light::SOURCE,
         polar::SOURCE,
+        boundary::SOURCE,
+        fan::SOURCE,
     ]
     .join("\n")
 }

@@ -6,8 +6,9 @@
 use glam::DVec3;
 
 use crate::brdf::{Alpha, Lobes, brdf_cos_aniso};
+use crate::light::boundary::{Arc, brightest};
 use crate::light::fan::fan_integral;
-use crate::light::polar::{Arc, Bounds, DIFFUSE_NODES, Lobe, Polar, brightest, mirror, rule_nodes};
+use crate::light::polar::{Bounds, DIFFUSE_NODES, Lobe, Polar, mirror, rule_nodes};
 use crate::light::rect::{Rect, clip_horizon};
 
 /// The exact radiance of a rect of unit radiance toward `v`, per lobe (base colour 1), by

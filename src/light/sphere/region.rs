@@ -5,7 +5,8 @@
 use glam::{DVec2, DVec3};
 
 use crate::brdf::{Alpha, Lobes, brdf_cos_aniso};
-use crate::light::polar::{Arc, Bounds, DIFFUSE_NODES, Lobe, Polar, brightest, mirror, rule_nodes};
+use crate::light::boundary::{Arc, brightest};
+use crate::light::polar::{Bounds, DIFFUSE_NODES, Lobe, Polar, mirror, rule_nodes};
 use crate::light::sphere::cap::Cap;
 use crate::light::sphere::quadrature::visible_half_azimuth;
 
