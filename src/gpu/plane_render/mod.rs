@@ -3,29 +3,28 @@
 //! far its tile lists are made. It is summed in chunks of lights (`step`), or whole (`run`),
 //! and read back without waiting (`start_read`) or waiting (`read`). Everything it needs
 //! exists from its start, so its methods may come in any order; the buffers it leaves
-//! (`Kept`) are taken by the next render of its size.
+//! (`Kept`) are taken by the next render of its size. Its tile lists are made in `binning`,
+//! and its image read back in `readback`.
+
+mod binning;
+mod readback;
 
 use std::ops::Range;
 
+use binning::BinStage;
+
 use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
-use crate::gpu::bin::{self, BinPass, Binning};
+use crate::gpu::bin::{self, Binning};
 use crate::gpu::failures::scoped;
 use crate::gpu::failures::submissions::{METHOD_FILE_SUBMISSION_MS, Plan};
 use crate::gpu::ltc::LutBuffer;
 use crate::gpu::plane::{self, Pipelines};
 use crate::gpu::scene::{GpuLight, Params, light_elements, params};
-use crate::gpu::target::{PendingRead, Target};
+use crate::gpu::target::Target;
 use crate::gpu::timing::{FrameTimes, PassTimer, Slot};
-use crate::render::{Frame, RenderSettings, View};
+use crate::render::{RenderSettings, View};
 use crate::scene::Scene;
-
-/// Where the making of the tile lists is: the next band of tile rows to count, or to write.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum BinStage {
-    Count(u32),
-    Write(u32),
-}
 
 /// What a render leaves to the next: its buffers, its target and its timer.
 pub struct Kept {
@@ -257,61 +256,6 @@ impl PlaneRender {
             .write_buffer(&self.kept.params, 0, bytemuck::bytes_of(&self.params));
     }
 
-    /// How far the tile lists are made, 0 to 1; `None` when they are (or there are none).
-    pub fn binning_progress(&self) -> Option<f32> {
-        let rows = self.kept.target.tiles.1 as f32;
-        self.bin_stage.map(|stage| match stage {
-            BinStage::Count(r) => r as f32 / (2.0 * rows),
-            BinStage::Write(r) => (rows + r as f32) / (2.0 * rows),
-        })
-    }
-
-    /// Makes the next `rows` tile rows of the tile lists (counting them, then writing them):
-    /// binning spread over frames. One submission, timed in `Slot::Bin`. Does nothing when
-    /// the lists are made.
-    pub fn bin_step(&mut self, ctx: &GpuContext, rows: usize) {
-        let Some(stage) = self.bin_stage else {
-            return;
-        };
-        let (tiles_x, tiles_y) = self.tiles();
-        let (first, pass) = match stage {
-            BinStage::Count(r) => (r, BinPass::Count),
-            BinStage::Write(0) => (0, BinPass::ScanThenWrite),
-            BinStage::Write(r) => (r, BinPass::Write),
-        };
-        let end = (first + rows.max(1) as u32).min(tiles_y);
-        self.params.bin_row = first;
-        self.write_params(ctx);
-        let mut encoder = ctx
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("bin band"),
-            });
-        let mut timer = self.kept.timer.take();
-        let mut timing = timer.as_mut().filter(|t| t.can_resolve());
-        if let Some(t) = &mut timing {
-            t.clear();
-        }
-        let band = (tiles_x, end - first, pass);
-        self.binning
-            .encode_band(&mut encoder, &self.bin_group, band, timing.as_deref_mut());
-        let timed = timing.is_some();
-        if let Some(t) = timing {
-            t.resolve(&mut encoder);
-        }
-        ctx.queue.submit([encoder.finish()]);
-        if timed && let Some(t) = &mut timer {
-            t.request();
-        }
-        self.kept.timer = timer;
-        self.bin_stage = match (pass, end == tiles_y) {
-            (BinPass::Count, true) => Some(BinStage::Write(0)),
-            (BinPass::Count, false) => Some(BinStage::Count(end)),
-            (_, true) => None,
-            (_, false) => Some(BinStage::Write(end)),
-        };
-    }
-
     /// Whether its steps are timed (the device has timestamp queries).
     pub fn timed(&self) -> bool {
         self.kept.timer.is_some()
@@ -428,115 +372,6 @@ impl PlaneRender {
             )),
             _ => Ok(()),
         }
-    }
-
-    /// Fills the image with NaN, so that a pixel no pass writes shows.
-    pub fn poison(&self, ctx: &GpuContext) {
-        self.kept.target.poison(ctx);
-    }
-
-    /// The image, read back (blocks); refused where a method file's loops were stopped.
-    pub fn read(&self, ctx: &GpuContext) -> Result<Frame> {
-        let (frame, stopped) = self.kept.target.read(ctx, &self.settings)?;
-        self.check_stopped(stopped)?;
-        Ok(frame)
-    }
-
-    /// An error naming the method file where `stopped` (the image's mark, `Target::read`).
-    fn check_stopped(&self, stopped: bool) -> Result<()> {
-        match (&self.file, stopped) {
-            (Some(name), true) => Err(Error::input(
-                name,
-                format!(
-                    "stopped: its loops ran past {} steps for one light (docs/design.md §5.13)",
-                    crate::gpu::method_file::STEPS
-                ),
-            )),
-            _ => Ok(()),
-        }
-    }
-
-    /// Starts reading the image back without waiting (the browser cannot wait):
-    /// `PendingRead::try_take` gives its texels once the GPU is done, and `frame_of` the
-    /// frame that `read` gives.
-    pub fn start_read(&self, ctx: &GpuContext) -> PendingRead {
-        self.kept.target.start_read(ctx)
-    }
-
-    /// The frame of texels that `start_read` fetched.
-    pub fn frame_of(&self, texels: &[u8]) -> Frame {
-        self.kept.target.frame_of(texels, &self.settings)
-    }
-
-    /// Refused where the texels `start_read` fetched carry a method file's stop.
-    pub fn check_texels(&self, texels: &[u8]) -> Result<()> {
-        self.check_stopped(crate::gpu::target::stopped(texels))
-    }
-
-    /// The entries of its tile lists, read back (blocks): how much culling kept of
-    /// `tiles × lights`. `None` where it is not culled or not yet binned (or the device
-    /// could not read them back).
-    pub fn tile_entries(&self, ctx: &GpuContext) -> Option<(u64, u64)> {
-        let t = &self.kept.target;
-        if self.params.cull == 0 || self.bin_stage.is_some() {
-            return None;
-        }
-        let all = (t.tiles.0 * t.tiles.1 * self.light_count) as u64;
-        Some((t.tile_entries(ctx)?, all))
-    }
-
-    /// The method file's probe (`probe_file`): each light alone at the image point `at`
-    /// (pixels), with the camera's `aspect` in place of this image's; each light's radiance,
-    /// `None` where the point is off the plane or seen from below. Blocks.
-    pub fn probe(
-        &mut self,
-        ctx: &GpuContext,
-        pipeline: &wgpu::ComputePipeline,
-        at: [f32; 2],
-        aspect: f32,
-    ) -> Result<Option<Vec<glam::DVec3>>> {
-        self.params.probe_x = at[0];
-        self.params.probe_y = at[1];
-        self.params.aspect = aspect;
-        self.write_params(ctx);
-        let mut encoder = ctx
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("probe"),
-            });
-        let n = self.light_count as u32;
-        {
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("probe"),
-                timestamp_writes: None,
-            });
-            pass.set_bind_group(0, &self.plane_group, &[]);
-            pass.set_pipeline(pipeline);
-            pass.dispatch_workgroups(n.div_ceil(64).max(1), 1, 1);
-        }
-        ctx.queue.submit([encoder.finish()]);
-        let bytes = u64::from(n.max(1)) * 16;
-        let data = crate::gpu::target::read_buffer(ctx, &self.kept.target.sums[0], 0, bytes)
-            .ok_or_else(|| Error::machine("GPU", "the probe's read-back failed"))?;
-        let values: Vec<[f32; 4]> = data
-            .chunks_exact(16)
-            .map(bytemuck::pod_read_unaligned)
-            .take(n as usize)
-            .collect();
-        if values.first().is_some_and(|v| v[3] < 0.5) {
-            return Ok(None);
-        }
-        Ok(Some(
-            values
-                .iter()
-                .map(|v| glam::DVec3::new(v[0].into(), v[1].into(), v[2].into()))
-                .collect(),
-        ))
-    }
-
-    /// The output texture (for the lab to show without a read-back).
-    pub fn output(&self) -> &wgpu::TextureView {
-        &self.kept.target.view
     }
 }
 
