@@ -473,6 +473,12 @@ pub fn shade(scene: &Scene, p: &SurfacePoint, rules: &LtcRules, side: &Side<'_>)
     })
 }
 
+/// The radiance image of `s`'s size with every pixel by one `side` (a reference made by
+/// another rule than the renders': `measure::exact_rule`).
+pub fn render_side(scene: &Scene, s: &RenderSettings, side: Side<'_>) -> Frame {
+    render_radiance(scene, s, &|_| side, 0..s.height)
+}
+
 /// Radiance over rows `rows` with the method (and table) `pick` gives for each pixel column.
 fn render_radiance(
     scene: &Scene,

@@ -5,18 +5,17 @@
 //! converged against `CHECK_NODES`. tests/lights/render_rule.rs holds the CPU's image to it,
 //! tests/gpu/exact_rule.rs the GPU's.
 
-use rayon::prelude::*;
-
-use crate::cpu::{Side, shade};
+use crate::cpu::{Side, render_side};
 use crate::light::ExactRule;
 use crate::ltc::lut::Lut;
-use crate::metrics::luminance;
-use crate::render::{Frame, FrameKind, Method, RenderSettings, View};
+use crate::metrics::{luminance, relative_error};
+use crate::render::{Frame, Method, RenderSettings, View};
 use crate::scene::Scene;
 
 /// Nodes a dimension and piece of the reference. The plane and cap rules converge
-/// geometrically; from `CHECK_NODES` to 96 they move every shipped preset's pixels by under
-/// 3e-7 of a pixel (measured), so 96 is converged far past the 1e-3 a rule is held to.
+/// geometrically: from `CHECK_NODES` to 96 they move the slowest preset's pixels
+/// (`brushed-rect`) by 2.4e-5 and from 96 to 128 by 5e-7 (measured, docs/design.md §1.14), so
+/// 96 is converged far past the 1e-3 a rule is held to.
 pub const REFERENCE_NODES: usize = 96;
 
 /// The reference's check: its images at this many nodes and at `REFERENCE_NODES` differ by
@@ -25,6 +24,8 @@ pub const CHECK_NODES: usize = 64;
 
 /// What a pixel's error is relative to, below the pixel itself: this much of the image's
 /// brightest pixel (a near-black pixel is judged on the scale of the light it is part of).
+/// 1e-4 is 40 times under the step of an 8-bit display (1/255), so an error the floor
+/// forgives is one no image shows.
 pub const FLOOR: f64 = 1e-4;
 
 /// The settings of the exact image: the reference side of `RenderSettings::single`, every
@@ -44,26 +45,10 @@ pub fn reference(scene: &Scene, width: usize, height: usize, nodes: usize) -> Fr
         lut: Lut::embedded(),
         rule: ExactRule::Nodes(nodes),
     };
-    let (pixels, on_plane) = (0..width * height)
-        .into_par_iter()
-        .map(
-            |i| match scene.surface_point(i % width, i / width, width, height) {
-                Some(p) => (shade(scene, &p, &s.rules, &side), true),
-                None => (glam::DVec3::ZERO, false),
-            },
-        )
-        .unzip();
-    Frame {
-        width,
-        height,
-        kind: FrameKind::Radiance,
-        pixels,
-        on_plane,
-        divider: None,
-    }
+    render_side(scene, &s, side)
 }
 
-/// The largest of each plane pixel's `|a − b| / max(|b|, FLOOR · b's brightest)` in
+/// The largest of each plane pixel's `|a − b| / max(b, FLOOR · b's brightest)` in
 /// luminance, and the pixel it is at.
 pub fn worst_error(a: &Frame, b: &Frame) -> (f64, usize) {
     let brightest = b
@@ -77,9 +62,6 @@ pub fn worst_error(a: &Frame, b: &Frame) -> (f64, usize) {
         .zip(&b.pixels)
         .enumerate()
         .filter(|&(i, _)| b.on_plane[i])
-        .map(|(i, (&x, &y))| {
-            let (x, y) = (luminance(x), luminance(y));
-            ((x - y).abs() / y.abs().max(floor), i)
-        })
+        .map(|(i, (&x, &y))| (relative_error(luminance(x), luminance(y), floor), i))
         .fold((0.0, 0), |w, e| if e.0 > w.0 { e } else { w })
 }
