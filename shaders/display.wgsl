@@ -7,7 +7,7 @@
 // Must match src/gpu/display.rs Display.
 struct Display {
     exposure: f32,
-    // 0: radiance, 1: relative difference (src/render.rs FrameKind).
+    // 0: radiance, 1: relative difference (src/render/mod.rs FrameKind).
     kind: u32,
     _pad0: u32,
     _pad1: u32,

@@ -90,6 +90,24 @@ fn add_sphere(
     add_lobes(method, s, ltc, light, lobes);
 }
 
+// A one-sided emitter's unit-radiance lobes into the side's sums: times its radiance I/A
+// (`area` A) and the window at its centre's distance (`centre`, world), as rect_term and
+// disk_term scale theirs (src/cpu/mod.rs); the rect's and the disk's one tail.
+fn add_emitter_lobes(
+    method: u32,
+    s: ptr<function, Sums>,
+    ltc: LtcShading,
+    light: GpuLight,
+    centre: vec3<f32>,
+    area: f32,
+    unit: vec2<f32>,
+) {
+    var lobes = unit;
+    let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / area;
+    lobes *= scale;
+    add_lobes(method, s, ltc, light, lobes);
+}
+
 // A rect by the side's rect method (src/cpu/mod.rs rect_term): its radiance I/A times the
 // unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
 fn add_rect(
@@ -110,10 +128,8 @@ fn add_rect(
         params.clip,
         params.normalization,
     );
-    var lobes = rect_light(rect, shading, ltc.pair);
-    let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / rect_area(shading.rect);
-    lobes *= scale;
-    add_lobes(method, s, ltc, light, lobes);
+    let lobes = rect_light(rect, shading, ltc.pair);
+    add_emitter_lobes(method, s, ltc, light, centre, rect_area(shading.rect), lobes);
 }
 
 // A disk by the side's disk method (src/cpu/mod.rs disk_term): its radiance I/(π r²) times the
@@ -136,10 +152,8 @@ fn add_disk(
         params.clip,
         params.normalization,
     );
-    var lobes = disk_light(disk, shading, ltc.pair);
-    let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / disk_area(shading.disk);
-    lobes *= scale;
-    add_lobes(method, s, ltc, light, lobes);
+    let lobes = disk_light(disk, shading, ltc.pair);
+    add_emitter_lobes(method, s, ltc, light, centre, disk_area(shading.disk), lobes);
 }
 
 // One light by one side: by the side's method for the light's shape, one arm per shape

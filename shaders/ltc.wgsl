@@ -26,7 +26,7 @@ const EXACT_BAND_Z: f32 = 0.25881904;
 // NL_BAND_Z: sin 30°.
 const NL_BAND_Z: f32 = 0.5;
 
-// Read the nearest cell instead of filtering (the `ltc-nearest` variant; src/render.rs LutFilter).
+// Read the nearest cell instead of filtering (the `ltc-nearest` variant; src/render/mod.rs LutFilter).
 override LUT_NEAREST: bool = false;
 
 // One lobe: M⁻¹ (cos_from_brdf), |det M⁻¹|, its magnitudes and the fitted scale on them.

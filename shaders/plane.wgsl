@@ -7,7 +7,7 @@
 // shape: add_light), and followed by method_file.wgsl and a method file's text. The CPU
 // reference is src/cpu/mod.rs; the Rust side of this file is src/gpu/plane.rs.
 
-// Shading methods (src/render.rs Method; src/gpu/plane.rs method_constant).
+// Shading methods (src/render/mod.rs Method; src/gpu/plane.rs method_constant).
 const METHOD_BRDF: u32 = 0u;      // the exact BRDF as docs/design.md §1 writes it
 const METHOD_BRDF_FAST: u32 = 1u; // the same, with Filament's V_SmithGGXCorrelated
 const METHOD_LTC: u32 = 2u;       // the paper's LTC: normalize l, rotate, M⁻¹ l per lobe
@@ -16,7 +16,7 @@ const METHOD_LTC_F16: u32 = 4u;   // ltc-fast with M⁻¹l and D in f16 (ltc_f16
 const METHOD_LTC_F16_PAIRS: u32 = 5u; // the same, two lights per vec2<f16> (ltc_f16.wgsl)
 const METHOD_FILE: u32 = 6u;      // a method loaded from a file (method_file.wgsl)
 
-// What a pixel shows (src/render.rs View; View::B is B shaded as the single A).
+// What a pixel shows (src/render/mod.rs View; View::B is B shaded as the single A).
 const VIEW_SINGLE: u32 = 0u; // method A
 const VIEW_SPLIT: u32 = 1u;  // A left of the divider, B right of it
 const VIEW_DIFF: u32 = 2u;   // |A − B| / max(B, floor) on luminance
@@ -70,7 +70,7 @@ struct Pixel {
     on_plane: bool,
     x: vec3<f32>,          // world position
     v: vec3<f32>,          // unit, toward the camera (world; n = +z)
-    t1: vec3<f32>,         // shading frame (src/render.rs ShadingFrame)
+    t1: vec3<f32>,         // shading frame (src/render/mod.rs ShadingFrame)
     t2: vec3<f32>,
     tangent_from_world: mat3x3<f32>, // rows t1, t2, n
     v_tangent: vec3<f32>,  // v in the shading frame (the sphere methods')
@@ -107,10 +107,10 @@ fn surface_point_at(pos: vec2<f32>) -> Pixel {
     p.v = normalize(params.eye.xyz - x);
     let tangential = vec2<f32>(p.v.x, p.v.y);
     let len = length(tangential);
-    // At normal view any tangent will do (src/render.rs ShadingFrame::new).
+    // At normal view any tangent will do (src/render/mod.rs ShadingFrame::new).
     p.t1 = select(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(tangential / len, 0.0), len > 0.0);
     if ANISO {
-        // The material's tangent frame (src/render.rs ShadingFrame::of).
+        // The material's tangent frame (src/render/mod.rs ShadingFrame::of).
         p.t1 = vec3<f32>(params.tangent_x, params.tangent_y, 0.0);
     }
     p.t2 = cross(vec3<f32>(0.0, 0.0, 1.0), p.t1);

@@ -9,20 +9,16 @@
 use glam::DVec3;
 
 use crate::brdf::{f_schlick, irradiance_scale};
-use crate::cpu::{LtcPixel, disk_term, exact_term, ltc_term, rect_term, sphere_term};
-use crate::light::ExactRule;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
+use crate::cpu::{LtcPixel, exact_term, ltc_term, shape_term};
+use crate::light::{ExactRule, Shape, ShapeKind};
 use crate::ltc::ClipCase;
 use crate::ltc::lut::Lut;
 use crate::metrics::luminance;
-use crate::render::{LtcRules, SurfacePoint};
+use crate::render::{LtcRules, ShapeMethod, ShapeMethods, SurfacePoint};
 use crate::scene::{Light, Scene};
 
 /// One light's share of a pixel.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct LightTerm {
     /// The light's index in the scene.
     pub index: usize,
@@ -49,17 +45,23 @@ pub struct LightTerm {
     pub exact: DVec3,
     /// Its LTC radiance with table B, where two tables are compared.
     pub ltc_b: Option<DVec3>,
-    /// A light with a size: its radiance by each of `SphereMethod::ALL` (table A).
-    pub spheres: Option<[DVec3; 4]>,
-    /// A rect: its radiance by each of `RectMethod::ALL` (table A).
-    pub rects: Option<[DVec3; 5]>,
+    /// A light with a size: its radiance by each method of its shape (table A), in its
+    /// module's order (`ShapeMethod::all`); empty for a point.
+    pub by_method: Vec<(ShapeMethod, DVec3)>,
     /// A rect: its corners' directions in the shading frame, unit.
     pub corners: Option<[DVec3; 4]>,
-    /// A disk: its radiance by each of `DiskMethod::ALL` (table A).
-    pub disks: Option<[DVec3; 3]>,
 }
 
 impl LightTerm {
+    /// Its radiance by `method`, where it is a light of that method's shape.
+    pub fn by(&self, method: impl Into<ShapeMethod>) -> Option<DVec3> {
+        let method = method.into();
+        self.by_method
+            .iter()
+            .find(|(m, _)| *m == method)
+            .map(|(_, v)| *v)
+    }
+
     /// `L_LTC − L_exact` on luminance.
     pub fn error(&self) -> f64 {
         luminance(self.ltc) - luminance(self.exact)
@@ -143,18 +145,15 @@ pub fn elevation_azimuth(w: DVec3) -> (f64, f64) {
 }
 
 /// Every light of `scene` at `p`, LTC with table A and the given rules against the exact
-/// BRDF, and with table B too where there is one (`tables.1`); lights with a size by
-/// `spheres`, rects by `rects` and disks by `disks` (the LTC side's method, then the exact
-/// side's); `None` where
-/// the camera sees the plane from below.
+/// BRDF, and with table B too where there is one (`tables.1`); lights with a size by side
+/// `a`'s method for their shape (the LTC side) against side `b`'s (the exact side); `None`
+/// where the camera sees the plane from below.
 pub fn pixel_terms(
     scene: &Scene,
     (lut, lut_b): (&Lut, Option<&Lut>),
     p: &SurfacePoint,
     rules: &LtcRules,
-    spheres: [SphereMethod; 2],
-    rects: [RectMethod; 2],
-    disks: [DiskMethod; 2],
+    (a, b): (&ShapeMethods, &ShapeMethods),
 ) -> Option<PixelTerms> {
     if p.view.z <= 0.0 {
         return None;
@@ -168,44 +167,25 @@ pub fn pixel_terms(
         .enumerate()
         .map(|(index, light)| {
             let mut term = light_term(scene, &px, p, (index, light), rules);
-            // One arm per shape: each side's value by its method for the shape.
-            match light.shape {
-                Shape::Point => term.ltc_b = px_b.map(|b| ltc_term(scene, &b, p, light, rules)),
-                Shape::Sphere { radius } => {
-                    // Every sphere method, made once; each side's value its method's.
-                    let sphere = (light, radius);
-                    let all = SphereMethod::ALL
-                        .map(|m| sphere_term(scene, &px, p, sphere, rules, (m, ExactRule::Render)));
-                    term.ltc = all[spheres[0].index()];
-                    term.exact = all[spheres[1].index()];
-                    term.ltc_b = px_b.map(|b| {
-                        sphere_term(scene, &b, p, sphere, rules, (spheres[0], ExactRule::Render))
-                    });
-                    term.spheres = Some(all);
-                }
-                Shape::Rect { half_u, half_v } => {
-                    let rect = (light, half_u, half_v);
-                    let all = RectMethod::ALL
-                        .map(|m| rect_term(scene, &px, p, rect, rules, (m, ExactRule::Render)));
-                    term.ltc = all[rects[0].index()];
-                    term.exact = all[rects[1].index()];
-                    term.ltc_b = px_b.map(|b| {
-                        rect_term(scene, &b, p, rect, rules, (rects[0], ExactRule::Render))
-                    });
-                    term.rects = Some(all);
-                    term.corners = Some(rect_corners(&px, p, (light, half_u, half_v)));
-                }
-                Shape::Disk { normal, radius } => {
-                    let disk = (light, normal, radius);
-                    let all = DiskMethod::ALL
-                        .map(|m| disk_term(scene, &px, p, disk, rules, (m, ExactRule::Render)));
-                    term.ltc = all[disks[0].index()];
-                    term.exact = all[disks[1].index()];
-                    term.ltc_b = px_b.map(|b| {
-                        disk_term(scene, &b, p, disk, rules, (disks[0], ExactRule::Render))
-                    });
-                    term.disks = Some(all);
-                }
+            let kind = light.shape.kind();
+            let render =
+                |px: &LtcPixel, m| shape_term(scene, px, p, light, rules, (m, ExactRule::Render));
+            // A point's side B with table B is the paper's LTC, as its side A is here.
+            term.ltc_b = match kind {
+                ShapeKind::Point => px_b.as_ref().map(|b| ltc_term(scene, b, p, light, rules)),
+                _ => px_b.as_ref().map(|b| render(b, a.of(kind))),
+            };
+            if kind != ShapeKind::Point {
+                // Every method of the shape, made once; each side's value its method's.
+                term.by_method = ShapeMethod::all(kind)
+                    .into_iter()
+                    .map(|m| (m, render(&px, m)))
+                    .collect();
+                term.ltc = term.by(a.of(kind)).unwrap_or_default();
+                term.exact = term.by(b.of(kind)).unwrap_or_default();
+            }
+            if let Shape::Rect { half_u, half_v } = light.shape {
+                term.corners = Some(rect_corners(&px, p, (light, half_u, half_v)));
             }
             term
         })
@@ -259,10 +239,8 @@ fn light_term(
         ltc: ltc_term(scene, px, p, light, rules),
         exact: exact_term(scene, &px.frame, p, light),
         ltc_b: None,
-        spheres: None,
-        rects: None,
+        by_method: Vec::new(),
         corners: None,
-        disks: None,
     }
 }
 

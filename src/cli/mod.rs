@@ -7,6 +7,7 @@ pub mod eval;
 pub mod fit;
 pub mod lab;
 pub mod lut;
+pub mod method_for;
 pub mod render;
 pub mod study;
 

@@ -11,6 +11,7 @@ use ltc_lab::gpu::GpuContext;
 use ltc_lab::gpu::method_file::MethodFile;
 use ltc_lab::gpu::plane::ShaderChecks;
 use ltc_lab::gpu::renderer::PlaneRenderer;
+use ltc_lab::light::ShapeKind;
 use ltc_lab::light::disk::DiskMethod;
 use ltc_lab::light::rect::RectMethod;
 use ltc_lab::light::sphere::SphereMethod;
@@ -19,10 +20,11 @@ use ltc_lab::ltc::formats;
 use ltc_lab::ltc::lut::{Encoding, Table};
 use ltc_lab::ltc::{Clipping, Normalization};
 use ltc_lab::output::{ImageFormat, frame_bytes};
-use ltc_lab::render::{Frame, Method, RenderSettings, View};
+use ltc_lab::render::{Frame, Method, RenderSettings, ShapeMethod, View};
 use ltc_lab::scene::Scene;
 use ltc_lab::tables::{NamedTable, NamedTables, Source};
 
+use super::method_for::{self, MethodFor, Side};
 use super::{EncodingArgs, HORIZON_HELP, LutArgs, horizon_parser, one_of, parse_cull, parse_size};
 use ltc_lab::ltc::remedy::Horizon;
 
@@ -122,41 +124,72 @@ pub struct Args {
     /// before A's own --encoding).
     #[arg(long, value_parser = |s: &str| Encoding::parse(s))]
     encoding_b: Option<Encoding>,
-    /// How the lights with a size (a `radius` in the scene) are shaded by the method alone,
-    /// or left of a split (docs/design.md §1.10): exact, ltc-point, ltc-disk or
-    /// representative-point.
-    #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name), default_value = "ltc-disk")]
-    sphere_a: SphereMethod,
-    /// The same, right of a split (the reference).
-    #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name), default_value = "exact")]
-    sphere_b: SphereMethod,
-    /// How rect lights (`half_u` and `half_v` in the scene) are shaded by the method alone, or
-    /// left of a split (docs/design.md §1.11): exact, ltc-polygon, ltc-proxy, ltc-proxy-fast
-    /// or ltc-point.
-    #[arg(long, value_parser = one_of(&RectMethod::ALL, RectMethod::name), default_value = "ltc-polygon")]
-    rect_a: RectMethod,
-    /// The same, right of a split (the reference).
-    #[arg(long, value_parser = one_of(&RectMethod::ALL, RectMethod::name), default_value = "exact")]
-    rect_b: RectMethod,
-    /// How disk lights (`radius` and `normal` in the scene) are shaded by the method alone,
-    /// or left of a split (docs/design.md §1.12): exact, ltc-disk or ltc-point
-    #[arg(long, value_parser = one_of(&DiskMethod::ALL, DiskMethod::name), default_value = "ltc-disk")]
-    disk_a: DiskMethod,
-    /// The same, right of a split (the reference)
-    #[arg(long, value_parser = one_of(&DiskMethod::ALL, DiskMethod::name), default_value = "exact")]
-    disk_b: DiskMethod,
+    /// How a side shades one shape, `[a:|b:]SHAPE=METHOD` (side a, the method alone or left
+    /// of a split, unless b: the reference right of it), as often as there are shapes:
+    /// `rect=ltc-proxy`, `b:sphere=ltc-disk`. The shapes and their methods
+    /// (docs/design.md §1.10–§1.12): point (the side's method: --point-a and --point-b),
+    /// sphere (exact, ltc-point, ltc-disk, representative-point; default ltc-disk | exact),
+    /// rect (exact, ltc-polygon, ltc-proxy, ltc-proxy-fast, ltc-point; default
+    /// ltc-polygon | exact), disk (exact, ltc-disk, ltc-point; default ltc-disk | exact).
+    #[arg(long, value_parser = method_for::parse, value_name = "[SIDE:]SHAPE=METHOD")]
+    method_for: Vec<MethodFor>,
+    /// Alias of --method-for a:sphere=METHOD.
+    #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name))]
+    sphere_a: Option<SphereMethod>,
+    /// Alias of --method-for b:sphere=METHOD.
+    #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name))]
+    sphere_b: Option<SphereMethod>,
+    /// Alias of --method-for a:rect=METHOD.
+    #[arg(long, value_parser = one_of(&RectMethod::ALL, RectMethod::name))]
+    rect_a: Option<RectMethod>,
+    /// Alias of --method-for b:rect=METHOD.
+    #[arg(long, value_parser = one_of(&RectMethod::ALL, RectMethod::name))]
+    rect_b: Option<RectMethod>,
+    /// Alias of --method-for a:disk=METHOD.
+    #[arg(long, value_parser = one_of(&DiskMethod::ALL, DiskMethod::name))]
+    disk_a: Option<DiskMethod>,
+    /// Alias of --method-for b:disk=METHOD.
+    #[arg(long, value_parser = one_of(&DiskMethod::ALL, DiskMethod::name))]
+    disk_b: Option<DiskMethod>,
     /// A method of your own: a WGSL file of functions under the interface of
     /// docs/design.md §5.13, the method `file` (GPU only). With split or diff it is the left
     /// side unless --point-a or --point-b says otherwise.
     #[arg(long)]
     method_file: Option<PathBuf>,
     /// The point method left of a split (the numerator of a diff): ltc unless --method-file
-    /// makes it file.
+    /// makes it file (as --method-for a:point=METHOD).
     #[arg(long, value_parser = one_of(&Method::ALL, Method::name))]
     point_a: Option<Method>,
-    /// The point method right of a split (the reference of a diff): brdf by default.
+    /// The point method right of a split (the reference of a diff): brdf by default (as
+    /// --method-for b:point=METHOD).
     #[arg(long, value_parser = one_of(&Method::ALL, Method::name))]
     point_b: Option<Method>,
+}
+
+impl Args {
+    /// Every per-shape choice, the aliases' first and then --method-for's, one per side and
+    /// shape (`method_for::merged`).
+    fn shape_methods(&self) -> Result<Vec<MethodFor>> {
+        let alias = |flag, side, method: Option<ShapeMethod>| {
+            method.map(|method| (flag, MethodFor { side, method }))
+        };
+        let aliases = [
+            alias("--point-a", Side::A, self.point_a.map(ShapeMethod::from)),
+            alias("--point-b", Side::B, self.point_b.map(ShapeMethod::from)),
+            alias("--sphere-a", Side::A, self.sphere_a.map(ShapeMethod::from)),
+            alias("--sphere-b", Side::B, self.sphere_b.map(ShapeMethod::from)),
+            alias("--rect-a", Side::A, self.rect_a.map(ShapeMethod::from)),
+            alias("--rect-b", Side::B, self.rect_b.map(ShapeMethod::from)),
+            alias("--disk-a", Side::A, self.disk_a.map(ShapeMethod::from)),
+            alias("--disk-b", Side::B, self.disk_b.map(ShapeMethod::from)),
+        ];
+        let given: Vec<_> = aliases
+            .into_iter()
+            .flatten()
+            .chain(self.method_for.iter().map(|&c| ("--method-for", c)))
+            .collect();
+        method_for::merged(&given)
+    }
 }
 
 pub fn run(a: &Args) -> Result<()> {
@@ -172,13 +205,17 @@ pub fn run(a: &Args) -> Result<()> {
     settings.divider = a.divider;
     settings.cull = a.cull;
     settings.rules.horizon = a.horizon.rule();
-    settings.a.sphere = a.sphere_a;
-    settings.b.sphere = a.sphere_b;
-    settings.a.rect = a.rect_a;
-    settings.b.rect = a.rect_b;
-    settings.a.disk = a.disk_a;
-    settings.b.disk = a.disk_b;
-    let method_file = sides(a, &mut settings)?;
+    let chosen = a.shape_methods()?;
+    for c in chosen
+        .iter()
+        .filter(|c| c.method.kind() != ShapeKind::Point)
+    {
+        match c.side {
+            Side::A => settings.a.set(c.method),
+            Side::B => settings.b.set(c.method),
+        }
+    }
+    let method_file = sides(a, &chosen, &mut settings)?;
     a.lut.check_horizon(a.horizon)?;
     let out = a
         .out
@@ -211,7 +248,7 @@ pub fn run(a: &Args) -> Result<()> {
                     "--table-b, --lut-b, --aniso-b and --encoding-b compare two tables: use split or diff",
                 ));
             }
-            settings.b.point = settings.a.point;
+            settings.b.set(settings.a.point());
             settings.b_reads_table_b = true;
             NamedTables { a: named_a, b }
         }
@@ -309,24 +346,36 @@ fn default_name(
 /// The point methods of the sides (`--point-a`, `--point-b`; with a method file and neither,
 /// the file on the left), and the method file, read and checked. Refused: the method `file`
 /// without a file, a file no side shades, a file on the CPU.
-fn sides(a: &Args, settings: &mut RenderSettings) -> Result<Option<MethodFile>> {
+fn sides(
+    a: &Args,
+    chosen: &[MethodFor],
+    settings: &mut RenderSettings,
+) -> Result<Option<MethodFile>> {
     let file = a.method_file.as_deref().map(MethodFile::read).transpose()?;
+    let point = |side| {
+        chosen.iter().find_map(|c| match c.method {
+            ShapeMethod::Point(m) if c.side == side => Some(m),
+            _ => None,
+        })
+    };
+    let (point_a, point_b) = (point(Side::A), point(Side::B));
     if let Shown::Compared(_) = a.method {
-        let default_a = if file.is_some() && a.point_b != Some(Method::File) {
+        let default_a = if file.is_some() && point_b != Some(Method::File) {
             Method::File
         } else {
             Method::Ltc
         };
-        settings.a.point = a.point_a.unwrap_or(default_a);
-        settings.b.point = a.point_b.unwrap_or(Method::Brdf);
-    } else if a.point_a.is_some() || a.point_b.is_some() {
+        settings.a.set(point_a.unwrap_or(default_a));
+        settings.b.set(point_b.unwrap_or(Method::Brdf));
+    } else if point_a.is_some() || point_b.is_some() {
+        let flag = match (a.point_a, a.point_b) {
+            (Some(_), _) => "--point-a",
+            (_, Some(_)) => "--point-b",
+            _ => "--method-for",
+        };
         return Err(Error::input(
-            if a.point_a.is_some() {
-                "--point-a"
-            } else {
-                "--point-b"
-            },
-            "--point-a and --point-b pick the sides of split and diff",
+            flag,
+            "the point methods (--point-a, --point-b, --method-for point=…) pick the sides of split and diff",
         ));
     }
     let uses_file = settings.methods().contains(&Method::File);
@@ -437,24 +486,16 @@ fn side_name(
     scene: &Scene,
     file: Option<&MethodFile>,
 ) -> String {
-    use ltc_lab::light::Shape;
-    let point = match (m.point, file) {
-        (Method::File, Some(f)) => f.name.clone(),
-        (p, _) => p.name().to_string(),
-    };
     // The file shades every shape it has a function for.
-    let by_file = |k: usize| match (m.point, file) {
-        (Method::File, Some(f)) if f.shades[k] => Some(f.name.clone()),
-        _ => None,
+    let name = |kind: ShapeKind| match (m.point(), file) {
+        (Method::File, Some(f)) if f.shades(kind) => f.name.clone(),
+        _ => m.of(kind).name().to_string(),
     };
+    let point = name(ShapeKind::Point);
     let mut parts: Vec<(&str, String)> = Vec::new();
     for light in &scene.lights {
-        let part = match light.shape {
-            Shape::Point => ("point", point.clone()),
-            Shape::Sphere { .. } => ("sphere", by_file(1).unwrap_or(m.sphere.name().into())),
-            Shape::Rect { .. } => ("rect", by_file(2).unwrap_or(m.rect.name().into())),
-            Shape::Disk { .. } => ("disk", by_file(3).unwrap_or(m.disk.name().into())),
-        };
+        let kind = light.shape.kind();
+        let part = (kind.name(), name(kind));
         if !parts.contains(&part) {
             parts.push(part);
         }

@@ -23,11 +23,11 @@ use crate::ltc::lut::Lut;
 use crate::ltc::nl_fit::{self, NlTerms};
 use crate::ltc::remedy::HorizonRule;
 use crate::metrics::relative_difference;
-use crate::render::ShapeMethods;
 use crate::render::{
     Frame, FrameKind, Gloss, LtcRules, LutFilter, RenderSettings, ShadingFrame, SurfacePoint,
     Tables, View,
 };
+use crate::render::{ShapeMethod, ShapeMethods};
 use crate::scene::{Light, Scene};
 
 /// The per-pixel state of LTC shading: the frame, the two looked-up lobes and the horizon
@@ -242,8 +242,7 @@ pub fn rect_term(
         normalization: rules.normalization,
     };
     let lobes = rect_light_with(method, &shading, rule);
-    let scale = window_falloff(centre.length(), light.range_or_infinity()) / rect.area();
-    light.radiant_intensity() * scale * combine(lobes, m.base_color)
+    emitter_radiance(scene, light, (centre, rect.area()), lobes)
 }
 
 /// One disk light's radiance toward the camera by `method` (docs/design.md §1.12): its
@@ -274,8 +273,20 @@ pub fn disk_term(
         normalization: rules.normalization,
     };
     let lobes = disk_light_with(method, &shading, rule);
-    let scale = window_falloff(centre.length(), light.range_or_infinity()) / disk.area();
-    light.radiant_intensity() * scale * combine(lobes, m.base_color)
+    emitter_radiance(scene, light, (centre, disk.area()), lobes)
+}
+
+/// A one-sided emitter's radiance toward the camera from its unit-radiance `lobes`: times
+/// its radiance `I/A` (`area` A) and the window at its centre's distance (`centre`), the
+/// rect's and the disk's one tail (light_shape.wgsl's `add_emitter_lobes`).
+fn emitter_radiance(
+    scene: &Scene,
+    light: &Light,
+    (centre, area): (DVec3, f64),
+    lobes: Lobes<f64>,
+) -> DVec3 {
+    let scale = window_falloff(centre.length(), light.range_or_infinity()) / area;
+    light.radiant_intensity() * scale * combine(lobes, scene.material.base_color)
 }
 
 /// One side of a render: its method for each light shape, the table its LTC methods read,
@@ -309,7 +320,7 @@ impl<'a> Side<'a> {
 }
 
 /// One light's radiance toward the camera by one side: by the side's method for the light's
-/// shape (for a point, the CPU's literal form of it). One arm per shape.
+/// shape (`shape_term`).
 pub fn light_term(
     scene: &Scene,
     px: &LtcPixel,
@@ -318,33 +329,38 @@ pub fn light_term(
     rules: &LtcRules,
     side: &Side<'_>,
 ) -> DVec3 {
-    match light.shape {
-        Shape::Point if side.methods.point.is_ltc() => ltc_term(scene, px, p, light, rules),
-        Shape::Point => exact_term(scene, &px.frame, p, light),
-        Shape::Sphere { radius } => sphere_term(
-            scene,
-            px,
-            p,
-            (light, radius),
-            rules,
-            (side.methods.sphere, side.rule),
-        ),
-        Shape::Rect { half_u, half_v } => rect_term(
-            scene,
-            px,
-            p,
-            (light, half_u, half_v),
-            rules,
-            (side.methods.rect, side.rule),
-        ),
-        Shape::Disk { normal, radius } => disk_term(
-            scene,
-            px,
-            p,
-            (light, normal, radius),
-            rules,
-            (side.methods.disk, side.rule),
-        ),
+    let method = side.methods.of(light.shape.kind());
+    shape_term(scene, px, p, light, rules, (method, side.rule))
+}
+
+/// One light's radiance toward the camera by `method`, a method of its shape (for a point,
+/// the CPU's literal form of it). One arm per shape.
+pub fn shape_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    light: &Light,
+    rules: &LtcRules,
+    (method, rule): (ShapeMethod, ExactRule),
+) -> DVec3 {
+    match (light.shape, method) {
+        (Shape::Point, ShapeMethod::Point(m)) if m.is_ltc() => ltc_term(scene, px, p, light, rules),
+        (Shape::Point, ShapeMethod::Point(_)) => exact_term(scene, &px.frame, p, light),
+        (Shape::Sphere { radius }, ShapeMethod::Sphere(m)) => {
+            sphere_term(scene, px, p, (light, radius), rules, (m, rule))
+        }
+        (Shape::Rect { half_u, half_v }, ShapeMethod::Rect(m)) => {
+            rect_term(scene, px, p, (light, half_u, half_v), rules, (m, rule))
+        }
+        (Shape::Disk { normal, radius }, ShapeMethod::Disk(m)) => {
+            disk_term(scene, px, p, (light, normal, radius), rules, (m, rule))
+        }
+        // Another shape's method, which `ShapeMethods::of` never gives: the shape's exact
+        // integral.
+        (shape, _) => {
+            let exact = ShapeMethod::reference(shape.kind());
+            shape_term(scene, px, p, light, rules, (exact, rule))
+        }
     }
 }
 

@@ -1,8 +1,9 @@
 //! `shaders/plane.wgsl`: the compute shader that shades the plane. Here its constants and
 //! bindings as Rust names them (`tests/shaders/main.rs` checks both against the WGSL), and its
-//! pipelines: one per combination of methods, view, table filter, table B, horizon rule and sphere methods
-//! (override constants), compiled on first use and kept. What a render keeps between its
-//! chunks is `gpu::plane_render`; what is kept between renders, `gpu::renderer`.
+//! pipelines: one per combination of methods, view, table filter, table B, horizon rule and
+//! the methods of each shape some light has (override constants), compiled on first use and
+//! kept. What a render keeps between its chunks is `gpu::plane_render`; what is kept between
+//! renders, `gpu::renderer`.
 
 use std::collections::HashMap;
 
@@ -10,17 +11,14 @@ use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::failures::scoped;
-use crate::gpu::light::light_shape::{disk_constant, rect_constant, sphere_constant};
+use crate::gpu::light::light_shape::{self, shape_method_constant};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::method_file::MethodFile;
 use crate::gpu::method_file::device_check::DeviceShaders;
 use crate::gpu::target::OUTPUT_FORMAT;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
+use crate::light::ShapeKind;
 use crate::ltc::remedy::HorizonRule;
-use crate::render::{LutFilter, Method, RenderSettings, View};
+use crate::render::{LutFilter, Method, RenderSettings, ShapeMethod, ShapeMethods, View};
 use crate::scene::Scene;
 
 /// The shader text (composed after `scene::SOURCE`).
@@ -86,8 +84,8 @@ pub const BINDINGS: [Binding; 10] = [
 
 /// What a pipeline is specialized for (its override constants): methods A and B, the view,
 /// the LUT filter, whether B reads table B, the horizon rule, each sized shape's methods on
-/// both sides where some light has that shape (`None`: none does, and the pipeline has none
-/// of that shape's code), and whether the material is anisotropic.
+/// both sides where some light has that shape (`ShapeSides`), and whether the material is
+/// anisotropic.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct PipelineKey {
     pub a: Method,
@@ -96,36 +94,64 @@ pub struct PipelineKey {
     pub filter: LutFilter,
     pub table_b: bool,
     pub horizon: HorizonRule,
-    /// Where some light has a size (any shape but a point): A's and B's sphere methods.
-    pub sized: Option<(SphereMethod, SphereMethod)>,
-    pub rects: Option<(RectMethod, RectMethod)>,
-    pub disks: Option<(DiskMethod, DiskMethod)>,
+    pub shapes: ShapeSides,
     /// The material is anisotropic (docs/design.md §1.13): its tangent frame and 4D table.
     pub aniso: bool,
+}
+
+/// Each shape with a size that some light has, with A's and B's methods for it, keyed by
+/// `ShapeKind`: a shape no light has is `None`, and the pipeline has none of its code (the
+/// point's slot is always `None`: its methods are the key's `a` and `b`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ShapeSides([Option<(ShapeMethod, ShapeMethod)>; ShapeKind::ALL.len()]);
+
+impl ShapeSides {
+    /// The sized shapes among `kinds`, with `(a, b)`'s methods for them.
+    pub fn of(
+        (a, b): (&ShapeMethods, &ShapeMethods),
+        kinds: impl Iterator<Item = ShapeKind>,
+    ) -> Self {
+        let mut sides = Self::default();
+        for kind in kinds.filter(|&k| k != ShapeKind::Point) {
+            sides.0[kind.index()] = Some((a.of(kind), b.of(kind)));
+        }
+        sides
+    }
+
+    /// A's and B's methods for `kind`, where some light has it.
+    pub fn get(&self, kind: ShapeKind) -> Option<(ShapeMethod, ShapeMethod)> {
+        self.0[kind.index()]
+    }
+
+    /// Some light has a size.
+    pub fn any(&self) -> bool {
+        self.0.iter().any(Option::is_some)
+    }
 }
 
 /// The pipeline's methods and view: `View::B` is B shaded as the single A (with B's table,
 /// which the render puts in A's place).
 pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
     let (a, b, view, table_b) = match s.view {
-        View::A => (s.a.point, s.b.point, ViewConstant::Single, false),
-        View::B => (s.b.point, s.b.point, ViewConstant::Single, false),
-        View::Split => (s.a.point, s.b.point, ViewConstant::Split, s.b_reads_table_b),
-        View::Diff => (s.a.point, s.b.point, ViewConstant::Diff, s.b_reads_table_b),
-    };
-    let (spheres, rects, disks) = match s.view {
-        View::B => (
-            (s.b.sphere, s.b.sphere),
-            (s.b.rect, s.b.rect),
-            (s.b.disk, s.b.disk),
+        View::A => (s.a.point(), s.b.point(), ViewConstant::Single, false),
+        View::B => (s.b.point(), s.b.point(), ViewConstant::Single, false),
+        View::Split => (
+            s.a.point(),
+            s.b.point(),
+            ViewConstant::Split,
+            s.b_reads_table_b,
         ),
-        _ => (
-            (s.a.sphere, s.b.sphere),
-            (s.a.rect, s.b.rect),
-            (s.a.disk, s.b.disk),
+        View::Diff => (
+            s.a.point(),
+            s.b.point(),
+            ViewConstant::Diff,
+            s.b_reads_table_b,
         ),
     };
-    let any = |shape: fn(&Shape) -> bool| scene.lights.iter().any(|l| shape(&l.shape));
+    let sides = match s.view {
+        View::B => (&s.b, &s.b),
+        _ => (&s.a, &s.b),
+    };
     PipelineKey {
         a,
         b,
@@ -133,9 +159,7 @@ pub fn pipeline_key(s: &RenderSettings, scene: &Scene) -> PipelineKey {
         filter: s.rules.filter,
         table_b,
         horizon: s.rules.horizon,
-        sized: any(|s| *s != Shape::Point).then_some(spheres),
-        rects: any(|s| matches!(s, Shape::Rect { .. })).then_some(rects),
-        disks: any(|s| matches!(s, Shape::Disk { .. })).then_some(disks),
+        shapes: ShapeSides::of(sides, scene.lights.iter().map(|l| l.shape.kind())),
         aniso: scene.material.is_anisotropic(),
     }
 }
@@ -338,14 +362,9 @@ fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
         filter,
         table_b,
         horizon,
-        sized,
-        rects,
-        disks,
+        shapes,
         aniso,
     } = key;
-    let spheres = sized.unwrap_or((SphereMethod::LtcDisk, SphereMethod::Exact));
-    let rect_methods = rects.unwrap_or((RectMethod::LtcPolygon, RectMethod::Exact));
-    let disk_methods = disks.unwrap_or((DiskMethod::LtcDisk, DiskMethod::Exact));
     let mut constants = vec![
         ("METHOD_A", f64::from(method_constant(a).0)),
         ("METHOD_B", f64::from(method_constant(b).0)),
@@ -356,16 +375,22 @@ fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
         ),
         ("TABLE_B", f64::from(u8::from(table_b))),
         ("HORIZON", f64::from(horizon_constant(horizon).0)),
-        ("SIZED", f64::from(u8::from(sized.is_some()))),
-        ("SPHERE_A", f64::from(sphere_constant(spheres.0).0)),
-        ("SPHERE_B", f64::from(sphere_constant(spheres.1).0)),
-        ("RECTS", f64::from(u8::from(rects.is_some()))),
-        ("RECT_A", f64::from(rect_constant(rect_methods.0).0)),
-        ("RECT_B", f64::from(rect_constant(rect_methods.1).0)),
-        ("DISKS", f64::from(u8::from(disks.is_some()))),
-        ("DISK_A", f64::from(disk_constant(disk_methods.0).0)),
-        ("DISK_B", f64::from(disk_constant(disk_methods.1).0)),
+        ("SIZED", f64::from(u8::from(shapes.any()))),
     ];
+    for kind in ShapeKind::sized() {
+        let names = light_shape::overrides(kind);
+        let present = shapes.get(kind);
+        // A shape no light has keeps the shader's defaults, the sides' defaults.
+        let (ma, mb) = present.unwrap_or((
+            ShapeMethod::approximation(kind),
+            ShapeMethod::reference(kind),
+        ));
+        if let Some(flag) = names.present {
+            constants.push((flag, f64::from(u8::from(present.is_some()))));
+        }
+        constants.push((names.a, f64::from(shape_method_constant(ma).0)));
+        constants.push((names.b, f64::from(shape_method_constant(mb).0)));
+    }
     // Set only where anisotropic: an isotropic pipeline is specialized exactly as before.
     if aniso {
         constants.push(("ANISO", 1.0));

@@ -3,9 +3,10 @@
 //! that cap, and the Gauss–Legendre rule over it that the exact method integrates by), and a
 //! rect (`rect`: the polygon it covers, the LTC over a polygon and the rule over it), and a
 //! disk (`disk`: the segment of it above the surface and the rule over it; its LTC is the
-//! sphere's cone algebra). Adding a shape is a module here, a variant of `Shape`, and one arm
-//! in each dispatch: the CPU's `cpu::light_term`, the pixel inspector's `pixel::pixel_terms`, the light buffer's
-//! `gpu::scene::light_elements` and light_shape.wgsl's `add_light`.
+//! sphere's cone algebra). What is chosen per shape is keyed by `ShapeKind` (docs/design.md
+//! §5.12). Adding a shape is a module here, a variant of `Shape` and of `ShapeKind`, and one
+//! arm in each dispatch: the CPU's `cpu::shape_term`, `render::ShapeMethod`, the light
+//! buffer's `gpu::scene::light_elements` and light_shape.wgsl's `add_light`.
 
 pub mod boundary;
 pub mod disk;
@@ -18,6 +19,62 @@ use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes};
 use crate::ltc::{Clipping, LtcPair, Normalization};
+use crate::named::named_enum;
+
+named_enum! {
+    /// A shape without its dimensions: what a side's methods, the pipelines' specializations,
+    /// the command line's `--method-for` and a method file's functions are keyed by
+    /// (docs/design.md §5.12), in `Shape`'s order.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+    pub enum ShapeKind {
+        Point = "point",
+        Sphere = "sphere",
+        Rect = "rect",
+        Disk = "disk",
+    }
+}
+
+impl ShapeKind {
+    /// One of its lights, as a sentence names it ("a rect light").
+    pub fn light_noun(self) -> &'static str {
+        match self {
+            Self::Point => "a point light",
+            Self::Sphere => "a light with a size",
+            Self::Rect => "a rect light",
+            Self::Disk => "a disk light",
+        }
+    }
+
+    /// How one of its lights emits, for a reader of the lab (`None`: the radius slider says
+    /// it for spheres, and a point needs no words).
+    pub fn emits(self) -> Option<&'static str> {
+        match self {
+            Self::Point | Self::Sphere => None,
+            Self::Rect => Some(
+                "A rect emits toward half_u × half_v with radiance I/A: far away it is the oriented point light of intensity I cos θe",
+            ),
+            Self::Disk => Some(
+                "A disk emits toward its normal with radiance I/(π r²): far away it is the oriented point light of intensity I cos θe",
+            ),
+        }
+    }
+
+    /// Its lights as the lab names them ("rect lights"); a sphere's are every light the
+    /// radius slider gives a size.
+    pub fn lights_title(self) -> &'static str {
+        match self {
+            Self::Point => "point lights",
+            Self::Sphere => "lights with a size",
+            Self::Rect => "rect lights",
+            Self::Disk => "disk lights",
+        }
+    }
+
+    /// The shapes with a size, whose methods are their own modules' (`ALL` without the point).
+    pub fn sized() -> impl Iterator<Item = Self> {
+        Self::ALL.into_iter().filter(|&k| k != Self::Point)
+    }
+}
 
 /// Which rule a light's exact method integrates by.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,6 +106,16 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// Which shape it is.
+    pub fn kind(self) -> ShapeKind {
+        match self {
+            Self::Point => ShapeKind::Point,
+            Self::Sphere { .. } => ShapeKind::Sphere,
+            Self::Rect { .. } => ShapeKind::Rect,
+            Self::Disk { .. } => ShapeKind::Disk,
+        }
+    }
+
     /// The shape a scene's `radius` names: 0 (or absent) a point, else a sphere.
     pub fn of_radius(radius: f64) -> Self {
         if radius == 0.0 {

@@ -10,14 +10,10 @@ use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::timing::FrameTimes;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
+use crate::light::{Shape, ShapeKind};
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::Horizon;
-use crate::render::ShapeMethods;
-use crate::render::{LtcRules, Method, RenderSettings};
+use crate::render::{LtcRules, Method, RenderSettings, ShapeMethod, ShapeMethods};
 use crate::scene::{RandomLights, Scene, generate_lights, preset};
 
 /// The paper's Table 1 (GTX 1060, its resolution unstated): fps at 100, 500, 1000, 5000
@@ -30,26 +26,28 @@ pub const PAPER_LTC_FPS: [f64; 4] = [285.0, 56.0, 28.0, 5.0];
 pub const DEFAULT_RANGE: f64 = crate::scene::PAPER_RANGE;
 
 /// What shape every light of a run had, and how it was shaded: points by the run's point
-/// method, or every light a sphere (or a rect) by one method.
+/// method, or every light of one shape with a size by one of its methods.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Sizing {
     Point,
-    Sphere(SphereMethod),
-    Rect(RectMethod),
-    Disk(DiskMethod),
-    /// Every light of this shape (sphere, rect or disk), shaded by the method file.
-    File(&'static str),
+    /// Every light of the method's shape, by it.
+    Shape(ShapeMethod),
+    /// Every light of this shape (with a size), shaded by the method file.
+    File(ShapeKind),
 }
 
 impl Sizing {
     /// The shape, as the CSV's `shape` column writes it.
     pub fn shape_name(self) -> &'static str {
+        self.kind().name()
+    }
+
+    /// The lights' shape.
+    pub fn kind(self) -> ShapeKind {
         match self {
-            Self::Point => "point",
-            Self::Sphere(_) => "sphere",
-            Self::Rect(_) => "rect",
-            Self::Disk(_) => "disk",
-            Self::File(shape) => shape,
+            Self::Point => ShapeKind::Point,
+            Self::Shape(m) => m.kind(),
+            Self::File(kind) => kind,
         }
     }
 
@@ -58,11 +56,47 @@ impl Sizing {
     pub fn method_name(self) -> &'static str {
         match self {
             Self::Point => "",
-            Self::Sphere(m) => m.name(),
-            Self::Rect(m) => m.name(),
-            Self::Disk(m) => m.name(),
+            Self::Shape(m) => m.name(),
             Self::File(_) => "file",
         }
+    }
+}
+
+/// How the benchmark sizes the lights of `kind` (`--sphere-radius`, `--rect-half-edge`,
+/// `--disk-radius`): the size's symbol in a row's label, and the lights of `points` given
+/// that size, facing the plane.
+pub fn sized_scene(kind: ShapeKind, points: &Scene, size: f64) -> Scene {
+    match kind {
+        ShapeKind::Point => points.clone(),
+        ShapeKind::Sphere => {
+            let mut spheres = points.clone();
+            for l in &mut spheres.lights {
+                l.shape = Shape::of_radius(size);
+            }
+            spheres
+        }
+        ShapeKind::Rect => as_rects(points, size),
+        ShapeKind::Disk => as_disks(points, size),
+    }
+}
+
+/// The symbol of a size of `kind` in a row's label: a radius, or a rect's half-edge.
+pub fn size_symbol(kind: ShapeKind) -> &'static str {
+    match kind {
+        ShapeKind::Rect => "h",
+        _ => "r",
+    }
+}
+
+/// The lights of `kind` the benchmark times, in words (its sized table's title).
+pub fn sized_title(kind: ShapeKind, size: f64) -> String {
+    match kind {
+        ShapeKind::Point => "points".to_string(),
+        ShapeKind::Sphere => format!("every light a sphere of radius {size}"),
+        ShapeKind::Rect => {
+            format!("every light a square rect of half-edge {size}, facing the plane")
+        }
+        ShapeKind::Disk => format!("every light a disk of radius {size}, facing the plane"),
     }
 }
 
@@ -147,10 +181,16 @@ impl BenchRow {
 
     fn material_free_label(&self) -> String {
         match (self.sizing, self.horizon) {
-            (Sizing::Sphere(m), _) => format!("{} (r = {})", m.name(), self.size),
-            (Sizing::Rect(m), _) => format!("rect {} (h = {})", m.name(), self.size),
-            (Sizing::Disk(m), _) => format!("disk {} (r = {})", m.name(), self.size),
-            (Sizing::File(shape), _) => format!("{shape} file (size {})", self.size),
+            // A sphere's rows came first, when every light with a size was one: unprefixed.
+            (Sizing::Shape(m), _) if m.kind() == ShapeKind::Sphere => {
+                format!("{} (r = {})", m.name(), self.size)
+            }
+            (Sizing::Shape(m), _) => {
+                let kind = m.kind();
+                let symbol = size_symbol(kind);
+                format!("{} {} ({symbol} = {})", kind.name(), m.name(), self.size)
+            }
+            (Sizing::File(kind), _) => format!("{} file (size {})", kind.name(), self.size),
             (Sizing::Point, Horizon::Eq30) => self.method.name().to_string(),
             (Sizing::Point, h) => format!("{} ({})", self.method.name(), h.name()),
         }
@@ -284,6 +324,18 @@ pub struct BenchSettings {
     pub scene: Option<Scene>,
 }
 
+impl BenchSettings {
+    /// The size every light of `kind` is timed at, where it is (0 for points).
+    pub fn size_of(&self, kind: ShapeKind) -> Option<f64> {
+        match kind {
+            ShapeKind::Point => Some(0.0),
+            ShapeKind::Sphere => self.sphere_radius,
+            ShapeKind::Rect => self.rect_half_edge,
+            ShapeKind::Disk => self.disk_radius,
+        }
+    }
+}
+
 /// The methods this device runs: the f32 four, and the f16 ones where it has f16 shaders.
 pub fn methods(ctx: &GpuContext) -> Vec<Method> {
     let f16 = if ctx.has_f16() { &Method::F16[..] } else { &[] };
@@ -319,48 +371,36 @@ fn all_runs(ctx: &GpuContext, s: &BenchSettings) -> Vec<Run> {
     let points = runs(ctx, &s.horizons)
         .into_iter()
         .map(|(m, h)| (m, h, Sizing::Point));
-    let sized = |sizing| (Method::LtcFast, Horizon::Eq30, sizing);
-    let spheres = s
-        .sphere_radius
-        .iter()
-        .flat_map(|_| SphereMethod::ALL.map(|m| sized(Sizing::Sphere(m))));
-    let rects = s
-        .rect_half_edge
-        .iter()
-        .flat_map(|_| RectMethod::ALL.map(|m| sized(Sizing::Rect(m))));
-    let disks = s
-        .disk_radius
-        .iter()
-        .flat_map(|_| DiskMethod::ALL.map(|m| sized(Sizing::Disk(m))));
-    let exact = |r: &Run| {
-        matches!(
-            r.2,
-            Sizing::Sphere(SphereMethod::Exact)
-                | Sizing::Rect(RectMethod::Exact)
-                | Sizing::Disk(DiskMethod::Exact)
-        )
-    };
+    let sized = ShapeKind::sized()
+        .filter(|&k| s.size_of(k).is_some())
+        .flat_map(ShapeMethod::all)
+        .map(|m| (Method::LtcFast, Horizon::Eq30, Sizing::Shape(m)));
+    let exact = |r: &Run| matches!(r.2, Sizing::Shape(m) if m == ShapeMethod::reference(m.kind()));
     let file = s.method_file.iter().flat_map(|f| {
-        let sizes = [Some(0.0), s.sphere_radius, s.rect_half_edge, s.disk_radius];
-        let shapes = ["point", "sphere", "rect", "disk"];
-        (0..4)
-            .filter(move |&k| f.shades[k] && sizes[k].is_some())
-            .map(move |k| {
-                let sizing = if k == 0 {
-                    Sizing::Point
-                } else {
-                    Sizing::File(shapes[k])
+        ShapeKind::ALL
+            .into_iter()
+            .filter(move |&k| f.shades(k) && s.size_of(k).is_some())
+            .map(|k| {
+                let sizing = match k {
+                    ShapeKind::Point => Sizing::Point,
+                    _ => Sizing::File(k),
                 };
                 (Method::File, Horizon::Eq30, sizing)
             })
     });
     points
-        .chain(spheres)
-        .chain(rects)
-        .chain(disks)
+        .chain(sized)
         .chain(file)
         .filter(|r| !(s.skip_exact && exact(r)))
         .collect()
+}
+
+/// `base` with a run's sized method, where it times one.
+fn shaded_as(sizing: Sizing, base: ShapeMethods) -> ShapeMethods {
+    match sizing {
+        Sizing::Shape(m) => base.with(m),
+        Sizing::Point | Sizing::File(_) => base,
+    }
 }
 
 /// `scene` with every light a square rect of half-edge `h` facing down onto the plane.
@@ -408,6 +448,10 @@ pub fn run(
     let mut kept = None;
     // Sized lights of a scene as given keep their shape in the point methods' rows.
     let defaults = RenderSettings::single(1, 1, Method::Ltc).a;
+    // Generated lights: the shapes not timed in a row shade as their centres (none is there).
+    let as_points = ShapeKind::sized().fold(ShapeMethods::approximations(), |a, k| {
+        a.with(ShapeMethod::at_centre(k))
+    });
     let given = s.scene.is_some();
     for &lights in &counts {
         let points = s
@@ -415,12 +459,12 @@ pub fn run(
             .clone()
             .unwrap_or_else(|| bench_scene(lights, s.range));
         let fraction = in_range_fraction(&points, width, height);
-        let mut spheres = points.clone();
-        for l in &mut spheres.lights {
-            l.shape = Shape::of_radius(s.sphere_radius.unwrap_or(0.0));
-        }
-        let rects = as_rects(&points, s.rect_half_edge.unwrap_or(0.0));
-        let disks = as_disks(&points, s.disk_radius.unwrap_or(1.0));
+        let shaped: Vec<(ShapeKind, f64, Scene)> = ShapeKind::sized()
+            .filter_map(|k| {
+                s.size_of(k)
+                    .map(|size| (k, size, sized_scene(k, &points, size)))
+            })
+            .collect();
         for &cull in &s.culls {
             let materials = std::iter::once(None).chain(s.alpha_y.map(Some));
             let runs = all_runs(ctx, s).into_iter();
@@ -428,17 +472,9 @@ pub fn run(
                 .flat_map(|r| materials.clone().map(move |m| (r, m)))
                 .collect();
             for ((method, horizon, sizing), alpha_y) in runs {
-                let (scene, size) = match sizing {
-                    Sizing::Point => (&points, 0.0),
-                    Sizing::Rect(_) | Sizing::File("rect") => {
-                        (&rects, s.rect_half_edge.unwrap_or(0.0))
-                    }
-                    Sizing::Disk(_) | Sizing::File("disk") => {
-                        (&disks, s.disk_radius.unwrap_or(0.0))
-                    }
-                    Sizing::Sphere(_) | Sizing::File(_) => {
-                        (&spheres, s.sphere_radius.unwrap_or(0.0))
-                    }
+                let (scene, size) = match shaped.iter().find(|(k, ..)| *k == sizing.kind()) {
+                    Some((_, size, scene)) => (scene, *size),
+                    None => (&points, 0.0),
                 };
                 let table = horizon.table().map_or(lut, |t| Lut::shipped(t));
                 renderer.set_tables(ctx, table, None)?;
@@ -448,24 +484,7 @@ pub fn run(
                         horizon: horizon.rule(),
                         ..LtcRules::default()
                     },
-                    a: ShapeMethods {
-                        point: method,
-                        sphere: match sizing {
-                            Sizing::Sphere(m) => m,
-                            _ if given => defaults.sphere,
-                            _ => SphereMethod::LtcPoint,
-                        },
-                        rect: match sizing {
-                            Sizing::Rect(m) => m,
-                            _ if given => defaults.rect,
-                            _ => RectMethod::LtcPoint,
-                        },
-                        disk: match sizing {
-                            Sizing::Disk(m) => m,
-                            _ if given => defaults.disk,
-                            _ => DiskMethod::LtcPoint,
-                        },
-                    },
+                    a: shaded_as(sizing, if given { defaults } else { as_points }).with(method),
                     ..RenderSettings::single(width, height, method)
                 };
                 let mut brushed;

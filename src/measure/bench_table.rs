@@ -2,14 +2,12 @@
 //! ratios of the same run — LTC over BRDF, culling, the horizon remedies, each shape's methods
 //! and a method file's.
 
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
+use crate::light::ShapeKind;
 use crate::ltc::remedy::Horizon;
 use crate::measure::bench::{
-    BenchRow, PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS, Sizing, range_text,
+    BenchRow, PAPER_BRDF_FPS, PAPER_LIGHTS, PAPER_LTC_FPS, Sizing, range_text, sized_title,
 };
-use crate::render::Method;
+use crate::render::{Method, ShapeMethod};
 
 /// The table in Markdown: one row per method, light count and culling, then the speed-ups of
 /// each LTC form over each BRDF form and of culling, and the paper's figures for reference.
@@ -113,43 +111,21 @@ pub fn markdown(rows: &[BenchRow], device: &str) -> String {
     if rows.iter().any(|r| r.method == Method::File) {
         out.push_str(&file_markdown(rows, &keys));
     }
-    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Sphere(_))) {
-        let methods = SphereMethod::ALL.map(Sizing::Sphere);
-        let title = format!("every light a sphere of radius {}", r.size);
+    for kind in ShapeKind::sized() {
+        let Some(r) = rows
+            .iter()
+            .find(|r| matches!(r.sizing, Sizing::Shape(m) if m.kind() == kind))
+        else {
+            continue;
+        };
+        let methods: Vec<Sizing> = ShapeMethod::all(kind)
+            .into_iter()
+            .map(Sizing::Shape)
+            .collect();
+        let title = sized_title(kind, r.size);
         let pair = (
-            Sizing::Sphere(SphereMethod::LtcDisk),
-            Sizing::Sphere(SphereMethod::LtcPoint),
-        );
-        out.push_str(&sized_markdown(
-            rows,
-            (&keys, &title),
-            (&methods, pair),
-            &ms,
-        ));
-    }
-    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Rect(_))) {
-        let methods = RectMethod::ALL.map(Sizing::Rect);
-        let title = format!(
-            "every light a square rect of half-edge {}, facing the plane",
-            r.size
-        );
-        let pair = (
-            Sizing::Rect(RectMethod::LtcPolygon),
-            Sizing::Rect(RectMethod::LtcPoint),
-        );
-        out.push_str(&sized_markdown(
-            rows,
-            (&keys, &title),
-            (&methods, pair),
-            &ms,
-        ));
-    }
-    if let Some(r) = rows.iter().find(|r| matches!(r.sizing, Sizing::Disk(_))) {
-        let methods = DiskMethod::ALL.map(Sizing::Disk);
-        let title = format!("every light a disk of radius {}, facing the plane", r.size);
-        let pair = (
-            Sizing::Disk(DiskMethod::LtcDisk),
-            Sizing::Disk(DiskMethod::LtcPoint),
+            Sizing::Shape(ShapeMethod::approximation(kind)),
+            Sizing::Shape(ShapeMethod::at_centre(kind)),
         );
         out.push_str(&sized_markdown(
             rows,
@@ -238,31 +214,28 @@ fn file_markdown(rows: &[BenchRow], keys: &[(usize, bool)]) -> String {
         "\nThe method file (ms of the file / ms of the lab's method, same run):\n\n| lights | cull | lights' shape | file / ltc-fast | file / ltc | file / the shape's LTC | file / the shape's ltc-point |\n|---:|---|---|---:|---:|---:|---:|\n",
     );
     for &(n, cull) in keys {
-        for shape in ["point", "sphere", "rect", "disk"] {
-            let sizing = if shape == "point" {
-                Sizing::Point
-            } else {
-                Sizing::File(shape)
+        for kind in ShapeKind::ALL {
+            let sizing = match kind {
+                ShapeKind::Point => Sizing::Point,
+                _ => Sizing::File(kind),
             };
             let Some(file) = ms(n, cull, Method::File, sizing) else {
                 continue;
             };
             let fast = Method::LtcFast;
-            let (ltc, point) = match shape {
-                "sphere" => (
-                    ms(n, cull, fast, Sizing::Sphere(SphereMethod::LtcDisk)),
-                    ms(n, cull, fast, Sizing::Sphere(SphereMethod::LtcPoint)),
+            let (ltc, point) = match kind {
+                ShapeKind::Point => (None, None),
+                _ => (
+                    ms(
+                        n,
+                        cull,
+                        fast,
+                        Sizing::Shape(ShapeMethod::approximation(kind)),
+                    ),
+                    ms(n, cull, fast, Sizing::Shape(ShapeMethod::at_centre(kind))),
                 ),
-                "rect" => (
-                    ms(n, cull, fast, Sizing::Rect(RectMethod::LtcPolygon)),
-                    ms(n, cull, fast, Sizing::Rect(RectMethod::LtcPoint)),
-                ),
-                "disk" => (
-                    ms(n, cull, fast, Sizing::Disk(DiskMethod::LtcDisk)),
-                    ms(n, cull, fast, Sizing::Disk(DiskMethod::LtcPoint)),
-                ),
-                _ => (None, None),
             };
+            let shape = kind.name();
             out.push_str(&format!(
                 "| {n} | {} | {shape} | {} | {} | {} | {} |\n",
                 if cull { "on" } else { "off" },

@@ -9,24 +9,13 @@
 
 use crate::error::Result;
 use crate::gpu::GpuContext;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
+use crate::light::ShapeKind;
 use crate::ltc::Clipping;
 use crate::measure::study::{
     LutChoice, Renderers, Study, StudyRow, StudySettings, Variant, row, timed,
 };
-use crate::render::{LtcRules, Method, RenderSettings, ShapeMethods};
+use crate::render::{LtcRules, Method, RenderSettings, ShapeMethod, ShapeMethods};
 use crate::scene::Scene;
-
-/// Every shape exact: the reference of a scene as given.
-const EXACT: ShapeMethods = ShapeMethods {
-    point: Method::Brdf,
-    sphere: SphereMethod::Exact,
-    rect: RectMethod::Exact,
-    disk: DiskMethod::Exact,
-};
 
 /// The rows of every scene of `s` studied as given (`StudySettings::scenes`), at each α and
 /// culling, on the renderers of `study`.
@@ -78,7 +67,7 @@ impl SceneStudy<'_> {
         scene.material.alpha = self.alpha;
         let case = (self.alpha, scene.lights.len().max(1), self.cull);
         let base = RenderSettings {
-            a: EXACT,
+            a: ShapeMethods::references(),
             cull: self.cull,
             ..RenderSettings::single(s.size.0, s.size.1, Method::Brdf)
         };
@@ -93,14 +82,11 @@ impl SceneStudy<'_> {
             rows.push(row);
             Ok(())
         };
-        let holds = |wanted: fn(&Shape) -> bool| self.scene.lights.iter().any(|l| wanted(&l.shape));
-        if holds(|s| matches!(s, Shape::Point)) {
+        let kinds: Vec<ShapeKind> = self.scene.lights.iter().map(|l| l.shape.kind()).collect();
+        if kinds.contains(&ShapeKind::Point) {
             for v in variants.iter().filter(|v| v.method != Method::Brdf) {
                 let settings = RenderSettings {
-                    a: ShapeMethods {
-                        point: v.method,
-                        ..EXACT
-                    },
+                    a: ShapeMethods::references().with(v.method),
                     rules: LtcRules {
                         clipping: Clipping::BOTH,
                         normalization: v.normalization,
@@ -112,28 +98,19 @@ impl SceneStudy<'_> {
                 measure(v.name.to_string(), r.of(v.lut), &settings)?;
             }
         }
-        for a in sized_methods(&holds) {
+        for a in sized_methods(&kinds) {
             let name = format!("{}-{}", a.0, a.1);
             let settings = RenderSettings { a: a.2, ..base };
             measure(name, r.of(LutChoice::Shipped), &settings)?;
         }
-        if let Some((shades, fr)) = &mut r.file {
-            let shapes = [
-                holds(|s| matches!(s, Shape::Point)),
-                holds(|s| matches!(s, Shape::Sphere { .. })),
-                holds(|s| matches!(s, Shape::Rect { .. })),
-                holds(|s| matches!(s, Shape::Disk { .. })),
-            ];
-            if shades.iter().zip(shapes).any(|(a, b)| *a && b) {
-                let settings = RenderSettings {
-                    a: ShapeMethods {
-                        point: Method::File,
-                        ..EXACT
-                    },
-                    ..base
-                };
-                measure("file".to_string(), fr, &settings)?;
-            }
+        if let Some((shades, fr)) = &mut r.file
+            && kinds.iter().any(|k| shades[k.index()])
+        {
+            let settings = RenderSettings {
+                a: ShapeMethods::references().with(Method::File),
+                ..base
+            };
+            measure("file".to_string(), fr, &settings)?;
         }
         Ok(rows)
     }
@@ -143,31 +120,17 @@ impl SceneStudy<'_> {
     }
 }
 
-/// Each inexact method of each sized shape the scene `holds`: the shape's name, the method's,
+/// Each inexact method of each sized shape among `kinds`: the shape's name, the method's,
 /// and the methods of a render by it (every other shape exact).
-fn sized_methods(
-    holds: &dyn Fn(fn(&Shape) -> bool) -> bool,
-) -> Vec<(&'static str, &'static str, ShapeMethods)> {
-    let mut out = Vec::new();
-    if holds(|s| matches!(s, Shape::Sphere { .. })) {
-        let inexact = SphereMethod::ALL
+fn sized_methods(kinds: &[ShapeKind]) -> Vec<(&'static str, &'static str, ShapeMethods)> {
+    let inexact = |kind| {
+        ShapeMethod::all(kind)
             .into_iter()
-            .filter(|m| *m != SphereMethod::Exact);
-        out.extend(
-            inexact.map(|sphere| ("sphere", sphere.name(), ShapeMethods { sphere, ..EXACT })),
-        );
-    }
-    if holds(|s| matches!(s, Shape::Rect { .. })) {
-        let inexact = RectMethod::ALL
-            .into_iter()
-            .filter(|m| *m != RectMethod::Exact);
-        out.extend(inexact.map(|rect| ("rect", rect.name(), ShapeMethods { rect, ..EXACT })));
-    }
-    if holds(|s| matches!(s, Shape::Disk { .. })) {
-        let inexact = DiskMethod::ALL
-            .into_iter()
-            .filter(|m| *m != DiskMethod::Exact);
-        out.extend(inexact.map(|disk| ("disk", disk.name(), ShapeMethods { disk, ..EXACT })));
-    }
-    out
+            .filter(move |&m| m != ShapeMethod::reference(kind))
+            .map(move |m| (kind.name(), m.name(), ShapeMethods::references().with(m)))
+    };
+    ShapeKind::sized()
+        .filter(|k| kinds.contains(k))
+        .flat_map(inexact)
+        .collect()
 }

@@ -101,6 +101,17 @@ pub const ANISO_PRESETS: [(&str, &str); 2] = [
     ),
 ];
 
+/// The failure presets of lights of `kind` (none for points: theirs are `PRESETS`).
+pub fn shape_presets(kind: crate::light::ShapeKind) -> &'static [(&'static str, &'static str)] {
+    use crate::light::ShapeKind;
+    match kind {
+        ShapeKind::Point => &[],
+        ShapeKind::Sphere => &SPHERE_PRESETS,
+        ShapeKind::Rect => &RECT_PRESETS,
+        ShapeKind::Disk => &DISK_PRESETS,
+    }
+}
+
 /// Every shipped preset, its name and its text (`PRESETS`, `SPHERE_PRESETS`,
 /// `RECT_PRESETS`, `DISK_PRESETS`, `ANISO_PRESETS`, `TABLE_PRESETS`).
 pub fn shipped_presets() -> impl Iterator<Item = &'static (&'static str, &'static str)> {

@@ -296,12 +296,9 @@ fn render_shades_lights_with_a_size_by_the_method_asked() {
         let pixels = render_exr(dir.path(), &scene, &args, true);
         // render_exr's size.
         let settings = ltc_lab::render::RenderSettings {
-            a: ltc_lab::render::ShapeMethods {
-                point: ltc_lab::render::Method::Ltc,
-                sphere: ltc_lab::light::sphere::SphereMethod::from_name(sphere).unwrap(),
-                rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
-                disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
-            },
+            a: ltc_lab::render::ShapeMethods::approximations()
+                .with(ltc_lab::render::Method::Ltc)
+                .with(ltc_lab::light::sphere::SphereMethod::from_name(sphere).unwrap()),
             ..ltc_lab::render::RenderSettings::single(48, 32, ltc_lab::render::Method::Ltc)
         };
         let scene = ltc_lab::scene::preset("sphere-horizon");
@@ -333,4 +330,69 @@ fn render_shades_lights_with_a_size_by_the_method_asked() {
         "{}",
         stderr(&o)
     );
+}
+
+/// `--method-for [SIDE:]SHAPE=METHOD` is the per-shape flags keyed by shape: the same image
+/// as its alias, to the bit; two flags that disagree on one side's shape, a shape that is none
+/// and a method of another shape are refused (exit 2), naming the flag.
+#[test]
+fn method_for_is_the_per_shape_flags_keyed_by_shape() {
+    let dir = tempfile::tempdir().unwrap();
+    for (scene, alias, keyed) in [
+        (
+            "rect-horizon.toml",
+            ["--rect-a", "ltc-proxy", "--rect-b", "ltc-point"],
+            [
+                "--method-for",
+                "rect=ltc-proxy",
+                "--method-for",
+                "b:rect=ltc-point",
+            ],
+        ),
+        (
+            "disk-limits.toml",
+            ["--disk-a", "ltc-point", "--point-b", "ltc"],
+            [
+                "--method-for",
+                "a:disk=ltc-point",
+                "--method-for",
+                "b:point=ltc",
+            ],
+        ),
+    ] {
+        let scene = preset(scene);
+        let render = |flags: &[&str]| {
+            let mut args = vec!["--method", "split"];
+            args.extend(flags);
+            render_exr(dir.path(), &scene, &args, true)
+        };
+        let (by_alias, by_key) = (render(&alias), render(&keyed));
+        assert_eq!(by_alias, by_key, "{scene}");
+        // And the flags change the image: the defaults differ from both.
+        assert_ne!(render(&[]), by_key, "{scene}");
+    }
+    let scene = preset("rect-horizon.toml");
+    let out = dir.path().join("never-written.exr");
+    let run = |flags: &[&str]| {
+        let mut args = vec!["render", "--cpu", "--scene", &scene, "--method", "split"];
+        args.extend(flags);
+        args.extend(["--out", out.to_str().unwrap()]);
+        ltc_lab(&args)
+    };
+    // Ours: one line naming the flag and the one it disagrees with.
+    let o = run(&["--rect-a", "exact", "--method-for", "rect=ltc-point"]);
+    assert_refused(&o, "--method-for");
+    assert!(stderr(&o).contains("--rect-a"), "{}", stderr(&o));
+    // clap's, which names the flag and says what it takes.
+    for (flag, named) in [
+        ("tube=exact", "one of point, sphere, rect, disk"),
+        ("disk=ltc-polygon", "exact, ltc-disk, ltc-point"),
+        ("c:rect=exact", "the side is a or b"),
+    ] {
+        let o = run(&["--method-for", flag]);
+        assert_eq!(o.status.code(), Some(2), "{flag}: {}", stderr(&o));
+        assert!(stderr(&o).contains("--method-for"), "{}", stderr(&o));
+        assert!(stderr(&o).contains(named), "{flag}: {}", stderr(&o));
+    }
+    assert!(!out.exists());
 }

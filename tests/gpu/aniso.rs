@@ -199,9 +199,9 @@ fn anisotropic_renders_match_the_cpu_by_every_method() {
             };
             for k in variants {
                 let mut s = RenderSettings::single(w, h, method);
-                s.a.sphere = SphereMethod::ALL[k % SphereMethod::ALL.len()];
-                s.a.rect = RectMethod::ALL[k % RectMethod::ALL.len()];
-                s.a.disk = DiskMethod::ALL[k % DiskMethod::ALL.len()];
+                s.a.set(SphereMethod::ALL[k % SphereMethod::ALL.len()]);
+                s.a.set(RectMethod::ALL[k % RectMethod::ALL.len()]);
+                s.a.set(DiskMethod::ALL[k % DiskMethod::ALL.len()]);
                 if k == 4 {
                     s.rules.clipping = Clipping::NONE;
                     s.rules.normalization = Normalization::PaperLiteral;

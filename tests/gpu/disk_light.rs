@@ -206,10 +206,5 @@ fn gpu_renders_of_disk_lights_match_the_cpu() {
     if gpu().is_none() {
         return;
     }
-    crate::gpu_common::assert_shape_presets_match(
-        &ltc_lab::scene::DISK_PRESETS,
-        &DiskMethod::ALL,
-        DiskMethod::name,
-        |a, disk| ltc_lab::render::ShapeMethods { disk, ..a },
-    );
+    crate::gpu_common::assert_shape_presets_match(ltc_lab::light::ShapeKind::Disk);
 }

@@ -186,7 +186,7 @@ fn the_rect_example_is_the_labs_proxy_within_its_edge_fit() {
         let scene = preset(name);
         let file = render(&mut r, &scene, &settings(Method::File, Clipping::BOTH));
         let mut s = settings(Method::Ltc, Clipping::BOTH);
-        s.a.rect = RectMethod::LtcProxyFast;
+        s.a.set(RectMethod::LtcProxyFast);
         let lab = cpu::render(&scene, Lut::embedded(), &s);
         let floor = ltc_lab::metrics::relative_floor(&lab, &lab);
         let worst = (0..lab.pixels.len())
@@ -235,9 +235,7 @@ fn the_inspectors_values_of_a_file_are_each_lights_ltc() {
             (Lut::embedded(), None),
             &p,
             &s.rules,
-            [s.a.sphere, s.b.sphere],
-            [s.a.rect, s.b.rect],
-            [s.a.disk, s.b.disk],
+            (&s.a, &s.b),
         )
         .unwrap();
         assert_eq!(values.len(), terms.terms.len());

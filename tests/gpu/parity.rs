@@ -216,7 +216,7 @@ fn ltc_and_ltc_fast_agree_to_f32_rounding() {
             let mut s = RenderSettings::single(W, H, Method::Ltc);
             s.rules.clipping = clip;
             let a = gpu_frame(&scene, &s);
-            s.a.point = Method::LtcFast;
+            s.a.set(Method::LtcFast);
             let b = gpu_frame(&scene, &s);
             let floor = relative_floor(&a, &a);
             for k in 0..a.pixels.len() {
@@ -389,10 +389,7 @@ fn gpu_matches_cpu_for_every_horizon_remedy() {
                     &scene,
                     lut,
                     &RenderSettings {
-                        a: ltc_lab::render::ShapeMethods {
-                            point: Method::Ltc,
-                            ..s.a
-                        },
+                        a: s.a.with(Method::Ltc),
                         ..s
                     },
                 );

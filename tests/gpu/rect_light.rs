@@ -219,10 +219,5 @@ fn gpu_renders_of_rect_lights_match_the_cpu() {
     if gpu().is_none() {
         return;
     }
-    crate::gpu_common::assert_shape_presets_match(
-        &ltc_lab::scene::RECT_PRESETS,
-        &RectMethod::ALL,
-        RectMethod::name,
-        |a, rect| ltc_lab::render::ShapeMethods { rect, ..a },
-    );
+    crate::gpu_common::assert_shape_presets_match(ltc_lab::light::ShapeKind::Rect);
 }

@@ -89,11 +89,11 @@ fn culled_images_equal_unculled_ones_exactly() {
             for view in [View::A, View::Split, View::Diff] {
                 let mut s = RenderSettings::single(W, H, method);
                 s.view = view;
-                s.b.point = if method == Method::Brdf {
+                s.b.set(if method == Method::Brdf {
                     Method::Ltc
                 } else {
                     Method::Brdf
-                };
+                });
                 s.cull = false;
                 let unculled = frame(&mut r, &scene, &s);
                 s.cull = true;
@@ -137,10 +137,7 @@ fn a_render_summed_in_chunks_is_the_one_shot_render() {
             let s = RenderSettings {
                 view,
                 cull,
-                b: ltc_lab::render::ShapeMethods {
-                    point: other,
-                    ..RenderSettings::single(W, H, method).b
-                },
+                b: RenderSettings::single(W, H, method).b.with(other),
                 ..RenderSettings::single(W, H, method)
             };
             let whole = frame(&mut r, &scene, &s);
@@ -191,10 +188,7 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
     for method in [Method::Ltc, Method::LtcFast] {
         for view in [View::Split, View::B] {
             let s = RenderSettings {
-                b: ltc_lab::render::ShapeMethods {
-                    point: method,
-                    ..RenderSettings::single(W, H, method).b
-                },
+                b: RenderSettings::single(W, H, method).b.with(method),
                 view,
                 b_reads_table_b: true,
                 ..RenderSettings::single(W, H, method)
@@ -205,10 +199,7 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
         }
         // B alone with the point table is the point table's image, not the classic one's.
         let alone = RenderSettings {
-            b: ltc_lab::render::ShapeMethods {
-                point: method,
-                ..RenderSettings::single(W, H, method).b
-            },
+            b: RenderSettings::single(W, H, method).b.with(method),
             view: View::B,
             b_reads_table_b: true,
             ..RenderSettings::single(W, H, method)
@@ -221,10 +212,9 @@ fn a_second_table_reaches_method_b_as_on_the_cpu() {
     }
     // The difference of the two tables on the GPU is the CPU's to the diff bound.
     let diff = RenderSettings {
-        b: ltc_lab::render::ShapeMethods {
-            point: Method::Ltc,
-            ..RenderSettings::single(W, H, Method::Ltc).b
-        },
+        b: RenderSettings::single(W, H, Method::Ltc)
+            .b
+            .with(Method::Ltc),
         view: View::Diff,
         b_reads_table_b: true,
         ..RenderSettings::single(W, H, Method::Ltc)

@@ -280,12 +280,9 @@ fn gpu_renders_of_sphere_lights_match_the_cpu() {
     for method in [Method::Brdf, Method::Ltc, Method::LtcFast] {
         for sphere in SphereMethod::ALL {
             let s = RenderSettings {
-                a: ltc_lab::render::ShapeMethods {
-                    point: method,
-                    sphere,
-                    rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
-                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
-                },
+                a: ltc_lab::render::ShapeMethods::approximations()
+                    .with(method)
+                    .with(sphere),
                 ..RenderSettings::single(w, h, method)
             };
             let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);
@@ -319,12 +316,9 @@ fn gpu_failure_presets_are_finite_and_match_the_cpu() {
         let scene = preset(name);
         for sphere in SphereMethod::ALL {
             let s = RenderSettings {
-                a: ltc_lab::render::ShapeMethods {
-                    point: Method::LtcFast,
-                    sphere,
-                    rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
-                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
-                },
+                a: ltc_lab::render::ShapeMethods::approximations()
+                    .with(Method::LtcFast)
+                    .with(sphere),
                 ..RenderSettings::single(48, 40, Method::LtcFast)
             };
             let gpu = gpu_frame(&scene, &s);
@@ -361,12 +355,9 @@ fn a_far_tiny_sphere_renders_as_its_point_light() {
     for method in [Method::Brdf, Method::LtcFast] {
         for sphere in SphereMethod::ALL {
             let s = RenderSettings {
-                a: ltc_lab::render::ShapeMethods {
-                    point: method,
-                    sphere,
-                    rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
-                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
-                },
+                a: ltc_lab::render::ShapeMethods::approximations()
+                    .with(method)
+                    .with(sphere),
                 ..RenderSettings::single(32, 24, method)
             };
             let what = format!("{} {}", method.name(), sphere.name());

@@ -221,27 +221,22 @@ pub fn condition(lobe: &ltc_lab::ltc::Ltc) -> f64 {
     norm(lobe.cos_from_brdf) * norm(lobe.brdf_from_cos)
 }
 
-/// Each preset of `presets` rendered with each of `methods` (named by `name`) as side A's
-/// method for its shape (`with` puts it in), beside each point form, then the lab's opening
-/// split: the GPU against the CPU, finite, never negative, within the renders' parity
-/// tolerance. The shapes' preset tests (rects, disks) are this loop.
-pub fn assert_shape_presets_match<M: Copy>(
-    presets: &[(&str, &str)],
-    methods: &[M],
-    name: fn(M) -> &'static str,
-    with: fn(ltc_lab::render::ShapeMethods, M) -> ltc_lab::render::ShapeMethods,
-) {
-    use ltc_lab::render::{Method, RenderSettings, View};
-    for (preset, _) in presets {
+/// Each failure preset of `kind` rendered with each of the shape's methods as side A's
+/// method for it, beside each point form, then the lab's opening split: the GPU against the
+/// CPU, finite, never negative, within the renders' parity tolerance. The shapes' preset
+/// tests (rects, disks) are this loop.
+pub fn assert_shape_presets_match(kind: ltc_lab::light::ShapeKind) {
+    use ltc_lab::render::{Method, RenderSettings, ShapeMethod, View};
+    for (preset, _) in ltc_lab::scene::shape_presets(kind) {
         let scene = ltc_lab::scene::preset(preset);
         for method in [Method::Brdf, Method::LtcFast] {
-            for &m in methods {
+            for m in ShapeMethod::all(kind) {
                 let single = RenderSettings::single(48, 40, method);
                 let s = RenderSettings {
-                    a: with(single.a, m),
+                    a: single.a.with(m),
                     ..single
                 };
-                let what = format!("{preset} {} {}", method.name(), name(m));
+                let what = format!("{preset} {} {}", method.name(), m.name());
                 let gpu = gpu_frame(&scene, &s);
                 assert_eq!(gpu.first_invalid(s.rules.clipping), None, "{what}");
                 let cpu = ltc_lab::cpu::render(&scene, Lut::embedded(), &s);

@@ -167,7 +167,7 @@ fn two_tables_compared_on_the_plane_and_in_the_matrix() {
     settle(&mut h);
     let gpu = plane_image(&mut h);
     let s = settings(&h, View::Split, (gpu.width, gpu.height));
-    assert!(s.b_reads_table_b && s.b.point == s.a.point);
+    assert!(s.b_reads_table_b && s.b.point() == s.a.point());
     let tables = ltc_lab::render::Tables {
         a: ltc_lab::ltc::lut::Lut::embedded(),
         b: ltc_lab::ltc::lut::Lut::embedded_point(),
@@ -248,15 +248,12 @@ fn pinned_terms(
         .unwrap();
     let tables = lab.tables();
     let b = (**lab.side_b() == ltc_lab::app::lab::SideB::TableB).then_some(&tables.b().lut);
-    let spheres = [lab.spheres().ltc, lab.spheres().brdf];
     let terms = pixel_terms(
         &scene,
         (&tables.a().lut, b),
         &p,
         lab.rules(),
-        spheres,
-        [lab.rects().ltc, lab.rects().brdf],
-        [lab.disks().ltc, lab.disks().brdf],
+        (&lab.shape_forms().ltc, &lab.shape_forms().brdf),
     )
     .unwrap();
     (terms, [u, v], p)

@@ -25,7 +25,10 @@ fn a_rect_preset_is_shaded_by_each_sides_rect_method() {
     let lights = &h.state().lab().lights().list;
     assert!(lights.iter().all(|l| matches!(l.shape, Shape::Rect { .. })));
     assert_eq!(
-        [h.state().lab().rects().ltc, h.state().lab().rects().brdf],
+        [
+            h.state().lab().shape_forms().ltc.get::<RectMethod>(),
+            h.state().lab().shape_forms().brdf.get::<RectMethod>()
+        ],
         [RectMethod::LtcPolygon, RectMethod::Exact]
     );
     // The LTC side's method, picked from its list as a user does.
@@ -33,7 +36,10 @@ fn a_rect_preset_is_shaded_by_each_sides_rect_method() {
     h.run_steps(2);
     h.get_by_label(RectMethod::LtcProxyFast.name()).click();
     settle(&mut h);
-    assert_eq!(h.state().lab().rects().ltc, RectMethod::LtcProxyFast);
+    assert_eq!(
+        h.state().lab().shape_forms().ltc.get::<RectMethod>(),
+        RectMethod::LtcProxyFast
+    );
     // The split names each side's rect method under its name (spheres and disks: none here).
     let names = ltc_lab::app::plane::sized_side_names(
         h.state().lab(),
@@ -71,17 +77,15 @@ fn the_pinned_pixel_gives_each_rect_by_every_method() {
         (&lab_.tables().a().lut, None),
         &p,
         lab_.rules(),
-        [lab_.spheres().ltc, lab_.spheres().brdf],
-        [lab_.rects().ltc, lab_.rects().brdf],
-        [lab_.disks().ltc, lab_.disks().brdf],
+        (&lab_.shape_forms().ltc, &lab_.shape_forms().brdf),
     )
     .unwrap();
     // The ceiling's cell by the clipped polygon: its value and its error against the exact
     // integral, as `pixel_terms` has them at the pinned pixel.
-    let all = t.terms[0].rects.expect("the preset's light is a rect");
+    let by = |m| t.terms[0].by(m).expect("the preset's light is a rect");
     let (polygon, exact) = (
-        luminance(all[RectMethod::LtcPolygon.index()]),
-        luminance(all[RectMethod::Exact.index()]),
+        luminance(by(RectMethod::LtcPolygon)),
+        luminance(by(RectMethod::Exact)),
     );
     assert!(exact > 0.0);
     let cell = format!(

@@ -85,23 +85,20 @@ fn the_pinned_pixel_gives_each_sized_light_by_every_method() {
     let p = scene
         .surface_point_at(u * w as f64, v * hgt as f64, w, hgt)
         .unwrap();
-    let spheres = [lab_.spheres().ltc, lab_.spheres().brdf];
     let lut = &lab_.tables().a().lut;
     let t = pixel_terms(
         &scene,
         (lut, None),
         &p,
         lab_.rules(),
-        spheres,
-        [lab_.rects().ltc, lab_.rects().brdf],
-        [lab_.disks().ltc, lab_.disks().brdf],
+        (&lab_.shape_forms().ltc, &lab_.shape_forms().brdf),
     )
     .unwrap();
     for l in &t.terms {
-        let all = l.spheres.expect("every light of the preset has a size");
+        let by = |m| l.by(m).expect("every light of the preset has a size");
         let (disk, exact) = (
-            luminance(all[SphereMethod::LtcDisk.index()]),
-            luminance(all[SphereMethod::Exact.index()]),
+            luminance(by(SphereMethod::LtcDisk)),
+            luminance(by(SphereMethod::Exact)),
         );
         let cell = format!(
             "{} ({:+.1}%)",

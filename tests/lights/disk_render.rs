@@ -10,7 +10,7 @@ use ltc_lab::light::disk::DiskMethod;
 use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::luminance;
-use ltc_lab::render::{Method, RenderSettings, ShapeMethods};
+use ltc_lab::render::{Method, RenderSettings};
 use ltc_lab::scene::{DISK_PRESETS, PRESETS, RECT_PRESETS, SPHERE_PRESETS, Scene, preset};
 
 const W: usize = 48;
@@ -21,11 +21,10 @@ const BASE: &str = "[plane]\nhalf_size = 2.0\n[material]\nbase_color = [0.5, 0.5
 /// `disk` shading the disks of side A, with `method` for its points.
 fn side(method: Method, disk: DiskMethod) -> RenderSettings {
     RenderSettings {
-        a: ShapeMethods {
-            point: method,
-            disk,
-            ..RenderSettings::single(W, H, method).a
-        },
+        a: RenderSettings::single(W, H, method)
+            .a
+            .with(method)
+            .with(disk),
         ..RenderSettings::single(W, H, method)
     }
 }

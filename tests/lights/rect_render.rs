@@ -10,7 +10,7 @@ use ltc_lab::light::rect::RectMethod;
 use ltc_lab::ltc::Clipping;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::metrics::luminance;
-use ltc_lab::render::{Method, RenderSettings, ShapeMethods};
+use ltc_lab::render::{Method, RenderSettings};
 use ltc_lab::scene::{PRESETS, RECT_PRESETS, SPHERE_PRESETS, Scene, preset};
 
 const W: usize = 48;
@@ -21,11 +21,10 @@ const BASE: &str = "[plane]\nhalf_size = 2.0\n[material]\nbase_color = [0.5, 0.5
 /// `rect` shading the rects of side A, with `method` for its points.
 fn side(method: Method, rect: RectMethod) -> RenderSettings {
     RenderSettings {
-        a: ShapeMethods {
-            point: method,
-            rect,
-            ..RenderSettings::single(W, H, method).a
-        },
+        a: RenderSettings::single(W, H, method)
+            .a
+            .with(method)
+            .with(rect),
         ..RenderSettings::single(W, H, method)
     }
 }

@@ -15,12 +15,9 @@ const H: usize = 40;
 
 fn side(method: Method, sphere: SphereMethod) -> RenderSettings {
     RenderSettings {
-        a: ltc_lab::render::ShapeMethods {
-            point: method,
-            sphere,
-            rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
-            disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
-        },
+        a: ltc_lab::render::ShapeMethods::approximations()
+            .with(method)
+            .with(sphere),
         ..RenderSettings::single(W, H, method)
     }
 }

@@ -6,22 +6,22 @@
 
 use glam::DVec3;
 use ltc_lab::cpu::{Bands, render, shade_exact, shade_ltc};
-use ltc_lab::light::rect::RectMethod;
 use ltc_lab::light::sphere::SphereMethod;
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{ClipCase, Clipping, Normalization};
 use ltc_lab::metrics::luminance;
 use ltc_lab::pixel::pixel_terms;
-use ltc_lab::render::{LtcRules, Method, RenderSettings, Tables, View};
+use ltc_lab::render::{LtcRules, Method, RenderSettings, ShapeMethods, Tables, View};
 use ltc_lab::scene::{SPHERE_PRESETS, preset};
 
-/// The lab's sphere methods (the LTC side's, the exact side's): point scenes never read them.
+/// The lab's sphere methods (the LTC side's, the exact side's).
 const SPHERES: [SphereMethod; 2] = [SphereMethod::LtcDisk, SphereMethod::Exact];
-const RECTS: [RectMethod; 2] = [RectMethod::LtcPolygon, RectMethod::Exact];
-const DISKS: [ltc_lab::light::disk::DiskMethod; 2] = [
-    ltc_lab::light::disk::DiskMethod::LtcDisk,
-    ltc_lab::light::disk::DiskMethod::Exact,
-];
+
+/// The lab's methods for every shape with a size (the LTC side's, the exact side's): point
+/// scenes never read them.
+fn sides() -> (ShapeMethods, ShapeMethods) {
+    (ShapeMethods::approximations(), ShapeMethods::references())
+}
 
 #[test]
 fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
@@ -44,9 +44,7 @@ fn the_lights_contributions_sum_to_the_pixel_for_both_methods() {
                 (lut, None),
                 &p,
                 &rules(clip, n),
-                SPHERES,
-                RECTS,
-                DISKS,
+                (&sides().0, &sides().1),
             )
             .unwrap();
             let ltc = shade_ltc(&scene, lut, &p, &scene.lights, &rules(clip, n));
@@ -112,12 +110,7 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
         let settings = |view| RenderSettings {
             view,
             b_reads_table_b: true,
-            b: ltc_lab::render::ShapeMethods {
-                point: Method::Ltc,
-                sphere: SphereMethod::Exact,
-                rect: ltc_lab::light::rect::RectMethod::Exact,
-                disk: ltc_lab::light::disk::DiskMethod::Exact,
-            },
+            b: ltc_lab::render::ShapeMethods::references().with(Method::Ltc),
             rules: LtcRules {
                 clipping: clip,
                 normalization: n,
@@ -136,9 +129,7 @@ fn with_two_tables_each_sides_lights_sum_to_its_render_and_shares_are_each_light
                 (a, Some(b)),
                 &p,
                 &rules(clip, n),
-                SPHERES,
-                RECTS,
-                DISKS,
+                (&sides().0, &sides().1),
             )
             .unwrap();
             let k = y * w + x;
@@ -215,9 +206,7 @@ fn without_table_b_side_b_is_the_exact_brdf() {
         (Lut::embedded(), None),
         &p,
         &rules(Clipping::BOTH, n),
-        SPHERES,
-        RECTS,
-        DISKS,
+        (&sides().0, &sides().1),
     )
     .unwrap();
     assert!(t.ltc_b.is_none() && t.terms.iter().all(|l| l.ltc_b.is_none()));
@@ -289,18 +278,12 @@ fn sized_lights_sum_to_each_sides_render_by_its_sphere_method() {
             [SphereMethod::RepresentativePoint, SphereMethod::LtcPoint],
         ] {
             let settings = |method| RenderSettings {
-                a: ltc_lab::render::ShapeMethods {
-                    point: Method::Ltc,
-                    sphere: spheres[0],
-                    rect: ltc_lab::light::rect::RectMethod::LtcPolygon,
-                    disk: ltc_lab::light::disk::DiskMethod::LtcDisk,
-                },
-                b: ltc_lab::render::ShapeMethods {
-                    point: method,
-                    sphere: spheres[1],
-                    rect: ltc_lab::light::rect::RectMethod::Exact,
-                    disk: ltc_lab::light::disk::DiskMethod::Exact,
-                },
+                a: ltc_lab::render::ShapeMethods::approximations()
+                    .with(Method::Ltc)
+                    .with(spheres[0]),
+                b: ltc_lab::render::ShapeMethods::references()
+                    .with(method)
+                    .with(spheres[1]),
                 view: View::B,
                 ..RenderSettings::single(w, h, Method::Ltc)
             };
@@ -318,8 +301,8 @@ fn sized_lights_sum_to_each_sides_render_by_its_sphere_method() {
                     continue;
                 };
                 let rules = LtcRules::default();
-                let t =
-                    pixel_terms(&scene, (lut, None), &p, &rules, spheres, RECTS, DISKS).unwrap();
+                let sides = (&settings(Method::Brdf).a, &settings(Method::Brdf).b);
+                let t = pixel_terms(&scene, (lut, None), &p, &rules, sides).unwrap();
                 let k = y * w + x;
                 // A handful of terms in f64: 1e-13 relative.
                 let close = |u: DVec3, v: DVec3| {
@@ -338,10 +321,9 @@ fn sized_lights_sum_to_each_sides_render_by_its_sphere_method() {
                     b.pixels[k]
                 );
                 for l in &t.terms {
-                    let all = l.spheres.expect("every light of these presets has a size");
-                    let of = |m| all[SphereMethod::ALL.iter().position(|&x| x == m).unwrap()];
-                    assert_eq!(of(spheres[0]), l.ltc);
-                    assert_eq!(of(spheres[1]), l.exact);
+                    assert_eq!(l.by_method.len(), SphereMethod::ALL.len());
+                    assert_eq!(l.by(spheres[0]), Some(l.ltc));
+                    assert_eq!(l.by(spheres[1]), Some(l.exact));
                 }
                 pixels += 1;
             }

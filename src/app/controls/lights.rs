@@ -4,13 +4,11 @@
 use glam::DVec3;
 
 use crate::app::lab::parts::{RADIUS_RANGE, RANGE_RANGE};
-use crate::app::lab::{DiskForms, Forms, Lab, Overrides, RectForms, SphereForms};
+use crate::app::lab::{Forms, Lab, Overrides, ShapeForms};
 use crate::app::ui::widgets::explain;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
-use crate::scene::{DISK_PRESETS, Light, MIN_RADIUS, RECT_PRESETS, SPHERE_PRESETS, preset};
+use crate::light::{Shape, ShapeKind};
+use crate::render::ShapeMethod;
+use crate::scene::{Light, MIN_RADIUS, preset, shape_presets};
 
 use super::MAX_LIGHT_SLIDER;
 
@@ -73,100 +71,50 @@ pub(super) fn lights(ui: &mut egui::Ui, lab: &mut Lab) {
         .show(ui, |ui| sized_lights(ui, lab));
 }
 
-/// A shape's methods: all of them, each one's name and its description.
-type Methods<M> = (&'static [M], fn(M) -> &'static str, fn(M) -> &'static str);
-
-/// A side's method for a light shape, picked from `all` (each described on hover).
-fn method_combo<M: Copy + PartialEq>(
-    ui: &mut egui::Ui,
-    (label, hover): (&str, &str),
-    method: &mut M,
-    (all, name, describe): Methods<M>,
-) {
-    egui::ComboBox::from_label(label)
-        .selected_text(name(*method))
-        .show_ui(ui, |ui| {
-            for &m in all {
-                ui.selectable_value(method, m, name(m))
-                    .on_hover_text(describe(m));
-            }
-        })
-        .response
-        .on_hover_text(hover);
-}
-
-/// How each side shades a rect light, and the rects' failure presets (docs/design.md §1.11).
-fn rect_lights(ui: &mut egui::Ui, lab: &mut Lab) {
-    lab.edit(|f: &mut RectForms| {
-        for (label, method, hover) in [
+/// How each side shades lights of `kind`, picked from the shape's methods (each described on
+/// hover); a sphere's combos are named for the lights with a size, the others' by their shape.
+fn shape_methods(ui: &mut egui::Ui, lab: &mut Lab, kind: ShapeKind) {
+    let prefix = match kind {
+        ShapeKind::Sphere => String::new(),
+        _ => format!("{} ", kind.name()),
+    };
+    let noun = kind.light_noun();
+    lab.edit(|f: &mut ShapeForms| {
+        for (side, methods, hover) in [
             (
-                "rect LTC side",
+                "LTC side",
                 &mut f.ltc,
-                "How the LTC side (and table B) shades a rect light",
+                "How the LTC side (and table B) shades",
             ),
-            (
-                "rect reference side",
-                &mut f.brdf,
-                "How the BRDF side shades a rect light",
-            ),
+            ("reference side", &mut f.brdf, "How the BRDF side shades"),
         ] {
-            method_combo(
-                ui,
-                (label, hover),
-                method,
-                (&RectMethod::ALL, RectMethod::name, RectMethod::describe),
-            );
+            let mut method = methods.of(kind);
+            egui::ComboBox::from_label(format!("{prefix}{side}"))
+                .selected_text(method.name())
+                .show_ui(ui, |ui| {
+                    for m in ShapeMethod::all(kind) {
+                        ui.selectable_value(&mut method, m, m.name())
+                            .on_hover_text(m.describe());
+                    }
+                })
+                .response
+                .on_hover_text(format!("{hover} {noun}"));
+            methods.set(method);
         }
     });
-    explain(
-        ui,
-        "A rect emits toward half_u × half_v with radiance I/A: far away it is the oriented point light of intensity I cos θe",
-    );
+    if let Some(emits) = kind.emits() {
+        explain(ui, emits);
+    }
     preset_buttons(
         ui,
         lab,
-        &RECT_PRESETS,
-        "Load this failure case of rect lights",
+        shape_presets(kind),
+        &format!("Load this failure case of {}", kind.lights_title()),
     );
 }
 
-/// How each side shades a disk light, and the disks' failure preset (docs/design.md §1.12).
-fn disk_lights(ui: &mut egui::Ui, lab: &mut Lab) {
-    lab.edit(|f: &mut DiskForms| {
-        for (label, method, hover) in [
-            (
-                "disk LTC side",
-                &mut f.ltc,
-                "How the LTC side (and table B) shades a disk light",
-            ),
-            (
-                "disk reference side",
-                &mut f.brdf,
-                "How the BRDF side shades a disk light",
-            ),
-        ] {
-            method_combo(
-                ui,
-                (label, hover),
-                method,
-                (&DiskMethod::ALL, DiskMethod::name, DiskMethod::describe),
-            );
-        }
-    });
-    explain(
-        ui,
-        "A disk emits toward its normal with radiance I/(π r²): far away it is the oriented point light of intensity I cos θe",
-    );
-    preset_buttons(
-        ui,
-        lab,
-        &DISK_PRESETS,
-        "Load this failure case of disk lights",
-    );
-}
-
-/// Every light's radius, how each side shades a light with one, and the failure presets
-/// (docs/design.md §1.10); then the same for rects (§1.11) and disks (§1.12).
+/// Every light's radius, then how each side shades each shape with a size and its failure
+/// presets (docs/design.md §1.10–§1.12).
 fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
     lab.edit(|o: &mut Overrides| {
         ui.add(
@@ -188,41 +136,12 @@ fn sized_lights(ui: &mut egui::Ui, lab: &mut Lab) {
             },
         );
     });
-    lab.edit(|f: &mut SphereForms| {
-        for (label, method, hover) in [
-            (
-                "LTC side",
-                &mut f.ltc,
-                "How the LTC side (and table B) shades a light with a size",
-            ),
-            (
-                "reference side",
-                &mut f.brdf,
-                "How the BRDF side shades a light with a size",
-            ),
-        ] {
-            method_combo(
-                ui,
-                (label, hover),
-                method,
-                (
-                    &SphereMethod::ALL,
-                    SphereMethod::name,
-                    SphereMethod::describe,
-                ),
-            );
+    for (k, kind) in ShapeKind::sized().enumerate() {
+        if k > 0 {
+            ui.separator();
         }
-    });
-    preset_buttons(
-        ui,
-        lab,
-        &SPHERE_PRESETS,
-        "Load this failure case of lights with a size",
-    );
-    ui.separator();
-    rect_lights(ui, lab);
-    ui.separator();
-    disk_lights(ui, lab);
+        shape_methods(ui, lab, kind);
+    }
 }
 
 /// Light `k`'s x, y (over the plane) and z, typed or dragged.

@@ -16,8 +16,7 @@ use serde::{Deserialize, Serialize};
 
 pub use part::{Checked, Part, Stamp};
 pub use parts::{
-    DiskForms, Exposure, Forms, LastRefit, Lights, LobeView, Overrides, RectForms, Selection,
-    SideB, SphereForms, Stage,
+    Exposure, Forms, LastRefit, Lights, LobeView, Overrides, Selection, ShapeForms, SideB, Stage,
 };
 pub use tables::{TableId, TableSources, Tables};
 
@@ -167,9 +166,7 @@ parts! {
     exposure: Exposure;
     lobe_view: LobeView;
     forms: Forms;
-    spheres: SphereForms;
-    rects: RectForms;
-    disks: DiskForms;
+    shape_forms: ShapeForms;
     side_b: SideB;
     overrides: Overrides;
     rules: LtcRules;

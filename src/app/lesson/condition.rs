@@ -114,7 +114,7 @@ impl Quantity {
             Self::Divider => Some(now.plane.divider),
             Self::Measured => switch(now.measurements > 0),
             Self::RectProxy => switch(matches!(
-                lab.rects().ltc,
+                lab.shape_forms().ltc.get(),
                 RectMethod::LtcProxy | RectMethod::LtcProxyFast
             )),
         }

@@ -29,7 +29,7 @@ use crate::app::plane::shading::Shading;
 use crate::app::plane::sphere_cases::SphereCases;
 use crate::app::ui::display::{ShownImage, colour_bar, difference_scale};
 use crate::gpu::GpuContext;
-use crate::light::Shape;
+use crate::light::{Shape, ShapeKind};
 use crate::render::ShapeMethods;
 use crate::render::{Method, RenderSettings, View};
 use interaction::image_area;
@@ -297,22 +297,10 @@ pub fn render_settings(
     (width, height): (usize, usize),
 ) -> RenderSettings {
     let forms = **lab.forms();
-    let spheres = **lab.spheres();
-    let rects = **lab.rects();
-    let disks = **lab.disks();
+    let shapes = lab.shape_forms();
     let tables = **lab.side_b() == SideB::TableB;
-    let ltc = ShapeMethods {
-        point: forms.ltc,
-        sphere: spheres.ltc,
-        rect: rects.ltc,
-        disk: disks.ltc,
-    };
-    let brdf = ShapeMethods {
-        point: forms.brdf,
-        sphere: spheres.brdf,
-        rect: rects.brdf,
-        disk: disks.brdf,
-    };
+    let ltc = shapes.ltc.with(forms.ltc);
+    let brdf = shapes.brdf.with(forms.brdf);
     RenderSettings {
         a: ltc,
         b: if tables { ltc } else { brdf },
@@ -338,30 +326,27 @@ fn side_names(side_b: SideB) -> (&'static str, &'static str) {
 pub fn sized_side_names(lab: &Lab, state: &PlaneState, (a, b): (&str, &str)) -> (String, String) {
     let settings = render_settings(lab, state, (1, 1));
     let o = lab.overrides();
-    let shapes: Vec<Shape> = lab
+    let kinds: Vec<ShapeKind> = lab
         .lights()
         .list
         .iter()
-        .map(|l| o.shaded_shape(l))
+        .map(|l| o.shaded_shape(l).kind())
         .collect();
-    let has = |f: fn(&Shape) -> bool| shapes.iter().any(f);
     // A side shading with the method file is named by the file, and so is each shape it shades.
     let file = lab.method_file();
     let name = |side: &str, m: ShapeMethods| {
-        let by_file = |k: usize| m.point == Method::File && file.is_some_and(|f| f.shades[k]);
-        let method = |k: usize, own: &'static str| if by_file(k) { "file" } else { own };
-        let mut out = match file.filter(|_| m.point == Method::File) {
+        let by_file = |k| m.point() == Method::File && file.is_some_and(|f| f.shades(k));
+        let mut out = match file.filter(|_| m.point() == Method::File) {
             Some(f) => f.name.clone(),
             None => side.to_string(),
         };
-        if has(|s| matches!(s, Shape::Sphere { .. })) {
-            out += &format!("\nsphere: {}", method(1, m.sphere.name()));
-        }
-        if has(|s| matches!(s, Shape::Rect { .. })) {
-            out += &format!("\nrect: {}", method(2, m.rect.name()));
-        }
-        if has(|s| matches!(s, Shape::Disk { .. })) {
-            out += &format!("\ndisk: {}", method(3, m.disk.name()));
+        for kind in ShapeKind::sized().filter(|k| kinds.contains(k)) {
+            let method = if by_file(kind) {
+                "file"
+            } else {
+                m.of(kind).name()
+            };
+            out += &format!("\n{}: {method}", kind.name());
         }
         out
     };

@@ -12,12 +12,11 @@ use serde::{Deserialize, Serialize};
 use crate::app::lab::{Lab, LobeView, Selection, SideB, parts};
 use crate::app::work::cache::{Cached, Own};
 use crate::colormap::short_number;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
+use crate::light::ShapeKind;
 use crate::ltc::ClipCase;
 use crate::metrics::luminance;
 use crate::pixel::{LightTerm, PixelTerms, elevation_azimuth, pixel_terms};
+use crate::render::ShapeMethod;
 
 /// At most this many rows (the largest contributions first when sorted so): a table of
 /// 20 000 lights is unreadable, and the sums above it cover every light.
@@ -78,7 +77,7 @@ impl PinnedLights {
             lab.side_b(),
             lab.rules(),
             lab.tables(),
-            (lab.spheres(), lab.rects(), lab.disks()),
+            lab.shape_forms(),
             Own((pinned, size)),
         );
         self.terms.get(
@@ -91,7 +90,7 @@ impl PinnedLights {
                 side_b,
                 rules,
                 tables,
-                (spheres, rects, disks),
+                shapes,
                 Own((pinned, (width, height))),
             )| {
                 let [u, v] = pinned?;
@@ -100,18 +99,8 @@ impl PinnedLights {
                 let p =
                     scene.surface_point_at(u * width as f64, v * height as f64, width, height)?;
                 let b = (**side_b == SideB::TableB).then_some(&tables.b().lut);
-                let spheres = [spheres.ltc, spheres.brdf];
-                let rects = [rects.ltc, rects.brdf];
-                let disks = [disks.ltc, disks.brdf];
-                pixel_terms(
-                    &scene,
-                    (&tables.a().lut, b),
-                    &p,
-                    rules,
-                    spheres,
-                    rects,
-                    disks,
-                )
+                let sides = (&shapes.ltc, &shapes.brdf);
+                pixel_terms(&scene, (&tables.a().lut, b), &p, rules, sides)
             },
         );
     }
@@ -454,30 +443,19 @@ fn readout(
 /// Each light with a size by every method of its shape, against the exact integral (the
 /// renders' rule), in the table's order: what each engine's choice gives at this pixel.
 fn sized_rows(ui: &mut egui::Ui, rows: &[&LightTerm]) {
-    let spheres: Vec<(usize, Vec<DVec3>)> = rows
-        .iter()
-        .filter_map(|l| l.spheres.map(|s| (l.index, s.to_vec())))
-        .take(MAX_ROWS)
-        .collect();
-    let methods = SphereMethod::ALL.map(|m| (m.name(), m.describe()));
-    let exact_at = SphereMethod::Exact.index();
-    method_rows(ui, "lights with a size", (&methods, exact_at), &spheres);
-    let rects: Vec<(usize, Vec<DVec3>)> = rows
-        .iter()
-        .filter_map(|l| l.rects.map(|r| (l.index, r.to_vec())))
-        .take(MAX_ROWS)
-        .collect();
-    let methods = RectMethod::ALL.map(|m| (m.name(), m.describe()));
-    let exact_at = RectMethod::Exact.index();
-    method_rows(ui, "rect lights", (&methods, exact_at), &rects);
-    let disks: Vec<(usize, Vec<DVec3>)> = rows
-        .iter()
-        .filter_map(|l| l.disks.map(|d| (l.index, d.to_vec())))
-        .take(MAX_ROWS)
-        .collect();
-    let methods = DiskMethod::ALL.map(|m| (m.name(), m.describe()));
-    let exact_at = DiskMethod::Exact.index();
-    method_rows(ui, "disk lights", (&methods, exact_at), &disks);
+    for kind in ShapeKind::sized() {
+        let lights: Vec<(usize, Vec<DVec3>)> = rows
+            .iter()
+            .filter(|l| l.by_method.first().is_some_and(|(m, _)| m.kind() == kind))
+            .map(|l| (l.index, l.by_method.iter().map(|(_, v)| *v).collect()))
+            .take(MAX_ROWS)
+            .collect();
+        let all = ShapeMethod::all(kind);
+        let methods: Vec<(&str, &str)> = all.iter().map(|m| (m.name(), m.describe())).collect();
+        let exact = ShapeMethod::reference(kind);
+        let exact_at = all.iter().position(|&m| m == exact).unwrap_or(0);
+        method_rows(ui, kind.lights_title(), (&methods, exact_at), &lights);
+    }
 }
 
 /// One grid of `sized_rows`, titled `title`: a light a row, a method (name,

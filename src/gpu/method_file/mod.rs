@@ -196,6 +196,11 @@ impl MethodFile {
         h.finish()
     }
 
+    /// Whether it has a function for `kind` (`ENTRIES` are in `ShapeKind::ALL`'s order).
+    pub fn shades(&self, kind: crate::light::ShapeKind) -> bool {
+        self.shades[kind.index()]
+    }
+
     /// The text as the file holds it.
     pub fn source(&self) -> &str {
         &self.source

@@ -224,13 +224,13 @@ fn sized_variants(s: &StudySettings, scene: &Scene) -> Vec<(Scene, Vec<(String, 
     let mut out = Vec::new();
     if let Some(h) = s.rect_half_edge {
         let methods = RectMethod::ALL
-            .map(|rect| (format!("rect-{}", rect.name()), ShapeMethods { rect, ..a }))
+            .map(|rect| (format!("rect-{}", rect.name()), a.with(rect)))
             .to_vec();
         out.push((as_rects(scene, h), methods));
     }
     if let Some(r) = s.disk_radius {
         let methods = DiskMethod::ALL
-            .map(|disk| (format!("disk-{}", disk.name()), ShapeMethods { disk, ..a }))
+            .map(|disk| (format!("disk-{}", disk.name()), a.with(disk)))
             .to_vec();
         out.push((as_disks(scene, r), methods));
     }

@@ -2,13 +2,10 @@
 //! the scene, each light shape's methods, and the paper's Table 1 curves.
 
 use crate::gpu::method_file::MethodFile;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
+use crate::light::ShapeKind;
 use crate::ltc::Normalization;
 use crate::measure::bench::{DEFAULT_RANGE, PAPER_LIGHTS, bench_scene};
-use crate::render::{LtcRules, Method, RenderSettings, ShapeMethods};
+use crate::render::{LtcRules, Method, RenderSettings, ShapeMethod, ShapeMethods};
 use crate::scene::Scene;
 
 use super::{MEASURE_SIZE, Task};
@@ -20,12 +17,7 @@ pub(super) fn method_tasks(scene: &Scene, file: Option<&MethodFile>) -> Vec<Task
     let mut tasks = Vec::new();
     // The reference shades every light exactly, whatever its shape; the LTC forms shade
     // lights with a size by the lab's defaults (ltc-disk, ltc-polygon, ltc-disk).
-    let exact = ShapeMethods {
-        point: Method::Brdf,
-        sphere: SphereMethod::Exact,
-        rect: RectMethod::Exact,
-        disk: DiskMethod::Exact,
-    };
+    let exact = ShapeMethods::references();
     for (label, method, normalization) in [
         ("brdf", Method::Brdf, Normalization::Corrected),
         ("brdf-fast", Method::BrdfFast, Normalization::Corrected),
@@ -37,10 +29,7 @@ pub(super) fn method_tasks(scene: &Scene, file: Option<&MethodFile>) -> Vec<Task
         let a = if method.is_ltc() {
             single.a
         } else {
-            ShapeMethods {
-                point: method,
-                ..exact
-            }
+            exact.with(method)
         };
         tasks.push(Task {
             label: label.into(),
@@ -77,38 +66,22 @@ pub(super) fn shape_tasks(scene: &Scene) -> Vec<Task> {
     // Each method of each shape the scene holds, its points by ltc-fast and its other
     // sized lights by the defaults: what that shape's method costs and misses.
     let fast = RenderSettings::single(w, h, Method::LtcFast);
-    let has = |shape: fn(&Shape) -> bool| scene.lights.iter().any(|l| shape(&l.shape));
-    let mut sized = |label: String, a: ShapeMethods| {
-        tasks.push(Task {
-            label,
-            method: None,
-            scene: scene.clone(),
-            settings: RenderSettings { a, ..fast },
-            curve: None,
-        });
-    };
-    if has(|s| matches!(s, Shape::Sphere { .. })) {
-        for sphere in SphereMethod::ALL.into_iter().skip(1) {
-            sized(
-                format!("sphere {}", sphere.name()),
-                ShapeMethods { sphere, ..fast.a },
-            );
-        }
-    }
-    if has(|s| matches!(s, Shape::Rect { .. })) {
-        for rect in RectMethod::ALL.into_iter().skip(1) {
-            sized(
-                format!("rect {}", rect.name()),
-                ShapeMethods { rect, ..fast.a },
-            );
-        }
-    }
-    if has(|s| matches!(s, Shape::Disk { .. })) {
-        for disk in DiskMethod::ALL.into_iter().skip(1) {
-            sized(
-                format!("disk {}", disk.name()),
-                ShapeMethods { disk, ..fast.a },
-            );
+    let kinds: Vec<ShapeKind> = scene.lights.iter().map(|l| l.shape.kind()).collect();
+    for kind in ShapeKind::sized().filter(|k| kinds.contains(k)) {
+        let inexact = ShapeMethod::all(kind)
+            .into_iter()
+            .filter(|&m| m != ShapeMethod::reference(kind));
+        for m in inexact {
+            tasks.push(Task {
+                label: format!("{} {}", kind.name(), m.name()),
+                method: None,
+                scene: scene.clone(),
+                settings: RenderSettings {
+                    a: fast.a.with(m),
+                    ..fast
+                },
+                curve: None,
+            });
         }
     }
     tasks

@@ -11,8 +11,7 @@ mod view;
 
 pub use scene::{EXPOSURE_RANGE, Exposure, Lights, Stage, scene, shaded};
 pub use shading::{
-    BRDF_FORMS, DiskForms, Forms, INTENSITY_RANGE, LTC_FORMS, Overrides, RANGE_RANGE, RectForms,
-    SideB, SphereForms,
+    BRDF_FORMS, Forms, INTENSITY_RANGE, LTC_FORMS, Overrides, RANGE_RANGE, ShapeForms, SideB,
 };
 pub use view::{LastRefit, LobeView, Selection};
 

@@ -1,16 +1,13 @@
-//! How the lab shades: the point-light forms of each side, how each side shades lights with a
-//! size (by shape), what side B is, the lights' overrides and the LTC rules; each checked
+//! How the lab shades: the point-light forms of each side, how each side shades each shape
+//! with a size (`ShapeForms`), what side B is, the lights' overrides and the LTC rules; each checked
 //! where it enters the lab.
 
 use serde::{Deserialize, Serialize};
 
 use crate::app::lab::light_check::RADIUS_RANGE;
 use crate::app::lab::part::{Checked, notes};
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
-use crate::render::{LtcRules, Method};
+use crate::light::{Shape, ShapeKind};
+use crate::render::{LtcRules, Method, ShapeMethod, ShapeMethods};
 use crate::scene::Light;
 
 /// The LTC and BRDF forms the plane compares (and the chart names), and whether its sum is
@@ -61,84 +58,90 @@ impl Checked for Forms {
     }
 }
 
-/// How each side of the plane shades the lights with a size (docs/design.md §1.10).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct SphereForms {
-    /// The LTC side's (and table B's, where two tables are compared).
-    pub ltc: SphereMethod,
-    /// The reference side's.
-    pub brdf: SphereMethod,
+/// How each side of the plane shades each shape with a size (docs/design.md §1.10–§1.12):
+/// a method of each shape per side, keyed by shape (`ShapeMethods`; their points' methods
+/// are `Forms`'). Stored and linked by names, `rect = { ltc = "ltc-proxy", brdf = "exact" }`;
+/// a name that is no shape's or no method of its shape is refused where it enters (`check`).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(from = "FormNames", into = "FormNames")]
+pub struct ShapeForms {
+    /// The LTC side's (and table B's, where two tables are compared): what engines ship
+    /// (EEVEE, Bevy's pull request for spheres, HDRP for disks) and the paper's own polygon.
+    pub ltc: ShapeMethods,
+    /// The reference side's: each shape's exact integral.
+    pub brdf: ShapeMethods,
+    /// The names read that are no shape's or method's, said once by `check`.
+    refused: Vec<String>,
 }
 
-impl Default for SphereForms {
-    /// What engines ship (EEVEE, Bevy's pull request) against the reference.
+impl Default for ShapeForms {
     fn default() -> Self {
         Self {
-            ltc: SphereMethod::LtcDisk,
-            brdf: SphereMethod::Exact,
+            ltc: ShapeMethods::approximations(),
+            brdf: ShapeMethods::references(),
+            refused: Vec::new(),
         }
     }
 }
 
-/// A choice among the sphere methods holds no number.
-impl Checked for SphereForms {
-    fn check(&mut self, _: &Self) -> Vec<String> {
-        Vec::new()
+impl ShapeForms {
+    /// Side `ltc`'s (`true`) or `brdf`'s method for `kind`.
+    pub fn method(&self, ltc: bool, kind: ShapeKind) -> ShapeMethod {
+        if ltc { self.ltc } else { self.brdf }.of(kind)
     }
 }
 
-/// How each side of the plane shades rect lights (docs/design.md §1.11).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+/// A side's method names for one shape, as a file holds them.
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 #[serde(default)]
-pub struct RectForms {
-    /// The LTC side's (and table B's, where two tables are compared).
-    pub ltc: RectMethod,
-    /// The reference side's.
-    pub brdf: RectMethod,
+struct SideNames {
+    ltc: Option<String>,
+    brdf: Option<String>,
 }
 
-impl Default for RectForms {
-    /// The paper's own method against the reference.
-    fn default() -> Self {
-        Self {
-            ltc: RectMethod::LtcPolygon,
-            brdf: RectMethod::Exact,
+/// `ShapeForms` by names, shape by shape.
+type FormNames = std::collections::BTreeMap<String, SideNames>;
+
+impl From<FormNames> for ShapeForms {
+    fn from(names: FormNames) -> Self {
+        let mut forms = Self::default();
+        for (shape, sides) in names {
+            let Some(kind) = ShapeKind::sized().find(|k| k.name() == shape) else {
+                forms.refused.push(format!("shape `{shape}`"));
+                continue;
+            };
+            for (name, side) in [(sides.ltc, &mut forms.ltc), (sides.brdf, &mut forms.brdf)] {
+                let Some(name) = name else { continue };
+                match ShapeMethod::parse(kind, &name) {
+                    Some(m) => side.set(m),
+                    None => forms.refused.push(format!("{shape} method `{name}`")),
+                }
+            }
         }
+        forms
     }
 }
 
-/// A choice among the rect methods holds no number.
-impl Checked for RectForms {
+impl From<ShapeForms> for FormNames {
+    fn from(forms: ShapeForms) -> Self {
+        let names = |kind| SideNames {
+            ltc: Some(forms.ltc.of(kind).name().to_string()),
+            brdf: Some(forms.brdf.of(kind).name().to_string()),
+        };
+        ShapeKind::sized()
+            .map(|kind| (kind.name().to_string(), names(kind)))
+            .collect()
+    }
+}
+
+/// A choice among a shape's methods holds no number: only names, refused where unknown.
+impl Checked for ShapeForms {
     fn check(&mut self, _: &Self) -> Vec<String> {
-        Vec::new()
-    }
-}
-
-/// How each side of the plane shades disk lights (docs/design.md §1.12).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct DiskForms {
-    /// The LTC side's (and table B's, where two tables are compared).
-    pub ltc: DiskMethod,
-    /// The reference side's.
-    pub brdf: DiskMethod,
-}
-
-impl Default for DiskForms {
-    /// What engines ship (Unity HDRP, EEVEE) against the reference.
-    fn default() -> Self {
-        Self {
-            ltc: DiskMethod::LtcDisk,
-            brdf: DiskMethod::Exact,
-        }
-    }
-}
-
-/// A choice among the disk methods holds no number.
-impl Checked for DiskForms {
-    fn check(&mut self, _: &Self) -> Vec<String> {
-        Vec::new()
+        let refused = std::mem::take(&mut self.refused);
+        refused
+            .into_iter()
+            .map(|r| format!("{r} refused: no such shape or method, the default kept"))
+            .collect()
     }
 }
 
@@ -222,5 +225,34 @@ impl Checked for Overrides {
 impl Checked for LtcRules {
     fn check(&mut self, _: &Self) -> Vec<String> {
         Vec::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::light::rect::RectMethod;
+
+    /// Stored and linked by names: read back as written, and a name that is no shape's or
+    /// no method of its shape is said and leaves the default.
+    #[test]
+    fn shape_forms_are_stored_by_names_and_unknown_names_are_refused() {
+        let mut forms = ShapeForms::default();
+        forms.ltc.set(RectMethod::LtcProxy);
+        let text = toml::to_string(&forms).unwrap();
+        assert!(text.contains("ltc-proxy"), "{text}");
+        let back: ShapeForms = toml::from_str(&text).unwrap();
+        assert_eq!(back, forms);
+        let odd =
+            "[rect]\nltc = \"ltc-disk\"\n[tube]\nltc = \"exact\"\n[disk]\nbrdf = \"ltc-point\"\n";
+        let mut read: ShapeForms = toml::from_str(odd).unwrap();
+        let notes = read.check(&ShapeForms::default());
+        assert_eq!(notes.len(), 2, "{notes:?}");
+        assert!(notes.iter().any(|n| n.contains("rect method `ltc-disk`")));
+        assert!(notes.iter().any(|n| n.contains("shape `tube`")));
+        assert_eq!(read.ltc.get::<RectMethod>(), RectMethod::LtcPolygon);
+        assert_eq!(read.brdf.of(ShapeKind::Disk).name(), "ltc-point");
+        // Said once.
+        assert!(read.check(&ShapeForms::default()).is_empty());
     }
 }

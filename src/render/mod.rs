@@ -2,12 +2,13 @@
 //! lights are summed (`Method`), what a pixel shows (`View`), the rest of the settings, the
 //! image that comes back (`Frame`), and the shading point and frame of docs/design.md §1.
 
+mod shape_methods;
+
 use glam::DVec3;
 
+pub use shape_methods::{OfShape, ShapeMethod, ShapeMethods};
+
 use crate::brdf::Alpha;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::HorizonRule;
 use crate::ltc::{Clipping, Normalization};
@@ -82,20 +83,6 @@ pub enum LutFilter {
     Nearest,
 }
 
-/// How one side of a render shades each shape: one method per shape, chosen together (the
-/// plane's A and B sides each have one).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct ShapeMethods {
-    /// How point lights are summed (the paper's methods and their fast forms).
-    pub point: Method,
-    /// How spheres are shaded.
-    pub sphere: SphereMethod,
-    /// How rects are shaded.
-    pub rect: RectMethod,
-    /// How disks are shaded.
-    pub disk: DiskMethod,
-}
-
 /// Everything about a render that is not the scene or the table.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings {
@@ -138,20 +125,8 @@ impl RenderSettings {
         Self {
             width,
             height,
-            // Spheres: what engines ship (EEVEE, Bevy's pull request) against the reference.
-            a: ShapeMethods {
-                point: method,
-                sphere: SphereMethod::LtcDisk,
-                // Rects: the paper's own method against the reference.
-                rect: RectMethod::LtcPolygon,
-                disk: DiskMethod::LtcDisk,
-            },
-            b: ShapeMethods {
-                point: Method::Brdf,
-                sphere: SphereMethod::Exact,
-                rect: RectMethod::Exact,
-                disk: DiskMethod::Exact,
-            },
+            a: ShapeMethods::approximations().with(method),
+            b: ShapeMethods::references(),
             view: View::A,
             rules: LtcRules::default(),
             divider: 0.5,
@@ -176,19 +151,16 @@ impl RenderSettings {
     /// The methods the view needs, A first.
     pub fn methods(&self) -> Vec<Method> {
         match self.view {
-            View::A => vec![self.a.point],
-            View::B => vec![self.b.point],
-            View::Split | View::Diff => vec![self.a.point, self.b.point],
+            View::A => vec![self.a.point()],
+            View::B => vec![self.b.point()],
+            View::Split | View::Diff => vec![self.a.point(), self.b.point()],
         }
     }
 
     /// The same render showing one method alone, as `View::A`.
     pub fn alone(&self, method: Method) -> Self {
         Self {
-            a: ShapeMethods {
-                point: method,
-                ..self.a
-            },
+            a: self.a.with(method),
             view: View::A,
             ..*self
         }
