@@ -129,6 +129,26 @@ fn a_partial_view_fills_in_defaults() {
     assert_eq!(opened.lab.material, LabState::default().lab.material);
 }
 
+/// A side's method for one shape travels by its name, the shape's others and the other
+/// side as they were.
+#[test]
+fn a_shapes_method_travels_by_name() {
+    use ltc_lab::light::ShapeKind;
+    let opened = decode(
+        &packed("(lab:(shape_forms:{\"rect\":(ltc:Some(\"ltc-proxy\"))}))"),
+        &LabState::default(),
+    )
+    .unwrap();
+    let forms = &opened.lab.shape_forms;
+    assert_eq!(forms.ltc.of(ShapeKind::Rect).name(), "ltc-proxy");
+    let defaults = LabState::default().lab.shape_forms;
+    assert_eq!(forms.brdf, defaults.brdf);
+    assert_eq!(
+        forms.ltc.of(ShapeKind::Disk),
+        defaults.ltc.of(ShapeKind::Disk)
+    );
+}
+
 #[test]
 fn broken_views_say_why() {
     let good = encode(&changed_state());
