@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::failures::scoped;
-use crate::gpu::light::light_shape::{self, shape_method_constant};
+use crate::gpu::light::light_shape::{self, disk_constant, rect_constant, sphere_constant};
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::method_file::MethodFile;
 use crate::gpu::method_file::device_check::DeviceShaders;
@@ -34,6 +34,17 @@ pub fn method_constant(m: Method) -> (u32, &'static str) {
         Method::LtcF16 => (4, "METHOD_LTC_F16"),
         Method::LtcF16Pairs => (5, "METHOD_LTC_F16_PAIRS"),
         Method::File => (6, "METHOD_FILE"),
+    }
+}
+
+/// A method's code, whatever its shape: `METHOD_*` of plane.wgsl for a point's, light_shape.wgsl's
+/// `SPHERE_*`, `RECT_*` or `DISK_*` for a sized shape's.
+pub fn shape_method_constant(m: ShapeMethod) -> (u32, &'static str) {
+    match m {
+        ShapeMethod::Point(m) => method_constant(m),
+        ShapeMethod::Sphere(m) => sphere_constant(m),
+        ShapeMethod::Rect(m) => rect_constant(m),
+        ShapeMethod::Disk(m) => disk_constant(m),
     }
 }
 

@@ -62,9 +62,8 @@ impl Sizing {
     }
 }
 
-/// How the benchmark sizes the lights of `kind` (`--sphere-radius`, `--rect-half-edge`,
-/// `--disk-radius`): the size's symbol in a row's label, and the lights of `points` given
-/// that size, facing the plane.
+/// The lights of `points` as lights of `kind` of this size (`--sphere-radius`,
+/// `--rect-half-edge`, `--disk-radius`), the rects and disks facing the plane.
 pub fn sized_scene(kind: ShapeKind, points: &Scene, size: f64) -> Scene {
     match kind {
         ShapeKind::Point => points.clone(),

@@ -183,11 +183,6 @@ impl ShapeMethods {
         self.set(m);
         self
     }
-
-    /// Each shape's method, in `ShapeKind::ALL`'s order.
-    pub fn iter(&self) -> impl Iterator<Item = ShapeMethod> + '_ {
-        self.0.iter().copied()
-    }
 }
 
 #[cfg(test)]

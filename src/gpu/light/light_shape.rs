@@ -6,7 +6,6 @@ use crate::light::ShapeKind;
 use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
-use crate::render::ShapeMethod;
 
 /// The shader text (composed after scene.wgsl, before plane.wgsl).
 pub const SOURCE: &str = include_str!("../../../shaders/light_shape.wgsl");
@@ -38,16 +37,6 @@ pub fn disk_constant(m: DiskMethod) -> (u32, &'static str) {
         DiskMethod::Exact => (0, "DISK_EXACT"),
         DiskMethod::LtcDisk => (1, "DISK_LTC_DISK"),
         DiskMethod::LtcPoint => (2, "DISK_LTC_POINT"),
-    }
-}
-
-/// A shape's method codes in light_shape.wgsl, whatever its shape.
-pub fn shape_method_constant(m: ShapeMethod) -> (u32, &'static str) {
-    match m {
-        ShapeMethod::Point(m) => crate::gpu::plane::method_constant(m),
-        ShapeMethod::Sphere(m) => sphere_constant(m),
-        ShapeMethod::Rect(m) => rect_constant(m),
-        ShapeMethod::Disk(m) => disk_constant(m),
     }
 }
 

@@ -84,13 +84,6 @@ impl Default for ShapeForms {
     }
 }
 
-impl ShapeForms {
-    /// Side `ltc`'s (`true`) or `brdf`'s method for `kind`.
-    pub fn method(&self, ltc: bool, kind: ShapeKind) -> ShapeMethod {
-        if ltc { self.ltc } else { self.brdf }.of(kind)
-    }
-}
-
 /// A side's method names for one shape, as a file holds them.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 #[serde(default)]
