@@ -25,7 +25,9 @@ pub struct Args {
     /// and the columns are both lobes by exact, ltc-polygon, ltc-proxy, ltc-proxy-fast and
     /// ltc-point (docs/design.md §1.11). With theta_o,alpha,f0,cx,cy,cz,nx,ny,nz,radius each
     /// row is a disk of radiance 1 (centre, normal toward the side it lights, radius), by
-    /// exact, ltc-disk and ltc-point (§1.12). An anisotropic material (§1.13) replaces
+    /// exact, ltc-disk and ltc-point (§1.12). With theta_o,alpha,f0,ax,ay,az,bx,by,bz,radius
+    /// each row is a tube (a capsule) of radiance 1 about the segment from a to b, by exact,
+    /// ltc-line, hdrp-tube, representative-point and ltc-point (§1.15). An anisotropic material (§1.13) replaces
     /// theta_o,alpha by theta_o,phi_o,alpha_x,alpha_y in any of these headers: the view at
     /// (θo, φo) in the frame whose x axis is the tangent, along which alpha_x acts, every
     /// vector in that frame; its point rows' columns are exact_spec,ltc_spec,exact_diffuse,

@@ -14,6 +14,7 @@ pub mod fan;
 pub mod polar;
 pub mod rect;
 pub mod sphere;
+pub mod tube;
 
 use glam::DVec3;
 

@@ -63,6 +63,21 @@ pub struct Bounds {
     pub cap: Option<(DVec3, f64)>,
 }
 
+/// A convex region of directions as the polar rule reads it: where each meridian from a pole
+/// inside it runs inside it. `Bounds` is one; a union of convex pieces whose union is convex
+/// (a capsule's silhouette, `light::tube::region`) is another.
+pub trait Region {
+    /// The part `[lo, hi]` of the meridian from `c` along the unit tangent `d` inside the
+    /// region, in `T = tan(u/2) ∈ [0, ∞]`; `None` where none is.
+    fn meridian(&self, c: DVec3, d: DVec3) -> Option<(f64, f64)>;
+}
+
+impl Region for Bounds {
+    fn meridian(&self, c: DVec3, d: DVec3) -> Option<(f64, f64)> {
+        Bounds::meridian(self, c, d)
+    }
+}
+
 impl Bounds {
     /// The region above the surface of one cap (the whole upper hemisphere for `None`).
     pub fn above(cap: Option<(DVec3, f64)>) -> Self {
@@ -204,7 +219,7 @@ impl Lobe {
     /// across a wide lobe leaves a round product, not the lobe's 10:1 ellipse). Measured
     /// through the middle rather than the pole, the chord is the light's own width wherever
     /// the pole is, on its boundary too.
-    pub fn within(self, bounds: &Bounds, middle: DVec3) -> Self {
+    pub fn within<R: Region>(self, bounds: &R, middle: DVec3) -> Self {
         let [a, b] = self.s;
         let (m00, m01, m11) = (a.x, a.y, b.y);
         let half_trace = 0.5 * (m00 + m11);
@@ -299,19 +314,19 @@ pub const MAX_CUTS: usize = 16;
 /// toward where its boundary turns (corners, the feet of the perpendiculars to its edges, its
 /// boundary's own tangents where the pole is on it).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Polar {
-    pub bounds: Bounds,
+pub struct Polar<R = Bounds> {
+    pub bounds: R,
     pub pole: DVec3,
     pub cuts: [DVec3; MAX_CUTS],
     pub count: usize,
 }
 
-impl Polar {
+impl<R: Region> Polar<R> {
     /// The region of `bounds` about `pole`, cut at the `turns` (2 or 4) equal turns of the
     /// pole's tangent basis: no piece is wider than that, whatever the other cuts, and the
     /// pieces move with the cuts continuously (an f32 and an f64 rule differ where their
     /// pieces do). A polygon's corners cut it enough to take 2, a cap's circle 4.
-    pub fn new(bounds: Bounds, pole: DVec3, turns: usize) -> Self {
+    pub fn new(bounds: R, pole: DVec3, turns: usize) -> Self {
         let mut polar = Self {
             bounds,
             pole,

@@ -1,7 +1,7 @@
 //! `ltc-lab eval`: light directions from a CSV file, evaluated with the exact lobes and their
 //! LTC approximation through the LUT (docs/design.md §6). The header says what each row is:
-//! a point light, or a sphere (§1.10), a rect (§1.11) or a disk (§1.12) shaded by each of its
-//! methods; and the material isotropic (`alpha`, the view in the xz-plane) or anisotropic
+//! a point light, or a sphere (§1.10), a rect (§1.11), a disk (§1.12) or a tube (§1.15)
+//! shaded by each of its methods; and the material isotropic (`alpha`, the view in the xz-plane) or anisotropic
 //! (`alpha_x`, `alpha_y`, the view at azimuth `phi_o` from the tangent, §1.13).
 
 use glam::DVec3;
@@ -12,6 +12,7 @@ use crate::error::{Error, Result, number};
 use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_light};
 use crate::light::rect::{Rect, RectMethod, RectShading, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
+use crate::light::tube::{Tube, TubeMethod, TubeShading, tube_light};
 use crate::ltc::lut::{ALPHA_MIN, Lut, THETA_MAX};
 use crate::ltc::remedy::HorizonRule;
 use crate::ltc::{Clipping, Normalization};
@@ -39,6 +40,10 @@ pub const RECT_HEADER: &str = "theta_o,alpha,f0,cx,cy,cz,ux,uy,uz,vx,vy,vz";
 /// emits toward; any length) in the shading frame and its radius (radiance 1).
 pub const DISK_HEADER: &str = "theta_o,alpha,f0,cx,cy,cz,nx,ny,nz,radius";
 
+/// The header of tube lights: θo, α, F0, then the segment's ends `a` and `b` in the shading
+/// frame and the capsule's radius (radiance 1).
+pub const TUBE_HEADER: &str = "theta_o,alpha,f0,ax,ay,az,bx,by,bz,radius";
+
 /// The header of point lights on an anisotropic material (docs/design.md §1.13): the view at
 /// `(θo, φo)` in the frame whose x axis is the tangent, along which `alpha_x` acts; `l` a
 /// unit vector in that frame.
@@ -58,6 +63,7 @@ pub enum Light {
     Sphere,
     Rect,
     Disk,
+    Tube,
 }
 
 /// What a file's rows are, by its header: the light, and whether the material is anisotropic.
@@ -69,17 +75,23 @@ pub struct Kind {
 
 impl Kind {
     /// Every kind of file.
-    pub const ALL: [Kind; 8] = {
-        let lights = [Light::Point, Light::Sphere, Light::Rect, Light::Disk];
+    pub const ALL: [Kind; 10] = {
+        let lights = [
+            Light::Point,
+            Light::Sphere,
+            Light::Rect,
+            Light::Disk,
+            Light::Tube,
+        ];
         let mut all = [Kind {
             light: Light::Point,
             anisotropic: false,
-        }; 8];
+        }; 10];
         let mut k = 0;
-        while k < 8 {
+        while k < 10 {
             all[k] = Kind {
-                light: lights[k % 4],
-                anisotropic: k >= 4,
+                light: lights[k % 5],
+                anisotropic: k >= 5,
             };
             k += 1;
         }
@@ -98,6 +110,7 @@ impl Kind {
             Light::Sphere => "lx,ly,lz,f0,sigma",
             Light::Rect => "f0,cx,cy,cz,ux,uy,uz,vx,vy,vz",
             Light::Disk => "f0,cx,cy,cz,nx,ny,nz,radius",
+            Light::Tube => "f0,ax,ay,az,bx,by,bz,radius",
         };
         format!("{material},{light}")
     }
@@ -110,6 +123,7 @@ impl Kind {
             (Light::Sphere, _) => sphere_output_columns(),
             (Light::Rect, _) => rect_output_columns(),
             (Light::Disk, _) => disk_output_columns(),
+            (Light::Tube, _) => lobe_columns(&TubeMethod::ALL.map(TubeMethod::name)),
         }
     }
 }
@@ -183,6 +197,8 @@ pub struct Case {
     pub rect: Option<Rect>,
     /// The disk, where the file's rows are disks.
     pub disk: Option<Disk>,
+    /// The tube, where the file's rows are tubes.
+    pub tube: Option<Tube>,
     /// Whether the row is of an anisotropic header (its columns' order differs).
     pub anisotropic: bool,
 }
@@ -351,6 +367,7 @@ fn parse_row(line: &str, at: &str, kind: Kind) -> Result<Case> {
         sigma_degrees: None,
         rect: None,
         disk: None,
+        tube: None,
         anisotropic: kind.anisotropic,
     };
     match kind.light {
@@ -421,6 +438,23 @@ fn parse_row(line: &str, at: &str, kind: Kind) -> Result<Case> {
                 radius,
             });
         }
+        Light::Tube => {
+            let (a, b) = (row.vector("ax", "ay", "az"), row.vector("bx", "by", "bz"));
+            let radius = row.get("radius");
+            // The rect rows' bounds on distances and sizes, for each end and the radius; a
+            // segment of no length is a ball.
+            if ![a.length(), b.length(), radius]
+                .iter()
+                .all(|s| (1e-9..=1e6).contains(s))
+            {
+                return Err(Error::input(
+                    at,
+                    "each end's distance and the radius must be in [1e-9, 1e6]",
+                ));
+            }
+            case.l = (0.5 * (a + b)).try_normalize().unwrap_or(DVec3::Z);
+            case.tube = Some(Tube { a, b, radius });
+        }
     }
     Ok(case)
 }
@@ -490,6 +524,25 @@ pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
         };
         DiskMethod::ALL
             .map(|m| disk_light(m, &s))
+            .iter()
+            .map(|l| [l.specular, l.diffuse])
+            .collect()
+    } else if let Some(tube) = c.tube {
+        let s = TubeShading {
+            v,
+            tube: Tube {
+                a: to_frame(tube.a),
+                b: to_frame(tube.b),
+                radius: tube.radius,
+            },
+            alpha: gloss.alpha,
+            f0: c.f0,
+            ltc: &px.pair,
+            clip: Clipping::BOTH,
+            normalization: Normalization::Corrected,
+        };
+        TubeMethod::ALL
+            .map(|m| tube_light(m, &s))
             .iter()
             .map(|l| [l.specular, l.diffuse])
             .collect()

@@ -501,3 +501,76 @@ fn eval_shades_rect_lights_against_an_independent_reference() {
         assert!((x - y).abs() <= 1e-3 * y, "{x} vs {y}");
     }
 }
+
+/// Tube rows: the header names the segment's ends and the radius, the columns are both lobes
+/// by every tube method, and `exact` is the BRDF over the capsule's directions, against an
+/// independent f64 integral over its surface (`common::capsule_integral`, 1 200 cells a side:
+/// its error O(1/n²) ≈ 1e-6) within the issue's 2e-3.
+#[test]
+fn eval_shades_tubes_by_every_method() {
+    use glam::DVec3;
+    use ltc_lab::light::tube::Tube;
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("tubes.csv");
+    std::fs::write(
+        &cases,
+        "theta_o,alpha,f0,ax,ay,az,bx,by,bz,radius\n\
+         30,0.3,0.04,-0.5,0.2,1,0.5,0.4,1.2,0.15\n\
+         70,0.5,1,0.3,-0.8,-0.4,0.6,0.9,0.7,0.2\n\
+         0,0.2,0.04,-1,0.3,-2,1,0.3,-2,0.25\n",
+    )
+    .unwrap();
+    let o = ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let methods = [
+        "exact",
+        "ltc_line",
+        "hdrp_tube",
+        "representative_point",
+        "ltc_point",
+    ];
+    let columns: Vec<String> = methods
+        .iter()
+        .flat_map(|m| [format!("{m}_spec"), format!("{m}_diffuse")])
+        .collect();
+    assert_eq!(
+        text.lines().next().unwrap(),
+        format!(
+            "theta_o,alpha,f0,ax,ay,az,bx,by,bz,radius,{}",
+            columns.join(",")
+        )
+    );
+    let rows = numbers(&text);
+    assert_eq!(rows.len(), 3);
+    for r in &rows[..2] {
+        let v = DVec3::from(view_from_theta(r[0].to_radians()));
+        let tube = Tube {
+            a: DVec3::new(r[3], r[4], r[5]),
+            b: DVec3::new(r[6], r[7], r[8]),
+            radius: r[9],
+        };
+        for (k, lobe) in [(10, 0), (11, 1)] {
+            let reference = crate::common::capsule_integral(&tube, 1200, |w| {
+                let l = brdf_cos(v.to_array(), w.to_array(), r[1], r[2]);
+                [l.specular, l.diffuse][lobe]
+            });
+            assert!(
+                (r[k] - reference).abs() <= 2e-3 * reference,
+                "{r:?}: column {k} {} against {reference:e}",
+                r[k]
+            );
+        }
+        assert!(r[10..].iter().all(|x| x.is_finite() && *x >= 0.0), "{r:?}");
+    }
+    // A tube below the surface: nothing, by every method.
+    assert!(rows[2][10..].iter().all(|&x| x == 0.0), "{:?}", rows[2]);
+    // A row of no radius is refused, naming its line.
+    std::fs::write(
+        &cases,
+        "theta_o,alpha,f0,ax,ay,az,bx,by,bz,radius\n0,0.2,0.04,0,0,1,1,0,1,0\n",
+    )
+    .unwrap();
+    let o = ltc_lab(&["eval", "--cases", cases.to_str().unwrap()]);
+    assert_refused(&o, "tubes.csv line 2");
+}

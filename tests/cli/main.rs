@@ -2,6 +2,8 @@
 //! input seen so far — one line on stderr naming the input, exit code 2, no output file, no
 //! panic; a closed pipe ends quietly; a machine failure exits 1.
 
+#[path = "../common/mod.rs"]
+mod common;
 #[path = "../gpu_common/mod.rs"]
 mod gpu_common;
 

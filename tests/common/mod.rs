@@ -2,6 +2,8 @@
 //! the sampling code under test.
 #![allow(dead_code)]
 
+use std::f64::consts::PI;
+
 use glam::{DMat3, DVec3};
 
 /// `∫ f(ω) dω` over the whole sphere, by the midpoint rule in (t, φ) around `centre`, with
@@ -70,4 +72,46 @@ pub fn validate_wgsl(src: &str, what: &str) {
     )
     .validate(&module)
     .unwrap_or_else(|e| panic!("{what} does not validate:\n{}", e.emit_to_string(src)));
+}
+
+/// `∫ g(ω) dω` over the directions that meet a capsule (`tube`), above the surface, as an integral over its
+/// front-facing surface by the midpoint rule, `n × n` cells on the cylinder and on each end's
+/// half sphere. The integrand is continuous (`g` carries the cosine, which is 0 at the
+/// horizon; `−n·ω` is 0 on the silhouette), so the rule's error falls as `1/n²`.
+pub fn capsule_integral(
+    tube: &ltc_lab::light::tube::Tube,
+    n: usize,
+    g: impl Fn(DVec3) -> f64,
+) -> f64 {
+    let e = tube.axis();
+    let (u1, u2) = e.any_orthonormal_pair();
+    let r = tube.radius;
+    let weight = |y: DVec3, normal: DVec3| {
+        let d2 = y.length_squared();
+        let w = y / d2.sqrt();
+        let facing = -normal.dot(w);
+        if facing <= 0.0 || w.z <= 0.0 {
+            0.0
+        } else {
+            g(w) * facing / d2
+        }
+    };
+    let h = 1.0 / n as f64;
+    let mut total = 0.0;
+    for i in 0..n {
+        let phi = 2.0 * PI * (i as f64 + 0.5) * h;
+        let radial = u1 * phi.cos() + u2 * phi.sin();
+        for j in 0..n {
+            let s = tube.length() * (j as f64 + 0.5) * h;
+            total +=
+                weight(tube.a + e * s + radial * r, radial) * r * tube.length() * 2.0 * PI * h * h;
+            let theta = 0.5 * PI * (j as f64 + 0.5) * h;
+            let area = r * r * theta.sin() * 0.5 * PI * 2.0 * PI * h * h;
+            for (end, outward) in [(tube.a, -e), (tube.b, e)] {
+                let m = outward * theta.cos() + radial * theta.sin();
+                total += weight(end + m * r, m) * area;
+            }
+        }
+    }
+    total
 }

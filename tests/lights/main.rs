@@ -12,3 +12,4 @@ mod rect_render;
 mod render_rule;
 mod sphere_light;
 mod sphere_render;
+mod tube_light;
