@@ -95,16 +95,15 @@ pub fn line_irradiance(a: DVec3, b: DVec3) -> f64 {
 /// tube) nothing clamps it.
 pub fn tube_ltc_line(s: &TubeShading<'_>, ends: bool) -> Lobes<f64> {
     let t = &s.tube;
-    let (mut a, mut b) = (t.a, t.b);
-    if s.clip.case1 {
-        match clip_segment(a, b) {
-            Some((p, q)) => (a, b) = (p, q),
-            None if !ends => return Lobes::default(),
-            None => {}
-        }
-    }
+    // Case 1 clips the segment at the surface before `M⁻¹` can lift a part below it.
+    let segment = match s.clip.case1 {
+        true => clip_segment(t.a, t.b),
+        false => Some((t.a, t.b)),
+    };
     let lobe = |ltc: &Ltc| {
-        let line = t.radius * ltc_line(ltc, a, b, s.normalization);
+        let line = segment.map_or(0.0, |(a, b)| {
+            t.radius * ltc_line(ltc, a, b, s.normalization)
+        });
         if !ends {
             return line;
         }
