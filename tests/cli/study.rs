@@ -6,8 +6,21 @@ use ltc_lab::gpu::renderer::PlaneRenderer;
 use crate::gpu_common::gpu;
 use crate::{assert_refused, ltc_lab, ltc_lab_in, stderr};
 
-const SMALL: [&str; 8] = [
-    "--size", "24x16", "--lights", "8", "--alpha", "0.27", "--frames", "1",
+/// A small study: its horizon.csv from the 20,000 cases a band that the lab's elevation
+/// chart draws (app::clipping::elevation::CASES), against the default million; what the
+/// tests read of it (the lowest band over twice the highest's error, 0 under exact-band) is
+/// a margin far wider than 20,000 cases' spread, and the draw is seeded.
+const SMALL: [&str; 10] = [
+    "--size",
+    "24x16",
+    "--lights",
+    "8",
+    "--alpha",
+    "0.27",
+    "--frames",
+    "1",
+    "--horizon-cases",
+    "20000",
 ];
 
 #[test]
@@ -185,6 +198,8 @@ fn study_refuses_bad_arguments() {
         (vec!["--frames", "10000000000"], "--frames"),
         (vec!["--rect-half-edge", "0"], "--rect-half-edge"),
         (vec!["--disk-radius", "nan"], "--disk-radius"),
+        (vec!["--horizon-cases", "0"], "--horizon-cases"),
+        (vec!["--horizon-cases", "1000000000"], "--horizon-cases"),
     ] {
         let mut all = vec!["study", "--out", "/tmp/never-study"];
         all.extend(args);
@@ -322,7 +337,17 @@ fn two_default_studies_at_once_get_two_directories() {
     }
     let cwd = tempfile::tempdir().unwrap();
     let args = [
-        "study", "--size", "32x18", "--lights", "10", "--alpha", "0.5", "--frames", "1",
+        "study",
+        "--size",
+        "32x18",
+        "--lights",
+        "10",
+        "--alpha",
+        "0.5",
+        "--frames",
+        "1",
+        "--horizon-cases",
+        "2000",
     ];
     let runs: Vec<Child> = (0..2)
         .map(|_| {

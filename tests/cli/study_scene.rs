@@ -40,6 +40,9 @@ fn studied(file: &str, out: &Path) -> f64 {
         "1",
         "--horizon",
         "eq30",
+        // horizon.csv is not what this test reads.
+        "--horizon-cases",
+        "100",
         "--out",
         out.to_str().unwrap(),
     ]);

@@ -53,7 +53,7 @@ fn the_exact_rule_is_the_integral_over_the_capsules_surface() {
             for alpha in [0.1, 0.35, 0.8] {
                 let v = view(theta_o);
                 let a = Alpha::isotropic(alpha);
-                let exact = tube_exact(v, &tube, a, 0.04, 64);
+                let exact = tube_exact(v, &tube, a, 0.04, (64, 64));
                 for (lobe, got, pick) in [
                     ("specular", exact.specular, 0usize),
                     ("diffuse", exact.diffuse, 1),
@@ -272,7 +272,7 @@ fn the_point_inside_sees_the_hemisphere() {
         radius: 0.3,
     };
     let a = Alpha::isotropic(0.5);
-    let inside = tube_exact(v, &tube, a, 0.04, 64);
+    let inside = tube_exact(v, &tube, a, 0.04, (64, 64));
     let n = 1000;
     let h = 1.0 / n as f64;
     let [mut specular, mut diffuse] = [0.0; 2];
@@ -298,3 +298,4 @@ fn the_point_inside_sees_the_hemisphere() {
         );
     }
 }
+

@@ -26,7 +26,10 @@ pub fn clip_segment(p1: DVec3, p2: DVec3) -> Option<(DVec3, DVec3)> {
 /// `∫ cos θ / π dω` over a cylinder of radius 1 (thin beside its distance) about the segment
 /// `p1 p2`, the part above the horizon: `(1/π) ∫ 2 p_z sin β / |p|³ dℓ`, in closed form about
 /// the foot `p₀` of the origin on the segment's line (distance `d`):
-/// `F_po(d, ℓ) p₀_z + F_wt(d, ℓ) t_z` between the ends' `ℓ`.
+/// `F_po(d, ℓ) p₀_z + F_wt(d, ℓ) t_z` between the ends' `ℓ`, with
+/// `F_po = ℓ/(d(d² + ℓ²)) + atan(ℓ/d)/d²` and `F_wt = ℓ²/(d(d² + ℓ²))`. Each difference is
+/// taken in a form that does not cancel where the line passes close (`d ≪ ℓ`, where both ends'
+/// terms near `1/d`), so that f32 (tube_light.wgsl) keeps it too.
 pub fn diffuse_line(p1: DVec3, p2: DVec3) -> f64 {
     let Some((p1, p2)) = clip_segment(p1, p2) else {
         return 0.0;
@@ -41,15 +44,18 @@ pub fn diffuse_line(p1: DVec3, p2: DVec3) -> f64 {
         // The origin on the line: the cylinder seen end-on covers no solid angle in the limit.
         return 0.0;
     }
-    let f_po = |l: f64| l / (d * (d * d + l * l)) + (l / d).atan() / (d * d);
-    let f_wt = |l: f64| l * l / (d * (d * d + l * l));
-    ((f_po(l2) - f_po(l1)) * foot.z + (f_wt(l2) - f_wt(l1)) * t.z) / PI
+    let (d2, q1, q2) = (d * d, d * d + l1 * l1, d * d + l2 * l2);
+    let f_po = (l2 - l1) * (d2 - l1 * l2) / (d * q1 * q2)
+        + ((l2 - l1) * d).atan2(d2 + l1 * l2) / d2;
+    let f_wt = d * (l2 - l1) * (l2 + l1) / (q1 * q2);
+    (f_po * foot.z + f_wt * t.z) / PI
 }
 
 /// `∫ D dω` of the LTC over a cylinder of radius 1 about `p1 p2` (Heitz & Hill 2017): the
 /// cosine's line integral over the segment mapped by `M⁻¹`, times the width factor
-/// `1/|M⁻ᵀ o|` that the mapping gives the cylinder across the plane of the segment and the
-/// shading point (normal `o`). Paper-literal normalization drops D's 1/π, as `ltc_eval` does.
+/// `1/|Mᵀ o|` (`M = brdf_from_cos`) that the mapping gives the cylinder across the plane of
+/// the segment and the shading point (normal `o`). Paper-literal normalization drops D's 1/π,
+/// as `ltc_eval` does.
 pub fn ltc_line(ltc: &Ltc, p1: DVec3, p2: DVec3, normalization: Normalization) -> f64 {
     // A segment whose line passes through the shading point (seen end-on, to rounding) is
     // a cylinder of no solid angle; its plane with the point is rounding.
@@ -57,9 +63,15 @@ pub fn ltc_line(ltc: &Ltc, p1: DVec3, p2: DVec3, normalization: Normalization) -
     if cross.length() <= END_ON * p1.length() * p2.length() {
         return 0.0;
     }
-    let o = cross.normalize();
+    // `1/|Mᵀ o|` with `o = p1 × p2 / |p1 × p2|`: as `cof(M⁻¹) = det(M⁻¹) Mᵀ` and
+    // `cof(A)(p1 × p2) = A p1 × A p2`, it is `|det M⁻¹| |p1 × p2| / |M⁻¹ p1 × M⁻¹ p2|`,
+    // without M (tube_light.wgsl reads M⁻¹ alone).
     let m = ltc.cos_from_brdf;
-    let width = 1.0 / (ltc.brdf_from_cos.transpose() * o).length();
+    let mapped = (m * p1).cross(m * p2).length();
+    if !(mapped > 0.0) {
+        return 0.0;
+    }
+    let width = m.determinant().abs() * cross.length() / mapped;
     // HDRP's guard: rounding can leave a line nearly through the point a little below 0.
     let value = (width * diffuse_line(m * p1, m * p2)).max(0.0);
     match normalization {
@@ -75,14 +87,15 @@ pub const END_ON: f64 = 1e-9;
 
 /// `∫ p_z / |p|³ dℓ` over the part of the segment `a b` above the surface: the irradiance of a
 /// line of point lights of unit intensity per length, in closed form (`∫₀¹ p/|p|³ dt` for
-/// `p = a + t (b − a)` is `(â + b̂) / (|a| |b| + a·b)`).
+/// `p = a + t (b − a)` is `(â + b̂) / (|a| |b| + a·b)`), its denominator as
+/// `| |b| a + |a| b |² / (2 |a| |b|)`, which does not cancel where the segment passes close.
 pub fn line_irradiance(a: DVec3, b: DVec3) -> f64 {
     let Some((a, b)) = clip_segment(a, b) else {
         return 0.0;
     };
     let (la, lb) = (a.length(), b.length());
-    let denom = la * lb + a.dot(b);
-    if denom <= 0.0 {
+    let denom = (a * lb + b * la).length_squared() / (2.0 * la * lb);
+    if !(denom > 0.0) {
         return 0.0;
     }
     (b - a).length() * (a.z / la + b.z / lb) / denom

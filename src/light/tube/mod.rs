@@ -60,10 +60,7 @@ impl Tube {
     /// `t > 0`) or where the segment is nearest the origin (`t = 0`).
     pub fn nearest_to_ray(&self, w: DVec3) -> f64 {
         let (e, len) = (self.axis(), self.length());
-        let dist2 = |s: f64| {
-            let p = self.a + e * s;
-            p.length_squared() - p.dot(w).max(0.0).powi(2)
-        };
+        let dist2 = |s: f64| ray_distance2(self.a + e * s, w);
         let cos = e.dot(w);
         let lines = (1.0 - cos * cos > 1e-12)
             .then(|| (cos * self.a.dot(w) - self.a.dot(e)) / (1.0 - cos * cos));
@@ -79,7 +76,7 @@ impl Tube {
     /// Whether the ray from the origin along unit `w` meets the capsule.
     pub fn hit(&self, w: DVec3) -> bool {
         let p = self.a + self.axis() * self.nearest_to_ray(w);
-        p.length_squared() - p.dot(w).max(0.0).powi(2) <= self.radius * self.radius
+        ray_distance2(p, w) <= self.radius * self.radius
     }
 
     /// The distance from the origin to the segment.
@@ -102,6 +99,12 @@ impl Tube {
     pub fn angular_size(&self) -> f64 {
         (self.radius + 0.5 * self.length()) / self.centre().length()
     }
+}
+
+/// The squared distance from `p` to the ray from the origin along unit `w`, as the offset
+/// from its nearest point (not `|p|² − (p·w)²`, which cancels where the ray passes close).
+pub fn ray_distance2(p: DVec3, w: DVec3) -> f64 {
+    (p - w * p.dot(w).max(0.0)).length_squared()
 }
 
 named_enum! {
@@ -171,8 +174,8 @@ pub fn tube_light(method: TubeMethod, s: &TubeShading<'_>) -> Lobes<f64> {
     tube_light_with(method, s, ExactRule::Nodes(EXACT_NODES))
 }
 
-/// `tube_light` with the exact method by `rule` (the renders' rule is this one's at
-/// `EXACT_NODES`, until the tube has a rule of its own).
+/// `tube_light` with the exact method by `rule` (the renders' is `region::tube_rule`, the
+/// same rule at the renders' nodes).
 pub fn tube_light_with(method: TubeMethod, s: &TubeShading<'_>, rule: ExactRule) -> Lobes<f64> {
     if s.tube.below_horizon() {
         return Lobes::default();
@@ -181,13 +184,10 @@ pub fn tube_light_with(method: TubeMethod, s: &TubeShading<'_>, rule: ExactRule)
         return tube_point(method == TubeMethod::Exact, s);
     }
     match method {
-        TubeMethod::Exact => {
-            let nodes = match rule {
-                ExactRule::Nodes(nodes) => nodes,
-                ExactRule::Render => EXACT_NODES,
-            };
-            region::tube_exact(s.v, &s.tube, s.alpha, s.f0, nodes)
-        }
+        TubeMethod::Exact => match rule {
+            ExactRule::Nodes(n) => region::tube_exact(s.v, &s.tube, s.alpha, s.f0, (n, n)),
+            ExactRule::Render => region::tube_rule(s.v, &s.tube, s.alpha, s.f0),
+        },
         TubeMethod::LtcLine => line::tube_ltc_line(s, true),
         TubeMethod::HdrpTube => line::tube_ltc_line(s, false),
         TubeMethod::RepresentativePoint => tube_representative_point(s),

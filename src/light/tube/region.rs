@@ -6,12 +6,12 @@
 //! union is, so along a meridian from a pole inside it the union ends where the last piece
 //! does; the horizon then cuts it.
 
-use std::f64::consts::PI;
-
 use glam::DVec3;
 
 use crate::brdf::{Alpha, Lobes, brdf_cos_aniso};
-use crate::light::polar::{Bounds, Lobe, Polar, Region, cap_meridian, mirror, plane_meridian};
+use crate::light::polar::{
+    Bounds, DIFFUSE_NODES, Lobe, Polar, Region, cap_meridian, mirror, plane_meridian, rule_nodes,
+};
 use crate::light::tube::Tube;
 
 /// The pieces of a capsule's directions (none of them cut by the horizon).
@@ -135,42 +135,82 @@ pub fn middle(tube: &Tube) -> Option<DVec3> {
     (top + DVec3::Z * lift).try_normalize()
 }
 
-/// The directions along the horizon where it crosses the silhouette's boundary: found among
-/// `HORIZON_STEPS` azimuths and refined by bisection (the pieces of the rule are cut there).
-pub fn horizon_corners(tube: &Tube) -> Vec<DVec3> {
-    let at = |psi: f64| DVec3::new(psi.cos(), psi.sin(), 0.0);
-    let step = 2.0 * PI / HORIZON_STEPS as f64;
+/// The directions along the horizon where it crosses the silhouette's boundary (the pieces
+/// of the rule are cut there), in closed form: where each cap's circle and each tangent great
+/// circle meets the horizon, kept where that point is on the union's boundary (inside no other
+/// piece; the chords lie inside their caps). A convex region within a hemisphere crosses a
+/// great circle twice at most; a point counted twice where two pieces meet makes a piece of
+/// no width, which the rule drops. At most `MAX_HORIZON_CORNERS`.
+pub fn horizon_corners(s: &Silhouette) -> Vec<DVec3> {
+    let inside_cap = |x: DVec3, k: usize| {
+        let (axis, depth) = s.caps[k];
+        0.5 * (x - axis).length_squared() < depth
+    };
+    // Inside the band: strictly (off its boundary), or within it but for the plane `on`, which
+    // the point lies on (where rounding would put it either side).
+    let in_band = |x: DVec3, strict: bool, on: Option<usize>| {
+        s.band.is_some_and(|b| {
+            b.iter().enumerate().all(|(k, n)| match strict {
+                true => n.dot(x) > 0.0,
+                false => on == Some(k) || n.dot(x) >= 0.0,
+            })
+        })
+    };
     let mut corners = Vec::new();
-    for k in 0..HORIZON_STEPS {
-        let (mut lo, mut hi) = (k as f64 * step, (k + 1) as f64 * step);
-        let hit_lo = tube.hit(at(lo));
-        if hit_lo == tube.hit(at(hi)) {
+    for k in 0..2 {
+        let (axis, depth) = s.caps[k];
+        let cos_sigma = 1.0 - depth;
+        let h = axis.truncate().length();
+        if h <= 0.0 || h < cos_sigma.abs() {
             continue;
         }
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            if tube.hit(at(mid)) == hit_lo {
-                lo = mid;
-            } else {
-                hi = mid;
+        let (mid, half) = (axis.y.atan2(axis.x), (cos_sigma / h).clamp(-1.0, 1.0).acos());
+        for psi in [mid - half, mid + half] {
+            let x = DVec3::new(psi.cos(), psi.sin(), 0.0);
+            if !inside_cap(x, 1 - k) && !in_band(x, true, None) {
+                corners.push(x);
             }
         }
-        corners.push(at(0.5 * (lo + hi)));
     }
+    if let Some(band) = s.band {
+        for (k, n) in band[..2].iter().enumerate() {
+            let Some(x) = n.cross(DVec3::Z).try_normalize() else {
+                continue;
+            };
+            for x in [x, -x] {
+                if in_band(x, false, Some(k)) && !inside_cap(x, 0) && !inside_cap(x, 1) {
+                    corners.push(x);
+                }
+            }
+        }
+    }
+    corners.truncate(MAX_HORIZON_CORNERS);
     corners
 }
 
-/// Azimuths the horizon is searched at for the silhouette's corners: a capsule's silhouette
-/// crosses the horizon in one interval, wider than this step unless it is a sliver.
-pub const HORIZON_STEPS: usize = 720;
+/// `horizon_corners`' most: two crossings, each found at most twice where two pieces meet.
+pub const MAX_HORIZON_CORNERS: usize = 4;
+
+/// `tube_exact` by the renders' rule (docs/design.md §1.14): the specular lobe's nodes by
+/// `rule_nodes`, the diffuse lobe's `DIFFUSE_NODES`, as tube_light.wgsl's `tube_rule`.
+pub fn tube_rule(v: DVec3, tube: &Tube, alpha: Alpha<f64>, f0: f64) -> Lobes<f64> {
+    tube_exact(v, tube, alpha, f0, (rule_nodes(alpha), DIFFUSE_NODES))
+}
 
 /// The exact integrals `∫ f cos dω` over the capsule's silhouette above the surface toward
-/// `v`, per lobe (base colour 1, unit radiance), `n` nodes a dimension and piece: about the
+/// `v`, per lobe (base colour 1, unit radiance), `(specular, diffuse)` nodes a dimension and
+/// piece: about the
 /// mirror direction where the silhouette holds it, else about the point a tenth of the way
 /// back from where the great circle from its middle toward the mirror direction leaves it;
 /// cut at the tangent points, the horizon's corners and its foot. A point inside the capsule
 /// sees the upper hemisphere.
-pub fn tube_exact(v: DVec3, tube: &Tube, alpha: Alpha<f64>, f0: f64, n: usize) -> Lobes<f64> {
+pub fn tube_exact(
+    v: DVec3,
+    tube: &Tube,
+    alpha: Alpha<f64>,
+    f0: f64,
+    (n, n_diffuse): (usize, usize),
+) -> Lobes<f64> {
     let lobes = |l: DVec3| brdf_cos_aniso(v.to_array(), l.to_array(), alpha, f0);
     let focus = mirror(v);
     let Some(silhouette) = Silhouette::of(tube) else {
@@ -180,7 +220,7 @@ pub fn tube_exact(v: DVec3, tube: &Tube, alpha: Alpha<f64>, f0: f64, n: usize) -
         let lobe = Lobe::specular(focus, v, (alpha.x, alpha.y));
         return Lobes {
             specular: polar.integral(&lobe, n, |l| lobes(l).specular),
-            diffuse: polar.integral(&Lobe::round(focus), n, |l| lobes(l).diffuse),
+            diffuse: polar.integral(&Lobe::round(focus), n_diffuse, |l| lobes(l).diffuse),
         };
     };
     let Some(middle) = middle(tube) else {
@@ -203,7 +243,7 @@ pub fn tube_exact(v: DVec3, tube: &Tube, alpha: Alpha<f64>, f0: f64, n: usize) -
         .tangents
         .iter()
         .for_each(|&p| polar.cut_toward(p));
-    let corners = horizon_corners(tube);
+    let corners = horizon_corners(&silhouette);
     if !corners.is_empty() {
         polar.cut_foot(DVec3::Z);
     }
@@ -211,6 +251,6 @@ pub fn tube_exact(v: DVec3, tube: &Tube, alpha: Alpha<f64>, f0: f64, n: usize) -
     let lobe = Lobe::specular(pole, v, (alpha.x, alpha.y)).within(&region, middle);
     Lobes {
         specular: polar.integral(&lobe, n, |l| lobes(l).specular),
-        diffuse: polar.integral(&Lobe::round(pole), n, |l| lobes(l).diffuse),
+        diffuse: polar.integral(&Lobe::round(pole), n_diffuse, |l| lobes(l).diffuse),
     }
 }
