@@ -45,8 +45,8 @@ pub fn diffuse_line(p1: DVec3, p2: DVec3) -> f64 {
         return 0.0;
     }
     let (d2, q1, q2) = (d * d, d * d + l1 * l1, d * d + l2 * l2);
-    let f_po = (l2 - l1) * (d2 - l1 * l2) / (d * q1 * q2)
-        + ((l2 - l1) * d).atan2(d2 + l1 * l2) / d2;
+    let f_po =
+        (l2 - l1) * (d2 - l1 * l2) / (d * q1 * q2) + ((l2 - l1) * d).atan2(d2 + l1 * l2) / d2;
     let f_wt = d * (l2 - l1) * (l2 + l1) / (q1 * q2);
     (f_po * foot.z + f_wt * t.z) / PI
 }
@@ -68,7 +68,7 @@ pub fn ltc_line(ltc: &Ltc, p1: DVec3, p2: DVec3, normalization: Normalization) -
     // without M (tube_light.wgsl reads M⁻¹ alone).
     let m = ltc.cos_from_brdf;
     let mapped = (m * p1).cross(m * p2).length();
-    if !(mapped > 0.0) {
+    if mapped.is_nan() || mapped <= 0.0 {
         return 0.0;
     }
     let width = m.determinant().abs() * cross.length() / mapped;
@@ -95,7 +95,7 @@ pub fn line_irradiance(a: DVec3, b: DVec3) -> f64 {
     };
     let (la, lb) = (a.length(), b.length());
     let denom = (a * lb + b * la).length_squared() / (2.0 * la * lb);
-    if !(denom > 0.0) {
+    if denom.is_nan() || denom <= 0.0 {
         return 0.0;
     }
     (b - a).length() * (a.z / la + b.z / lb) / denom

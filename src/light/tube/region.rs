@@ -9,9 +9,7 @@
 use glam::DVec3;
 
 use crate::brdf::{Alpha, Lobes, brdf_cos_aniso};
-use crate::light::polar::{
-    Bounds, DIFFUSE_NODES, Lobe, Polar, Region, cap_meridian, mirror, plane_meridian, rule_nodes,
-};
+use crate::light::polar::{Bounds, Lobe, Polar, Region, cap_meridian, mirror, plane_meridian};
 use crate::light::tube::Tube;
 
 /// The pieces of a capsule's directions (none of them cut by the horizon).
@@ -164,7 +162,10 @@ pub fn horizon_corners(s: &Silhouette) -> Vec<DVec3> {
         if h <= 0.0 || h < cos_sigma.abs() {
             continue;
         }
-        let (mid, half) = (axis.y.atan2(axis.x), (cos_sigma / h).clamp(-1.0, 1.0).acos());
+        let (mid, half) = (
+            axis.y.atan2(axis.x),
+            (cos_sigma / h).clamp(-1.0, 1.0).acos(),
+        );
         for psi in [mid - half, mid + half] {
             let x = DVec3::new(psi.cos(), psi.sin(), 0.0);
             if !inside_cap(x, 1 - k) && !in_band(x, true, None) {
@@ -190,12 +191,6 @@ pub fn horizon_corners(s: &Silhouette) -> Vec<DVec3> {
 
 /// `horizon_corners`' most: two crossings, each found at most twice where two pieces meet.
 pub const MAX_HORIZON_CORNERS: usize = 4;
-
-/// `tube_exact` by the renders' rule (docs/design.md §1.14): the specular lobe's nodes by
-/// `rule_nodes`, the diffuse lobe's `DIFFUSE_NODES`, as tube_light.wgsl's `tube_rule`.
-pub fn tube_rule(v: DVec3, tube: &Tube, alpha: Alpha<f64>, f0: f64) -> Lobes<f64> {
-    tube_exact(v, tube, alpha, f0, (rule_nodes(alpha), DIFFUSE_NODES))
-}
 
 /// The exact integrals `∫ f cos dω` over the capsule's silhouette above the surface toward
 /// `v`, per lobe (base colour 1, unit radiance), `(specular, diffuse)` nodes a dimension and
