@@ -161,11 +161,10 @@ fn nodes(n: usize, [a, b]: [f64; 2], stretch: Option<(f64, f64)>) -> Vec<(f64, f
             let top = ((far - anchor).abs() / width).atan();
             gl.iter()
                 .map(|&(x, w)| {
-                    let t = 0.5 * top * (x + 1.0);
-                    let sec2 = 1.0 + t.tan() * t.tan();
+                    let tan = (0.5 * top * (x + 1.0)).tan();
                     (
-                        anchor + sign * width * t.tan(),
-                        0.5 * top * w * width * sec2,
+                        anchor + sign * width * tan,
+                        0.5 * top * w * width * (1.0 + tan * tan),
                     )
                 })
                 .collect()
@@ -183,9 +182,10 @@ fn around(at: f64, [a, b]: [f64; 2]) -> Vec<([f64; 2], f64)> {
     }
 }
 
-/// The latitudes at longitude `psi` inside the silhouette and above the surface, `None` where
-/// none are: `[−Λ, Λ]` cut by `z = cos λ d_z + sin λ o_z = R cos(λ − λ₀) ≥ 0`.
-fn latitudes(band: &Band, psi: f64) -> Option<[f64; 2]> {
+/// The latitudes at longitude `psi` inside the silhouette and above the surface, with the
+/// direction `d` at latitude 0 there; `None` where none are: `[−Λ, Λ]` cut by
+/// `z = cos λ d_z + sin λ o_z = R cos(λ − λ₀) ≥ 0`.
+fn latitudes(band: &Band, psi: f64) -> Option<([f64; 2], DVec3)> {
     let half = band.half_width(psi);
     let d = band.along(psi);
     let o = band.frame[2];
@@ -194,7 +194,7 @@ fn latitudes(band: &Band, psi: f64) -> Option<[f64; 2]> {
     }
     let l0 = o.z.atan2(d.z);
     let (lo, hi) = ((-half).max(l0 - FRAC_PI_2), half.min(l0 + FRAC_PI_2));
-    (hi > lo).then_some([lo, hi])
+    (hi > lo).then_some(([lo, hi], d))
 }
 
 /// `∫ g dω` over the silhouette above the surface by the band's rule, `n` nodes a dimension
@@ -224,10 +224,9 @@ pub fn band_integral(
                 continue;
             }
             for (psi, w_psi) in nodes(n, p, stretch) {
-                let Some(lat) = latitudes(band, psi) else {
+                let Some((lat, d)) = latitudes(band, psi) else {
                     continue;
                 };
-                let d = band.along(psi);
                 let lat_parts = match peak {
                     Some(([_, lambda_p], width)) => around(lambda_p, lat)
                         .into_iter()

@@ -29,7 +29,7 @@ pub fn clip_segment(p1: DVec3, p2: DVec3) -> Option<(DVec3, DVec3)> {
 /// `F_po(d, ℓ) p₀_z + F_wt(d, ℓ) t_z` between the ends' `ℓ`, with
 /// `F_po = ℓ/(d(d² + ℓ²)) + atan(ℓ/d)/d²` and `F_wt = ℓ²/(d(d² + ℓ²))`. Each difference is
 /// taken in a form that does not cancel where the line passes close (`d ≪ ℓ`, where both ends'
-/// terms near `1/d`), so that f32 (tube_light.wgsl) keeps it too.
+/// terms near `1/d`), so that an f32 twin in a shader keeps it too.
 pub fn diffuse_line(p1: DVec3, p2: DVec3) -> f64 {
     let Some((p1, p2)) = clip_segment(p1, p2) else {
         return 0.0;
@@ -65,7 +65,7 @@ pub fn ltc_line(ltc: &Ltc, p1: DVec3, p2: DVec3, normalization: Normalization) -
     }
     // `1/|Mᵀ o|` with `o = p1 × p2 / |p1 × p2|`: as `cof(M⁻¹) = det(M⁻¹) Mᵀ` and
     // `cof(A)(p1 × p2) = A p1 × A p2`, it is `|det M⁻¹| |p1 × p2| / |M⁻¹ p1 × M⁻¹ p2|`,
-    // without M (tube_light.wgsl reads M⁻¹ alone).
+    // without M (a shader's `Ltc` holds M⁻¹ alone).
     let m = ltc.cos_from_brdf;
     let mapped = (m * p1).cross(m * p2).length();
     if mapped.is_nan() || mapped <= 0.0 {

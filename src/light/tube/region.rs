@@ -194,11 +194,10 @@ pub const MAX_HORIZON_CORNERS: usize = 4;
 
 /// The exact integrals `∫ f cos dω` over the capsule's silhouette above the surface toward
 /// `v`, per lobe (base colour 1, unit radiance), `(specular, diffuse)` nodes a dimension and
-/// piece: about the
-/// mirror direction where the silhouette holds it, else about the point a tenth of the way
-/// back from where the great circle from its middle toward the mirror direction leaves it;
-/// cut at the tangent points, the horizon's corners and its foot. A point inside the capsule
-/// sees the upper hemisphere.
+/// piece: about the mirror direction where the silhouette holds it, else about the point a
+/// tenth of the way back from where the great circle from its middle toward the mirror
+/// direction leaves it; cut at the tangent points, the horizon's corners and its foot. A point
+/// inside the capsule sees the upper hemisphere.
 pub fn tube_exact(
     v: DVec3,
     tube: &Tube,
