@@ -156,14 +156,45 @@ fn add_disk(
     add_emitter_lobes(method, s, ltc, light, centre, disk_area(shading.disk), lobes);
 }
 
+// A tube by the side's tube method (src/cpu/mod.rs tube_term): its radiance 4I/A times the
+// unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
+fn add_tube(
+    method: u32,
+    tube: u32,
+    s: ptr<function, Sums>,
+    p: Pixel,
+    ltc: LtcShading,
+    light: GpuLight,
+) {
+    let axis_radius = tube_half_axis_radius(light);
+    let centre = light.position_range.xyz - p.x;
+    let shading = TubeShading(
+        p.v_tangent,
+        Tube(
+            p.tangent_from_world * (centre - axis_radius.xyz),
+            p.tangent_from_world * (centre + axis_radius.xyz),
+            axis_radius.w,
+        ),
+        material_alpha(),
+        params.f0,
+        params.clip,
+        params.normalization,
+    );
+    let lobes = tube_light(tube, shading, ltc.pair);
+    add_emitter_lobes(method, s, ltc, light, centre, 0.25 * tube_area(shading.tube), lobes);
+}
+
+// The two sides of the split, which add_light is told which of (their constants follow).
+const SIDE_A: u32 = 0u;
+const SIDE_B: u32 = 1u;
+
 // One light by one side: by the side's method for the light's shape, one arm per shape
-// (src/cpu/mod.rs light_term). Where every light is a point (SIZED off) the loop has no test of
-// the shape at all; without a rect (RECTS off), no rect arm, and without a disk no disk arm.
+// (src/cpu/mod.rs light_term), each shape's method the side's override constant. Where every
+// light is a point (SIZED off) the loop has no test of the shape at all; without a rect
+// (RECTS off), no rect arm, and so for disks and tubes.
 fn add_light(
     method: u32,
-    sphere: u32,
-    rect: u32,
-    disk: u32,
+    side: u32,
     s: ptr<function, Sums>,
     p: Pixel,
     ltc: LtcShading,
@@ -178,16 +209,22 @@ fn add_light(
         add_method_light(shape, s, p, ltc, light);
         return;
     }
+    let a = side == SIDE_A;
     switch shape {
-        case SHAPE_SPHERE: { add_sphere(method, sphere, s, p, ltc, light); }
+        case SHAPE_SPHERE: { add_sphere(method, select(SPHERE_B, SPHERE_A, a), s, p, ltc, light); }
         case SHAPE_RECT: {
             if RECTS {
-                add_rect(method, rect, s, p, ltc, light);
+                add_rect(method, select(RECT_B, RECT_A, a), s, p, ltc, light);
             }
         }
         case SHAPE_DISK: {
             if DISKS {
-                add_disk(method, disk, s, p, ltc, light);
+                add_disk(method, select(DISK_B, DISK_A, a), s, p, ltc, light);
+            }
+        }
+        case SHAPE_TUBE: {
+            if TUBES {
+                add_tube(method, select(TUBE_B, TUBE_A, a), s, p, ltc, light);
             }
         }
         default: { add_point(method, s, p, ltc, light); }

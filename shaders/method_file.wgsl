@@ -144,6 +144,8 @@ fn method_file_shades(shape: u32) -> bool {
         case SHAPE_SPHERE: { return METHOD_FILE_SPHERE; }
         case SHAPE_RECT: { return METHOD_FILE_RECT; }
         case SHAPE_DISK: { return METHOD_FILE_DISK; }
+        // A file has no tube function: the lab's method for tubes shades them.
+        case SHAPE_TUBE: { return false; }
         default: { return METHOD_FILE_POINT; }
     }
 }
@@ -176,9 +178,9 @@ fn probe_file(@builtin(global_invocation_id) gid: vec3<u32>) {
     let seen = p.on_plane && p.v.z > 0.0;
     if seen {
         if METHOD_A == METHOD_FILE {
-            add_light(METHOD_FILE, SPHERE_A, RECT_A, DISK_A, &s, p, p.ltc_a, lights[k]);
+            add_light(METHOD_FILE, SIDE_A, &s, p, p.ltc_a, lights[k]);
         } else {
-            add_light(METHOD_FILE, SPHERE_B, RECT_B, DISK_B, &s, p, p.ltc_b, lights[k]);
+            add_light(METHOD_FILE, SIDE_B, &s, p, p.ltc_b, lights[k]);
         }
     }
     accum_0[k] = vec4<f32>(s.spec + s.diff, select(0.0, 1.0, seen));

@@ -458,10 +458,10 @@ fn shade(
             }
             for (; j < n; j++) {
                 if use_a {
-                    add_light(METHOD_A, SPHERE_A, RECT_A, DISK_A, &a, p, p.ltc_a, shared_lights[j]);
+                    add_light(METHOD_A, SIDE_A, &a, p, p.ltc_a, shared_lights[j]);
                 }
                 if use_b {
-                    add_light(METHOD_B, SPHERE_B, RECT_B, DISK_B, &b, p, p.ltc_b, shared_lights[j]);
+                    add_light(METHOD_B, SIDE_B, &b, p, p.ltc_b, shared_lights[j]);
                 }
             }
         }

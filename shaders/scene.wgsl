@@ -61,15 +61,20 @@ const SHAPE_POINT: u32 = 0u;
 const SHAPE_SPHERE: u32 = 1u;
 const SHAPE_RECT: u32 = 2u;
 const SHAPE_DISK: u32 = 3u;
+const SHAPE_TUBE: u32 = 4u;
 
-// The shape light_elements wrote: a sphere's radius in w, 0 for a point, the slot of a rect's
-// or a disk's second element below 0 (a disk's holds 1 in its last w).
+// The shape light_elements wrote: a sphere's radius in w, 0 for a point, the slot of a rect's,
+// a disk's or a tube's second element below 0 (a disk's holds 1 in its last w, a tube's 2).
 fn light_shape(light: GpuLight) -> u32 {
     if light.intensity.w > 0.0 {
         return SHAPE_SPHERE;
     }
     if light.intensity.w < 0.0 {
-        if extra_element(light).intensity.w > 0.0 {
+        let kind = extra_element(light).intensity.w;
+        if kind > 1.5 {
+            return SHAPE_TUBE;
+        }
+        if kind > 0.0 {
             return SHAPE_DISK;
         }
         return SHAPE_RECT;
@@ -90,6 +95,11 @@ fn rect_half_edges(light: GpuLight) -> mat2x3<f32> {
 
 // A disk's unit normal (xyz) and radius (w), from its second element.
 fn disk_normal_radius(light: GpuLight) -> vec4<f32> {
+    return extra_element(light).position_range;
+}
+
+// A tube's half axis (xyz) and radius (w), from its second element.
+fn tube_half_axis_radius(light: GpuLight) -> vec4<f32> {
     return extra_element(light).position_range;
 }
 

@@ -60,7 +60,11 @@ pub struct Args {
     /// by each disk method, in the same run (docs/design.md §1.12).
     #[arg(long)]
     disk_radius: Option<f64>,
-    /// Leave out the exact method of spheres, rects and disks: the reference, whose 64 to 320 BRDF
+    /// Also time every light as a tube of this radius, 10 radii long along x (scene units,
+    /// ≥ 1e-4), by each tube method, in the same run (docs/design.md §1.15).
+    #[arg(long)]
+    tube_radius: Option<f64>,
+    /// Leave out the exact method of spheres, rects, disks and tubes: the reference, whose 64 to 320 BRDF
     /// evaluations per light take seconds a frame on a CPU adapter.
     #[arg(long)]
     skip_exact: bool,
@@ -101,6 +105,9 @@ pub fn run(a: &Args) -> Result<()> {
     }
     if let Some(r) = a.disk_radius {
         super::check_size("--disk-radius", r)?;
+    }
+    if let Some(r) = a.tube_radius {
+        super::check_size("--tube-radius", r)?;
     }
     if let Some(y) = a.alpha_y
         && !(ltc_lab::ltc::lut::ALPHA_MIN..=1.0).contains(&y)
@@ -161,6 +168,7 @@ pub fn run(a: &Args) -> Result<()> {
         sphere_radius: a.sphere_radius,
         rect_half_edge: a.rect_half_edge,
         disk_radius: a.disk_radius,
+        tube_radius: a.tube_radius,
         skip_exact: a.skip_exact,
         method_file,
         alpha_y: a.alpha_y,

@@ -18,6 +18,7 @@ use crate::light::Shape;
 use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_light_with};
 use crate::light::rect::{Rect, RectMethod, RectShading, rect_light_with};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light_with};
+use crate::light::tube::{Tube, TubeMethod, TubeShading, tube_light_with};
 use crate::ltc::LtcPair;
 use crate::ltc::lut::Lut;
 use crate::ltc::nl_fit::{self, NlTerms};
@@ -276,6 +277,37 @@ pub fn disk_term(
     emitter_radiance(scene, light, (centre, disk.area()), lobes)
 }
 
+/// One tube light's radiance toward the camera by `method` (docs/design.md §1.15): its
+/// radiance `4I/A` times the unit-radiance lobes, windowed at the centre's distance as a rect
+/// is, with the renderers' rule for the exact method.
+pub fn tube_term(
+    scene: &Scene,
+    px: &LtcPixel,
+    p: &SurfacePoint,
+    (light, half_axis, radius): (&Light, DVec3, f64),
+    rules: &LtcRules,
+    (method, rule): (TubeMethod, ExactRule),
+) -> DVec3 {
+    let m = &scene.material;
+    let centre = DVec3::from(light.position) - p.position;
+    let tube = Tube {
+        a: px.frame.tangent_from_world(centre - half_axis),
+        b: px.frame.tangent_from_world(centre + half_axis),
+        radius,
+    };
+    let shading = TubeShading {
+        v: px.frame.tangent_from_world(p.view),
+        tube,
+        alpha: m.roughness(),
+        f0: m.f0,
+        ltc: &px.pair,
+        clip: rules.clipping,
+        normalization: rules.normalization,
+    };
+    let lobes = tube_light_with(method, &shading, rule);
+    emitter_radiance(scene, light, (centre, 0.25 * tube.area()), lobes)
+}
+
 /// A one-sided emitter's radiance toward the camera from its unit-radiance `lobes`: times
 /// its radiance `I/A` (`area` A) and the window at its centre's distance (`centre`), the
 /// rect's and the disk's one tail (light_shape.wgsl's `add_emitter_lobes`).
@@ -354,6 +386,9 @@ pub fn shape_term(
         }
         (Shape::Disk { normal, radius }, ShapeMethod::Disk(m)) => {
             disk_term(scene, px, p, (light, normal, radius), rules, (m, rule))
+        }
+        (Shape::Tube { half_axis, radius }, ShapeMethod::Tube(m)) => {
+            tube_term(scene, px, p, (light, half_axis, radius), rules, (m, rule))
         }
         // Another shape's method, which `ShapeMethods::of` never gives: the shape's exact
         // integral.

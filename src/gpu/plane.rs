@@ -38,13 +38,14 @@ pub fn method_constant(m: Method) -> (u32, &'static str) {
 }
 
 /// A method's code, whatever its shape: `METHOD_*` of plane.wgsl for a point's, light_shape.wgsl's
-/// `SPHERE_*`, `RECT_*` or `DISK_*` for a sized shape's.
+/// `SPHERE_*`, `RECT_*`, `DISK_*` or tube_light.wgsl's `TUBE_*` for a sized shape's.
 pub fn shape_method_constant(m: ShapeMethod) -> (u32, &'static str) {
     match m {
         ShapeMethod::Point(m) => method_constant(m),
         ShapeMethod::Sphere(m) => sphere_constant(m),
         ShapeMethod::Rect(m) => rect_constant(m),
         ShapeMethod::Disk(m) => disk_constant(m),
+        ShapeMethod::Tube(m) => crate::gpu::light::tube_light::tube_constant(m),
     }
 }
 

@@ -86,12 +86,14 @@ pub fn shape_constant(shape: Shape) -> (u32, &'static str) {
         Shape::Sphere { .. } => (1, "SHAPE_SPHERE"),
         Shape::Rect { .. } => (2, "SHAPE_RECT"),
         Shape::Disk { .. } => (3, "SHAPE_DISK"),
+        Shape::Tube { .. } => (4, "SHAPE_TUBE"),
     }
 }
 
 /// The light buffer of `lights`: one element per light, in order, then one per rect holding
 /// its half-edges (xyz of each vec4) and one per disk holding its unit normal and radius (and
-/// 1 in the last w, where a rect's holds 0), which the light's element names by its w,
+/// 1 in the last w, where a rect's holds 0) and one per tube holding its half axis and radius
+/// (2 in the last w), which the light's element names by its w,
 /// `−(slot + 1)` (exact in f32 for up to 2²⁴ of them, far above `scene::MAX_LIGHTS`).
 pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
     let mut head = Vec::with_capacity(lights.len());
@@ -123,6 +125,15 @@ pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
                 });
                 -(tail.len() as f32)
             }
+            Shape::Tube { half_axis, radius } => {
+                let h = half_axis.as_vec3();
+                // w = 2 tells it from a disk's and a rect's (`light_shape`).
+                tail.push(GpuLight {
+                    position_range: [h.x, h.y, h.z, radius as f32],
+                    intensity: [0.0, 0.0, 0.0, 2.0],
+                });
+                -(tail.len() as f32)
+            }
         };
         head.push(GpuLight {
             position_range: [p[0], p[1], p[2], range],
@@ -133,12 +144,12 @@ pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
     head
 }
 
-/// The elements `light_elements` makes of `lights`: a rect or a disk takes two.
+/// The elements `light_elements` makes of `lights`: a rect, a disk or a tube takes two.
 pub fn element_count(lights: &[Light]) -> usize {
     lights.len()
         + lights
             .iter()
-            .filter(|l| matches!(l.shape, Shape::Rect { .. } | Shape::Disk { .. }))
+            .filter(|l| !matches!(l.shape, Shape::Point | Shape::Sphere { .. }))
             .count()
 }
 

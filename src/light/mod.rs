@@ -3,7 +3,7 @@
 //! that cap, and the Gauss–Legendre rule over it that the exact method integrates by), and a
 //! rect (`rect`: the polygon it covers, the LTC over a polygon and the rule over it), and a
 //! disk (`disk`: the segment of it above the surface and the rule over it; its LTC is the
-//! sphere's cone algebra). What is chosen per shape is keyed by `ShapeKind` (docs/design.md
+//! sphere's cone algebra), and a tube (`tube`: a capsule, its line integrals and its band's rule). What is chosen per shape is keyed by `ShapeKind` (docs/design.md
 //! §5.12). Adding a shape is a module here, a variant of `Shape` and of `ShapeKind`, and one
 //! arm in each dispatch: the CPU's `cpu::shape_term`, `render::ShapeMethod`, the light
 //! buffer's `gpu::scene::light_elements` and light_shape.wgsl's `add_light`.
@@ -32,6 +32,7 @@ named_enum! {
         Sphere = "sphere",
         Rect = "rect",
         Disk = "disk",
+        Tube = "tube",
     }
 }
 
@@ -43,6 +44,7 @@ impl ShapeKind {
             Self::Sphere => "a light with a size",
             Self::Rect => "a rect light",
             Self::Disk => "a disk light",
+            Self::Tube => "a tube light",
         }
     }
 
@@ -57,6 +59,9 @@ impl ShapeKind {
             Self::Disk => Some(
                 "A disk emits toward its normal with radiance I/(π r²): far away it is the oriented point light of intensity I cos θe",
             ),
+            Self::Tube => Some(
+                "A tube (a capsule: the segment ± half_axis swept by a ball of radius r) emits all around with radiance 4I/A, as a sphere does: averaged over directions, far away it is the point light of intensity I",
+            ),
         }
     }
 
@@ -68,6 +73,7 @@ impl ShapeKind {
             Self::Sphere => "lights with a size",
             Self::Rect => "rect lights",
             Self::Disk => "disk lights",
+            Self::Tube => "tube lights",
         }
     }
 
@@ -104,6 +110,11 @@ pub enum Shape {
     /// length is not read, so that a file's vector reads back as written) and `radius`, of radiance `I/(π r²)`: far away, the oriented point light of
     /// intensity `I cos θe`, as a rect (§1.12).
     Disk { normal: DVec3, radius: f64 },
+    /// A capsule: the segment from the light's position `− half_axis` to `+ half_axis`
+    /// (world) swept by a ball of `radius`, of uniform radiance `4I/A` (`A = 4π r |half_axis| +
+    /// 4π r²`, `light::tube::Tube::area`), so that, as a sphere's, its intensity averaged
+    /// over directions is `I` (a convex body's mean projected area is `A/4`) (§1.15).
+    Tube { half_axis: DVec3, radius: f64 },
 }
 
 impl Shape {
@@ -114,6 +125,7 @@ impl Shape {
             Self::Sphere { .. } => ShapeKind::Sphere,
             Self::Rect { .. } => ShapeKind::Rect,
             Self::Disk { .. } => ShapeKind::Disk,
+            Self::Tube { .. } => ShapeKind::Tube,
         }
     }
 
@@ -130,7 +142,9 @@ impl Shape {
     pub fn radius(self) -> f64 {
         match self {
             Self::Point | Self::Rect { .. } => 0.0,
-            Self::Sphere { radius } | Self::Disk { radius, .. } => radius,
+            Self::Sphere { radius } | Self::Disk { radius, .. } | Self::Tube { radius, .. } => {
+                radius
+            }
         }
     }
 
@@ -138,6 +152,14 @@ impl Shape {
     pub fn normal(self) -> Option<DVec3> {
         match self {
             Self::Disk { normal, .. } => Some(normal),
+            _ => None,
+        }
+    }
+
+    /// A tube's half axis, `None` for the other shapes.
+    pub fn half_axis(self) -> Option<DVec3> {
+        match self {
+            Self::Tube { half_axis, .. } => Some(half_axis),
             _ => None,
         }
     }

@@ -76,6 +76,7 @@ pub fn sized_scene(kind: ShapeKind, points: &Scene, size: f64) -> Scene {
         }
         ShapeKind::Rect => as_rects(points, size),
         ShapeKind::Disk => as_disks(points, size),
+        ShapeKind::Tube => as_tubes(points, size),
     }
 }
 
@@ -96,6 +97,10 @@ pub fn sized_title(kind: ShapeKind, size: f64) -> String {
             format!("every light a square rect of half-edge {size}, facing the plane")
         }
         ShapeKind::Disk => format!("every light a disk of radius {size}, facing the plane"),
+        ShapeKind::Tube => format!(
+            "every light a tube of radius {size} and length {}, along x",
+            TUBE_LENGTH * size
+        ),
     }
 }
 
@@ -309,6 +314,9 @@ pub struct BenchSettings {
     pub rect_half_edge: Option<f64>,
     /// Also every light as a disk of this radius facing the plane, by each disk method.
     pub disk_radius: Option<f64>,
+    /// Also every light as a tube of this radius, `TUBE_LENGTH` radii long along x, by each
+    /// tube method.
+    pub tube_radius: Option<f64>,
     /// Leave out the sized lights' exact methods (the reference, not a real-time method).
     pub skip_exact: bool,
     /// Also time this method file, on every shape of the run it shades; every method of
@@ -331,6 +339,7 @@ impl BenchSettings {
             ShapeKind::Sphere => self.sphere_radius,
             ShapeKind::Rect => self.rect_half_edge,
             ShapeKind::Disk => self.disk_radius,
+            ShapeKind::Tube => self.tube_radius,
         }
     }
 }
@@ -425,6 +434,23 @@ pub fn as_disks(scene: &Scene, r: f64) -> Scene {
         };
     }
     disks
+}
+
+/// A benchmark tube's length in radii: a fluorescent strip's proportions (a 1.2 m T8 tube is
+/// 26 mm across, some 90 radii; 10 keeps it within the scene's light spacing at `bench`'s
+/// sizes).
+pub const TUBE_LENGTH: f64 = 10.0;
+
+/// `scene`'s lights as tubes of radius `r`, `TUBE_LENGTH` radii long along x.
+pub fn as_tubes(scene: &Scene, r: f64) -> Scene {
+    let mut tubes = scene.clone();
+    for l in &mut tubes.lights {
+        l.shape = Shape::Tube {
+            half_axis: DVec3::X * (0.5 * TUBE_LENGTH * r),
+            radius: r,
+        };
+    }
+    tubes
 }
 
 /// Measures every method (and remedy) at every light count and culling: `frames` timed

@@ -7,6 +7,7 @@ use crate::light::ShapeKind;
 use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
+use crate::light::tube::TubeMethod;
 use crate::render::Method;
 
 /// One shape's method: a variant per shape, holding a method of that shape's module.
@@ -17,6 +18,7 @@ pub enum ShapeMethod {
     Sphere(SphereMethod),
     Rect(RectMethod),
     Disk(DiskMethod),
+    Tube(TubeMethod),
 }
 
 impl ShapeMethod {
@@ -27,6 +29,7 @@ impl ShapeMethod {
             Self::Sphere(_) => ShapeKind::Sphere,
             Self::Rect(_) => ShapeKind::Rect,
             Self::Disk(_) => ShapeKind::Disk,
+            Self::Tube(_) => ShapeKind::Tube,
         }
     }
 
@@ -37,6 +40,7 @@ impl ShapeMethod {
             Self::Sphere(m) => m.name(),
             Self::Rect(m) => m.name(),
             Self::Disk(m) => m.name(),
+            Self::Tube(m) => m.name(),
         }
     }
 
@@ -47,6 +51,7 @@ impl ShapeMethod {
             Self::Sphere(m) => m.describe(),
             Self::Rect(m) => m.describe(),
             Self::Disk(m) => m.describe(),
+            Self::Tube(m) => m.describe(),
         }
     }
 
@@ -57,6 +62,7 @@ impl ShapeMethod {
             ShapeKind::Sphere => SphereMethod::ALL.map(Self::Sphere).to_vec(),
             ShapeKind::Rect => RectMethod::ALL.map(Self::Rect).to_vec(),
             ShapeKind::Disk => DiskMethod::ALL.map(Self::Disk).to_vec(),
+            ShapeKind::Tube => TubeMethod::ALL.map(Self::Tube).to_vec(),
         }
     }
 
@@ -67,13 +73,14 @@ impl ShapeMethod {
 
     /// What a render shades `kind` by on its approximating side (A) unless told otherwise:
     /// the paper's LTC for points and rects, what engines ship for spheres (EEVEE, Bevy's
-    /// pull request) and Heitz & Hill 2017's for disks.
+    /// pull request) and Heitz & Hill 2017's for disks and tubes (their LTC line).
     pub fn approximation(kind: ShapeKind) -> Self {
         match kind {
             ShapeKind::Point => Self::Point(Method::Ltc),
             ShapeKind::Sphere => Self::Sphere(SphereMethod::LtcDisk),
             ShapeKind::Rect => Self::Rect(RectMethod::LtcPolygon),
             ShapeKind::Disk => Self::Disk(DiskMethod::LtcDisk),
+            ShapeKind::Tube => Self::Tube(TubeMethod::LtcLine),
         }
     }
 
@@ -85,6 +92,7 @@ impl ShapeMethod {
             ShapeKind::Sphere => Self::Sphere(SphereMethod::LtcPoint),
             ShapeKind::Rect => Self::Rect(RectMethod::LtcPoint),
             ShapeKind::Disk => Self::Disk(DiskMethod::LtcPoint),
+            ShapeKind::Tube => Self::Tube(TubeMethod::LtcPoint),
         }
     }
 
@@ -95,6 +103,7 @@ impl ShapeMethod {
             ShapeKind::Sphere => SphereMethod::REFERENCE.into(),
             ShapeKind::Rect => RectMethod::REFERENCE.into(),
             ShapeKind::Disk => DiskMethod::REFERENCE.into(),
+            ShapeKind::Tube => TubeMethod::REFERENCE.into(),
         }
     }
 }
@@ -135,6 +144,7 @@ of_shape!(
     SphereMethod => Sphere, Exact;
     RectMethod => Rect, Exact;
     DiskMethod => Disk, Exact;
+    TubeMethod => Tube, Exact;
 );
 
 /// How one side of a render shades each shape: one method per shape, chosen together (the

@@ -82,6 +82,16 @@ pub(super) fn check_light(what: &str, l: &Light) -> std::result::Result<(), Stri
             check_radius(&format!("{what}.radius"), radius)?;
             check_normal(&format!("{what}.normal"), normal)
         }
+        Shape::Tube { half_axis, radius } => {
+            check_radius(&format!("{what}.radius"), radius)?;
+            // Of any length: a half axis of 0 is a ball (the tube's methods take it so).
+            within(
+                &format!("{what}.half_axis"),
+                &half_axis.to_array(),
+                -MAX_COORDINATE,
+                MAX_COORDINATE,
+            )
+        }
     }
 }
 

@@ -24,7 +24,7 @@ pub struct Light {
 
 /// A light as a scene file (and a link) writes it: the shape by its fields, `radius` for a
 /// sphere (0 or absent: a point), `half_u` and `half_v` for a rect centred on `position`,
-/// `radius` and `normal` for a disk.
+/// `radius` and `normal` for a disk, `radius` and `half_axis` for a tube.
 #[derive(Clone, Copy, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct LightFile {
@@ -58,15 +58,24 @@ struct LightFile {
         with = "exactly_option"
     )]
     normal: Option<[f64; 3]>,
+    /// A tube's half axis (world): the capsule's segment runs from `position − half_axis` to
+    /// `position + half_axis`, swept by `radius`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        with = "exactly_option"
+    )]
+    half_axis: Option<[f64; 3]>,
 }
 
 impl TryFrom<LightFile> for Light {
     type Error = String;
 
     /// The shape its fields name: a rect needs both half-edges and no radius, a disk a
-    /// radius and a normal.
+    /// radius and a normal, a tube a radius and a half axis.
     fn try_from(f: LightFile) -> std::result::Result<Self, String> {
         let shape = match (f.half_u, f.half_v) {
+            _ if f.half_axis.is_some() => tube_of(&f)?,
             (None, None) => match f.normal {
                 None => Shape::of_radius(f.radius),
                 Some(_) if f.radius == 0.0 => {
@@ -104,6 +113,21 @@ impl TryFrom<LightFile> for Light {
     }
 }
 
+/// A file's tube: a half axis and a radius, and neither a rect's half-edges nor a normal.
+fn tube_of(f: &LightFile) -> std::result::Result<Shape, String> {
+    if f.half_u.is_some() || f.half_v.is_some() || f.normal.is_some() {
+        return Err("a light has a half_axis (a tube), half_u and half_v (a rect) or a normal (a disk), not two of them".into());
+    }
+    match f.half_axis {
+        Some(_) if f.radius == 0.0 => Err("a tube light (a half_axis) needs a radius".into()),
+        Some(h) => Ok(Shape::Tube {
+            half_axis: DVec3::from(h),
+            radius: f.radius,
+        }),
+        None => Ok(Shape::of_radius(f.radius)),
+    }
+}
+
 impl From<Light> for LightFile {
     fn from(l: Light) -> Self {
         Self {
@@ -115,6 +139,7 @@ impl From<Light> for LightFile {
             half_u: l.shape.half_edges().map(|(u, _)| u.to_array()),
             half_v: l.shape.half_edges().map(|(_, v)| v.to_array()),
             normal: l.shape.normal().map(|n| n.to_array()),
+            half_axis: l.shape.half_axis().map(|h| h.to_array()),
         }
     }
 }

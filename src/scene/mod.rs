@@ -88,6 +88,13 @@ pub const DISK_PRESETS: [(&str, &str); 1] = [(
     include_str!("../../assets/scenes/disk-limits.toml"),
 )];
 
+/// The tube's failure presets (docs/design.md §1.15): across the horizon, standing on the
+/// plane (end-on), long and thin, tiny and far.
+pub const TUBE_PRESETS: [(&str, &str); 1] = [(
+    "tube-limits",
+    include_str!("../../assets/scenes/tube-limits.toml"),
+)];
+
 /// The anisotropic presets (docs/design.md §1.13): brushed metal under a rect and under
 /// spheres.
 pub const ANISO_PRESETS: [(&str, &str); 2] = [
@@ -109,17 +116,19 @@ pub fn shape_presets(kind: crate::light::ShapeKind) -> &'static [(&'static str, 
         ShapeKind::Sphere => &SPHERE_PRESETS,
         ShapeKind::Rect => &RECT_PRESETS,
         ShapeKind::Disk => &DISK_PRESETS,
+        ShapeKind::Tube => &TUBE_PRESETS,
     }
 }
 
 /// Every shipped preset, its name and its text (`PRESETS`, `SPHERE_PRESETS`,
-/// `RECT_PRESETS`, `DISK_PRESETS`, `ANISO_PRESETS`, `TABLE_PRESETS`).
+/// `RECT_PRESETS`, `DISK_PRESETS`, `TUBE_PRESETS`, `ANISO_PRESETS`, `TABLE_PRESETS`).
 pub fn shipped_presets() -> impl Iterator<Item = &'static (&'static str, &'static str)> {
     PRESETS
         .iter()
         .chain(&SPHERE_PRESETS)
         .chain(&RECT_PRESETS)
         .chain(&DISK_PRESETS)
+        .chain(&TUBE_PRESETS)
         .chain(&ANISO_PRESETS)
         .chain(&TABLE_PRESETS)
 }
@@ -294,6 +303,10 @@ impl Scene {
                 },
                 Shape::Disk { normal, radius } => Shape::Disk {
                     normal: normal.to_array().map(significant).into(),
+                    radius: significant(radius),
+                },
+                Shape::Tube { half_axis, radius } => Shape::Tube {
+                    half_axis: half_axis.to_array().map(significant).into(),
                     radius: significant(radius),
                 },
                 shape => Shape::of_radius(significant(shape.radius())),

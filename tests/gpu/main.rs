@@ -17,3 +17,4 @@ mod rect_light;
 mod render;
 mod selfcheck;
 mod sphere_light;
+mod tube_light;

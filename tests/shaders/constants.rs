@@ -37,7 +37,21 @@ fn expression_value(
 }
 
 /// The shaders' constants that only the shaders read, each with why Rust has no twin.
-const SHADER_ONLY: [(&str, &str); 7] = [
+const SHADER_ONLY: [(&str, &str); 12] = [
+    // add_light's side of the split, which light_shape.wgsl picks each shape's override by.
+    ("SIDE_A", "light_shape.wgsl's argument, not a pipeline's"),
+    ("SIDE_B", "light_shape.wgsl's argument, not a pipeline's"),
+    // tube_light.wgsl's fixed array of cuts, where Rust's band.rs has a Vec.
+    ("TUBE_MAX_CUTS", "the size of a WGSL array"),
+    // band.rs's PIECE_MIN and line.rs's END_ON are f64 rounding's; these are f32's.
+    (
+        "TUBE_PIECE_MIN",
+        "an f32 angle's rounding (band.rs PIECE_MIN for f64)",
+    ),
+    (
+        "TUBE_END_ON",
+        "an f32 cross product's rounding (line.rs END_ON for f64)",
+    ),
     // polar.wgsl's stand-in for T = tan(u/2) at u = π, where Rust has f64::INFINITY.
     ("T_INFINITE", "an infinite end f32 cannot hold"),
     // bin.wgsl's workgroup: Rust dispatches its passes by tile, not by it.
@@ -81,6 +95,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
         .chain(SphereMethod::ALL.map(sphere_constant))
         .chain(ltc_lab::light::rect::RectMethod::ALL.map(rect_constant))
         .chain(ltc_lab::light::disk::DiskMethod::ALL.map(disk_constant))
+        .chain(ltc_lab::light::tube::TubeMethod::ALL.map(ltc_lab::gpu::tube_light::tube_constant))
         .chain(ViewConstant::ALL.map(ViewConstant::constant))
         .chain(
             [
@@ -101,6 +116,10 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
                 },
                 Shape::Disk {
                     normal: glam::DVec3::Z,
+                    radius: 1.0,
+                },
+                Shape::Tube {
+                    half_axis: glam::DVec3::X,
                     radius: 1.0,
                 },
             ]
@@ -160,6 +179,10 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             (
                 "DISK_POINT_LIMIT",
                 f32s(&[ltc_lab::light::disk::DISK_POINT_LIMIT]),
+            ),
+            (
+                "TUBE_POINT_LIMIT",
+                f32s(&[ltc_lab::light::tube::TUBE_POINT_LIMIT]),
             ),
             ("GL8_NODES", half(8, |&(x, _)| x)),
             ("GL8_WEIGHTS", half(8, |&(_, w)| w)),

@@ -157,6 +157,74 @@ fn disk_light_functions_have_the_rust_names() {
     }
 }
 
+/// tube_light.wgsl's functions carry the Rust names of `light::tube` (a method `Tube::f` as
+/// `tube_f`, `Band::f` as `band_f`).
+#[test]
+fn tube_light_functions_have_the_rust_names() {
+    let module = validate("tube_light", &lights_source());
+    let wgsl = function_names(&module);
+    // Each exists in Rust under this name; the `use` fails to compile if one is renamed.
+    #[allow(unused_imports)]
+    use ltc_lab::light::tube::band::{Band, band_integral, tube_band};
+    #[allow(unused_imports)]
+    use ltc_lab::light::tube::line::{
+        clip_segment, diffuse_line, line_irradiance, ltc_line, tube_ltc_line,
+    };
+    #[allow(unused_imports)]
+    use ltc_lab::light::tube::{
+        Tube, ray_distance2, tube_light, tube_point, tube_representative_point,
+    };
+    let _ = (
+        Tube::length,
+        Tube::axis,
+        Tube::centre,
+        Tube::area,
+        Tube::projected_area,
+        Tube::nearest_to_ray,
+        Tube::distance_to_segment,
+        Tube::encloses_origin,
+        Tube::below_horizon,
+        Tube::angular_size,
+        Band::of,
+        Band::hemisphere,
+        Band::along,
+        Band::longitude,
+        Band::half_width,
+        Band::cuts,
+    );
+    for f in [
+        "tube_length",
+        "tube_axis",
+        "tube_centre",
+        "tube_area",
+        "tube_projected_area",
+        "tube_nearest_to_ray",
+        "tube_distance_to_segment",
+        "tube_encloses_origin",
+        "tube_below_horizon",
+        "tube_angular_size",
+        "ray_distance2",
+        "band_of",
+        "band_hemisphere",
+        "band_along",
+        "band_longitude",
+        "band_half_width",
+        "band_cuts",
+        "band_integral",
+        "tube_band",
+        "clip_segment",
+        "diffuse_line",
+        "ltc_line",
+        "line_irradiance",
+        "tube_ltc_line",
+        "tube_point",
+        "tube_representative_point",
+        "tube_light",
+    ] {
+        assert!(wgsl.contains(&f), "{f} is missing from the WGSL");
+    }
+}
+
 /// The renders' exact rule carries its Rust names in polar.wgsl, boundary.wgsl, fan.wgsl and the shapes'
 /// files (a
 /// method `Bounds::f` as `bounds_f`, `Lobe::f` as `lobe_f`, `Polar::f` as `polar_f`, `Arc::f`

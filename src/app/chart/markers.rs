@@ -133,6 +133,12 @@ pub(super) fn sized_marker(label: &str) -> Option<(Color32, egui_plot::MarkerSha
             Color32::from_rgb(255, 120, 180),
             DiskMethod::ALL.map(DiskMethod::name).to_vec(),
         ),
+        "tube" => (
+            Color32::from_rgb(140, 230, 140),
+            crate::light::tube::TubeMethod::ALL
+                .map(crate::light::tube::TubeMethod::name)
+                .to_vec(),
+        ),
         _ => return None,
     };
     let k = names.iter().position(|n| *n == method)?;

@@ -175,6 +175,10 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
                     dimmer per area");
             return;
         }
+        if let Shape::Tube { half_axis, radius } = &mut light.shape {
+            tube_size(ui, half_axis, radius);
+            return;
+        }
         // The shape by its radius: 0 a point, more a sphere.
         let label = ui.label("r");
         let mut radius = light.shape.radius();
@@ -184,6 +188,37 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
         light.shape = Shape::of_radius(radius);
     });
 }
+
+/// A tube's length (its segment's, 2 |half_axis|, along the axis it has) and radius.
+fn tube_size(ui: &mut egui::Ui, half_axis: &mut DVec3, radius: &mut f64) {
+    let label = ui.label("len");
+    let axis = half_axis.try_normalize().unwrap_or(DVec3::X);
+    let mut full = 2.0 * half_axis.length();
+    // From 0 (a ball) to 4, the default plane's side.
+    ui.add(
+        egui::DragValue::new(&mut full)
+            .speed(0.005)
+            .range(0.0..=4.0)
+            .max_decimals(4),
+    )
+    .labelled_by(label.id)
+    .on_hover_text(TUBE_LENGTH_HOVER);
+    *half_axis = axis * (0.5 * full);
+    let label = ui.label("r");
+    ui.add(
+        egui::DragValue::new(radius)
+            .speed(0.002)
+            .range(RADIUS_RANGE[0]..=RADIUS_RANGE[1])
+            .max_decimals(4),
+    )
+    .labelled_by(label.id)
+    .on_hover_text(TUBE_RADIUS_HOVER);
+}
+
+const TUBE_LENGTH_HOVER: &str = "Length: the tube's segment, end to end of its axis (0 is a \
+    ball); the capsule adds a half ball of radius r at each end";
+const TUBE_RADIUS_HOVER: &str = "The tube's radius, 0.0001 to 1: with its length it keeps its \
+    intensity, so a larger tube lights a distant point alike and is dimmer per area";
 
 /// A rect's width and height (its edges' full lengths), each dragged along its own
 /// direction: the orientation stays.

@@ -57,7 +57,7 @@ pub fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light
         let previous = before.range.unwrap_or(*r);
         n.number(&name("range"), r, previous, [1e-6, 2.0 * MAX_COORDINATE]);
     }
-    // A sphere's or a disk's radius is at least `MIN_RADIUS` (docs/design.md §3).
+    // A sphere's, a disk's or a tube's radius is at least `MIN_RADIUS` (docs/design.md §3).
     match &mut l.shape {
         Shape::Point => {}
         Shape::Sphere { radius } => {
@@ -67,6 +67,18 @@ pub fn check_light(n: &mut Notes, k: usize, l: &mut Light, before: Option<&Light
         Shape::Disk { normal, radius } => {
             n.number(&name("radius"), radius, before.shape.radius(), RADIUS_RANGE);
             check_normal(n, &name("normal"), normal, &before);
+        }
+        Shape::Tube { half_axis, radius } => {
+            n.number(&name("radius"), radius, before.shape.radius(), RADIUS_RANGE);
+            let previous = before.shape.half_axis().unwrap_or(*half_axis).to_array();
+            let mut xs = half_axis.to_array();
+            n.numbers(
+                &name("half_axis"),
+                &mut xs,
+                &previous,
+                [-MAX_COORDINATE, MAX_COORDINATE],
+            );
+            *half_axis = DVec3::from(xs);
         }
     }
     if !has_area(l.shape) {

@@ -252,7 +252,54 @@ pub fn paint_outlines(
                     painter.line_segment([*p, placed.to_screen(t)], stroke);
                 }
             }
+            Shape::Tube { half_axis, radius } => {
+                paint_tube(
+                    painter,
+                    &placed,
+                    (&scene, stroke),
+                    centre,
+                    (half_axis, radius),
+                );
+            }
         }
+    }
+}
+
+/// A tube's outline: its axis and, each side of it across the view, the segment offset by the
+/// radius (the capsule's silhouette where it is seen broadside), closed by the two ends.
+fn paint_tube(
+    painter: &egui::Painter,
+    placed: &Placed,
+    (scene, stroke): (&crate::scene::Scene, egui::Stroke),
+    centre: DVec3,
+    (half_axis, radius): (DVec3, f64),
+) {
+    let (width, height) = placed.size;
+    let (eye, _, _, _) = scene.camera_basis();
+    let axis = half_axis.try_normalize().unwrap_or(DVec3::X);
+    let across = axis
+        .cross(centre - eye)
+        .try_normalize()
+        .unwrap_or_else(|| axis.any_orthonormal_vector())
+        * radius;
+    let ends = [centre - half_axis, centre + half_axis];
+    let corners: Option<Vec<Pos2>> = [
+        ends[0] + across,
+        ends[1] + across,
+        ends[1] - across,
+        ends[0] - across,
+        ends[0] + across,
+    ]
+    .iter()
+    .map(|&c| scene.project(c, width, height).map(|q| placed.to_screen(q)))
+    .collect();
+    let axis_ends: Option<Vec<Pos2>> = ends
+        .iter()
+        .map(|&c| scene.project(c, width, height).map(|q| placed.to_screen(q)))
+        .collect();
+    if let (Some(corners), Some(axis_ends)) = (corners, axis_ends) {
+        painter.add(egui::Shape::line(corners, stroke));
+        painter.line_segment([axis_ends[0], axis_ends[1]], stroke);
     }
 }
 

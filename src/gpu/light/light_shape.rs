@@ -58,6 +58,7 @@ pub fn overrides(kind: ShapeKind) -> ShapeOverrides {
         ShapeKind::Sphere => (None, "SPHERE_A", "SPHERE_B"),
         ShapeKind::Rect => (Some("RECTS"), "RECT_A", "RECT_B"),
         ShapeKind::Disk => (Some("DISKS"), "DISK_A", "DISK_B"),
+        ShapeKind::Tube => (Some("TUBES"), "TUBE_A", "TUBE_B"),
     };
     ShapeOverrides { present, a, b }
 }

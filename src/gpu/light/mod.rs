@@ -11,6 +11,7 @@ pub mod light_shape;
 pub mod polar;
 pub mod rect_light;
 pub mod sphere_light;
+pub mod tube_light;
 
 /// The lights' shaders as the plane shader composes them: the shapes' files and the rule
 /// they share (which reads their precise trigonometry and the rect's `Polygon`), after
@@ -23,6 +24,7 @@ pub fn sources() -> String {
         polar::SOURCE,
         boundary::SOURCE,
         fan::SOURCE,
+        tube_light::SOURCE,
     ]
     .join("\n")
 }

@@ -196,9 +196,10 @@ impl MethodFile {
         h.finish()
     }
 
-    /// Whether it has a function for `kind` (`ENTRIES` are in `ShapeKind::ALL`'s order).
+    /// Whether it has a function for `kind` (`ENTRIES` are in `ShapeKind::ALL`'s order; a
+    /// shape after them, the tube, has none in the interface, and the lab's method shades it).
     pub fn shades(&self, kind: crate::light::ShapeKind) -> bool {
-        self.shades[kind.index()]
+        self.shades.get(kind.index()).copied().unwrap_or(false)
     }
 
     /// The text as the file holds it.

@@ -17,7 +17,7 @@ use glam::DVec3;
 use crate::brdf::{Alpha, Lobes, brdf_cos_aniso};
 use crate::light::polar::{mirror, rule};
 use crate::light::tube::Tube;
-use crate::light::tube::region::{Silhouette, horizon_corners, tube_exact};
+use crate::light::tube::region::{Silhouette, horizon_corners};
 
 /// The silhouette in longitude and latitude.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -79,6 +79,18 @@ impl Band {
         }
     }
 
+    /// The upper hemisphere as a band, for a point inside the capsule (which sees it all):
+    /// longitude about `z`, the band everywhere and as wide as a hemisphere (`k = ∞`), the
+    /// horizon cutting each meridian at latitude 0, and the caps of no width at longitude 0.
+    pub fn hemisphere() -> Self {
+        Self {
+            frame: [DVec3::X, DVec3::Y, DVec3::Z],
+            caps: [(0.0, 0.0); 2],
+            band: Some(([-PI, PI], DVec3::Z, f64::INFINITY)),
+            range: [-PI, PI],
+        }
+    }
+
     /// The direction at longitude `psi`, latitude 0.
     pub fn along(&self, psi: f64) -> DVec3 {
         let [u, w, _] = self.frame;
@@ -106,7 +118,7 @@ impl Band {
                 if off >= sigma {
                     0.0
                 } else {
-                    (sigma.cos() / off.cos()).min(1.0).acos()
+                    cap_half_width(sigma, off)
                 }
             })
             .fold(0.0, f64::max)
@@ -138,6 +150,15 @@ impl Band {
         cuts.dedup_by(|a, b| (*a - *b).abs() <= PIECE_MIN);
         cuts
     }
+}
+
+/// A cap's half-width in latitude `off` radians of longitude from its centre (`off < σ`):
+/// `cos Λ = cos σ / cos off`, taken as `sin Λ = √(sin(σ − off) sin(σ + off)) / cos off`, which
+/// does not cancel for a small cap (`acos` of a ratio near 1 would, most of all in f32).
+fn cap_half_width(sigma: f64, off: f64) -> f64 {
+    (((sigma - off).sin() * (sigma + off).sin()).sqrt() / off.cos())
+        .min(1.0)
+        .asin()
 }
 
 /// Pieces of longitude or latitude narrower than this are dropped (two cuts at one place).
@@ -252,7 +273,7 @@ pub fn band_integral(
 /// Both lobes over the silhouette above the surface toward `v` by the band's rule (base colour
 /// 1, unit radiance): `(specular, diffuse)` nodes a dimension and piece, the specular lobe
 /// stretched toward the mirror direction by `2 max(αx, αy)`. A point inside the capsule sees
-/// the upper hemisphere, by the polar rule (`region::tube_exact`).
+/// the upper hemisphere (`Band::hemisphere`; `region::tube_exact`'s polar rule is its check).
 pub fn tube_band(
     v: DVec3,
     tube: &Tube,
@@ -260,17 +281,17 @@ pub fn tube_band(
     f0: f64,
     (n, n_diffuse): (usize, usize),
 ) -> Lobes<f64> {
-    let Some(silhouette) = Silhouette::of(tube) else {
-        return tube_exact(v, tube, alpha, f0, (n, n_diffuse));
-    };
-    let band = Band::of(tube, &silhouette);
+    let silhouette = Silhouette::of(tube);
+    let band = silhouette.map_or_else(Band::hemisphere, |s| Band::of(tube, &s));
     let lobes = |l: DVec3| brdf_cos_aniso(v.to_array(), l.to_array(), alpha, f0);
     let focus = mirror(v);
     let peak = [
         band.longitude(focus),
         focus.dot(band.frame[2]).clamp(-1.0, 1.0).asin(),
     ];
-    let mut more: Vec<f64> = horizon_corners(&silhouette)
+    let mut more: Vec<f64> = silhouette
+        .map(|s| horizon_corners(&s))
+        .unwrap_or_default()
         .iter()
         .map(|&c| band.longitude(c))
         .collect();

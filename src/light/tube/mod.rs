@@ -59,16 +59,26 @@ impl Tube {
 
     /// The point of the segment nearest the ray from the origin along unit `w`, by its
     /// distance `s` from `a`. The distance to the ray is convex in `s`, so its least value on
-    /// `[0, ℓ]` is at an end or where it is stationary: where the lines are nearest (the ray's
-    /// `t > 0`) or where the segment is nearest the origin (`t = 0`).
+    /// `[0, ℓ]` is at an end, where it is stationary — where the lines are nearest (the ray's
+    /// `t > 0`) or where the segment is nearest the origin (`t = 0`) — or at the kink between
+    /// those two forms, where the segment crosses the plane `p·w = 0`: with the kink among the
+    /// candidates, and each stationary point only where its form holds, the least of them is
+    /// the minimum itself, so that no two candidates of nearly one distance (a choice f32
+    /// rounding flips, `√ε` of the length apart) stand apart.
     pub fn nearest_to_ray(&self, w: DVec3) -> f64 {
         let (e, len) = (self.axis(), self.length());
         let dist2 = |s: f64| ray_distance2(self.a + e * s, w);
         let cos = e.dot(w);
+        // Each stationary point where its form holds: near the minimum the distance is flat,
+        // and one form's stationary point read by the other's would tie with the minimum to
+        // rounding while lying elsewhere.
+        let t = |s: f64| (self.a + e * s).dot(w);
         let lines = (1.0 - cos * cos > 1e-12)
-            .then(|| (cos * self.a.dot(w) - self.a.dot(e)) / (1.0 - cos * cos));
-        let origin = -self.a.dot(e);
-        [Some(0.0), Some(len), lines, Some(origin)]
+            .then(|| (cos * self.a.dot(w) - self.a.dot(e)) / (1.0 - cos * cos))
+            .filter(|&s| t(s) >= 0.0);
+        let origin = Some(-self.a.dot(e)).filter(|&s| t(s) <= 0.0);
+        let kink = (cos != 0.0).then(|| -self.a.dot(w) / cos);
+        [Some(0.0), Some(len), lines, origin, kink]
             .into_iter()
             .flatten()
             .map(|s| s.clamp(0.0, len))
@@ -153,9 +163,11 @@ impl TubeMethod {
 /// tests/lights/tube_light.rs holds it to an integral over the capsule's surface.
 pub const EXACT_NODES: usize = 64;
 
-/// Below this `angular_size` every method shades a tube as its point light, as a disk is below
-/// `disk::DISK_POINT_LIMIT` (the same bound, for the same reason).
-pub const TUBE_POINT_LIMIT: f64 = 1e-7;
+/// Below this `angular_size` every method shades a tube as its point light, as a rect is below
+/// `rect::RECT_POINT_LIMIT` and for its reason: the shader's band rule places its cuts by f32
+/// longitudes, good to some `2⁻²⁴` radians, which is `2⁻²⁴/s` of a span `s` (6e-5 here), while
+/// the point light differs from the tube by `O(s²)` of the lobe's curvature (1e-6 here).
+pub const TUBE_POINT_LIMIT: f64 = 1e-3;
 
 /// One tube light of unit radiance at one shading point: everything the methods read.
 #[derive(Clone, Copy, Debug)]
