@@ -237,12 +237,12 @@ mod tests {
         let back: ShapeForms = toml::from_str(&text).unwrap();
         assert_eq!(back, forms);
         let odd =
-            "[rect]\nltc = \"ltc-disk\"\n[tube]\nltc = \"exact\"\n[disk]\nbrdf = \"ltc-point\"\n";
+            "[rect]\nltc = \"ltc-disk\"\n[cone]\nltc = \"exact\"\n[disk]\nbrdf = \"ltc-point\"\n";
         let mut read: ShapeForms = toml::from_str(odd).unwrap();
         let notes = read.check(&ShapeForms::default());
         assert_eq!(notes.len(), 2, "{notes:?}");
         assert!(notes.iter().any(|n| n.contains("rect method `ltc-disk`")));
-        assert!(notes.iter().any(|n| n.contains("shape `tube`")));
+        assert!(notes.iter().any(|n| n.contains("shape `cone`")));
         assert_eq!(read.ltc.get::<RectMethod>(), RectMethod::LtcPolygon);
         assert_eq!(read.brdf.of(ShapeKind::Disk).name(), "ltc-point");
         // Said once.
