@@ -101,7 +101,7 @@ mod tests {
         for bad in [
             "rect",
             "c:rect=exact",
-            "tube=exact",
+            "cone=exact",
             "disk=ltc-polygon",
             "rect=",
         ] {

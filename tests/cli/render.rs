@@ -385,7 +385,7 @@ fn method_for_is_the_per_shape_flags_keyed_by_shape() {
     assert!(stderr(&o).contains("--rect-a"), "{}", stderr(&o));
     // clap's, which names the flag and says what it takes.
     for (flag, named) in [
-        ("tube=exact", "one of point, sphere, rect, disk"),
+        ("cone=exact", "one of point, sphere, rect, disk, tube"),
         ("disk=ltc-polygon", "exact, ltc-disk, ltc-point"),
         ("c:rect=exact", "the side is a or b"),
     ] {
