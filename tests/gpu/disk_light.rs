@@ -4,7 +4,9 @@
 //! edge-on, from 0.1° to some 90° across; then renders of the failure preset by every
 //! method, GPU against CPU.
 
-use crate::gpu_common::{PROBE_LTC, condition, gpu, lights_probe_source, pack_pair, run_probe};
+use crate::gpu_common::{
+    PROBE_LTC, condition, direction, gpu, lights_probe_source, pack_pair, run_probe,
+};
 use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
 use ltc_lab::light::ExactRule;
@@ -54,15 +56,6 @@ struct Case {
     alpha: f64,
     f0: f64,
     pair: LtcPair,
-}
-
-/// A unit vector of the given elevation and azimuth.
-fn direction(elevation: f64, azimuth: f64) -> DVec3 {
-    DVec3::new(
-        elevation.cos() * azimuth.cos(),
-        elevation.cos() * azimuth.sin(),
-        elevation.sin(),
-    )
 }
 
 fn draw(rng: &mut SplitMix64, lut: &Lut) -> Case {

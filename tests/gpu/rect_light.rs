@@ -5,7 +5,7 @@
 //! renders of the failure preset by every method, GPU against CPU.
 
 use crate::gpu_common::{
-    METHOD_CODES, PROBE_LTC, condition, gpu, lights_probe_source, pack_pair, run_probe,
+    METHOD_CODES, PROBE_LTC, condition, direction, gpu, lights_probe_source, pack_pair, run_probe,
 };
 use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
@@ -52,15 +52,6 @@ struct Case {
     alpha: f64,
     f0: f64,
     pair: LtcPair,
-}
-
-/// A unit vector of the given elevation and azimuth.
-fn direction(elevation: f64, azimuth: f64) -> DVec3 {
-    DVec3::new(
-        elevation.cos() * azimuth.cos(),
-        elevation.cos() * azimuth.sin(),
-        elevation.sin(),
-    )
 }
 
 fn draw(rng: &mut SplitMix64, lut: &Lut) -> Case {

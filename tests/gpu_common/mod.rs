@@ -215,6 +215,15 @@ pub fn gpu_frame(
         .0
 }
 
+/// A unit vector of the given elevation and azimuth (the probes' light directions).
+pub fn direction(elevation: f64, azimuth: f64) -> glam::DVec3 {
+    glam::DVec3::new(
+        elevation.cos() * azimuth.cos(),
+        elevation.cos() * azimuth.sin(),
+        elevation.sin(),
+    )
+}
+
 /// An upper bound on the condition number of `M⁻¹`: `‖M⁻¹‖·‖M‖` in Frobenius norms.
 pub fn condition(lobe: &ltc_lab::ltc::Ltc) -> f64 {
     let norm = |m: glam::DMat3| m.to_cols_array().iter().map(|x| x * x).sum::<f64>().sqrt();

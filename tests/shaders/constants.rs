@@ -41,7 +41,7 @@ const SHADER_ONLY: [(&str, &str); 12] = [
     // add_light's side of the split, which light_shape.wgsl picks each shape's override by.
     ("SIDE_A", "light_shape.wgsl's argument, not a pipeline's"),
     ("SIDE_B", "light_shape.wgsl's argument, not a pipeline's"),
-    // tube_light.wgsl's fixed array of cuts, where Rust's band.rs has a Vec.
+    // tube_band.wgsl's fixed array of cuts, where Rust's band.rs has a Vec.
     ("TUBE_MAX_CUTS", "the size of a WGSL array"),
     // band.rs's PIECE_MIN and line.rs's END_ON are f64 rounding's; these are f32's.
     (

@@ -157,7 +157,7 @@ fn disk_light_functions_have_the_rust_names() {
     }
 }
 
-/// tube_light.wgsl's functions carry the Rust names of `light::tube` (a method `Tube::f` as
+/// tube_light.wgsl's and tube_band.wgsl's functions carry the Rust names of `light::tube` (a method `Tube::f` as
 /// `tube_f`, `Band::f` as `band_f`).
 #[test]
 fn tube_light_functions_have_the_rust_names() {

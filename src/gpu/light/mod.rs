@@ -11,6 +11,7 @@ pub mod light_shape;
 pub mod polar;
 pub mod rect_light;
 pub mod sphere_light;
+pub mod tube_band;
 pub mod tube_light;
 
 /// The lights' shaders as the plane shader composes them: the shapes' files and the rule
@@ -25,6 +26,7 @@ pub fn sources() -> String {
         boundary::SOURCE,
         fan::SOURCE,
         tube_light::SOURCE,
+        tube_band::SOURCE,
     ]
     .join("\n")
 }
