@@ -22,6 +22,29 @@ const DISK_EXACT: u32 = 0u;     // the BRDF over the disk above the surface (dis
 const DISK_LTC_DISK: u32 = 1u;  // Heitz & Hill 2017: the disk's cone mapped by M⁻¹
 const DISK_LTC_POINT: u32 = 2u; // the centre as an oriented point light
 
+// The shapes whose dimensions take a second element of the light buffer, which holds the code
+// in its last w (src/gpu/light/mod.rs shape_constant and second_element; scene.wgsl's
+// light_shape reads it back).
+const SHAPE_RECT: u32 = 2u;
+const SHAPE_DISK: u32 = 3u;
+const SHAPE_TUBE: u32 = 4u;
+
+// A rect's half-edges, from its second element.
+fn rect_half_edges(light: GpuLight) -> mat2x3<f32> {
+    let extra = extra_element(light);
+    return mat2x3<f32>(extra.position_range.xyz, extra.intensity.xyz);
+}
+
+// A disk's unit normal (xyz) and radius (w), from its second element.
+fn disk_normal_radius(light: GpuLight) -> vec4<f32> {
+    return extra_element(light).position_range;
+}
+
+// A tube's half axis (xyz) and radius (w), from its second element.
+fn tube_half_axis_radius(light: GpuLight) -> vec4<f32> {
+    return extra_element(light).position_range;
+}
+
 // Some light is not a point: without one, the light loop has no test of the shape at all.
 override SIZED: bool = false;
 // How A and B shade the lights with a size: constants too, so that a pipeline holds only the
@@ -90,9 +113,9 @@ fn add_sphere(
     add_lobes(method, s, ltc, light, lobes);
 }
 
-// A one-sided emitter's unit-radiance lobes into the side's sums: times its radiance I/A
-// (`area` A) and the window at its centre's distance (`centre`, world), as rect_term and
-// disk_term scale theirs (src/cpu/mod.rs); the rect's and the disk's one tail.
+// An emitter's unit-radiance lobes into the side's sums: times its radiance I/A (`area` A)
+// and the window at its centre's distance (`centre`, world), as src/cpu/mod.rs
+// emitter_radiance scales them; every emitter's one tail.
 fn add_emitter_lobes(
     method: u32,
     s: ptr<function, Sums>,
@@ -108,7 +131,7 @@ fn add_emitter_lobes(
     add_lobes(method, s, ltc, light, lobes);
 }
 
-// A rect by the side's rect method (src/cpu/mod.rs rect_term): its radiance I/A times the
+// A rect by the side's rect method (src/cpu/mod.rs emitter_term): its radiance I/A times the
 // unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
 fn add_rect(
     method: u32,
@@ -132,7 +155,7 @@ fn add_rect(
     add_emitter_lobes(method, s, ltc, light, centre, rect_area(shading.rect), lobes);
 }
 
-// A disk by the side's disk method (src/cpu/mod.rs disk_term): its radiance I/(π r²) times the
+// A disk by the side's disk method (src/cpu/mod.rs emitter_term): its radiance I/(π r²) times the
 // unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
 fn add_disk(
     method: u32,
@@ -156,7 +179,7 @@ fn add_disk(
     add_emitter_lobes(method, s, ltc, light, centre, disk_area(shading.disk), lobes);
 }
 
-// A tube by the side's tube method (src/cpu/mod.rs tube_term): its radiance 4I/A times the
+// A tube by the side's tube method (src/cpu/mod.rs emitter_term): its radiance 4I/A times the
 // unit-radiance lobes, windowed at the centre's distance; into factored sums as add_sphere.
 fn add_tube(
     method: u32,

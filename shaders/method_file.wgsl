@@ -141,12 +141,12 @@ fn add_method_light(shape: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShadin
 // Whether the file shades `shape` (its METHOD_FILE_* constants, written when it is composed).
 fn method_file_shades(shape: u32) -> bool {
     switch shape {
+        case SHAPE_POINT: { return METHOD_FILE_POINT; }
         case SHAPE_SPHERE: { return METHOD_FILE_SPHERE; }
         case SHAPE_RECT: { return METHOD_FILE_RECT; }
         case SHAPE_DISK: { return METHOD_FILE_DISK; }
-        // A file has no tube function: the lab's method for tubes shades them.
-        case SHAPE_TUBE: { return false; }
-        default: { return METHOD_FILE_POINT; }
+        // A shape the file's interface has no function for: the lab's method shades it.
+        default: { return false; }
     }
 }
 

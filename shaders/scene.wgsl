@@ -56,51 +56,28 @@ struct GpuLight {
     intensity: vec4<f32>,
 }
 
-// A light's shape (src/light/mod.rs Shape; src/gpu/scene.rs shape_constant).
+// A light's shape (src/light/mod.rs ShapeKind; src/gpu/light/mod.rs shape_constant): the two
+// that one element holds. A shape with a second element has its code in that element's last w,
+// which light_shape.wgsl names.
 const SHAPE_POINT: u32 = 0u;
 const SHAPE_SPHERE: u32 = 1u;
-const SHAPE_RECT: u32 = 2u;
-const SHAPE_DISK: u32 = 3u;
-const SHAPE_TUBE: u32 = 4u;
 
-// The shape light_elements wrote: a sphere's radius in w, 0 for a point, the slot of a rect's,
-// a disk's or a tube's second element below 0 (a disk's holds 1 in its last w, a tube's 2).
+// The shape light_elements wrote: a sphere's radius in w, 0 for a point, or below 0 the slot
+// of the light's second element, whose last w holds the shape's code (a small integer, exact
+// in f32; rounded, not truncated, so that nothing rests on its last bit).
 fn light_shape(light: GpuLight) -> u32 {
     if light.intensity.w > 0.0 {
         return SHAPE_SPHERE;
     }
     if light.intensity.w < 0.0 {
-        let kind = extra_element(light).intensity.w;
-        if kind > 1.5 {
-            return SHAPE_TUBE;
-        }
-        if kind > 0.0 {
-            return SHAPE_DISK;
-        }
-        return SHAPE_RECT;
+        return u32(extra_element(light).intensity.w + 0.5);
     }
     return SHAPE_POINT;
 }
 
-// A rect's or a disk's second element, after the lights (light_elements).
+// A light's second element, after the lights (light_elements).
 fn extra_element(light: GpuLight) -> GpuLight {
     return lights[params.light_count + u32(-light.intensity.w) - 1u];
-}
-
-// A rect's half-edges, from its second element.
-fn rect_half_edges(light: GpuLight) -> mat2x3<f32> {
-    let extra = extra_element(light);
-    return mat2x3<f32>(extra.position_range.xyz, extra.intensity.xyz);
-}
-
-// A disk's unit normal (xyz) and radius (w), from its second element.
-fn disk_normal_radius(light: GpuLight) -> vec4<f32> {
-    return extra_element(light).position_range;
-}
-
-// A tube's half axis (xyz) and radius (w), from its second element.
-fn tube_half_axis_radius(light: GpuLight) -> vec4<f32> {
-    return extra_element(light).position_range;
 }
 
 @group(0) @binding(0) var<uniform> params: Params;

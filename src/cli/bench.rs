@@ -10,6 +10,7 @@ use ltc_lab::measure::bench::{BenchRow, BenchSettings};
 
 use ltc_lab::ltc::remedy::Horizon;
 
+use super::sizes::SizeArgs;
 use super::{
     CullArgs, EncodingArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size,
     print,
@@ -48,24 +49,10 @@ pub struct Args {
     /// docs/design.md §4.7.
     #[arg(long, value_delimiter = ',', value_parser = horizon_parser(), default_value = "eq30")]
     horizon: Vec<Horizon>,
-    /// Also time every light as a sphere of this radius (scene units, ≥ 1e-4), by each sphere
-    /// method, in the same run (docs/design.md §1.10).
-    #[arg(long)]
-    sphere_radius: Option<f64>,
-    /// Also time every light as a square rect of this half-edge facing the plane (scene
-    /// units, ≥ 1e-4), by each rect method, in the same run (docs/design.md §1.11).
-    #[arg(long)]
-    rect_half_edge: Option<f64>,
-    /// Also time every light as a disk of this radius facing the plane (scene units, ≥ 1e-4),
-    /// by each disk method, in the same run (docs/design.md §1.12).
-    #[arg(long)]
-    disk_radius: Option<f64>,
-    /// Also time every light as a tube of this radius, 10 radii long along x (scene units,
-    /// ≥ 1e-4), by each tube method, in the same run (docs/design.md §1.15).
-    #[arg(long)]
-    tube_radius: Option<f64>,
-    /// Leave out the exact method of spheres, rects, disks and tubes: the reference, whose 64 to 320 BRDF
-    /// evaluations per light take seconds a frame on a CPU adapter.
+    #[command(flatten)]
+    sizes: SizeArgs,
+    /// Leave out the exact method of every shape with a size: the reference, whose 64 to 320
+    /// BRDF evaluations per light take seconds a frame on a CPU adapter.
     #[arg(long)]
     skip_exact: bool,
     /// Also time the method in this WGSL file (docs/design.md §5.13) on every shape of the
@@ -97,18 +84,7 @@ pub fn run(a: &Args) -> Result<()> {
         (None, None) => vec![100, 500, 1000, 5000],
     };
     check_frames_and_lights(a.frames, &lights)?;
-    if let Some(r) = a.sphere_radius {
-        super::check_size("--sphere-radius", r)?;
-    }
-    if let Some(h) = a.rect_half_edge {
-        super::check_size("--rect-half-edge", h)?;
-    }
-    if let Some(r) = a.disk_radius {
-        super::check_size("--disk-radius", r)?;
-    }
-    if let Some(r) = a.tube_radius {
-        super::check_size("--tube-radius", r)?;
-    }
+    let sizes = a.sizes.sizes()?;
     if let Some(y) = a.alpha_y
         && !(ltc_lab::ltc::lut::ALPHA_MIN..=1.0).contains(&y)
     {
@@ -165,10 +141,7 @@ pub fn run(a: &Args) -> Result<()> {
         culls: a.culling.cull.clone(),
         range: Range::or_default(a.culling.range),
         horizons: a.horizon.clone(),
-        sphere_radius: a.sphere_radius,
-        rect_half_edge: a.rect_half_edge,
-        disk_radius: a.disk_radius,
-        tube_radius: a.tube_radius,
+        sizes,
         skip_exact: a.skip_exact,
         method_file,
         alpha_y: a.alpha_y,

@@ -9,6 +9,7 @@ pub mod lab;
 pub mod lut;
 pub mod method_for;
 pub mod render;
+pub mod sizes;
 pub mod study;
 
 use std::borrow::Cow;

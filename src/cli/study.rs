@@ -8,11 +8,13 @@ use std::time::Instant;
 use ltc_lab::error::{Error, Result, number};
 use ltc_lab::files::Outputs;
 use ltc_lab::gpu::GpuContext;
+use ltc_lab::light::ShapeKind;
 use ltc_lab::ltc::lut::{ALPHA_MIN, Lut};
 use ltc_lab::ltc::remedy::Horizon;
 use ltc_lab::measure::horizon;
 use ltc_lab::measure::study;
 
+use super::sizes::SizeArgs;
 use super::{
     CullArgs, EncodingArgs, LutArgs, Range, check_frames_and_lights, horizon_parser, parse_size,
     print,
@@ -77,20 +79,10 @@ pub struct Args {
     /// `<variant>@<scene>` (docs/design.md §4.6).
     #[arg(long, default_value = "paper-100")]
     scene: String,
-    /// Also every light a square rect of this half-edge facing the plane (scene units, ≥ 1e-4),
-    /// by each rect method against the rects' exact integral: variants rect-<method>
-    /// (docs/design.md §1.11); and the rects' failure preset, rect-horizon, as given
-    /// (variants <variant>@rect-horizon).
-    #[arg(long)]
-    rect_half_edge: Option<f64>,
-    /// Also every light a disk of this radius facing the plane (scene units, ≥ 1e-4), by each
-    /// disk method against the disks' exact integral: variants disk-<method> (§1.12); and the
-    /// disks' failure preset, disk-limits, as given (variants <variant>@disk-limits).
-    #[arg(long)]
-    disk_radius: Option<f64>,
+    #[command(flatten)]
+    sizes: SizeArgs,
     /// Also the method in this WGSL file (docs/design.md §5.13): variants `file`, and
-    /// `rect-file`/`disk-file` where it shades the study's sized lights; timed with runtime
-    /// checks.
+    /// `<shape>-file` where it shades the study's sized lights; timed with runtime checks.
     #[arg(long)]
     method_file: Option<PathBuf>,
 }
@@ -116,8 +108,13 @@ fn generated(a: &Args) -> Result<(Option<[f64; 2]>, Vec<usize>)> {
     Ok((heights, lights))
 }
 
-/// The scenes studied as given: the scene file, and each sized shape's failure preset.
-fn scenes(a: &Args, file: bool) -> Result<Vec<(String, ltc_lab::scene::Scene)>> {
+/// The scenes studied as given: the scene file, and each sized shape's first failure preset
+/// (`ShapeKind::presets`: rect-horizon, disk-limits…).
+fn scenes(
+    a: &Args,
+    file: bool,
+    sizes: &[(ShapeKind, f64)],
+) -> Result<Vec<(String, ltc_lab::scene::Scene)>> {
     let mut scenes = Vec::new();
     if file {
         let path = Path::new(&a.scene);
@@ -126,12 +123,10 @@ fn scenes(a: &Args, file: bool) -> Result<Vec<(String, ltc_lab::scene::Scene)>> 
             .map_or(a.scene.clone(), |s| s.to_string_lossy().into_owned());
         scenes.push((name, ltc_lab::scene::Scene::load(path)?));
     }
-    let presets = [
-        (a.rect_half_edge.is_some(), "rect-horizon"),
-        (a.disk_radius.is_some(), "disk-limits"),
-    ];
-    for (_, name) in presets.into_iter().filter(|p| p.0) {
-        scenes.push((name.to_string(), ltc_lab::scene::preset(name)));
+    for (kind, _) in sizes {
+        if let Some((name, _)) = kind.presets().first() {
+            scenes.push((name.to_string(), ltc_lab::scene::preset(name)));
+        }
     }
     Ok(scenes)
 }
@@ -143,7 +138,8 @@ pub fn run(a: &Args) -> Result<()> {
         None => vec![1],
     };
     check_frames_and_lights(a.frames, &counts)?;
-    let scenes = scenes(a, heights.is_none())?;
+    let sizes = a.sizes.sizes()?;
+    let scenes = scenes(a, heights.is_none(), &sizes)?;
     if !(1..=MAX_HORIZON_CASES).contains(&a.horizon_cases) {
         return Err(Error::input(
             "--horizon-cases",
@@ -152,12 +148,6 @@ pub fn run(a: &Args) -> Result<()> {
                 a.horizon_cases
             ),
         ));
-    }
-    if let Some(h) = a.rect_half_edge {
-        super::check_size("--rect-half-edge", h)?;
-    }
-    if let Some(r) = a.disk_radius {
-        super::check_size("--disk-radius", r)?;
     }
     // The scene's range: a material below α_min is refused everywhere else.
     let alphas = ALPHA_MIN..=1.0;
@@ -191,8 +181,7 @@ pub fn run(a: &Args) -> Result<()> {
         range: Range::or_default(a.culling.range),
         horizons: a.horizon.clone(),
         heights: heights.unwrap_or(ltc_lab::measure::bench::PAPER_HEIGHTS),
-        rect_half_edge: a.rect_half_edge,
-        disk_radius: a.disk_radius,
+        sizes,
         method_file: a
             .method_file
             .as_deref()

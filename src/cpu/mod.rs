@@ -13,12 +13,8 @@ use rayon::prelude::*;
 use crate::brdf::{
     Lobes, brdf_cos_aniso, irradiance_scale, point_light_exact_aniso, window_falloff,
 };
-use crate::light::ExactRule;
-use crate::light::Shape;
-use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_light_with};
-use crate::light::rect::{Rect, RectMethod, RectShading, rect_light_with};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light_with};
-use crate::light::tube::{Tube, TubeMethod, TubeShading, tube_light_with};
+use crate::light::{EmitterShading, ExactRule, Shape};
 use crate::ltc::LtcPair;
 use crate::ltc::lut::Lut;
 use crate::ltc::nl_fit::{self, NlTerms};
@@ -215,102 +211,37 @@ pub fn sphere_term(
     light.radiant_intensity() * combine(lobes, m.base_color)
 }
 
-/// One rect light's radiance toward the camera by `method` (docs/design.md §1.11): its
-/// radiance `I/A` times the unit-radiance lobes, windowed at the centre's distance as a
-/// sphere is, with the renderers' rule for the exact method.
-pub fn rect_term(
+/// One emitter's radiance toward the camera by `method`, a method of its shape (a rect,
+/// §1.11; a disk, §1.12…: `ShapeMethod::emitter_lobes`): its radiance `I/A`
+/// times the unit-radiance lobes, windowed at the centre's distance as a sphere is, with the
+/// renderers' rule for the exact method. `None` for a point, a sphere or another shape's
+/// method.
+pub fn emitter_term(
     scene: &Scene,
     px: &LtcPixel,
     p: &SurfacePoint,
-    (light, half_u, half_v): (&Light, DVec3, DVec3),
+    light: &Light,
     rules: &LtcRules,
-    (method, rule): (RectMethod, ExactRule),
-) -> DVec3 {
+    (method, rule): (ShapeMethod, ExactRule),
+) -> Option<DVec3> {
     let m = &scene.material;
     let centre = DVec3::from(light.position) - p.position;
-    let rect = Rect {
-        centre: px.frame.tangent_from_world(centre),
-        u: px.frame.tangent_from_world(half_u),
-        v: px.frame.tangent_from_world(half_v),
-    };
-    let shading = RectShading {
+    let shading = EmitterShading {
         v: px.frame.tangent_from_world(p.view),
-        rect,
         alpha: m.roughness(),
         f0: m.f0,
         ltc: &px.pair,
         clip: rules.clipping,
         normalization: rules.normalization,
     };
-    let lobes = rect_light_with(method, &shading, rule);
-    emitter_radiance(scene, light, (centre, rect.area()), lobes)
+    let to_frame = |w: DVec3| px.frame.tangent_from_world(w);
+    let (lobes, area) = method.emitter_lobes((light.shape, centre), &to_frame, &shading, rule)?;
+    Some(emitter_radiance(scene, light, (centre, area), lobes))
 }
 
-/// One disk light's radiance toward the camera by `method` (docs/design.md §1.12): its
-/// radiance `I/(π r²)` times the unit-radiance lobes, windowed at the centre's distance as a
-/// rect is, with the renderers' rule for the exact method.
-pub fn disk_term(
-    scene: &Scene,
-    px: &LtcPixel,
-    p: &SurfacePoint,
-    (light, normal, radius): (&Light, DVec3, f64),
-    rules: &LtcRules,
-    (method, rule): (DiskMethod, ExactRule),
-) -> DVec3 {
-    let m = &scene.material;
-    let centre = DVec3::from(light.position) - p.position;
-    let disk = Disk {
-        centre: px.frame.tangent_from_world(centre),
-        normal: px.frame.tangent_from_world(normal.normalize()),
-        radius,
-    };
-    let shading = DiskShading {
-        v: px.frame.tangent_from_world(p.view),
-        disk,
-        alpha: m.roughness(),
-        f0: m.f0,
-        ltc: &px.pair,
-        clip: rules.clipping,
-        normalization: rules.normalization,
-    };
-    let lobes = disk_light_with(method, &shading, rule);
-    emitter_radiance(scene, light, (centre, disk.area()), lobes)
-}
-
-/// One tube light's radiance toward the camera by `method` (docs/design.md §1.15): its
-/// radiance `4I/A` times the unit-radiance lobes, windowed at the centre's distance as a rect
-/// is, with the renderers' rule for the exact method.
-pub fn tube_term(
-    scene: &Scene,
-    px: &LtcPixel,
-    p: &SurfacePoint,
-    (light, half_axis, radius): (&Light, DVec3, f64),
-    rules: &LtcRules,
-    (method, rule): (TubeMethod, ExactRule),
-) -> DVec3 {
-    let m = &scene.material;
-    let centre = DVec3::from(light.position) - p.position;
-    let tube = Tube {
-        a: px.frame.tangent_from_world(centre - half_axis),
-        b: px.frame.tangent_from_world(centre + half_axis),
-        radius,
-    };
-    let shading = TubeShading {
-        v: px.frame.tangent_from_world(p.view),
-        tube,
-        alpha: m.roughness(),
-        f0: m.f0,
-        ltc: &px.pair,
-        clip: rules.clipping,
-        normalization: rules.normalization,
-    };
-    let lobes = tube_light_with(method, &shading, rule);
-    emitter_radiance(scene, light, (centre, 0.25 * tube.area()), lobes)
-}
-
-/// A one-sided emitter's radiance toward the camera from its unit-radiance `lobes`: times
-/// its radiance `I/A` (`area` A) and the window at its centre's distance (`centre`), the
-/// rect's and the disk's one tail (light_shape.wgsl's `add_emitter_lobes`).
+/// An emitter's radiance toward the camera from its unit-radiance `lobes`: times its
+/// radiance `I/A` (`area` A) and the window at its centre's distance (`centre`), every
+/// emitter's one tail (light_shape.wgsl's `add_emitter_lobes`).
 fn emitter_radiance(
     scene: &Scene,
     light: &Light,
@@ -366,7 +297,7 @@ pub fn light_term(
 }
 
 /// One light's radiance toward the camera by `method`, a method of its shape (for a point,
-/// the CPU's literal form of it). One arm per shape.
+/// the CPU's literal form of it): a point's, a sphere's, or an emitter's (`emitter_term`).
 pub fn shape_term(
     scene: &Scene,
     px: &LtcPixel,
@@ -376,27 +307,22 @@ pub fn shape_term(
     (method, rule): (ShapeMethod, ExactRule),
 ) -> DVec3 {
     match (light.shape, method) {
-        (Shape::Point, ShapeMethod::Point(m)) if m.is_ltc() => ltc_term(scene, px, p, light, rules),
-        (Shape::Point, ShapeMethod::Point(_)) => exact_term(scene, &px.frame, p, light),
+        (Shape::Point, ShapeMethod::Point(m)) if m.is_ltc() => {
+            Some(ltc_term(scene, px, p, light, rules))
+        }
+        (Shape::Point, ShapeMethod::Point(_)) => Some(exact_term(scene, &px.frame, p, light)),
         (Shape::Sphere { radius }, ShapeMethod::Sphere(m)) => {
-            sphere_term(scene, px, p, (light, radius), rules, (m, rule))
+            Some(sphere_term(scene, px, p, (light, radius), rules, (m, rule)))
         }
-        (Shape::Rect { half_u, half_v }, ShapeMethod::Rect(m)) => {
-            rect_term(scene, px, p, (light, half_u, half_v), rules, (m, rule))
-        }
-        (Shape::Disk { normal, radius }, ShapeMethod::Disk(m)) => {
-            disk_term(scene, px, p, (light, normal, radius), rules, (m, rule))
-        }
-        (Shape::Tube { half_axis, radius }, ShapeMethod::Tube(m)) => {
-            tube_term(scene, px, p, (light, half_axis, radius), rules, (m, rule))
-        }
+        (Shape::Point | Shape::Sphere { .. }, _) => None,
+        _ => emitter_term(scene, px, p, light, rules, (method, rule)),
+    }
+    .unwrap_or_else(|| {
         // Another shape's method, which `ShapeMethods::of` never gives: the shape's exact
         // integral.
-        (shape, _) => {
-            let exact = ShapeMethod::reference(shape.kind());
-            shape_term(scene, px, p, light, rules, (exact, rule))
-        }
-    }
+        let exact = ShapeMethod::reference(light.shape.kind());
+        shape_term(scene, px, p, light, rules, (exact, rule))
+    })
 }
 
 /// `specular + c · diffuse`, per channel.

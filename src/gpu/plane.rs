@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::gpu::GpuContext;
 use crate::gpu::binding::{self, Binding, Kind, binding};
 use crate::gpu::failures::scoped;
-use crate::gpu::light::light_shape::{self, disk_constant, rect_constant, sphere_constant};
+use crate::gpu::light;
 use crate::gpu::ltc::horizon_constant;
 use crate::gpu::method_file::MethodFile;
 use crate::gpu::method_file::device_check::DeviceShaders;
@@ -34,18 +34,6 @@ pub fn method_constant(m: Method) -> (u32, &'static str) {
         Method::LtcF16 => (4, "METHOD_LTC_F16"),
         Method::LtcF16Pairs => (5, "METHOD_LTC_F16_PAIRS"),
         Method::File => (6, "METHOD_FILE"),
-    }
-}
-
-/// A method's code, whatever its shape: `METHOD_*` of plane.wgsl for a point's, light_shape.wgsl's
-/// `SPHERE_*`, `RECT_*`, `DISK_*` or tube_light.wgsl's `TUBE_*` for a sized shape's.
-pub fn shape_method_constant(m: ShapeMethod) -> (u32, &'static str) {
-    match m {
-        ShapeMethod::Point(m) => method_constant(m),
-        ShapeMethod::Sphere(m) => sphere_constant(m),
-        ShapeMethod::Rect(m) => rect_constant(m),
-        ShapeMethod::Disk(m) => disk_constant(m),
-        ShapeMethod::Tube(m) => crate::gpu::light::tube_light::tube_constant(m),
     }
 }
 
@@ -390,7 +378,7 @@ fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
         ("SIZED", f64::from(u8::from(shapes.any()))),
     ];
     for kind in ShapeKind::sized() {
-        let names = light_shape::overrides(kind);
+        let names = light::overrides(kind);
         let present = shapes.get(kind);
         // A shape no light has keeps the shader's defaults, the sides' defaults.
         let (ma, mb) = present.unwrap_or((
@@ -400,8 +388,8 @@ fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
         if let Some(flag) = names.present {
             constants.push((flag, f64::from(u8::from(present.is_some()))));
         }
-        constants.push((names.a, f64::from(shape_method_constant(ma).0)));
-        constants.push((names.b, f64::from(shape_method_constant(mb).0)));
+        constants.push((names.a, f64::from(light::method_constant(ma).0)));
+        constants.push((names.b, f64::from(light::method_constant(mb).0)));
     }
     // Set only where anisotropic: an isotropic pipeline is specialized exactly as before.
     if aniso {

@@ -5,6 +5,7 @@
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 
+use crate::gpu::light::second_element;
 use crate::gpu::ltc::{clip_bits, normalization_constant};
 use crate::light::Shape;
 use crate::render::RenderSettings;
@@ -78,23 +79,10 @@ pub struct GpuLight {
     pub intensity: [f32; 4],
 }
 
-/// `SHAPE_*` of scene.wgsl (what `light_shape` reads a light's shape as): its value and its
-/// name there.
-pub fn shape_constant(shape: Shape) -> (u32, &'static str) {
-    match shape {
-        Shape::Point => (0, "SHAPE_POINT"),
-        Shape::Sphere { .. } => (1, "SHAPE_SPHERE"),
-        Shape::Rect { .. } => (2, "SHAPE_RECT"),
-        Shape::Disk { .. } => (3, "SHAPE_DISK"),
-        Shape::Tube { .. } => (4, "SHAPE_TUBE"),
-    }
-}
-
-/// The light buffer of `lights`: one element per light, in order, then one per rect holding
-/// its half-edges (xyz of each vec4) and one per disk holding its unit normal and radius (and
-/// 1 in the last w, where a rect's holds 0) and one per tube holding its half axis and radius
-/// (2 in the last w), which the light's element names by its w,
-/// `−(slot + 1)` (exact in f32 for up to 2²⁴ of them, far above `scene::MAX_LIGHTS`).
+/// The light buffer of `lights`: one element per light, in order, then one per light whose
+/// shape has a second element (`gpu::light::second_element`: its dimensions and its shape's
+/// code), which the light's element names by its w, `−(slot + 1)` (exact in f32 for up to
+/// 2²⁴ of them, far above `scene::MAX_LIGHTS`).
 pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
     let mut head = Vec::with_capacity(lights.len());
     let mut tail = Vec::new();
@@ -104,33 +92,15 @@ pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
         // A range below f32's smallest normal would round to 0, which encodes "infinite":
         // kept positive, it lights nothing, as on the CPU.
         let range = l.range.map_or(0.0, |r| (r as f32).max(f32::MIN_POSITIVE));
-        // The shape, one arm per shape: scene.wgsl's `light_shape` reads it back from w.
-        let size = match l.shape {
-            Shape::Point => 0.0,
-            Shape::Sphere { radius } => radius as f32,
-            Shape::Rect { half_u, half_v } => {
-                let (u, v) = (half_u.as_vec3(), half_v.as_vec3());
+        // The shape: a sphere's radius, 0 for a point, or the slot of its second element
+        // below 0 (`gpu::light::second_element`), which scene.wgsl's `light_shape` reads.
+        let size = match (l.shape, second_element(l.shape)) {
+            (Shape::Sphere { radius }, _) => radius as f32,
+            (_, None) => 0.0,
+            (_, Some([position_range, intensity])) => {
                 tail.push(GpuLight {
-                    position_range: [u.x, u.y, u.z, 0.0],
-                    intensity: [v.x, v.y, v.z, 0.0],
-                });
-                -(tail.len() as f32)
-            }
-            Shape::Disk { normal, radius } => {
-                let n = normal.normalize().as_vec3();
-                // w = 1 tells it from a rect's (`light_shape`).
-                tail.push(GpuLight {
-                    position_range: [n.x, n.y, n.z, radius as f32],
-                    intensity: [0.0, 0.0, 0.0, 1.0],
-                });
-                -(tail.len() as f32)
-            }
-            Shape::Tube { half_axis, radius } => {
-                let h = half_axis.as_vec3();
-                // w = 2 tells it from a disk's and a rect's (`light_shape`).
-                tail.push(GpuLight {
-                    position_range: [h.x, h.y, h.z, radius as f32],
-                    intensity: [0.0, 0.0, 0.0, 2.0],
+                    position_range,
+                    intensity,
                 });
                 -(tail.len() as f32)
             }
@@ -144,12 +114,12 @@ pub fn light_elements(lights: &[Light]) -> Vec<GpuLight> {
     head
 }
 
-/// The elements `light_elements` makes of `lights`: a rect, a disk or a tube takes two.
+/// The elements `light_elements` makes of `lights`: a light with a second element takes two.
 pub fn element_count(lights: &[Light]) -> usize {
     lights.len()
         + lights
             .iter()
-            .filter(|l| !matches!(l.shape, Shape::Point | Shape::Sphere { .. }))
+            .filter(|l| second_element(l.shape).is_some())
             .count()
 }
 

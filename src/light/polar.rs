@@ -65,7 +65,7 @@ pub struct Bounds {
 
 /// A convex region of directions as the polar rule reads it: where each meridian from a pole
 /// inside it runs inside it. `Bounds` is one; a union of convex pieces whose union is convex
-/// (a capsule's silhouette, `light::tube::region`) is another.
+/// (a shape's own region, as its module defines it) is another.
 pub trait Region {
     /// The part `[lo, hi]` of the meridian from `c` along the unit tangent `d` inside the
     /// region, in `T = tan(u/2) ∈ [0, ∞]`; `None` where none is.

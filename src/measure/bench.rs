@@ -10,7 +10,7 @@ use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
 use crate::gpu::timing::FrameTimes;
-use crate::light::{Shape, ShapeKind};
+use crate::light::ShapeKind;
 use crate::ltc::lut::Lut;
 use crate::ltc::remedy::Horizon;
 use crate::render::{LtcRules, Method, RenderSettings, ShapeMethod, ShapeMethods};
@@ -62,46 +62,26 @@ impl Sizing {
     }
 }
 
-/// The lights of `points` as lights of `kind` of this size (`--sphere-radius`,
-/// `--rect-half-edge`, `--disk-radius`), the rects and disks facing the plane.
+/// The lights of `points` as lights of `kind` of this size (`--size-for`:
+/// `ShapeKind::bench_shape`; a point's are `points`).
 pub fn sized_scene(kind: ShapeKind, points: &Scene, size: f64) -> Scene {
-    match kind {
-        ShapeKind::Point => points.clone(),
-        ShapeKind::Sphere => {
-            let mut spheres = points.clone();
-            for l in &mut spheres.lights {
-                l.shape = Shape::of_radius(size);
-            }
-            spheres
+    let mut sized = points.clone();
+    if kind != ShapeKind::Point {
+        for l in &mut sized.lights {
+            l.shape = kind.bench_shape(size);
         }
-        ShapeKind::Rect => as_rects(points, size),
-        ShapeKind::Disk => as_disks(points, size),
-        ShapeKind::Tube => as_tubes(points, size),
     }
+    sized
 }
 
 /// The symbol of a size of `kind` in a row's label: a radius, or a rect's half-edge.
 pub fn size_symbol(kind: ShapeKind) -> &'static str {
-    match kind {
-        ShapeKind::Rect => "h",
-        _ => "r",
-    }
+    kind.bench_title(0.0).1
 }
 
 /// The lights of `kind` the benchmark times, in words (its sized table's title).
 pub fn sized_title(kind: ShapeKind, size: f64) -> String {
-    match kind {
-        ShapeKind::Point => "points".to_string(),
-        ShapeKind::Sphere => format!("every light a sphere of radius {size}"),
-        ShapeKind::Rect => {
-            format!("every light a square rect of half-edge {size}, facing the plane")
-        }
-        ShapeKind::Disk => format!("every light a disk of radius {size}, facing the plane"),
-        ShapeKind::Tube => format!(
-            "every light a tube of radius {size} and length {}, along x",
-            TUBE_LENGTH * size
-        ),
-    }
+    kind.bench_title(size).0
 }
 
 /// One measured cell of the table.
@@ -307,16 +287,9 @@ pub struct BenchSettings {
     pub range: Option<f64>,
     /// The horizon remedies each LTC method is measured with (the f16 forms: eq30 only).
     pub horizons: Vec<Horizon>,
-    /// Also every light as a sphere of this radius, by each sphere method.
-    pub sphere_radius: Option<f64>,
-    /// Also every light as a square rect of this half-edge facing the plane, by each rect
-    /// method.
-    pub rect_half_edge: Option<f64>,
-    /// Also every light as a disk of this radius facing the plane, by each disk method.
-    pub disk_radius: Option<f64>,
-    /// Also every light as a tube of this radius, `TUBE_LENGTH` radii long along x, by each
-    /// tube method.
-    pub tube_radius: Option<f64>,
+    /// Also every light as a light of each of these shapes (at most one size each, a shape
+    /// with a size), of that size (`ShapeKind::bench_shape`), by each of its methods.
+    pub sizes: Vec<(ShapeKind, f64)>,
     /// Leave out the sized lights' exact methods (the reference, not a real-time method).
     pub skip_exact: bool,
     /// Also time this method file, on every shape of the run it shades; every method of
@@ -336,10 +309,7 @@ impl BenchSettings {
     pub fn size_of(&self, kind: ShapeKind) -> Option<f64> {
         match kind {
             ShapeKind::Point => Some(0.0),
-            ShapeKind::Sphere => self.sphere_radius,
-            ShapeKind::Rect => self.rect_half_edge,
-            ShapeKind::Disk => self.disk_radius,
-            ShapeKind::Tube => self.tube_radius,
+            _ => self.sizes.iter().find(|(k, _)| *k == kind).map(|&(_, s)| s),
         }
     }
 }
@@ -413,44 +383,12 @@ fn shaded_as(sizing: Sizing, base: ShapeMethods) -> ShapeMethods {
 
 /// `scene` with every light a square rect of half-edge `h` facing down onto the plane.
 pub fn as_rects(scene: &Scene, h: f64) -> Scene {
-    let mut rects = scene.clone();
-    for l in &mut rects.lights {
-        // half_u × half_v = (h, 0, 0) × (0, −h, 0) = (0, 0, −h²): toward the plane.
-        l.shape = Shape::Rect {
-            half_u: DVec3::new(h, 0.0, 0.0),
-            half_v: DVec3::new(0.0, -h, 0.0),
-        };
-    }
-    rects
+    sized_scene(ShapeKind::Rect, scene, h)
 }
 
 /// `scene` with every light a disk of radius `r` facing down onto the plane.
 pub fn as_disks(scene: &Scene, r: f64) -> Scene {
-    let mut disks = scene.clone();
-    for l in &mut disks.lights {
-        l.shape = Shape::Disk {
-            normal: DVec3::NEG_Z,
-            radius: r,
-        };
-    }
-    disks
-}
-
-/// A benchmark tube's length in radii: a fluorescent strip's proportions (a 1.2 m T8 tube is
-/// 26 mm across, some 90 radii; 10 keeps it within the scene's light spacing at `bench`'s
-/// sizes).
-pub const TUBE_LENGTH: f64 = 10.0;
-
-/// `scene`'s lights as tubes of radius `r`, `TUBE_LENGTH` radii long along x.
-pub fn as_tubes(scene: &Scene, r: f64) -> Scene {
-    let mut tubes = scene.clone();
-    for l in &mut tubes.lights {
-        l.shape = Shape::Tube {
-            half_axis: DVec3::X * (0.5 * TUBE_LENGTH * r),
-            radius: r,
-        };
-    }
-    tubes
+    sized_scene(ShapeKind::Disk, scene, r)
 }
 
 /// Measures every method (and remedy) at every light count and culling: `frames` timed

@@ -8,6 +8,7 @@ pub mod aniso_table;
 pub mod atlas;
 pub mod bench;
 pub mod bench_table;
+pub mod emitter_error;
 pub mod encodings;
 pub mod eval;
 pub mod exact_rule;

@@ -3,11 +3,13 @@
 //! pipelines' specializations, the command line and the lab read by `ShapeKind` and never by
 //! a field per shape. A new shape is an arm in `ShapeMethod`'s matches and nothing here else.
 
-use crate::light::ShapeKind;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
+use glam::DVec3;
+
+use crate::light::disk::{self, DiskMethod};
+use crate::light::rect::{self, RectMethod};
 use crate::light::sphere::SphereMethod;
-use crate::light::tube::TubeMethod;
+use crate::light::tube::{self, TubeMethod};
+use crate::light::{EmitterLobes, EmitterShading, ExactRule, Shape, ShapeKind};
 use crate::render::Method;
 
 /// One shape's method: a variant per shape, holding a method of that shape's module.
@@ -105,6 +107,33 @@ impl ShapeMethod {
             ShapeKind::Disk => DiskMethod::REFERENCE.into(),
             ShapeKind::Tube => TubeMethod::REFERENCE.into(),
         }
+    }
+}
+
+impl ShapeMethod {
+    /// An emitter of `shape` (a shape of radiance `I/A`, which is neither a point nor a
+    /// sphere) centred at `centre` from the shading point (world, mapped to the shading frame
+    /// by `to_frame`): its unit-radiance lobes by this method and its area, each shape's
+    /// module's (`EmitterLobes`). `None` for a point, a sphere, or another shape's method.
+    pub fn emitter_lobes(
+        self,
+        (shape, centre): (Shape, DVec3),
+        to_frame: &dyn Fn(DVec3) -> DVec3,
+        s: &EmitterShading<'_>,
+        rule: ExactRule,
+    ) -> Option<EmitterLobes> {
+        Some(match (shape, self) {
+            (Shape::Rect { half_u, half_v }, Self::Rect(m)) => {
+                rect::emitter_lobes(m, (centre, half_u, half_v), to_frame, s, rule)
+            }
+            (Shape::Disk { normal, radius }, Self::Disk(m)) => {
+                disk::emitter_lobes(m, (centre, normal, radius), to_frame, s, rule)
+            }
+            (Shape::Tube { half_axis, radius }, Self::Tube(m)) => {
+                tube::emitter_lobes(m, (centre, half_axis, radius), to_frame, s, rule)
+            }
+            _ => return None,
+        })
     }
 }
 

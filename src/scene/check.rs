@@ -4,7 +4,6 @@
 use glam::DVec3;
 
 use crate::error::number;
-use crate::light::Shape;
 use crate::scene::{Light, MAX_COORDINATE, MAX_INTENSITY, MIN_RADIUS};
 
 pub(super) fn finite(what: &str, xs: &[f64]) -> std::result::Result<(), String> {
@@ -74,30 +73,24 @@ pub(super) fn check_light(what: &str, l: &Light) -> std::result::Result<(), Stri
         ));
     }
     check_range(&format!("{what}.range"), l.range)?;
-    match l.shape {
-        Shape::Point => Ok(()),
-        Shape::Sphere { radius } => check_radius(&format!("{what}.radius"), radius),
-        Shape::Rect { half_u, half_v } => check_rect(what, half_u, half_v),
-        Shape::Disk { normal, radius } => {
-            check_radius(&format!("{what}.radius"), radius)?;
-            check_normal(&format!("{what}.normal"), normal)
+    // Each dimension of the shape, as it names it: its radius (0 for a shape without one),
+    // each vector, and a rect's area.
+    check_radius(&format!("{what}.radius"), l.shape.radius())?;
+    for v in l.shape.vectors() {
+        let name = format!("{what}.{}", v.name);
+        match v.direction {
+            true => check_normal(&name, v.value)?,
+            // Of any length, 0 included: its shape's methods take it (docs/design.md §3).
+            false => within(&name, &v.value.to_array(), -MAX_COORDINATE, MAX_COORDINATE)?,
         }
-        Shape::Tube { half_axis, radius } => {
-            check_radius(&format!("{what}.radius"), radius)?;
-            // Of any length: a half axis of 0 is a ball (the tube's methods take it so).
-            within(
-                &format!("{what}.half_axis"),
-                &half_axis.to_array(),
-                -MAX_COORDINATE,
-                MAX_COORDINATE,
-            )
-        }
+    }
+    match l.shape.half_edges() {
+        Some((half_u, half_v)) => check_rect_area(what, half_u, half_v),
+        None => Ok(()),
     }
 }
 
-/// The smallest length of a disk's normal: it is only a direction, but one of no length (or
-/// one whose square underflows) has none.
-pub const MIN_NORMAL: f64 = 1e-6;
+pub use crate::light::disk::MIN_NORMAL;
 
 /// A disk's normal is finite, within `MAX_COORDINATE` and of length at least `MIN_NORMAL`.
 fn check_normal(what: &str, normal: DVec3) -> std::result::Result<(), String> {
@@ -113,23 +106,9 @@ fn check_normal(what: &str, normal: DVec3) -> std::result::Result<(), String> {
     Ok(())
 }
 
-/// A rect's half-edges are finite, each within `MAX_COORDINATE`, and span a quarter-area
-/// `|half_u × half_v|` of at least `MIN_RADIUS²`: its radiance `I/A` then stays within f32
-/// (≤ 1e6/(4·1e-8) = 2.5e13), as a sphere's does.
-fn check_rect(what: &str, half_u: DVec3, half_v: DVec3) -> std::result::Result<(), String> {
-    let (u, v) = (half_u.to_array(), half_v.to_array());
-    within(
-        &format!("{what}.half_u"),
-        &u,
-        -MAX_COORDINATE,
-        MAX_COORDINATE,
-    )?;
-    within(
-        &format!("{what}.half_v"),
-        &v,
-        -MAX_COORDINATE,
-        MAX_COORDINATE,
-    )?;
+/// A rect's half-edges span a quarter-area `|half_u × half_v|` of at least `MIN_RADIUS²`: its
+/// radiance `I/A` then stays within f32 (≤ 1e6/(4·1e-8) = 2.5e13), as a sphere's does.
+fn check_rect_area(what: &str, half_u: DVec3, half_v: DVec3) -> std::result::Result<(), String> {
     let quarter_area = half_u.cross(half_v).length();
     if quarter_area < MIN_RADIUS * MIN_RADIUS {
         return Err(format!(

@@ -1,18 +1,27 @@
 //! A scene's lights: each as the lab holds it (`Light`, its shape a `light::Shape`) and as a
-//! file writes it (`LightFile`), and the seeded generator of many (docs/design.md §3).
+//! file writes it (its table, its shape by the fields its module names), and the seeded
+//! generator of many (docs/design.md §3).
+
+use std::sync::OnceLock;
 
 use glam::DVec3;
-use serde::{Deserialize, Serialize};
+use serde::ser::SerializeStruct;
+use serde::{Deserialize, Deserializer, Serialize, Serializer, de};
 
-use crate::light::Shape;
+use crate::light::{Shape, ShapeKind, VectorField};
 use crate::scene::lists::{exactly, exactly_option};
 
 /// A light: RGB `color × intensity` (W/sr-like units: irradiance `I/d²` at distance d) from
 /// `position`, of a shape (a point; a sphere whose radiance `I/(π r²)` lights a distant point
-/// as the point light does, docs/design.md §1.10; a rect or a disk whose radiance `I/A` lights
-/// it as the oriented point light of intensity `I cos θe`, §1.11 and §1.12).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(try_from = "LightFile", into = "LightFile")]
+/// as the point light does, docs/design.md §1.10; a shape whose radiance `I/A` lights it as
+/// the oriented point light of intensity `I cos θe`, §1.11 and §1.12, or, emitting all
+/// around, as the point light, §1.15).
+///
+/// A scene file (and a link, and the lab's stored state) writes it as a table: `position`,
+/// `color`, `intensity`, `range`, `radius` (0 or absent for a point, and for a shape without
+/// one), then the shape's vectors by their names (`ShapeKind::vector_fields`: `half_u` and
+/// `half_v` for a rect centred on `position`, `normal` for a disk…), which say what it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light {
     pub position: [f64; 3],
     pub color: [f64; 3],
@@ -22,124 +31,183 @@ pub struct Light {
     pub shape: Shape,
 }
 
-/// A light as a scene file (and a link) writes it: the shape by its fields, `radius` for a
-/// sphere (0 or absent: a point), `half_u` and `half_v` for a rect centred on `position`,
-/// `radius` and `normal` for a disk, `radius` and `half_axis` for a tube.
-#[derive(Clone, Copy, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LightFile {
-    #[serde(with = "exactly")]
-    position: [f64; 3],
-    #[serde(default = "white", with = "exactly")]
-    color: [f64; 3],
-    intensity: f64,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    range: Option<f64>,
-    /// The sphere's radius in scene units (metres).
-    #[serde(default, skip_serializing_if = "is_zero")]
-    radius: f64,
-    /// A rect's half-edge vectors (world); it emits toward `half_u × half_v`.
-    #[serde(
-        default,
-        skip_serializing_if = "Option::is_none",
-        with = "exactly_option"
-    )]
-    half_u: Option<[f64; 3]>,
-    #[serde(
-        default,
-        skip_serializing_if = "Option::is_none",
-        with = "exactly_option"
-    )]
-    half_v: Option<[f64; 3]>,
-    /// A disk's normal (world): it emits toward it. Its length is not read.
-    #[serde(
-        default,
-        skip_serializing_if = "Option::is_none",
-        with = "exactly_option"
-    )]
-    normal: Option<[f64; 3]>,
-    /// A tube's half axis (world): the capsule's segment runs from `position − half_axis` to
-    /// `position + half_axis`, swept by `radius`.
-    #[serde(
-        default,
-        skip_serializing_if = "Option::is_none",
-        with = "exactly_option"
-    )]
-    half_axis: Option<[f64; 3]>,
+/// The fields a light's table has beside its shape's vectors.
+const FIXED_FIELDS: [&str; 5] = ["position", "color", "intensity", "range", "radius"];
+
+/// Every field a light's table may have: `FIXED_FIELDS`, then each shape's vectors.
+fn fields() -> &'static [&'static str] {
+    static FIELDS: OnceLock<Vec<&'static str>> = OnceLock::new();
+    FIELDS.get_or_init(|| {
+        let mut all = FIXED_FIELDS.to_vec();
+        for kind in ShapeKind::ALL {
+            all.extend(kind.vector_fields().iter().map(|f| f.name));
+        }
+        all
+    })
 }
 
-impl TryFrom<LightFile> for Light {
-    type Error = String;
+impl Serialize for Light {
+    /// The fields in `fields()`' order, each optional one only where it is: a range where
+    /// the light has one, a radius where it is not 0, and the shape's vectors.
+    fn serialize<S: Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        let radius = self.shape.radius();
+        let vectors = self.shape.vectors();
+        let count = 3 + usize::from(self.range.is_some()) + usize::from(radius != 0.0);
+        let mut t = s.serialize_struct("LightFile", count + vectors.len())?;
+        t.serialize_field("position", &self.position[..])?;
+        t.serialize_field("color", &self.color[..])?;
+        t.serialize_field("intensity", &self.intensity)?;
+        match self.range {
+            Some(_) => t.serialize_field("range", &self.range)?,
+            None => t.skip_field("range")?,
+        }
+        match radius != 0.0 {
+            true => t.serialize_field("radius", &radius)?,
+            false => t.skip_field("radius")?,
+        }
+        for v in vectors {
+            // An option, as an optional field was: RON (the lab's stored state) writes
+            // `Some(…)` for it, and reads it back only so.
+            t.serialize_field(v.name, &Some(&v.value.to_array()[..]))?;
+        }
+        t.end()
+    }
+}
 
-    /// The shape its fields name: a rect needs both half-edges and no radius, a disk a
-    /// radius and a normal, a tube a radius and a half axis.
-    fn try_from(f: LightFile) -> std::result::Result<Self, String> {
-        let shape = match (f.half_u, f.half_v) {
-            _ if f.half_axis.is_some() => tube_of(&f)?,
-            (None, None) => match f.normal {
-                None => Shape::of_radius(f.radius),
-                Some(_) if f.radius == 0.0 => {
-                    return Err("a disk light (a normal) needs a radius".into());
+impl<'de> Deserialize<'de> for Light {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        d.deserialize_struct("LightFile", fields(), LightVisitor)
+    }
+}
+
+/// A field's name, read as an identifier (RON's struct fields are; TOML's and JSON's keys
+/// are strings, which an identifier takes too).
+struct FieldName(String);
+
+impl<'de> Deserialize<'de> for FieldName {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct Name;
+        impl de::Visitor<'_> for Name {
+            type Value = FieldName;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a field name")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<FieldName, E> {
+                Ok(FieldName(v.to_string()))
+            }
+        }
+        d.deserialize_identifier(Name)
+    }
+}
+
+/// `Some(…)` or a bare list, of exactly three numbers (`lists::exactly_option`'s reading).
+#[derive(Deserialize)]
+#[serde(transparent)]
+struct Vector(#[serde(with = "exactly_option")] Option<[f64; 3]>);
+
+/// Exactly three numbers (`lists::exactly`'s reading).
+#[derive(Deserialize)]
+#[serde(transparent)]
+struct Triple(#[serde(with = "exactly")] [f64; 3]);
+
+/// Reads a light's table: every field once, none unknown (as `deny_unknown_fields`), and
+/// then its shape from the vectors it has (`shape_of`).
+struct LightVisitor;
+
+impl<'de> de::Visitor<'de> for LightVisitor {
+    type Value = Light;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a light's table")
+    }
+
+    fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> std::result::Result<Light, A::Error> {
+        let (mut position, mut color, mut intensity, mut range, mut radius) =
+            (None, None, None, None, None);
+        let mut vectors: Vec<(&'static str, DVec3)> = Vec::new();
+        while let Some(FieldName(key)) = map.next_key()? {
+            let Some(&name) = fields().iter().find(|&&f| f == key) else {
+                return Err(de::Error::unknown_field(&key, fields()));
+            };
+            let repeated = match name {
+                "position" => position.replace(map.next_value::<Triple>()?.0).is_some(),
+                "color" => color.replace(map.next_value::<Triple>()?.0).is_some(),
+                "intensity" => intensity.replace(map.next_value::<f64>()?).is_some(),
+                "range" => range.replace(map.next_value::<Option<f64>>()?).is_some(),
+                "radius" => radius.replace(map.next_value::<f64>()?).is_some(),
+                _ => {
+                    let repeated = vectors.iter().any(|(n, _)| *n == name);
+                    if let Some(v) = map.next_value::<Vector>()?.0 {
+                        vectors.push((name, DVec3::from(v)));
+                    }
+                    repeated
                 }
-                Some(n) => Shape::Disk {
-                    normal: DVec3::from(n),
-                    radius: f.radius,
-                },
-            },
-            (Some(_), Some(_)) if f.normal.is_some() => {
-                return Err(
-                    "a light has half_u and half_v (a rect) or a normal (a disk), not both".into(),
-                );
+            };
+            if repeated {
+                return Err(de::Error::duplicate_field(name));
             }
-            (Some(u), Some(v)) if f.radius == 0.0 => Shape::Rect {
-                half_u: DVec3::from(u),
-                half_v: DVec3::from(v),
-            },
-            (Some(_), Some(_)) => {
-                return Err(
-                    "a light has a radius (a sphere) or half_u and half_v (a rect), not both"
-                        .into(),
-                );
-            }
-            _ => return Err("a rect light needs both half_u and half_v".into()),
-        };
-        Ok(Self {
-            position: f.position,
-            color: f.color,
-            intensity: f.intensity,
-            range: f.range,
+        }
+        let radius = radius.unwrap_or(0.0);
+        let shape = shape_of(radius, &vectors).map_err(de::Error::custom)?;
+        Ok(Light {
+            position: position.ok_or_else(|| de::Error::missing_field("position"))?,
+            color: color.unwrap_or_else(white),
+            intensity: intensity.ok_or_else(|| de::Error::missing_field("intensity"))?,
+            range: range.flatten(),
             shape,
         })
     }
 }
 
-/// A file's tube: a half axis and a radius, and neither a rect's half-edges nor a normal.
-fn tube_of(f: &LightFile) -> std::result::Result<Shape, String> {
-    if f.half_u.is_some() || f.half_v.is_some() || f.normal.is_some() {
-        return Err("a light has a half_axis (a tube), half_u and half_v (a rect) or a normal (a disk), not two of them".into());
+/// The shape a light's fields name: the one shape whose vectors it has, all of them, with a
+/// radius where that shape has one and none where it has not; a point or a sphere by its
+/// radius where it has no vectors.
+fn shape_of(radius: f64, given: &[(&'static str, DVec3)]) -> std::result::Result<Shape, String> {
+    let has = |f: &VectorField| given.iter().any(|(n, _)| *n == f.name);
+    let named: Vec<ShapeKind> = ShapeKind::ALL
+        .into_iter()
+        .filter(|k| k.vector_fields().iter().any(has))
+        .collect();
+    let what = |k: ShapeKind| {
+        let names: Vec<_> = k.vector_fields().iter().map(|f| f.name).collect();
+        format!("{} ({})", names.join(" and "), k.light_noun())
+    };
+    let kind = match named[..] {
+        [] => return Ok(Shape::of_radius(radius)),
+        [kind] => kind,
+        [a, b] => return Err(format!("a light has {} or {}, not both", what(a), what(b))),
+        _ => {
+            let all: Vec<_> = named.iter().map(|&k| what(k)).collect();
+            return Err(format!(
+                "a light has {}: one shape's, not several",
+                all.join(", ")
+            ));
+        }
+    };
+    let fields = kind.vector_fields();
+    let names: Vec<_> = fields.iter().map(|f| f.name).collect();
+    if !fields.iter().all(has) {
+        let both = if names.len() == 2 { "both " } else { "all of " };
+        return Err(format!(
+            "{} needs {both}{}",
+            kind.light_noun(),
+            names.join(" and ")
+        ));
     }
-    match f.half_axis {
-        Some(_) if f.radius == 0.0 => Err("a tube light (a half_axis) needs a radius".into()),
-        Some(h) => Ok(Shape::Tube {
-            half_axis: DVec3::from(h),
-            radius: f.radius,
-        }),
-        None => Ok(Shape::of_radius(f.radius)),
-    }
-}
-
-impl From<Light> for LightFile {
-    fn from(l: Light) -> Self {
-        Self {
-            position: l.position,
-            color: l.color,
-            intensity: l.intensity,
-            range: l.range,
-            radius: l.shape.radius(),
-            half_u: l.shape.half_edges().map(|(u, _)| u.to_array()),
-            half_v: l.shape.half_edges().map(|(_, v)| v.to_array()),
-            normal: l.shape.normal().map(|n| n.to_array()),
-            half_axis: l.shape.half_axis().map(|h| h.to_array()),
+    match (kind.has_radius(), radius == 0.0) {
+        (true, true) => Err(format!(
+            "{} ({}) needs a radius",
+            kind.light_noun(),
+            names.join(" and ")
+        )),
+        (false, false) => Err(format!(
+            "a light has a radius (a sphere) or {}, not both",
+            what(kind)
+        )),
+        _ => {
+            let value = |f: &VectorField| given.iter().find(|(n, _)| *n == f.name).map(|v| v.1);
+            let vectors: Vec<DVec3> = fields.iter().filter_map(value).collect();
+            Ok(Shape::of_dimensions(kind, radius, &vectors))
         }
     }
 }
@@ -163,10 +231,7 @@ impl Light {
     }
 }
 
-/// The smallest radius of a light with a size: a tenth of a millimetre in metres, the
-/// precision a scene is saved to (`Scene::rounded_for_saving`). Its radiance `I/(π r²)` stays
-/// within f32 (≤ 1e6/(π·1e-8) ≈ 3e13) for every intensity `validate` allows.
-pub const MIN_RADIUS: f64 = 1e-4;
+pub use crate::light::MIN_RADIUS;
 
 /// Lights made by `generate_lights`, added to the listed ones when the scene loads.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -25,16 +25,9 @@ pub mod exactly {
     }
 }
 
-/// `exactly` for an optional list.
+/// `exactly` for an optional list, read (a light writes its vectors itself, `scene::Light`).
 pub mod exactly_option {
-    use serde::{Deserialize, Deserializer, Serialize, Serializer};
-
-    pub fn serialize<S: Serializer, const N: usize>(
-        v: &Option<[f64; N]>,
-        s: S,
-    ) -> Result<S::Ok, S::Error> {
-        v.as_ref().map(<[f64; N]>::as_slice).serialize(s)
-    }
+    use serde::{Deserialize, Deserializer};
 
     pub fn deserialize<'de, D: Deserializer<'de>, const N: usize>(
         d: D,

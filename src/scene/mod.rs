@@ -9,7 +9,10 @@ mod table_presets;
 
 use std::path::Path;
 
-use crate::light::Shape;
+use crate::light::ShapeKind;
+pub use crate::light::disk::PRESETS as DISK_PRESETS;
+pub use crate::light::rect::PRESETS as RECT_PRESETS;
+pub use crate::light::sphere::PRESETS as SPHERE_PRESETS;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
@@ -42,59 +45,6 @@ pub const PRESETS: [(&str, &str); 4] = [
     ),
 ];
 
-/// The failure cases of lights with a size (docs/design.md §1.10), shipped beside the
-/// clipping panel's: a sphere cut by the horizon, one touching the plane, discs seen edge-on,
-/// and ltc_code's black spots.
-pub const SPHERE_PRESETS: [(&str, &str); 4] = [
-    (
-        "sphere-horizon",
-        include_str!("../../assets/scenes/sphere-horizon.toml"),
-    ),
-    (
-        "sphere-touching",
-        include_str!("../../assets/scenes/sphere-touching.toml"),
-    ),
-    (
-        "sphere-edge-on",
-        include_str!("../../assets/scenes/sphere-edge-on.toml"),
-    ),
-    (
-        "sphere-black-spots",
-        include_str!("../../assets/scenes/sphere-black-spots.toml"),
-    ),
-];
-
-/// The failure cases of rect lights (docs/design.md §1.11): rects across the horizon, edge-on
-/// and facing away; touching the surface, behind it and tiny; and one filling the sky.
-pub const RECT_PRESETS: [(&str, &str); 3] = [
-    (
-        "rect-horizon",
-        include_str!("../../assets/scenes/rect-horizon.toml"),
-    ),
-    (
-        "rect-limits",
-        include_str!("../../assets/scenes/rect-limits.toml"),
-    ),
-    (
-        "rect-ceiling",
-        include_str!("../../assets/scenes/rect-ceiling.toml"),
-    ),
-];
-
-/// The failure cases of disk lights (docs/design.md §1.12): across the horizon, behind the
-/// surface, edge-on, filling the sky and tiny, in one scene.
-pub const DISK_PRESETS: [(&str, &str); 1] = [(
-    "disk-limits",
-    include_str!("../../assets/scenes/disk-limits.toml"),
-)];
-
-/// The tube's failure presets (docs/design.md §1.15): across the horizon, standing on the
-/// plane (end-on), long and thin, tiny and far.
-pub const TUBE_PRESETS: [(&str, &str); 1] = [(
-    "tube-limits",
-    include_str!("../../assets/scenes/tube-limits.toml"),
-)];
-
 /// The anisotropic presets (docs/design.md §1.13): brushed metal under a rect and under
 /// spheres.
 pub const ANISO_PRESETS: [(&str, &str); 2] = [
@@ -108,27 +58,18 @@ pub const ANISO_PRESETS: [(&str, &str); 2] = [
     ),
 ];
 
-/// The failure presets of lights of `kind` (none for points: theirs are `PRESETS`).
-pub fn shape_presets(kind: crate::light::ShapeKind) -> &'static [(&'static str, &'static str)] {
-    use crate::light::ShapeKind;
-    match kind {
-        ShapeKind::Point => &[],
-        ShapeKind::Sphere => &SPHERE_PRESETS,
-        ShapeKind::Rect => &RECT_PRESETS,
-        ShapeKind::Disk => &DISK_PRESETS,
-        ShapeKind::Tube => &TUBE_PRESETS,
-    }
+/// The failure presets of lights of `kind`, its module's (`ShapeKind::presets`; none for
+/// points: theirs are `PRESETS`).
+pub fn shape_presets(kind: ShapeKind) -> &'static [(&'static str, &'static str)] {
+    kind.presets()
 }
 
-/// Every shipped preset, its name and its text (`PRESETS`, `SPHERE_PRESETS`,
-/// `RECT_PRESETS`, `DISK_PRESETS`, `TUBE_PRESETS`, `ANISO_PRESETS`, `TABLE_PRESETS`).
+/// Every shipped preset, its name and its text (`PRESETS`, each shape's, `ANISO_PRESETS`,
+/// `TABLE_PRESETS`).
 pub fn shipped_presets() -> impl Iterator<Item = &'static (&'static str, &'static str)> {
     PRESETS
         .iter()
-        .chain(&SPHERE_PRESETS)
-        .chain(&RECT_PRESETS)
-        .chain(&DISK_PRESETS)
-        .chain(&TUBE_PRESETS)
+        .chain(ShapeKind::sized().flat_map(ShapeKind::presets))
         .chain(&ANISO_PRESETS)
         .chain(&TABLE_PRESETS)
 }
@@ -296,21 +237,9 @@ impl Scene {
             l.color = l.color.map(|x| decimals(x, 3));
             l.intensity = significant(l.intensity);
             l.range = l.range.map(significant);
-            l.shape = match l.shape {
-                Shape::Rect { half_u, half_v } => Shape::Rect {
-                    half_u: half_u.to_array().map(significant).into(),
-                    half_v: half_v.to_array().map(significant).into(),
-                },
-                Shape::Disk { normal, radius } => Shape::Disk {
-                    normal: normal.to_array().map(significant).into(),
-                    radius: significant(radius),
-                },
-                Shape::Tube { half_axis, radius } => Shape::Tube {
-                    half_axis: half_axis.to_array().map(significant).into(),
-                    radius: significant(radius),
-                },
-                shape => Shape::of_radius(significant(shape.radius())),
-            };
+            l.shape = l
+                .shape
+                .map_dimensions(|_, v| v.to_array().map(significant).into(), significant);
         }
         out
     }

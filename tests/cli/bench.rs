@@ -30,6 +30,8 @@ fn bench_prints_the_table_and_writes_the_csv() {
         "0.05",
         "--rect-half-edge",
         "0.04",
+        "--size-for",
+        "tube=0.03",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = String::from_utf8(o.stdout).unwrap();
@@ -56,8 +58,9 @@ fn bench_prints_the_table_and_writes_the_csv() {
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     // Every method with eq30, ltc and ltc-fast with exact-band too, the four sphere methods
-    // on lights of radius 0.05 and the five rect methods on rects of half-edge 0.04.
-    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 } + 2 + 4 + 5;
+    // on lights of radius 0.05, the five rect methods on rects of half-edge 0.04 and the five
+    // tube methods on tubes of radius 0.03 (`--size-for`, beside its aliases).
+    let methods = if gpu().unwrap().ctx.has_f16() { 6 } else { 4 } + 2 + 4 + 5 + 5;
     assert_eq!(rows.len(), 2 * methods, "every method × 2 light counts");
     let sized = |shape: &str| -> Vec<(&str, &str)> {
         rows.iter()
@@ -72,6 +75,10 @@ fn bench_prints_the_table_and_writes_the_csv() {
     assert_eq!(rects.len(), 10, "{rects:?}");
     assert!(rects.iter().all(|&(_, h)| h == "0.04"), "{rects:?}");
     assert!(rects.iter().any(|&(m, _)| m == "ltc-polygon"), "{rects:?}");
+    let tubes = sized("tube");
+    assert_eq!(tubes.len(), 10, "{tubes:?}");
+    assert!(tubes.iter().all(|&(_, r)| r == "0.03"), "{tubes:?}");
+    assert!(tubes.iter().any(|&(m, _)| m == "ltc-line"), "{tubes:?}");
     assert!(
         table.contains("| rect ltc-polygon (h = 0.04) | 20 | 32×16 | on | 2 |"),
         "{table}"
@@ -117,6 +124,28 @@ fn bench_refuses_bad_arguments() {
         let flag = format!("--rect-half-edge={r}");
         assert_refused(&ltc_lab(&["bench", &flag]), "--rect-half-edge");
     }
+    // `--size-for SHAPE=SIZE`: a shape with a size, a size as its aliases take, one per shape.
+    for bad in [
+        "tube=0",
+        "tube=nan",
+        "tube=1e7",
+        "tube=wide",
+        "tube",
+        "cone=0.1",
+        "point=0.1",
+    ] {
+        assert_refused(&ltc_lab(&["bench", "--size-for", bad]), "--size-for");
+    }
+    assert_refused(
+        &ltc_lab(&[
+            "bench",
+            "--size-for",
+            "sphere=0.1",
+            "--sphere-radius",
+            "0.2",
+        ]),
+        "--sphere-radius",
+    );
     for y in ["0", "2", "nan"] {
         let flag = format!("--alpha-y={y}");
         assert_refused(&ltc_lab(&["bench", &flag]), "--alpha-y");

@@ -107,14 +107,15 @@ fn study_writes_every_variant_and_the_pareto_chart() {
     );
 }
 
-/// With `--rect-half-edge` and `--disk-radius` every light is also a rect, then a disk, by
-/// each of the shape's methods against the shape's own exact image: its `exact` variant is
-/// the reference (error 0), the others differ from it, and the point limit by far the most
-/// on rects this close to the plane (the lights sit 0.05–0.6 above it, the rects 0.1 wide).
-/// Each shape's failure preset (rect-horizon, disk-limits) is studied beside them, as given;
+/// With `--rect-half-edge`, `--disk-radius` and `--size-for tube=R` every light is also a
+/// rect, then a disk, then a tube, by each of the shape's methods against the shape's own
+/// exact image: its `exact` variant is the reference (error 0), the others differ from it, and
+/// the point limit by far the most on rects this close to the plane (the lights sit 0.05–0.6
+/// above it, the rects 0.1 wide). Each shape's failure preset (rect-horizon, disk-limits,
+/// tube-limits) is studied beside them, as given;
 /// `--encodings` adds a variant per encoding of the table, shaded as `ltc`.
 #[test]
-fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
+fn study_measures_each_sized_method_against_its_exact_image() {
     if gpu().is_none() {
         return;
     }
@@ -123,6 +124,7 @@ fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
     let mut args = vec!["study", "--out", dir.to_str().unwrap(), "--horizon", "eq30"];
     args.extend(SMALL);
     args.extend(["--rect-half-edge", "0.05", "--disk-radius", "0.05"]);
+    args.extend(["--size-for", "tube=0.02"]);
     args.extend(["--encodings", "f32,unorm8-8"]);
     let o = ltc_lab(&args);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -130,7 +132,8 @@ fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
     let sized: Vec<&str> = rows
         .iter()
         .map(|r| r.variant.as_str())
-        .filter(|v| (v.starts_with("rect-") || v.starts_with("disk-")) && !v.contains('@'))
+        .filter(|v| ["rect-", "disk-", "tube-"].iter().any(|s| v.starts_with(s)))
+        .filter(|v| !v.contains('@'))
         .collect();
     assert_eq!(
         sized,
@@ -143,11 +146,17 @@ fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
             "disk-exact",
             "disk-ltc-disk",
             "disk-ltc-point",
+            "tube-exact",
+            "tube-ltc-line",
+            "tube-hdrp-tube",
+            "tube-representative-point",
+            "tube-ltc-point",
         ]
     );
     let err = |v: &str| rows.iter().find(|r| r.variant == v).unwrap().rel_rmse;
     assert_eq!(err("rect-exact"), 0.0);
     assert_eq!(err("disk-exact"), 0.0);
+    assert_eq!(err("tube-exact"), 0.0);
     for v in sized.iter().filter(|v| !v.ends_with("-exact")) {
         assert!(err(v).is_finite() && err(v) > 0.0, "{v}: {}", err(v));
     }
@@ -177,6 +186,15 @@ fn study_measures_each_rect_and_disk_method_against_its_exact_image() {
             ][..],
         ),
         ("disk-limits", &["disk-ltc-disk", "disk-ltc-point"][..]),
+        (
+            "tube-limits",
+            &[
+                "tube-ltc-line",
+                "tube-hdrp-tube",
+                "tube-representative-point",
+                "tube-ltc-point",
+            ][..],
+        ),
     ] {
         assert_eq!(err(&format!("exact@{preset}")), 0.0);
         for m in methods {

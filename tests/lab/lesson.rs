@@ -426,7 +426,7 @@ fn every_step_opens_with_its_words_at_the_top() {
 /// The polygon lesson (`#lesson=polygon`) walked by a student at 1280×720: every step arrives
 /// with its view, panels and words in view, and its tasks from the fourth tick as the student
 /// does them — the leak shown by unticking clip case 1, a proxy picked for the rects, a glossy
-/// surface under the disks.
+/// surface under the disks and under the tubes.
 #[test]
 fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
     let lesson = Lesson::shipped("polygon").expect("the shipped lesson");
@@ -440,15 +440,15 @@ fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
         settle(&mut h);
         check_arrival(&h, &lesson, k);
         // Every step's light is a rect, shaded by the paper's polygon against the exact one;
-        // the last step's are disks.
+        // the sixth step's are disks, the seventh's tubes (a line given a width).
         let lab_ = h.state().lab();
-        let last = k + 1 == lesson.steps.len();
+        let shape = match k {
+            5 => ltc_lab::light::ShapeKind::Disk,
+            6 => ltc_lab::light::ShapeKind::Tube,
+            _ => ltc_lab::light::ShapeKind::Rect,
+        };
         assert!(
-            lab_.lights().list.iter().all(|l| if last {
-                matches!(l.shape, ltc_lab::light::Shape::Disk { .. })
-            } else {
-                matches!(l.shape, ltc_lab::light::Shape::Rect { .. })
-            }),
+            lab_.lights().list.iter().all(|l| l.shape.kind() == shape),
             "step {}",
             k + 1
         );
@@ -503,7 +503,7 @@ fn the_polygon_lesson_walks_to_the_leak_and_the_proxy() {
             h.run_steps(2);
             assert_eq!(at(&h), (k + 1, true), "a proxy picked");
         }
-        if k == 5 {
+        if k == 5 || k == 6 {
             slide(&mut h, "α", 0.05);
             h.run_steps(2);
             assert_eq!(at(&h), (k + 1, true), "the surface made glossy");

@@ -7,6 +7,7 @@ mod common;
 
 mod disk_light;
 mod disk_render;
+mod light_file;
 mod rect_light;
 mod rect_render;
 mod render_rule;

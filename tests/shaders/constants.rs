@@ -82,7 +82,6 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
     };
     use ltc_lab::gpu::plane::{ViewConstant, method_constant};
     use ltc_lab::gpu::scene::TILE_SIDE;
-    use ltc_lab::light::Shape;
     use ltc_lab::light::sphere::SphereMethod;
     use ltc_lab::ltc::Normalization;
     use ltc_lab::ltc::remedy::HorizonRule;
@@ -106,25 +105,7 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
             .map(horizon_constant),
         )
         .chain(Normalization::ALL.map(normalization_constant))
-        .chain(
-            [
-                Shape::Point,
-                Shape::Sphere { radius: 1.0 },
-                Shape::Rect {
-                    half_u: glam::DVec3::X,
-                    half_v: glam::DVec3::Y,
-                },
-                Shape::Disk {
-                    normal: glam::DVec3::Z,
-                    radius: 1.0,
-                },
-                Shape::Tube {
-                    half_axis: glam::DVec3::X,
-                    radius: 1.0,
-                },
-            ]
-            .map(ltc_lab::gpu::scene::shape_constant),
-        )
+        .chain(ltc_lab::light::ShapeKind::ALL.map(ltc_lab::gpu::light::shape_constant))
         .chain([
             (CLIP_HORIZON, "CLIP_HORIZON"),
             (CLIP_TRANSFORMED, "CLIP_TRANSFORMED"),

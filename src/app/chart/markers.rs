@@ -4,10 +4,8 @@
 
 use egui::Color32;
 
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
-use crate::light::sphere::SphereMethod;
-use crate::render::Method;
+use crate::light::ShapeKind;
+use crate::render::{Method, ShapeMethod};
 
 /// A legend entry: the series' name, colour and marker (`None`: a dashed line).
 pub(super) type Entry = (String, Color32, Option<egui_plot::MarkerShape>);
@@ -114,33 +112,28 @@ pub(super) fn point_marker(
     sized_marker(label).unwrap_or((method_colour(method), variant_shape(label, method)))
 }
 
+/// The colours of the shapes with a size' methods, in `ShapeKind::sized`'s order (light blue,
+/// amber, pink, green, then again), apart from each other and from the point methods'
+/// `PALETTE`.
+const SHAPE_COLOURS: [Color32; 4] = [
+    Color32::from_rgb(150, 200, 255),
+    Color32::from_rgb(250, 210, 80),
+    Color32::from_rgb(255, 120, 180),
+    Color32::from_rgb(140, 230, 140),
+];
+
 /// The colour of a light shape's methods and each method's marker, by its place among the
 /// shape's methods; `None` for a label that names no shape's method.
 pub(super) fn sized_marker(label: &str) -> Option<(Color32, egui_plot::MarkerShape)> {
     use egui_plot::MarkerShape::*;
     const SHAPES: [egui_plot::MarkerShape; 5] = [Circle, Diamond, Square, Cross, Up];
     let (family, method) = label.split_once([' ', '-'])?;
-    let (colour, names): (Color32, Vec<&str>) = match family {
-        "sphere" => (
-            Color32::from_rgb(150, 200, 255),
-            SphereMethod::ALL.map(SphereMethod::name).to_vec(),
-        ),
-        "rect" => (
-            Color32::from_rgb(250, 210, 80),
-            RectMethod::ALL.map(RectMethod::name).to_vec(),
-        ),
-        "disk" => (
-            Color32::from_rgb(255, 120, 180),
-            DiskMethod::ALL.map(DiskMethod::name).to_vec(),
-        ),
-        "tube" => (
-            Color32::from_rgb(140, 230, 140),
-            crate::light::tube::TubeMethod::ALL
-                .map(crate::light::tube::TubeMethod::name)
-                .to_vec(),
-        ),
-        _ => return None,
-    };
+    let kind = ShapeKind::from_name(family).filter(|&k| k != ShapeKind::Point)?;
+    let names: Vec<&str> = ShapeMethod::all(kind)
+        .into_iter()
+        .map(ShapeMethod::name)
+        .collect();
+    let colour = SHAPE_COLOURS[(kind.index() - 1) % SHAPE_COLOURS.len()];
     let k = names.iter().position(|n| *n == method)?;
     Some((colour, SHAPES[k % SHAPES.len()]))
 }

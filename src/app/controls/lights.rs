@@ -1,14 +1,12 @@
 //! The side panel's lights: how many, where, how bright, each sized shape's methods and
 //! fields, and the presets.
 
-use glam::DVec3;
-
 use crate::app::lab::parts::{RADIUS_RANGE, RANGE_RANGE};
 use crate::app::lab::{Forms, Lab, Overrides, ShapeForms};
 use crate::app::ui::widgets::explain;
-use crate::light::{Shape, ShapeKind};
+use crate::light::ShapeKind;
 use crate::render::ShapeMethod;
-use crate::scene::{Light, MIN_RADIUS, preset, shape_presets};
+use crate::scene::{Light, preset, shape_presets};
 
 use super::MAX_LIGHT_SLIDER;
 
@@ -161,97 +159,24 @@ fn light_position(ui: &mut egui::Ui, k: usize, light: &mut Light, half_size: f64
                 .labelled_by(label.id)
                 .on_hover_text(hover);
         }
-        if let Shape::Rect { half_u, half_v } = &mut light.shape {
-            rect_size(ui, half_u, half_v);
-            return;
-        }
-        if let Shape::Disk { radius, .. } = &mut light.shape {
-            // A disk keeps its size: its radius from the scene's least, never 0.
-            let label = ui.label("r");
-            ui.add(egui::DragValue::new(radius).speed(0.004).range(RADIUS_RANGE[0]..=RADIUS_RANGE[1]).max_decimals(4))
-                .labelled_by(label.id)
-                .on_hover_text("The disk's radius, 0.0001 to 1 (a value typed beyond is brought into that range): it \
-                    keeps its normal and its intensity, so a larger disk lights a distant point alike and is \
-                    dimmer per area");
-            return;
-        }
-        if let Shape::Tube { half_axis, radius } = &mut light.shape {
-            tube_size(ui, half_axis, radius);
-            return;
-        }
-        // The shape by its radius: 0 a point, more a sphere.
-        let label = ui.label("r");
-        let mut radius = light.shape.radius();
-        ui.add(egui::DragValue::new(&mut radius).speed(0.001).range(0.0..=RADIUS_RANGE[1]).max_decimals(4))
+        // The shape's own sizes (`Shape::sizes`), each written back where it is dragged.
+        for size in light.shape.sizes() {
+            let label = ui.label(size.label);
+            let was = (size.get)(light.shape);
+            let mut value = was;
+            ui.add(
+                egui::DragValue::new(&mut value)
+                    .speed(size.speed)
+                    .range(size.range[0]..=size.range[1])
+                    .max_decimals(4),
+            )
             .labelled_by(label.id)
-            .on_hover_text("Radius: 0 is the paper's point light; from 0.0001 a sphere, shaded by each side's method for lights with a size");
-        light.shape = Shape::of_radius(radius);
-    });
-}
-
-/// A tube's length (its segment's, 2 |half_axis|, along the axis it has) and radius.
-fn tube_size(ui: &mut egui::Ui, half_axis: &mut DVec3, radius: &mut f64) {
-    let label = ui.label("len");
-    let axis = half_axis.try_normalize().unwrap_or(DVec3::X);
-    let mut full = 2.0 * half_axis.length();
-    // From 0 (a ball) to 4, the default plane's side.
-    ui.add(
-        egui::DragValue::new(&mut full)
-            .speed(0.005)
-            .range(0.0..=4.0)
-            .max_decimals(4),
-    )
-    .labelled_by(label.id)
-    .on_hover_text(TUBE_LENGTH_HOVER);
-    *half_axis = axis * (0.5 * full);
-    let label = ui.label("r");
-    ui.add(
-        egui::DragValue::new(radius)
-            .speed(0.002)
-            .range(RADIUS_RANGE[0]..=RADIUS_RANGE[1])
-            .max_decimals(4),
-    )
-    .labelled_by(label.id)
-    .on_hover_text(TUBE_RADIUS_HOVER);
-}
-
-const TUBE_LENGTH_HOVER: &str = "Length: the tube's segment, end to end of its axis (0 is a \
-    ball); the capsule adds a half ball of radius r at each end";
-const TUBE_RADIUS_HOVER: &str = "The tube's radius, 0.0001 to 1: with its length it keeps its \
-    intensity, so a larger tube lights a distant point alike and is dimmer per area";
-
-/// A rect's width and height (its edges' full lengths), each dragged along its own
-/// direction: the orientation stays.
-fn rect_size(ui: &mut egui::Ui, half_u: &mut DVec3, half_v: &mut DVec3) {
-    for (name, edge, hover) in [
-        (
-            "w",
-            half_u,
-            "Width: the length of the rect's first edge (2 |half_u|)",
-        ),
-        (
-            "h",
-            half_v,
-            "Height: the length of its second edge (2 |half_v|)",
-        ),
-    ] {
-        let label = ui.label(name);
-        let length = edge.length();
-        let mut full = 2.0 * length;
-        // From 2·MIN_RADIUS, so that a square keeps the scene's least area, to 4 (the
-        // default plane's side).
-        ui.add(
-            egui::DragValue::new(&mut full)
-                .speed(0.005)
-                .range(2.0 * MIN_RADIUS..=4.0)
-                .max_decimals(4),
-        )
-        .labelled_by(label.id)
-        .on_hover_text(hover);
-        if length > 0.0 && full != 2.0 * length {
-            *edge *= 0.5 * full / length;
+            .on_hover_text(size.hover);
+            if value != was {
+                light.shape = (size.set)(light.shape, value);
+            }
         }
-    }
+    });
 }
 
 /// A button per preset of `presets`, each loading its scene, in a row of their own.

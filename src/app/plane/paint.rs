@@ -176,8 +176,8 @@ pub fn markers(lab: &Lab, placed: Placed) -> Vec<(usize, Pos2)> {
 }
 
 /// The outline of each light with a size as the camera sees it (the sphere's silhouette
-/// about its marker; a rect's four edges, with a tick along its normal toward the side it
-/// lights): where its size is on the plane.
+/// about its marker; the other shapes' own, `Shape::outline`, such as a rect's four edges
+/// with a tick along its normal toward the side it lights): where its size is on the plane.
 pub fn paint_outlines(
     painter: &egui::Painter,
     lab: &Lab,
@@ -187,7 +187,7 @@ pub fn paint_outlines(
     // The lights' own list and the stage alone: no copy of every light each frame.
     let scene = lab.stage_scene();
     let (width, height) = placed.size;
-    let (_, _, _, up) = scene.camera_basis();
+    let (eye, _, _, up) = scene.camera_basis();
     let scale = placed.rect.width() / width as f32;
     let stroke = egui::Stroke::new(1.0, Color32::from_white_alpha(160));
     for (k, p) in markers {
@@ -210,96 +210,25 @@ pub fn paint_outlines(
                 let r = ((a.0 - b.0).hypot(a.1 - b.1) as f32 * scale).min(placed.rect.width());
                 painter.circle_stroke(*p, r, stroke);
             }
-            Shape::Rect { half_u, half_v } => {
-                let rect = crate::light::rect::Rect {
-                    centre,
-                    u: half_u,
-                    v: half_v,
-                };
-                // A corner behind the camera has no place on the image: no outline.
-                let corners: Option<Vec<Pos2>> = rect
-                    .corners()
+            shape => {
+                // A point behind the camera has no place on the image: no outline.
+                let lines: Option<Vec<Vec<Pos2>>> = shape
+                    .outline(centre, eye)
                     .iter()
-                    .map(|&c| scene.project(c, width, height).map(|q| placed.to_screen(q)))
-                    .collect();
-                let Some(mut corners) = corners else {
-                    continue;
-                };
-                corners.push(corners[0]);
-                painter.add(egui::Shape::line(corners, stroke));
-                let reach = 0.5 * half_u.length().min(half_v.length());
-                let tip = centre + rect.normal().normalize() * reach;
-                if let Some(t) = scene.project(tip, width, height) {
-                    painter.line_segment([*p, placed.to_screen(t)], stroke);
-                }
-            }
-            Shape::Disk { normal, radius } => {
-                let normal = normal.normalize();
-                let (e1, e2) = normal.any_orthonormal_pair();
-                // 48 chords: under a pixel from the circle for a disk 200 pixels across.
-                let rim: Option<Vec<Pos2>> = (0..=48)
-                    .map(|k| {
-                        let t = std::f64::consts::TAU * k as f64 / 48.0;
-                        let c = centre + (e1 * t.cos() + e2 * t.sin()) * radius;
-                        scene.project(c, width, height).map(|q| placed.to_screen(q))
+                    .map(|line| {
+                        line.iter()
+                            .map(|&c| scene.project(c, width, height).map(|q| placed.to_screen(q)))
+                            .collect()
                     })
                     .collect();
-                let Some(rim) = rim else {
-                    continue;
-                };
-                painter.add(egui::Shape::line(rim, stroke));
-                if let Some(t) = scene.project(centre + normal * (0.5 * radius), width, height) {
-                    painter.line_segment([*p, placed.to_screen(t)], stroke);
+                for line in lines.unwrap_or_default() {
+                    match line[..] {
+                        [a, b] => painter.line_segment([a, b], stroke),
+                        _ => painter.add(egui::Shape::line(line, stroke)),
+                    };
                 }
             }
-            Shape::Tube { half_axis, radius } => {
-                paint_tube(
-                    painter,
-                    &placed,
-                    (&scene, stroke),
-                    centre,
-                    (half_axis, radius),
-                );
-            }
         }
-    }
-}
-
-/// A tube's outline: its axis and, each side of it across the view, the segment offset by the
-/// radius (the capsule's silhouette where it is seen broadside), closed by the two ends.
-fn paint_tube(
-    painter: &egui::Painter,
-    placed: &Placed,
-    (scene, stroke): (&crate::scene::Scene, egui::Stroke),
-    centre: DVec3,
-    (half_axis, radius): (DVec3, f64),
-) {
-    let (width, height) = placed.size;
-    let (eye, _, _, _) = scene.camera_basis();
-    let axis = half_axis.try_normalize().unwrap_or(DVec3::X);
-    let across = axis
-        .cross(centre - eye)
-        .try_normalize()
-        .unwrap_or_else(|| axis.any_orthonormal_vector())
-        * radius;
-    let ends = [centre - half_axis, centre + half_axis];
-    let corners: Option<Vec<Pos2>> = [
-        ends[0] + across,
-        ends[1] + across,
-        ends[1] - across,
-        ends[0] - across,
-        ends[0] + across,
-    ]
-    .iter()
-    .map(|&c| scene.project(c, width, height).map(|q| placed.to_screen(q)))
-    .collect();
-    let axis_ends: Option<Vec<Pos2>> = ends
-        .iter()
-        .map(|&c| scene.project(c, width, height).map(|q| placed.to_screen(q)))
-        .collect();
-    if let (Some(corners), Some(axis_ends)) = (corners, axis_ends) {
-        painter.add(egui::Shape::line(corners, stroke));
-        painter.line_segment([axis_ends[0], axis_ends[1]], stroke);
     }
 }
 

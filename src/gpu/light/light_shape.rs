@@ -2,7 +2,6 @@
 //! shape (docs/design.md §5.12) — the shapes' method codes the pipelines pass (`SPHERE_A`,
 //! `RECT_A`, `DISK_A`… in `gpu::plane::compile`), here with their values and names there.
 
-use crate::light::ShapeKind;
 use crate::light::disk::DiskMethod;
 use crate::light::rect::RectMethod;
 use crate::light::sphere::SphereMethod;
@@ -38,27 +37,4 @@ pub fn disk_constant(m: DiskMethod) -> (u32, &'static str) {
         DiskMethod::LtcDisk => (1, "DISK_LTC_DISK"),
         DiskMethod::LtcPoint => (2, "DISK_LTC_POINT"),
     }
-}
-
-/// The override constants of a shape with a size in light_shape.wgsl: the flag that some
-/// light has it, and A's and B's method for it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ShapeOverrides {
-    /// `None` for the sphere, whose arm `SIZED` alone guards (the shape every light with a
-    /// size once was).
-    pub present: Option<&'static str>,
-    pub a: &'static str,
-    pub b: &'static str,
-}
-
-/// `kind`'s override constants (a point has the pipeline's `METHOD_A` and `METHOD_B`).
-pub fn overrides(kind: ShapeKind) -> ShapeOverrides {
-    let (present, a, b) = match kind {
-        ShapeKind::Point => (None, "METHOD_A", "METHOD_B"),
-        ShapeKind::Sphere => (None, "SPHERE_A", "SPHERE_B"),
-        ShapeKind::Rect => (Some("RECTS"), "RECT_A", "RECT_B"),
-        ShapeKind::Disk => (Some("DISKS"), "DISK_A", "DISK_B"),
-        ShapeKind::Tube => (Some("TUBES"), "TUBE_A", "TUBE_B"),
-    };
-    ShapeOverrides { present, a, b }
 }

@@ -3,6 +3,12 @@
 //! renders' exact rule they share (`polar`, `boundary` and `fan`, twins of `crate::light`'s) and the
 //! dispatch of a light to its shape's method (`light_shape`). `gpu` re-exports them, so their
 //! paths are `gpu::sphere_light` and so on.
+//!
+//! Here too is what the GPU side keys by shape, one arm per shape in each, so that a new
+//! shape's GPU code is its own modules plus these arms (docs/design.md §5.12): its shader
+//! files (`sources`), its code and its second element in the light buffer (`shape_constant`,
+//! `second_element`), its methods' codes (`method_constant`) and its override constants
+//! (`overrides`).
 
 pub mod boundary;
 pub mod disk_light;
@@ -13,6 +19,11 @@ pub mod rect_light;
 pub mod sphere_light;
 pub mod tube_band;
 pub mod tube_light;
+
+use glam::Vec3;
+
+use crate::light::{Shape, ShapeKind};
+use crate::render::ShapeMethod;
 
 /// The lights' shaders as the plane shader composes them: the shapes' files and the rule
 /// they share (which reads their precise trigonometry and the rect's `Polygon`), after
@@ -29,4 +40,73 @@ pub fn sources() -> String {
         tube_band::SOURCE,
     ]
     .join("\n")
+}
+
+/// `SHAPE_*` of the shaders (scene.wgsl's for a point and a sphere, light_shape.wgsl's for
+/// the shapes with a second element): its value and its name there.
+pub fn shape_constant(kind: ShapeKind) -> (u32, &'static str) {
+    match kind {
+        ShapeKind::Point => (0, "SHAPE_POINT"),
+        ShapeKind::Sphere => (1, "SHAPE_SPHERE"),
+        ShapeKind::Rect => (2, "SHAPE_RECT"),
+        ShapeKind::Disk => (3, "SHAPE_DISK"),
+        ShapeKind::Tube => (4, "SHAPE_TUBE"),
+    }
+}
+
+/// The light buffer's second element for a light of `shape` (`gpu::scene::light_elements`),
+/// as its `position_range` and `intensity`: the dimensions its shader reads (a rect's
+/// half-edges; a disk's unit normal and radius; a tube's half axis and radius), and in the
+/// last w the shape's code (`shape_constant`), which scene.wgsl's `light_shape` reads back.
+/// `None` for a point and a sphere, whose one element holds their radius.
+pub fn second_element(shape: Shape) -> Option<[[f32; 4]; 2]> {
+    let (first, second) = match shape {
+        Shape::Point | Shape::Sphere { .. } => return None,
+        Shape::Rect { half_u, half_v } => (half_u.as_vec3().extend(0.0), half_v.as_vec3()),
+        Shape::Disk { normal, radius } => (
+            normal.normalize().as_vec3().extend(radius as f32),
+            Vec3::ZERO,
+        ),
+        Shape::Tube { half_axis, radius } => {
+            (half_axis.as_vec3().extend(radius as f32), Vec3::ZERO)
+        }
+    };
+    // A code is a small integer, exact in f32.
+    let code = shape_constant(shape.kind()).0 as f32;
+    Some([first.to_array(), second.extend(code).to_array()])
+}
+
+/// A method's code, whatever its shape: plane.wgsl's `METHOD_*` for a point's, light_shape.wgsl's
+/// `SPHERE_*`, `RECT_*` and `DISK_*`, or a shape's own shader's (tube_light.wgsl's `TUBE_*`).
+pub fn method_constant(m: ShapeMethod) -> (u32, &'static str) {
+    match m {
+        ShapeMethod::Point(m) => crate::gpu::plane::method_constant(m),
+        ShapeMethod::Sphere(m) => light_shape::sphere_constant(m),
+        ShapeMethod::Rect(m) => light_shape::rect_constant(m),
+        ShapeMethod::Disk(m) => light_shape::disk_constant(m),
+        ShapeMethod::Tube(m) => tube_light::tube_constant(m),
+    }
+}
+
+/// The override constants of a shape with a size: the flag that some light has it, and A's
+/// and B's method for it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShapeOverrides {
+    /// `None` for the sphere, whose arm `SIZED` alone guards (the shape every light with a
+    /// size once was).
+    pub present: Option<&'static str>,
+    pub a: &'static str,
+    pub b: &'static str,
+}
+
+/// `kind`'s override constants (a point has the pipeline's `METHOD_A` and `METHOD_B`).
+pub fn overrides(kind: ShapeKind) -> ShapeOverrides {
+    let (present, a, b) = match kind {
+        ShapeKind::Point => (None, "METHOD_A", "METHOD_B"),
+        ShapeKind::Sphere => (None, "SPHERE_A", "SPHERE_B"),
+        ShapeKind::Rect => (Some("RECTS"), "RECT_A", "RECT_B"),
+        ShapeKind::Disk => (Some("DISKS"), "DISK_A", "DISK_B"),
+        ShapeKind::Tube => (Some("TUBES"), "TUBE_A", "TUBE_B"),
+    };
+    ShapeOverrides { present, a, b }
 }

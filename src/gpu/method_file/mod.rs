@@ -197,7 +197,7 @@ impl MethodFile {
     }
 
     /// Whether it has a function for `kind` (`ENTRIES` are in `ShapeKind::ALL`'s order; a
-    /// shape after them, the tube, has none in the interface, and the lab's method shades it).
+    /// shape after them has none in the interface, and the lab's method shades it).
     pub fn shades(&self, kind: crate::light::ShapeKind) -> bool {
         self.shades.get(kind.index()).copied().unwrap_or(false)
     }

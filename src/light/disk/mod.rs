@@ -3,6 +3,7 @@
 //! `quadrature`; the LTC disk is the sphere's (`light::sphere::disk`), fed the disk's own
 //! ellipse where a sphere feeds its cap's circle.
 
+pub mod form;
 pub mod quadrature;
 
 use std::f64::consts::PI;
@@ -11,9 +12,13 @@ use glam::{DMat3, DVec3};
 
 use crate::brdf::{self, Alpha, Lobes};
 use crate::light::sphere::disk::{cone_image, cone_integral, hemisphere};
-use crate::light::{ExactRule, point_lobes};
+use crate::light::{EmitterLobes, EmitterShading, ExactRule, point_lobes};
 use crate::ltc::{Clipping, Ltc, LtcPair, Normalization};
 use crate::named::named_enum;
+
+pub use form::{
+    EVAL_COLUMNS, MIN_NORMAL, PRESETS, SIZES, VECTORS, bench_shape, bench_title, eval_row, outline,
+};
 
 pub use quadrature::disk_integral_about;
 
@@ -121,6 +126,33 @@ pub struct DiskShading<'a> {
     pub ltc: &'a LtcPair,
     pub clip: Clipping,
     pub normalization: Normalization,
+}
+
+/// A disk's unit-radiance lobes by `method` and its area (`EmitterLobes`), centred at
+/// `centre` from the shading point with `normal` (world, mapped to the shading frame by
+/// `to_frame`; its length not read) and `radius`, the exact method by `rule`.
+pub fn emitter_lobes(
+    method: DiskMethod,
+    (centre, normal, radius): (DVec3, DVec3, f64),
+    to_frame: &dyn Fn(DVec3) -> DVec3,
+    s: &EmitterShading<'_>,
+    rule: ExactRule,
+) -> EmitterLobes {
+    let disk = Disk {
+        centre: to_frame(centre),
+        normal: to_frame(normal.normalize()),
+        radius,
+    };
+    let shading = DiskShading {
+        v: s.v,
+        disk,
+        alpha: s.alpha,
+        f0: s.f0,
+        ltc: s.ltc,
+        clip: s.clip,
+        normalization: s.normalization,
+    };
+    (disk_light_with(method, &shading, rule), disk.area())
 }
 
 /// The radiance toward `v` of a disk of unit radiance, per lobe (base colour 1), the exact

@@ -4,6 +4,7 @@
 //! and the LTC over it are in `polygon`, the exact integral's rule in `quadrature`; here the
 //! light, its methods and their dispatch.
 
+pub mod form;
 pub mod polygon;
 pub mod quadrature;
 pub mod region;
@@ -11,9 +12,11 @@ pub mod region;
 use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes};
-use crate::light::{ExactRule, point_lobes};
+use crate::light::{EmitterLobes, EmitterShading, ExactRule, point_lobes};
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
+
+pub use form::{EVAL_COLUMNS, PRESETS, SIZES, VECTORS, bench_shape, bench_title, eval_row};
 
 pub use polygon::{
     clip_horizon, ltc_polygon, ltc_proxy, ltc_proxy_fast, polygon_form_factor, proxy_sphere,
@@ -130,6 +133,33 @@ pub struct RectShading<'a> {
     pub ltc: &'a LtcPair,
     pub clip: Clipping,
     pub normalization: Normalization,
+}
+
+/// A rect's unit-radiance lobes by `method` and its area (`EmitterLobes`), centred at
+/// `centre` from the shading point with half-edges `half_u`, `half_v` (world, mapped to the
+/// shading frame by `to_frame`), the exact method by `rule` (cpu::shape_term's, eval's).
+pub fn emitter_lobes(
+    method: RectMethod,
+    (centre, half_u, half_v): (DVec3, DVec3, DVec3),
+    to_frame: &dyn Fn(DVec3) -> DVec3,
+    s: &EmitterShading<'_>,
+    rule: ExactRule,
+) -> EmitterLobes {
+    let rect = Rect {
+        centre: to_frame(centre),
+        u: to_frame(half_u),
+        v: to_frame(half_v),
+    };
+    let shading = RectShading {
+        v: s.v,
+        rect,
+        alpha: s.alpha,
+        f0: s.f0,
+        ltc: s.ltc,
+        clip: s.clip,
+        normalization: s.normalization,
+    };
+    (rect_light_with(method, &shading, rule), rect.area())
 }
 
 /// The radiance toward `v` of a rect of unit radiance, per lobe (base colour 1), the exact

@@ -19,6 +19,28 @@ use crate::light::sphere::quadrature::cap_integral_about;
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
 
+/// The failure cases of lights with a size (docs/design.md §1.10), shipped beside the
+/// clipping panel's: a sphere cut by the horizon, one touching the plane, discs seen edge-on,
+/// and ltc_code's black spots.
+pub const PRESETS: [(&str, &str); 4] = [
+    (
+        "sphere-horizon",
+        include_str!("../../../assets/scenes/sphere-horizon.toml"),
+    ),
+    (
+        "sphere-touching",
+        include_str!("../../../assets/scenes/sphere-touching.toml"),
+    ),
+    (
+        "sphere-edge-on",
+        include_str!("../../../assets/scenes/sphere-edge-on.toml"),
+    ),
+    (
+        "sphere-black-spots",
+        include_str!("../../../assets/scenes/sphere-black-spots.toml"),
+    ),
+];
+
 /// The radiance of a sphere of radius `r` whose intensity toward a distant point is `I`:
 /// `L = I / (π r²)` (its silhouette is a disc of area `π r²`), so that far away it lights as
 /// the point light of intensity `I` does.

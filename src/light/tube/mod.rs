@@ -7,6 +7,7 @@
 //! over a long thin tube at the renders' nodes; `region`'s polar rule is its check.
 
 pub mod band;
+pub mod form;
 pub mod line;
 pub mod region;
 
@@ -15,11 +16,16 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes, MIN_LIGHT_DISTANCE};
-use crate::light::ExactRule;
 use crate::light::polar::{DIFFUSE_NODES, mirror, rule_nodes};
 use crate::light::sphere::{fd_toward, widening_energy};
+use crate::light::{EmitterLobes, EmitterShading, ExactRule};
 use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
+
+pub use form::{
+    BENCH_LENGTH, EVAL_COLUMNS, PRESETS, SIZES, VECTORS, bench_shape, bench_title, eval_row,
+    outline,
+};
 
 /// A capsule: the segment from `a` to `b` swept by a ball of `radius`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -181,6 +187,34 @@ pub struct TubeShading<'a> {
     pub ltc: &'a LtcPair,
     pub clip: Clipping,
     pub normalization: Normalization,
+}
+
+/// A tube's unit-radiance lobes by `method` and the area its radiance `4I/A` divides by, a
+/// quarter of the capsule's (`EmitterLobes`): centred at `centre` from the shading point with
+/// `half_axis` (world, mapped to the shading frame by `to_frame`) and `radius`, the exact
+/// method by `rule`.
+pub fn emitter_lobes(
+    method: TubeMethod,
+    (centre, half_axis, radius): (DVec3, DVec3, f64),
+    to_frame: &dyn Fn(DVec3) -> DVec3,
+    s: &EmitterShading<'_>,
+    rule: ExactRule,
+) -> EmitterLobes {
+    let tube = Tube {
+        a: to_frame(centre - half_axis),
+        b: to_frame(centre + half_axis),
+        radius,
+    };
+    let shading = TubeShading {
+        v: s.v,
+        tube,
+        alpha: s.alpha,
+        f0: s.f0,
+        ltc: s.ltc,
+        clip: s.clip,
+        normalization: s.normalization,
+    };
+    (tube_light_with(method, &shading, rule), 0.25 * tube.area())
 }
 
 /// The radiance toward `v` of a tube of unit radiance, per lobe (base colour 1), the exact

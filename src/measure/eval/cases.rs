@@ -5,11 +5,9 @@ use glam::DVec3;
 
 use crate::brdf::Alpha;
 use crate::error::{Error, Result, number};
-use crate::light::disk::Disk;
-use crate::light::rect::Rect;
-use crate::light::tube::Tube;
+use crate::light::{Shape, ShapeKind};
 use crate::ltc::lut::ALPHA_MIN;
-use crate::measure::eval::{Kind, Light};
+use crate::measure::eval::Kind;
 /// How far from unit length `l` may be: CSV values typed with 4 decimals are off by ~1e-4.
 pub const UNIT_TOLERANCE: f64 = 1e-3;
 
@@ -34,12 +32,9 @@ pub struct Case {
     pub f0: f64,
     /// The sphere's angular radius in degrees, where the file has a `sigma` column.
     pub sigma_degrees: Option<f64>,
-    /// The rect, where the file's rows are rects.
-    pub rect: Option<Rect>,
-    /// The disk, where the file's rows are disks.
-    pub disk: Option<Disk>,
-    /// The tube, where the file's rows are tubes.
-    pub tube: Option<Tube>,
+    /// The emitter, where the file's rows are one (`ShapeKind::eval_form`): its shape and its
+    /// centre, in the row's frame.
+    pub emitter: Option<(Shape, DVec3)>,
     /// Whether the row is of an anisotropic header (its columns' order differs).
     pub anisotropic: bool,
 }
@@ -92,7 +87,7 @@ pub fn parse_cases(text: &str, name: &str) -> Result<Cases> {
         cases.push(parse_row(line, &format!("{name} line {}", k + 1), kind)?);
     }
     Ok(Cases {
-        spheres: kind.light == Light::Sphere,
+        spheres: kind.light == ShapeKind::Sphere,
         kind,
         rows: cases,
     })
@@ -206,13 +201,11 @@ fn parse_row(line: &str, at: &str, kind: Kind) -> Result<Case> {
         l: DVec3::Z,
         f0,
         sigma_degrees: None,
-        rect: None,
-        disk: None,
-        tube: None,
+        emitter: None,
         anisotropic: kind.anisotropic,
     };
-    match kind.light {
-        Light::Point | Light::Sphere => {
+    match kind.light.eval_form() {
+        None => {
             let l = row.vector("lx", "ly", "lz");
             if (l.length() - 1.0).abs() > UNIT_TOLERANCE {
                 return Err(Error::input(
@@ -221,80 +214,16 @@ fn parse_row(line: &str, at: &str, kind: Kind) -> Result<Case> {
                 ));
             }
             case.l = l.normalize();
-            if kind.light == Light::Sphere {
+            if kind.light == ShapeKind::Sphere {
                 let sigma =
                     row.within("sigma", 0.0..=90.0, at, "sigma must be in [0, 90] degrees")?;
                 case.sigma_degrees = Some(sigma);
             }
         }
-        Light::Rect => {
-            let rect = Rect {
-                centre: row.vector("cx", "cy", "cz"),
-                u: row.vector("ux", "uy", "uz"),
-                v: row.vector("vx", "vy", "vz"),
-            };
-            // Sizes from 1e-9 (a rect that small is its point light to far below f64's
-            // rounding of the BRDF) to 1e6 (the scene's coordinates' bound), in scene units.
-            let sizes = [rect.centre.length(), rect.u.length(), rect.v.length()];
-            if sizes.iter().any(|&s| !(1e-9..=1e6).contains(&s)) {
-                return Err(Error::input(
-                    at,
-                    "the centre's distance and each half-edge's length must be in [1e-9, 1e6]",
-                ));
-            }
-            if rect.normal().length() <= 1e-12 * sizes[1] * sizes[2] {
-                return Err(Error::input(at, "u and v are parallel: not a rect"));
-            }
-            case.l = rect.centre.normalize();
-            case.rect = Some(rect);
-        }
-        Light::Disk => {
-            let centre = row.vector("cx", "cy", "cz");
-            let normal = row.vector("nx", "ny", "nz");
-            let radius = row.get("radius");
-            // The rect rows' bounds on the centre's distance and the size; a normal as the
-            // scene file takes one (at least `scene::MIN_NORMAL` long).
-            if ![centre.length(), radius]
-                .iter()
-                .all(|s| (1e-9..=1e6).contains(s))
-            {
-                return Err(Error::input(
-                    at,
-                    "the centre's distance and the radius must be in [1e-9, 1e6]",
-                ));
-            }
-            if !(normal.length() >= crate::scene::MIN_NORMAL && normal.length() <= 1e6) {
-                return Err(Error::input(
-                    at,
-                    format!(
-                        "the normal must be {} to 1e6 long",
-                        number(crate::scene::MIN_NORMAL)
-                    ),
-                ));
-            }
-            case.l = centre.normalize();
-            case.disk = Some(Disk {
-                centre,
-                normal: normal.normalize(),
-                radius,
-            });
-        }
-        Light::Tube => {
-            let (a, b) = (row.vector("ax", "ay", "az"), row.vector("bx", "by", "bz"));
-            let radius = row.get("radius");
-            // The rect rows' bounds on distances and sizes, for each end and the radius; a
-            // segment of no length is a ball.
-            if ![a.length(), b.length(), radius]
-                .iter()
-                .all(|s| (1e-9..=1e6).contains(s))
-            {
-                return Err(Error::input(
-                    at,
-                    "each end's distance and the radius must be in [1e-9, 1e6]",
-                ));
-            }
-            case.l = (0.5 * (a + b)).try_normalize().unwrap_or(DVec3::Z);
-            case.tube = Some(Tube { a, b, radius });
+        Some((_, read)) => {
+            let (shape, centre) = read(&|name| row.get(name)).map_err(|m| Error::input(at, m))?;
+            case.l = centre.try_normalize().unwrap_or(DVec3::Z);
+            case.emitter = Some((shape, centre));
         }
     }
     Ok(case)

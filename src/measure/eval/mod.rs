@@ -1,7 +1,7 @@
 //! `ltc-lab eval`: light directions from a CSV file, evaluated with the exact lobes and their
 //! LTC approximation through the LUT (docs/design.md §6). The header says what each row is:
-//! a point light, or a sphere (§1.10), a rect (§1.11), a disk (§1.12) or a tube (§1.15)
-//! shaded by each of its methods; and the material isotropic (`alpha`, the view in the xz-plane) or anisotropic
+//! a point light, or a light with a size (a sphere, §1.10; an emitter of its module's columns,
+//! `ShapeKind::eval_form`: a rect, §1.11, a disk, §1.12…) shaded by each of its methods; and the material isotropic (`alpha`, the view in the xz-plane) or anisotropic
 //! (`alpha_x`, `alpha_y`, the view at azimuth `phi_o` from the tangent, §1.13).
 
 mod cases;
@@ -10,14 +10,12 @@ use glam::DVec3;
 
 use crate::brdf::{Lobes, brdf_cos_aniso};
 use crate::cpu::LtcPixel;
-use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_light};
-use crate::light::rect::{Rect, RectMethod, RectShading, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
-use crate::light::tube::{Tube, TubeMethod, TubeShading, tube_light};
+use crate::light::{EmitterShading, ExactRule, ShapeKind};
 use crate::ltc::lut::{Lut, THETA_MAX};
 use crate::ltc::remedy::HorizonRule;
 use crate::ltc::{Clipping, Normalization};
-use crate::render::{Gloss, LtcRules};
+use crate::render::{Gloss, LtcRules, ShapeMethod};
 
 /// The most bytes of a cases CSV this program reads (`files::read_text`): ~60 bytes a case,
 /// four million cases.
@@ -33,18 +31,6 @@ pub const OUTPUT_COLUMNS: &str = "brdf_spec,brdf_diffuse,ltc_spec,ltc_diffuse";
 /// 0–90 (a sphere of radius sin σ at unit distance toward `l`; 90: it touches the point).
 pub const SPHERE_HEADER: &str = "theta_o,alpha,lx,ly,lz,f0,sigma";
 
-/// The header of rect lights: θo, α, F0, then the rect's centre and two half-edge vectors in
-/// the shading frame (radiance 1, emitting toward `u × v`).
-pub const RECT_HEADER: &str = "theta_o,alpha,f0,cx,cy,cz,ux,uy,uz,vx,vy,vz";
-
-/// The header of disk lights: θo, α, F0, then the disk's centre and normal (the side it
-/// emits toward; any length) in the shading frame and its radius (radiance 1).
-pub const DISK_HEADER: &str = "theta_o,alpha,f0,cx,cy,cz,nx,ny,nz,radius";
-
-/// The header of tube lights: θo, α, F0, then the segment's ends `a` and `b` in the shading
-/// frame and the capsule's radius (radiance 1).
-pub const TUBE_HEADER: &str = "theta_o,alpha,f0,ax,ay,az,bx,by,bz,radius";
-
 /// The header of point lights on an anisotropic material (docs/design.md §1.13): the view at
 /// `(θo, φo)` in the frame whose x axis is the tangent, along which `alpha_x` acts; `l` a
 /// unit vector in that frame.
@@ -57,42 +43,28 @@ pub const ANISO_OUTPUT_COLUMNS: &str = "exact_spec,ltc_spec,exact_diffuse,ltc_di
 const ISO_MATERIAL: &str = "theta_o,alpha";
 const ANISO_MATERIAL: &str = "theta_o,phi_o,alpha_x,alpha_y";
 
-/// The light a row holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Light {
-    Point,
-    Sphere,
-    Rect,
-    Disk,
-    Tube,
-}
-
-/// What a file's rows are, by its header: the light, and whether the material is anisotropic.
+/// What a file's rows are, by its header: the light's shape (a point's and a sphere's rows
+/// are a direction, every other shape's its module's columns), and whether the material is
+/// anisotropic.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Kind {
-    pub light: Light,
+    pub light: ShapeKind,
     pub anisotropic: bool,
 }
 
 impl Kind {
-    /// Every kind of file.
-    pub const ALL: [Kind; 10] = {
-        let lights = [
-            Light::Point,
-            Light::Sphere,
-            Light::Rect,
-            Light::Disk,
-            Light::Tube,
-        ];
+    /// Every kind of file: each shape's, isotropic then anisotropic.
+    pub const ALL: [Kind; 2 * ShapeKind::ALL.len()] = {
+        let n = ShapeKind::ALL.len();
         let mut all = [Kind {
-            light: Light::Point,
+            light: ShapeKind::Point,
             anisotropic: false,
-        }; 10];
+        }; 2 * ShapeKind::ALL.len()];
         let mut k = 0;
-        while k < 10 {
+        while k < 2 * n {
             all[k] = Kind {
-                light: lights[k % 5],
-                anisotropic: k >= 5,
+                light: ShapeKind::ALL[k % n],
+                anisotropic: k >= n,
             };
             k += 1;
         }
@@ -106,43 +78,28 @@ impl Kind {
         } else {
             ISO_MATERIAL
         };
-        let light = match self.light {
-            Light::Point => "lx,ly,lz,f0",
-            Light::Sphere => "lx,ly,lz,f0,sigma",
-            Light::Rect => "f0,cx,cy,cz,ux,uy,uz,vx,vy,vz",
-            Light::Disk => "f0,cx,cy,cz,nx,ny,nz,radius",
-            Light::Tube => "f0,ax,ay,az,bx,by,bz,radius",
+        let light = match (self.light, self.light.eval_form()) {
+            (ShapeKind::Sphere, _) => "lx,ly,lz,f0,sigma",
+            (_, Some((columns, _))) => return format!("{material},f0,{columns}"),
+            (_, None) => "lx,ly,lz,f0",
         };
         format!("{material},{light}")
     }
 
-    /// The columns `evaluate` adds.
+    /// The columns `evaluate` adds: a point's, or both lobes by each of the shape's methods.
     pub fn output_columns(self) -> String {
         match (self.light, self.anisotropic) {
-            (Light::Point, false) => OUTPUT_COLUMNS.to_string(),
-            (Light::Point, true) => ANISO_OUTPUT_COLUMNS.to_string(),
-            (Light::Sphere, _) => sphere_output_columns(),
-            (Light::Rect, _) => rect_output_columns(),
-            (Light::Disk, _) => disk_output_columns(),
-            (Light::Tube, _) => lobe_columns(&TubeMethod::ALL.map(TubeMethod::name)),
+            (ShapeKind::Point, false) => OUTPUT_COLUMNS.to_string(),
+            (ShapeKind::Point, true) => ANISO_OUTPUT_COLUMNS.to_string(),
+            (kind, _) => {
+                let names: Vec<_> = ShapeMethod::all(kind)
+                    .into_iter()
+                    .map(ShapeMethod::name)
+                    .collect();
+                lobe_columns(&names)
+            }
         }
     }
-}
-
-/// The columns `evaluate` adds for a sphere: both lobes by each method of
-/// `SphereMethod::ALL`, in its order, named after it (`exact_spec,exact_diffuse,ltc_point_spec,…`).
-pub fn sphere_output_columns() -> String {
-    lobe_columns(&SphereMethod::ALL.map(SphereMethod::name))
-}
-
-/// The columns `evaluate` adds for a rect: both lobes by each method of `RectMethod::ALL`.
-pub fn rect_output_columns() -> String {
-    lobe_columns(&RectMethod::ALL.map(RectMethod::name))
-}
-
-/// The columns `evaluate` adds for a disk: both lobes by each method of `DiskMethod::ALL`.
-pub fn disk_output_columns() -> String {
-    lobe_columns(&DiskMethod::ALL.map(DiskMethod::name))
 }
 
 /// `<name>_spec,<name>_diffuse` for each method name, `-` written `_`.
@@ -160,7 +117,11 @@ fn lobe_columns(names: &[&str]) -> String {
 /// The output's header for input whose rows are spheres or not.
 pub fn output_header(spheres: bool) -> String {
     header_of(Kind {
-        light: if spheres { Light::Sphere } else { Light::Point },
+        light: if spheres {
+            ShapeKind::Sphere
+        } else {
+            ShapeKind::Point
+        },
         anisotropic: false,
     })
 }
@@ -198,51 +159,22 @@ pub fn evaluate(c: &Case, lut: &Lut, horizon: HorizonRule) -> String {
     let lobes: Vec<[f64; 2]> = if let Some(sigma) = c.sigma_degrees {
         let s = SphereShading::unit(v, to_frame(c.l), sigma, gloss.alpha, c.f0, &px.pair);
         lobe_pairs(SphereMethod::ALL.map(|m| sphere_light(m, &s)))
-    } else if let Some(rect) = c.rect {
-        let s = RectShading {
+    } else if let Some((shape, centre)) = c.emitter {
+        let s = EmitterShading {
             v,
-            rect: Rect {
-                centre: to_frame(rect.centre),
-                u: to_frame(rect.u),
-                v: to_frame(rect.v),
-            },
             alpha: gloss.alpha,
             f0: c.f0,
             ltc: &px.pair,
             clip: Clipping::BOTH,
             normalization: Normalization::Corrected,
         };
-        lobe_pairs(RectMethod::ALL.map(|m| rect_light(m, &s)))
-    } else if let Some(disk) = c.disk {
-        let s = DiskShading {
-            v,
-            disk: Disk {
-                centre: to_frame(disk.centre),
-                normal: to_frame(disk.normal),
-                radius: disk.radius,
-            },
-            alpha: gloss.alpha,
-            f0: c.f0,
-            ltc: &px.pair,
-            clip: Clipping::BOTH,
-            normalization: Normalization::Corrected,
-        };
-        lobe_pairs(DiskMethod::ALL.map(|m| disk_light(m, &s)))
-    } else if let Some(tube) = c.tube {
-        let s = TubeShading {
-            v,
-            tube: Tube {
-                a: to_frame(tube.a),
-                b: to_frame(tube.b),
-                radius: tube.radius,
-            },
-            alpha: gloss.alpha,
-            f0: c.f0,
-            ltc: &px.pair,
-            clip: Clipping::BOTH,
-            normalization: Normalization::Corrected,
-        };
-        lobe_pairs(TubeMethod::ALL.map(|m| tube_light(m, &s)))
+        let kind = shape.kind();
+        let rule = ExactRule::Nodes(kind.exact_nodes());
+        ShapeMethod::all(kind)
+            .into_iter()
+            .filter_map(|m| m.emitter_lobes((shape, centre), &to_frame, &s, rule))
+            .map(|(l, _)| [l.specular, l.diffuse])
+            .collect()
     } else {
         let l = to_frame(c.l);
         let exact = brdf_cos_aniso(v.to_array(), l.to_array(), gloss.alpha, c.f0);

@@ -7,15 +7,13 @@ use crate::gpu::GpuContext;
 use crate::gpu::method_file::MethodFile;
 use crate::gpu::plane::ShaderChecks;
 use crate::gpu::renderer::PlaneRenderer;
-use crate::light::Shape;
-use crate::light::disk::DiskMethod;
-use crate::light::rect::RectMethod;
+use crate::light::ShapeKind;
 use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::{Encoding, Lut, Table};
 use crate::ltc::remedy::Horizon;
-use crate::measure::bench::{as_disks, as_rects};
+use crate::measure::bench::sized_scene;
 use crate::metrics::image_error;
-use crate::render::{Frame, Method, RenderSettings, ShapeMethods};
+use crate::render::{Frame, Method, RenderSettings, ShapeMethod, ShapeMethods};
 use crate::scene::Scene;
 
 mod variants;
@@ -178,14 +176,12 @@ pub struct StudySettings {
     pub horizons: Vec<Horizon>,
     /// The lights' heights above the plane (paper-100's, or a scene whose lights sit low).
     pub heights: [f64; 2],
-    /// Also every light a square rect of this half-edge facing the plane, by each rect method
-    /// against the rects' exact integral (variants `rect-<method>`).
-    pub rect_half_edge: Option<f64>,
-    /// Also every light a disk of this radius facing the plane, by each disk method against
-    /// the disks' exact integral (variants `disk-<method>`).
-    pub disk_radius: Option<f64>,
+    /// Also every light a light of each of these shapes of that size (`ShapeKind::bench_shape`:
+    /// a rect a square facing the plane, a disk facing it…), by each of the shape's methods
+    /// against its exact integral (variants `<shape>-<method>`).
+    pub sizes: Vec<(ShapeKind, f64)>,
     /// Also this method file, on the points (variant `file`) and on each sized shape of the
-    /// study it shades (`rect-file`, `disk-file`), timed with wgpu's runtime checks (its own
+    /// study it shades (`rect-file`, `disk-file`…), timed with wgpu's runtime checks (its own
     /// renderer: a file is not trusted) and measured against the same exact images.
     pub method_file: Option<MethodFile>,
     /// Scenes studied as given, by name (`study --scene FILE`, and each sized shape's failure
@@ -198,10 +194,13 @@ pub struct StudySettings {
     pub encodings: Vec<Encoding>,
 }
 
+/// Which shapes a method file shades, by `ShapeKind::index` (`MethodFile::shades`).
+pub(crate) type FileShades = [bool; ShapeKind::ALL.len()];
+
 /// The renderers of a study: one per table its variants shade with, and the method file's.
 pub(crate) struct Renderers {
     pub by_lut: Vec<(LutChoice, PlaneRenderer)>,
-    pub file: Option<([bool; 4], PlaneRenderer)>,
+    pub file: Option<(FileShades, PlaneRenderer)>,
 }
 
 impl Renderers {
@@ -216,25 +215,24 @@ impl Renderers {
     }
 }
 
-/// The sized variants of a study: each shape asked for, its scene (the study's lights as that
-/// shape) and its methods by name, the exact one first (each shape's reference, error 0), the
-/// points by ltc-fast.
-fn sized_variants(s: &StudySettings, scene: &Scene) -> Vec<(Scene, Vec<(String, ShapeMethods)>)> {
+/// A sized variant set: the shape, its scene (the study's lights as that shape) and its
+/// methods by name.
+type SizedVariants = (ShapeKind, Scene, Vec<(String, ShapeMethods)>);
+
+/// The sized variants of a study: each shape asked for, its scene and its methods by name,
+/// the exact one first (each shape's reference, error 0), the points by ltc-fast.
+fn sized_variants(s: &StudySettings, scene: &Scene) -> Vec<SizedVariants> {
     let a = RenderSettings::single(1, 1, Method::LtcFast).a;
-    let mut out = Vec::new();
-    if let Some(h) = s.rect_half_edge {
-        let methods = RectMethod::ALL
-            .map(|rect| (format!("rect-{}", rect.name()), a.with(rect)))
-            .to_vec();
-        out.push((as_rects(scene, h), methods));
-    }
-    if let Some(r) = s.disk_radius {
-        let methods = DiskMethod::ALL
-            .map(|disk| (format!("disk-{}", disk.name()), a.with(disk)))
-            .to_vec();
-        out.push((as_disks(scene, r), methods));
-    }
-    out
+    s.sizes
+        .iter()
+        .map(|&(kind, size)| {
+            let methods = ShapeMethod::all(kind)
+                .into_iter()
+                .map(|m| (format!("{}-{}", kind.name(), m.name()), a.with(m)))
+                .collect();
+            (kind, sized_scene(kind, scene, size), methods)
+        })
+        .collect()
 }
 
 /// The heights of the study's scene whose lights sit low: most pixels see most of their
@@ -293,7 +291,7 @@ impl Study {
             Some(f) => {
                 let mut r = PlaneRenderer::new(ctx, shipped, ShaderChecks::Checked)?;
                 r.set_method_file(ctx, Some(f.clone()))?;
-                Some((f.shades, r))
+                Some((ShapeKind::ALL.map(|k| f.shades(k)), r))
             }
             None => None,
         };
@@ -355,7 +353,7 @@ impl Study {
                         rows.push(row);
                     }
                     // The lights with a size, each shape against its own exact image.
-                    for (shaped, methods) in sized_variants(s, &scene) {
+                    for (kind, shaped, methods) in sized_variants(s, &scene) {
                         let mut exact = None;
                         for (name, a) in methods {
                             let settings = RenderSettings {
@@ -371,24 +369,15 @@ impl Study {
                             rows.push(row);
                         }
                         // The method file on this shape, where it shades it.
-                        let shape = if shaped
-                            .lights
-                            .iter()
-                            .any(|l| matches!(l.shape, Shape::Rect { .. }))
-                        {
-                            2
-                        } else {
-                            3
-                        };
                         if let (Some((shades, fr)), Some(reference)) = (&mut r.file, &exact)
-                            && shades[shape]
+                            && shades[kind.index()]
                         {
                             let settings = RenderSettings {
                                 cull,
                                 ..RenderSettings::single(width, height, Method::File)
                             };
                             let (ms, image) = timed(ctx, fr, &shaped, &settings, s.frames)?;
-                            let name = format!("{}-file", ["", "", "rect", "disk"][shape]);
+                            let name = format!("{}-file", kind.name());
                             let row = row(&name, (alpha, lights, cull), s, ms, &image, reference);
                             progress(&row);
                             rows.push(row);
