@@ -53,6 +53,7 @@ impl Serialize for Light {
         let radius = self.shape.radius();
         let vectors = self.shape.vectors();
         let count = 3 + usize::from(self.range.is_some()) + usize::from(radius != 0.0);
+        // The struct's name of before, which RON's messages give.
         let mut t = s.serialize_struct("LightFile", count + vectors.len())?;
         t.serialize_field("position", &self.position[..])?;
         t.serialize_field("color", &self.color[..])?;

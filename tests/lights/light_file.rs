@@ -103,7 +103,10 @@ fn stored_state_of_every_shape_reads_back_and_reads_as_before() {
     // A field twice, which RON reads: refused, naming it.
     let twice = "(position:[0.0,0.0,1.0],intensity:1.0,half_axis:Some([0.5,0.0,0.0]),radius:0.1,half_axis:Some([0.5,0.0,0.0]))";
     let e = ron::from_str::<Light>(twice).unwrap_err().to_string();
-    assert!(e.contains("duplicate field") && e.contains("half_axis"), "{e}");
+    assert!(
+        e.contains("duplicate field") && e.contains("half_axis"),
+        "{e}"
+    );
 }
 
 /// Half a shape, two shapes, a shape without its radius or with one it has not, an unknown or
