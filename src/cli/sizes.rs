@@ -84,7 +84,7 @@ fn size_for(text: &str) -> std::result::Result<(ShapeKind, f64), String> {
 /// (`ShapeKind::bench_title`).
 fn size_for_help() -> String {
     let shapes: Vec<String> = ShapeKind::sized()
-        .map(|k| format!("`{}=0.05`: {}", k.name(), k.bench_title(0.05).0))
+        .map(|k| format!("`{}=0.05`: {}", k.name(), k.bench_title(0.05)))
         .collect();
     format!(
         "Also every light as a light of SHAPE of this size (scene units, ≥ 1e-4), in the same \

@@ -37,6 +37,12 @@ pub fn method_constant(m: Method) -> (u32, &'static str) {
     }
 }
 
+/// A method's code, whatever its shape: `METHOD_*` of plane.wgsl for a point's, the shape's
+/// shader's for a sized shape's (`gpu::light::method_constant`).
+pub fn shape_method_constant(m: ShapeMethod) -> (u32, &'static str) {
+    light::method_constant(m).unwrap_or_else(method_constant)
+}
+
 /// `VIEW_*` of plane.wgsl: method A alone, A | B split, or their difference.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ViewConstant {
@@ -388,8 +394,8 @@ fn constants(key: PipelineKey) -> Vec<(&'static str, f64)> {
         if let Some(flag) = names.present {
             constants.push((flag, f64::from(u8::from(present.is_some()))));
         }
-        constants.push((names.a, f64::from(light::method_constant(ma).0)));
-        constants.push((names.b, f64::from(light::method_constant(mb).0)));
+        constants.push((names.a, f64::from(shape_method_constant(ma).0)));
+        constants.push((names.b, f64::from(shape_method_constant(mb).0)));
     }
     // Set only where anisotropic: an isotropic pipeline is specialized exactly as before.
     if aniso {

@@ -90,15 +90,23 @@ impl ShapeKind {
         }
     }
 
-    /// `bench_shape`'s lights in words, as the benchmark's table titles them, and the symbol
-    /// of their size in a row's label (a radius `r`, a rect's half-edge `h`).
-    pub fn bench_title(self, size: f64) -> (String, &'static str) {
+    /// `bench_shape`'s lights in words, as the benchmark's table titles them.
+    pub fn bench_title(self, size: f64) -> String {
         match self {
-            Self::Point => ("points".to_string(), "r"),
-            Self::Sphere => (format!("every light a sphere of radius {size}"), "r"),
-            Self::Rect => (rect::bench_title(size), "h"),
-            Self::Disk => (disk::bench_title(size), "r"),
-            Self::Tube => (tube::bench_title(size), "r"),
+            Self::Point => "points".to_string(),
+            Self::Sphere => format!("every light a sphere of radius {size}"),
+            Self::Rect => rect::bench_title(size),
+            Self::Disk => disk::bench_title(size),
+            Self::Tube => tube::bench_title(size),
+        }
+    }
+
+    /// The symbol of `bench_shape`'s size in a row's label: a rect's half-edge `h`, else a
+    /// radius `r`.
+    pub fn size_symbol(self) -> &'static str {
+        match self {
+            Self::Rect => "h",
+            _ => "r",
         }
     }
 
@@ -265,14 +273,6 @@ impl Shape {
             Self::Sphere { radius } | Self::Disk { radius, .. } | Self::Tube { radius, .. } => {
                 radius
             }
-        }
-    }
-
-    /// A disk's normal, `None` for the other shapes.
-    pub fn normal(self) -> Option<DVec3> {
-        match self {
-            Self::Disk { normal, .. } => Some(normal),
-            _ => None,
         }
     }
 

@@ -76,12 +76,12 @@ pub fn sized_scene(kind: ShapeKind, points: &Scene, size: f64) -> Scene {
 
 /// The symbol of a size of `kind` in a row's label: a radius, or a rect's half-edge.
 pub fn size_symbol(kind: ShapeKind) -> &'static str {
-    kind.bench_title(0.0).1
+    kind.size_symbol()
 }
 
 /// The lights of `kind` the benchmark times, in words (its sized table's title).
 pub fn sized_title(kind: ShapeKind, size: f64) -> String {
-    kind.bench_title(size).0
+    kind.bench_title(size)
 }
 
 /// One measured cell of the table.

@@ -10,6 +10,7 @@ use rayon::prelude::*;
 
 use crate::brdf::{Alpha, Lobes, view_from_theta};
 use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_exact, disk_light};
+use crate::light::rect::form::tilted_frame;
 use crate::light::rect::{Rect, RectMethod, RectShading, rect_exact, rect_light};
 use crate::ltc::lut::Lut;
 use crate::ltc::{Clipping, Normalization};
@@ -56,14 +57,8 @@ pub fn lights(rng: &mut SplitMix64, omega: f64, elevation: f64, azimuth: f64) ->
     let (se, ce) = elevation.to_radians().sin_cos();
     let (sa, ca) = azimuth.to_radians().sin_cos();
     let centre = DVec3::new(ce * ca, ce * sa, se);
-    let w = -centre;
-    let a = if w.z.abs() < 0.9 { DVec3::Z } else { DVec3::X };
-    let t1 = a.cross(w).normalize();
-    let t2 = w.cross(t1);
-    let tilt = rng.uniform([-45.0f64, 45.0]).to_radians();
-    let t2 = t2 * tilt.cos() + w * tilt.sin();
-    let normal = t1.cross(t2);
-    let cos_e = normal.dot(w).abs();
+    // The rect's plane and draws, `rect::form::error_sample`'s; the disk at the same tilt.
+    let (t1, t2, cos_e) = tilted_frame(&mut |r| rng.uniform(r), centre);
     let aspect = rng.uniform([1.0, 3.0]);
     // Area A = 4 hu hv with hu = aspect · hv and A cos θe = omega (d = 1); a disk's π r².
     let hv = (omega / cos_e / (4.0 * aspect)).sqrt();
@@ -74,7 +69,7 @@ pub fn lights(rng: &mut SplitMix64, omega: f64, elevation: f64, azimuth: f64) ->
     };
     let disk = Disk {
         centre,
-        normal,
+        normal: t1.cross(t2),
         radius: (omega / cos_e / std::f64::consts::PI).sqrt(),
     };
     (rect, disk)

@@ -23,7 +23,7 @@ pub mod tube_light;
 use glam::Vec3;
 
 use crate::light::{Shape, ShapeKind};
-use crate::render::ShapeMethod;
+use crate::render::{Method, ShapeMethod};
 
 /// The lights' shaders as the plane shader composes them: the shapes' files and the rule
 /// they share (which reads their precise trigonometry and the rect's `Polygon`), after
@@ -76,15 +76,17 @@ pub fn second_element(shape: Shape) -> Option<[[f32; 4]; 2]> {
     Some([first.to_array(), second.extend(code).to_array()])
 }
 
-/// A method's code, whatever its shape: plane.wgsl's `METHOD_*` for a point's, light_shape.wgsl's
-/// `SPHERE_*`, `RECT_*` and `DISK_*`, or a shape's own shader's (tube_light.wgsl's `TUBE_*`).
-pub fn method_constant(m: ShapeMethod) -> (u32, &'static str) {
+/// A sized shape's method's code: light_shape.wgsl's `SPHERE_*`, `RECT_*` and `DISK_*`, or a
+/// shape's own shader's (tube_light.wgsl's `TUBE_*`). A point's method comes back as the
+/// error, its codes being plane.wgsl's (`gpu::plane::shape_method_constant`), so that this
+/// module, below the plane's, does not read it.
+pub fn method_constant(m: ShapeMethod) -> Result<(u32, &'static str), Method> {
     match m {
-        ShapeMethod::Point(m) => crate::gpu::plane::method_constant(m),
-        ShapeMethod::Sphere(m) => light_shape::sphere_constant(m),
-        ShapeMethod::Rect(m) => light_shape::rect_constant(m),
-        ShapeMethod::Disk(m) => light_shape::disk_constant(m),
-        ShapeMethod::Tube(m) => tube_light::tube_constant(m),
+        ShapeMethod::Point(m) => Err(m),
+        ShapeMethod::Sphere(m) => Ok(light_shape::sphere_constant(m)),
+        ShapeMethod::Rect(m) => Ok(light_shape::rect_constant(m)),
+        ShapeMethod::Disk(m) => Ok(light_shape::disk_constant(m)),
+        ShapeMethod::Tube(m) => Ok(tube_light::tube_constant(m)),
     }
 }
 

@@ -158,6 +158,15 @@ pub fn error_sample(
     (shape, centre)
 }
 
+/// The error tables' frame at `centre` (unit, distance 1): two unit vectors across the line of
+/// sight and the direction back to the origin, `w = −centre`.
+pub fn sight_frame(centre: DVec3) -> (DVec3, DVec3, DVec3) {
+    let w = -centre;
+    let up = if w.z.abs() < 0.9 { DVec3::Z } else { DVec3::X };
+    let t1 = up.cross(w).normalize();
+    (t1, w.cross(t1), w)
+}
+
 /// The error tables' emitter plane at `centre` (unit, distance 1): two unit vectors across it,
 /// facing the origin tilted by up to 45° about the first, and the cosine between its normal
 /// and the line of sight.
@@ -165,10 +174,7 @@ pub fn tilted_frame(
     uniform: &mut dyn FnMut([f64; 2]) -> f64,
     centre: DVec3,
 ) -> (DVec3, DVec3, f64) {
-    let w = -centre;
-    let up = if w.z.abs() < 0.9 { DVec3::Z } else { DVec3::X };
-    let t1 = up.cross(w).normalize();
-    let t2 = w.cross(t1);
+    let (t1, t2, w) = sight_frame(centre);
     let tilt = uniform([-45.0, 45.0]).to_radians();
     let t2 = t2 * tilt.cos() + w * tilt.sin();
     let cos_e = t1.cross(t2).dot(w).abs();

@@ -132,10 +132,7 @@ pub fn error_sample(
     omega: f64,
     centre: DVec3,
 ) -> (Shape, DVec3) {
-    let w = -centre;
-    let up = if w.z.abs() < 0.9 { DVec3::Z } else { DVec3::X };
-    let t1 = up.cross(w).normalize();
-    let t2 = w.cross(t1);
+    let (t1, t2, w) = crate::light::rect::form::sight_frame(centre);
     let turn = uniform([0.0, std::f64::consts::TAU]);
     let tilt = uniform([-45.0, 45.0]).to_radians();
     let axis = (t1 * turn.cos() + t2 * turn.sin()) * tilt.cos() + w * tilt.sin();
