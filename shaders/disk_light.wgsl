@@ -2,6 +2,19 @@
 // src/light/disk/quadrature.rs by name. Composed after sphere_light.wgsl (the cone's algebra,
 // gl8, sincos_precise, mirror) and rect_light.wgsl (atan2_precise).
 
+// The light buffer's code for a disk (src/gpu/light/mod.rs shape_constant).
+const SHAPE_DISK: u32 = 3u;
+
+// How a side shades a disk (src/light/disk/mod.rs DiskMethod; disk_light.rs disk_constant).
+const DISK_EXACT: u32 = 0u;     // the BRDF over the disk above the surface
+const DISK_LTC_DISK: u32 = 1u;  // Heitz & Hill 2017: the disk's cone mapped by M⁻¹
+const DISK_LTC_POINT: u32 = 2u; // the centre as an oriented point light
+
+// Some light is a disk, and how A and B shade disks (constants, as rect_light.wgsl's).
+override DISKS: bool = false;
+override DISK_A: u32 = DISK_LTC_DISK;
+override DISK_B: u32 = DISK_EXACT;
+
 // A disk: centre, unit normal (the side it emits toward) and radius, in the shading frame.
 struct Disk {
     centre: vec3<f32>,
@@ -134,19 +147,30 @@ fn segment_reach(seg: Segment, apex: vec2<f32>, d: vec2<f32>, chord: bool) -> f3
 
 // One disk of unit radiance at one shading point (src/light/disk/mod.rs DiskShading).
 struct DiskShading {
-    v: vec3<f32>,
+    pixel: EmitterShading,
     disk: Disk,
-    alpha: vec2<f32>,
-    f0: f32,
-    clip: u32,
-    normalization: u32,
+}
+
+// disk_emitter_lobes: a disk's unit-radiance lobes by `method` (DISK_*) and its area, for
+// emitter.wgsl's emitter_lobes (src/light/disk/mod.rs emitter_lobes): centred at `centre`, its
+// unit normal and radius `dims[0]`, mapped to the shading frame by `to_frame`.
+fn disk_emitter_lobes(
+    method: u32,
+    dims: mat2x4<f32>,
+    centre: vec3<f32>,
+    to_frame: mat3x3<f32>,
+    pixel: EmitterShading,
+    pair: LtcPair,
+) -> vec3<f32> {
+    let disk = Disk(to_frame * centre, to_frame * dims[0].xyz, dims[0].w);
+    return vec3<f32>(disk_light(method, DiskShading(pixel, disk), pair), disk_area(disk));
 }
 
 // disk_point: the oriented point light at the centre — the exact point light for the exact
 // method, the paper's point formula for the LTC ones.
 fn disk_point(s: DiskShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     let l = normalize(s.disk.centre);
-    let lobes = point_lobes(s.v, l, s.alpha, s.f0, pair, s.clip, s.normalization, exact);
+    let lobes = point_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0, pair, s.pixel.clip, s.pixel.normalization, exact);
     return disk_point_irradiance(s.disk) * lobes;
 }
 
@@ -160,7 +184,7 @@ fn disk_exact(s: DiskShading) -> vec2<f32> {
     if seg.x0 >= 1.0 {
         return vec2<f32>(0.0);
     }
-    let hit = segment_hit_inside(seg, d, mirror(s.v));
+    let hit = segment_hit_inside(seg, d, mirror(s.pixel.v));
     var apex = vec2<f32>(0.5 * (seg.x0 + 1.0), 0.0);
     if hit.z > 0.0 {
         apex = hit.xy;
@@ -192,7 +216,7 @@ fn disk_exact(s: DiskShading) -> vec2<f32> {
                     if l.z > 0.0 {
                         let weight = 0.25 * ns.y * nt.y * width * reach * rho * r2
                             * abs(dot(x, d.normal)) / (len * len2);
-                        sum += weight * exact_lobes(s.v, l, s.alpha, s.f0);
+                        sum += weight * exact_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0);
                     }
                 }
             }
@@ -204,17 +228,17 @@ fn disk_exact(s: DiskShading) -> vec2<f32> {
 // disk_ltc: both lobes by Heitz & Hill's LTC over the disk's cone (ltc_disk_light), made for
 // both lobes at once; with case 1 a disk wholly below the surface gives 0.
 fn disk_ltc(s: DiskShading, pair: LtcPair) -> vec2<f32> {
-    if (s.clip & CLIP_HORIZON) != 0u && disk_below_horizon(s.disk) {
+    if (s.pixel.clip & CLIP_HORIZON) != 0u && disk_below_horizon(s.disk) {
         return vec2<f32>(0.0);
     }
     let axes = disk_half_axes(s.disk);
     let cones = cone_images(pair, mat3x3<f32>(axes[0], axes[1], s.disk.centre), s.disk.centre);
-    let case2 = (s.clip & CLIP_TRANSFORMED) != 0u;
+    let case2 = (s.pixel.clip & CLIP_TRANSFORMED) != 0u;
     let lobes = vec2<f32>(
-        ltc_disk_light(pair.spec, s.disk, cones[0], case2, s.normalization),
-        ltc_disk_light(pair.diff, s.disk, cones[1], case2, s.normalization),
+        ltc_disk_light(pair.spec, s.disk, cones[0], case2, s.pixel.normalization),
+        ltc_disk_light(pair.diff, s.disk, cones[1], case2, s.pixel.normalization),
     );
-    return lobe_weights(pair, s.f0, s.normalization) * lobes;
+    return lobe_weights(pair, s.pixel.f0, s.pixel.normalization) * lobes;
 }
 
 // ltc_disk_light: ∫ D(ω) dω over a disk's cone, given its image under M⁻¹; the hemisphere
@@ -227,7 +251,7 @@ fn ltc_disk_light(ltc: Ltc, d: Disk, transformed: vec4<f32>, case2: bool, normal
     return cone_integral(cone, case2, normalization);
 }
 
-// disk_light: both lobes of a disk of unit radiance by `method` (DISK_* of plane.wgsl): 0
+// disk_light: both lobes of a disk of unit radiance by `method` (DISK_*): 0
 // facing away, its point light below DISK_POINT_LIMIT.
 fn disk_light(method: u32, s: DiskShading, pair: LtcPair) -> vec2<f32> {
     if !disk_faces_origin(s.disk) {

@@ -5,6 +5,7 @@
 //   fn method_sphere(pixel: MethodPixel, light: MethodSphere) -> MethodRadiance
 //   fn method_rect(pixel: MethodPixel, light: MethodRect) -> MethodRadiance
 //   fn method_disk(pixel: MethodPixel, light: MethodDisk) -> MethodRadiance
+//   fn method_tube(pixel: MethodPixel, light: MethodTube) -> MethodRadiance
 // A shape without its function is shaded by the lab's method for it (points by `ltc`). The
 // Rust side is src/gpu/method_file/mod.rs.
 
@@ -53,6 +54,14 @@ struct MethodDisk {
     normal: vec3<f32>,       // unit, the side it emits toward
     radius: f32,
     intensity: vec3<f32>,    // radiance intensity / (π r²)
+}
+
+// A capsule: the segment centre ± half_axis swept by a ball of radius r.
+struct MethodTube {
+    centre: vec3<f32>,
+    half_axis: vec3<f32>,
+    radius: f32,
+    intensity: vec3<f32>,    // radiance 4 intensity / A, A = 4π r² + 4π r |half_axis|
 }
 
 // One light's radiance toward the camera: specular, and diffuse with the base colour in it.
@@ -120,17 +129,23 @@ fn add_method_light(shape: u32, s: ptr<function, Sums>, p: Pixel, ltc: LtcShadin
     let px = method_pixel(p, ltc);
     let intensity = method_intensity(p, light);
     let centre = light.position_range.xyz;
+    // An emitter's dimensions are its second element's (src/gpu/light/mod.rs second_element):
+    // `d` a rect's half-edges, a disk's unit normal and radius, a tube's half axis and radius.
     switch shape {
         case SHAPE_SPHERE: {
             add_method_radiance(s, method_sphere(px, MethodSphere(centre, light.intensity.w, intensity)));
         }
         case SHAPE_RECT: {
-            let e = rect_half_edges(light);
-            add_method_radiance(s, method_rect(px, MethodRect(centre, e[0], e[1], intensity)));
+            let d = extra_element(light);
+            add_method_radiance(s, method_rect(px, MethodRect(centre, d.position_range.xyz, d.intensity.xyz, intensity)));
         }
         case SHAPE_DISK: {
-            let d = disk_normal_radius(light);
+            let d = extra_element(light).position_range;
             add_method_radiance(s, method_disk(px, MethodDisk(centre, d.xyz, d.w, intensity)));
+        }
+        case SHAPE_TUBE: {
+            let d = extra_element(light).position_range;
+            add_method_radiance(s, method_tube(px, MethodTube(centre, d.xyz, d.w, intensity)));
         }
         default: {
             add_method_radiance(s, method_point(px, MethodPoint(centre, intensity)));
@@ -145,7 +160,7 @@ fn method_file_shades(shape: u32) -> bool {
         case SHAPE_SPHERE: { return METHOD_FILE_SPHERE; }
         case SHAPE_RECT: { return METHOD_FILE_RECT; }
         case SHAPE_DISK: { return METHOD_FILE_DISK; }
-        // A shape the file's interface has no function for: the lab's method shades it.
+        case SHAPE_TUBE: { return METHOD_FILE_TUBE; }
         default: { return false; }
     }
 }

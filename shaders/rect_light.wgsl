@@ -3,6 +3,22 @@
 // sphere_light.wgsl (uses atan_precise, illuminance_sphere, gl8, mirror and
 // sphere_ltc_point's arithmetic).
 
+// The light buffer's code for a rect (src/gpu/light/mod.rs shape_constant).
+const SHAPE_RECT: u32 = 2u;
+
+// How a side shades a rect (src/light/rect/mod.rs RectMethod; rect_light.rs rect_constant).
+const RECT_EXACT: u32 = 0u;          // the BRDF over the rect above the surface
+const RECT_LTC_POLYGON: u32 = 1u;    // Heitz et al. 2016: clipped, M⁻¹, Lambert's edge formula
+const RECT_LTC_PROXY: u32 = 2u;      // Heitz & Hill 2017: the sphere of the same form factor
+const RECT_LTC_PROXY_FAST: u32 = 3u; // three.js's closed form of the proxy
+const RECT_LTC_POINT: u32 = 4u;      // the centre as an oriented point light
+
+// Some light is a rect, and how A and B shade rects: constants, so that a pipeline holds only
+// the methods it uses (the exact one's loops would weigh on every other's registers).
+override RECTS: bool = false;
+override RECT_A: u32 = RECT_LTC_POLYGON;
+override RECT_B: u32 = RECT_EXACT;
+
 // Rect: centre and half-edges in the shading frame, relative to the shading point; it emits
 // toward u × v.
 struct Rect {
@@ -314,19 +330,30 @@ fn ltc_proxy_fast(ltc: Ltc, q: Quad, clip: u32, normalization: u32) -> f32 {
 
 // One rect of unit radiance at one shading point (src/light/rect/mod.rs RectShading).
 struct RectShading {
-    v: vec3<f32>,
+    pixel: EmitterShading,
     rect: Rect,
-    alpha: vec2<f32>,
-    f0: f32,
-    clip: u32,
-    normalization: u32,
+}
+
+// rect_emitter_lobes: a rect's unit-radiance lobes by `method` (RECT_*) and its area, for
+// emitter.wgsl's emitter_lobes (src/light/rect/mod.rs emitter_lobes): centred at `centre`, its
+// half-edges `dims`' first two xyz, both mapped to the shading frame by `to_frame`.
+fn rect_emitter_lobes(
+    method: u32,
+    dims: mat2x4<f32>,
+    centre: vec3<f32>,
+    to_frame: mat3x3<f32>,
+    pixel: EmitterShading,
+    pair: LtcPair,
+) -> vec3<f32> {
+    let rect = Rect(to_frame * centre, to_frame * dims[0].xyz, to_frame * dims[1].xyz);
+    return vec3<f32>(rect_light(method, RectShading(pixel, rect), pair), rect_area(rect));
 }
 
 // rect_point: the oriented point light at the centre — the exact point light for the exact
 // method, the paper's point formula for the LTC ones.
 fn rect_point(s: RectShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     let l = normalize(s.rect.centre);
-    let lobes = point_lobes(s.v, l, s.alpha, s.f0, pair, s.clip, s.normalization, exact);
+    let lobes = point_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0, pair, s.pixel.clip, s.pixel.normalization, exact);
     return rect_point_irradiance(s.rect) * lobes;
 }
 
@@ -349,11 +376,11 @@ fn rect_rule(s: RectShading) -> vec2<f32> {
         return vec2<f32>(0.0);
     }
     let middle = normalize(sum);
-    let polar = polygon_polar(corners, middle, mirror(s.v), s.v, s.alpha, s.f0);
-    let lobe = lobe_within(lobe_specular(polar.pole, s.v, s.alpha), polar.bounds, middle);
+    let polar = polygon_polar(corners, middle, mirror(s.pixel.v), s.pixel.v, s.pixel.alpha, s.pixel.f0);
+    let lobe = lobe_within(lobe_specular(polar.pole, s.pixel.v, s.pixel.alpha), polar.bounds, middle);
     return vec2<f32>(
-        polar_integral(polar, lobe, rule_nodes(s.alpha), s.v, s.alpha, s.f0, 0u),
-        fan_integral(corners, middle, DIFFUSE_NODES, s.v, s.alpha, s.f0),
+        polar_integral(polar, lobe, rule_nodes(s.pixel.alpha), s.pixel.v, s.pixel.alpha, s.pixel.f0, 0u),
+        fan_integral(corners, middle, DIFFUSE_NODES, s.pixel.v, s.pixel.alpha, s.pixel.f0),
     );
 }
 
@@ -425,21 +452,21 @@ fn rect_light(method: u32, s: RectShading, pair: LtcPair) -> vec2<f32> {
     switch method {
         case RECT_EXACT: { return rect_rule(s); }
         case RECT_LTC_POLYGON: {
-            return lobe_weights(pair, s.f0, s.normalization) * vec2<f32>(
-                ltc_polygon(pair.spec, corners, s.clip, s.normalization),
-                ltc_polygon(pair.diff, corners, s.clip, s.normalization),
+            return lobe_weights(pair, s.pixel.f0, s.pixel.normalization) * vec2<f32>(
+                ltc_polygon(pair.spec, corners, s.pixel.clip, s.pixel.normalization),
+                ltc_polygon(pair.diff, corners, s.pixel.clip, s.pixel.normalization),
             );
         }
         case RECT_LTC_PROXY: {
-            return lobe_weights(pair, s.f0, s.normalization) * vec2<f32>(
-                ltc_proxy(pair.spec, corners, s.clip, s.normalization),
-                ltc_proxy(pair.diff, corners, s.clip, s.normalization),
+            return lobe_weights(pair, s.pixel.f0, s.pixel.normalization) * vec2<f32>(
+                ltc_proxy(pair.spec, corners, s.pixel.clip, s.pixel.normalization),
+                ltc_proxy(pair.diff, corners, s.pixel.clip, s.pixel.normalization),
             );
         }
         case RECT_LTC_PROXY_FAST: {
-            return lobe_weights(pair, s.f0, s.normalization) * vec2<f32>(
-                ltc_proxy_fast(pair.spec, corners, s.clip, s.normalization),
-                ltc_proxy_fast(pair.diff, corners, s.clip, s.normalization),
+            return lobe_weights(pair, s.pixel.f0, s.pixel.normalization) * vec2<f32>(
+                ltc_proxy_fast(pair.spec, corners, s.pixel.clip, s.pixel.normalization),
+                ltc_proxy_fast(pair.diff, corners, s.pixel.clip, s.pixel.normalization),
             );
         }
         default: { return rect_point(s, pair, false); }

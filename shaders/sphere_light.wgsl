@@ -3,6 +3,18 @@
 // Composed after brdf.wgsl and ltc.wgsl (uses PI, Ltc, LtcPair, ltc_eval's constants and the
 // BRDF terms).
 
+// How a side shades a sphere (src/light/sphere/mod.rs SphereMethod; sphere_light.rs
+// sphere_constant).
+const SPHERE_EXACT: u32 = 0u;                // the BRDF over the cap
+const SPHERE_LTC_POINT: u32 = 1u;            // the paper's point formula at the centre
+const SPHERE_LTC_DISK: u32 = 2u;             // Heitz & Hill 2017's LTC disk
+const SPHERE_REPRESENTATIVE_POINT: u32 = 3u; // Karis 2013
+
+// How A and B shade the lights with a size: constants, so that a pipeline holds only the
+// sphere methods it uses (the exact one's loops would weigh on every other's registers).
+override SPHERE_A: u32 = SPHERE_LTC_DISK;
+override SPHERE_B: u32 = SPHERE_EXACT;
+
 // Cap: the directions a sphere covers seen from the shading point; cos_sigma = −1 where the
 // point is inside the sphere (every direction sees it).
 struct Cap {

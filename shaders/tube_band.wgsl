@@ -398,7 +398,7 @@ fn band_meridian(b: Band, psi: f32, n: u32, peak: f32, width: f32, stretch: bool
                 let node = band_node(n, j, part.xy, part.z, w_lambda);
                 let sc = sincos_precise(node.x);
                 let x = d * sc.y + b.o * sc.x;
-                total += node.y * sc.y * lobe_value(s.v, x, s.alpha, s.f0, which);
+                total += node.y * sc.y * lobe_value(s.pixel.v, x, s.pixel.alpha, s.pixel.f0, which);
             }
         }
     }
@@ -412,18 +412,18 @@ fn tube_band(s: TubeShading) -> vec2<f32> {
     if !tube_encloses_origin(s.tube) {
         b = band_of(s.tube);
     }
-    let focus = mirror(s.v);
+    let focus = mirror(s.pixel.v);
     let sin_lat = clamp(dot(focus, b.o), -1.0, 1.0);
     let peak = vec2<f32>(
         band_longitude(b, focus),
         atan2_full(sin_lat, sqrt(max((1.0 - sin_lat) * (1.0 + sin_lat), 0.0))),
     );
-    let width = 2.0 * max(s.alpha.x, s.alpha.y);
+    let width = 2.0 * max(s.pixel.alpha.x, s.pixel.alpha.y);
     var out = vec2<f32>(0.0);
     // Both lobes from one call of the rule (see polar_piece).
     for (var which = 0u; which < 2u; which++) {
         let cuts = band_cuts(b, peak.x, which == 0u);
-        let n = select(DIFFUSE_NODES, rule_nodes(s.alpha), which == 0u);
+        let n = select(DIFFUSE_NODES, rule_nodes(s.pixel.alpha), which == 0u);
         out[which] = band_integral(b, cuts, n, peak, width, s, which);
     }
     return out;

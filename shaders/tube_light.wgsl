@@ -5,6 +5,9 @@
 // (atan2_precise), disk_light.wgsl (atan2_full) and polar.wgsl (rule, rule_nodes, mirror,
 // wrapped); the Rust side is src/gpu/light/tube_light.rs.
 
+// The light buffer's code for a tube (src/gpu/light/mod.rs shape_constant).
+const SHAPE_TUBE: u32 = 4u;
+
 // How a side shades a tube (src/light/tube/mod.rs TubeMethod; tube_light.rs tube_constant).
 const TUBE_EXACT: u32 = 0u;                // the BRDF over the silhouette, by the band's rule
 const TUBE_LTC_LINE: u32 = 1u;             // Heitz & Hill 2017's line, widened, ends as points
@@ -12,7 +15,7 @@ const TUBE_HDRP_TUBE: u32 = 2u;            // Unity HDRP's tube: the widened lin
 const TUBE_REPRESENTATIVE_POINT: u32 = 3u; // Karis 2013
 const TUBE_LTC_POINT: u32 = 4u;            // the centre as a point light
 
-// Some light is a tube, and how A and B shade tubes (light_shape.wgsl's other shapes').
+// Some light is a tube, and how A and B shade tubes (constants, as rect_light.wgsl's).
 override TUBES: bool = false;
 override TUBE_A: u32 = TUBE_LTC_LINE;
 override TUBE_B: u32 = TUBE_EXACT;
@@ -116,12 +119,25 @@ fn tube_angular_size(t: Tube) -> f32 {
 
 // One tube of unit radiance at one shading point (src/light/tube/mod.rs TubeShading).
 struct TubeShading {
-    v: vec3<f32>,
+    pixel: EmitterShading,
     tube: Tube,
-    alpha: vec2<f32>,
-    f0: f32,
-    clip: u32,
-    normalization: u32,
+}
+
+// tube_emitter_lobes: a tube's unit-radiance lobes by `method` (TUBE_*) and the area its
+// radiance 4I/A divides by, A/4, for emitter.wgsl's emitter_lobes (src/light/tube/mod.rs
+// emitter_lobes): its segment centre ± `dims[0].xyz`, its radius `dims[0].w`, mapped to the
+// shading frame by `to_frame`.
+fn tube_emitter_lobes(
+    method: u32,
+    dims: mat2x4<f32>,
+    centre: vec3<f32>,
+    to_frame: mat3x3<f32>,
+    pixel: EmitterShading,
+    pair: LtcPair,
+) -> vec3<f32> {
+    let half_axis = dims[0].xyz;
+    let tube = Tube(to_frame * (centre - half_axis), to_frame * (centre + half_axis), dims[0].w);
+    return vec3<f32>(tube_light(method, TubeShading(pixel, tube), pair), 0.25 * tube_area(tube));
 }
 
 // tube_point: the centre as a point light of intensity L A⊥, exact or by the paper's formula.
@@ -130,7 +146,7 @@ fn tube_point(s: TubeShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     let d2 = max(dot(c, c), s.tube.radius * s.tube.radius);
     let l = normalize(c);
     let e = tube_projected_area(s.tube, l) / d2;
-    return e * point_lobes(s.v, l, s.alpha, s.f0, pair, s.clip, s.normalization, exact);
+    return e * point_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0, pair, s.pixel.clip, s.pixel.normalization, exact);
 }
 
 // clip_segment: the part of p1 p2 at or above z = 0, as mat2x3's columns; `false` in the
@@ -231,7 +247,7 @@ fn tube_line_lobe(s: TubeShading, ltc: Ltc, seg: Segment3, ends: bool) -> f32 {
     let t = s.tube;
     var line = 0.0;
     if seg.above {
-        line = t.radius * ltc_line(ltc, seg.p1, seg.p2, s.normalization);
+        line = t.radius * ltc_line(ltc, seg.p1, seg.p2, s.pixel.normalization);
     }
     if !ends {
         return line;
@@ -240,11 +256,11 @@ fn tube_line_lobe(s: TubeShading, ltc: Ltc, seg: Segment3, ends: bool) -> f32 {
     let r2 = t.radius * t.radius;
     let wa = normalize(t.a);
     let wb = normalize(t.b);
-    let end_a = 0.5 * PI * r2 * (1.0 + dot(e, wa)) * ltc_eval(ltc, wa, s.clip, s.normalization)
+    let end_a = 0.5 * PI * r2 * (1.0 + dot(e, wa)) * ltc_eval(ltc, wa, s.pixel.clip, s.pixel.normalization)
         / max(dot(t.a, t.a), r2);
-    let end_b = 0.5 * PI * r2 * (1.0 - dot(e, wb)) * ltc_eval(ltc, wb, s.clip, s.normalization)
+    let end_b = 0.5 * PI * r2 * (1.0 - dot(e, wb)) * ltc_eval(ltc, wb, s.pixel.clip, s.pixel.normalization)
         / max(dot(t.b, t.b), r2);
-    let most = select(1.0, PI, s.normalization == NORMALIZATION_PAPER_LITERAL);
+    let most = select(1.0, PI, s.pixel.normalization == NORMALIZATION_PAPER_LITERAL);
     return min(line + end_a + end_b, most);
 }
 
@@ -252,14 +268,14 @@ fn tube_line_lobe(s: TubeShading, ltc: Ltc, seg: Segment3, ends: bool) -> f32 {
 // the segment at the surface first.
 fn tube_ltc_line(s: TubeShading, pair: LtcPair, ends: bool) -> vec2<f32> {
     var seg = Segment3(s.tube.a, s.tube.b, true);
-    if (s.clip & CLIP_HORIZON) != 0u {
+    if (s.pixel.clip & CLIP_HORIZON) != 0u {
         seg = clip_segment(s.tube.a, s.tube.b);
     }
     let lobes = vec2<f32>(
         tube_line_lobe(s, pair.spec, seg, ends),
         tube_line_lobe(s, pair.diff, seg, ends),
     );
-    return lobe_weights(pair, s.f0, s.normalization) * lobes;
+    return lobe_weights(pair, s.pixel.f0, s.pixel.normalization) * lobes;
 }
 
 // tube_representative_point: Karis 2013's tube (mod.rs).
@@ -267,7 +283,7 @@ fn tube_representative_point(s: TubeShading) -> vec2<f32> {
     let t = s.tube;
     let r = t.radius;
     let len = tube_length(t);
-    let reflected = mirror(s.v);
+    let reflected = mirror(s.pixel.v);
     let on_segment = t.a + tube_axis(t) * tube_nearest_to_ray(t, reflected);
     let to_ray = reflected * dot(on_segment, reflected) - on_segment;
     let reach = length(to_ray);
@@ -280,18 +296,18 @@ fn tube_representative_point(s: TubeShading) -> vec2<f32> {
         l = closest / sqrt(dot(closest, closest));
     }
     let d = max(length(on_segment), MIN_LIGHT_DISTANCE);
-    let sphere = widening_energy(s.alpha, min(r / d, 1.0));
-    let wide = min(max(s.alpha.x, s.alpha.y) + 0.5 * min(r / d, 1.0), 1.0);
+    let sphere = widening_energy(s.pixel.alpha, min(r / d, 1.0));
+    let wide = min(max(s.pixel.alpha.x, s.pixel.alpha.y) + 0.5 * min(r / d, 1.0), 1.0);
     let line = wide / min(wide + 0.5 * min(0.5 * len / d, 1.0), 1.0);
     let intensity = 2.0 * r * len + PI * r * r;
     var specular = 0.0;
     if l.z > 0.0 {
-        specular = exact_lobes(s.v, l, s.alpha, s.f0).x;
+        specular = exact_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0).x;
     }
     let c = tube_centre(t);
     let c2 = max(dot(c, c), r * r);
     let irradiance = 2.0 * r * line_irradiance(t.a, t.b) + PI * r * r * max(c.z / length(c), 0.0) / c2;
-    let diffuse = fd_toward(s.v, normalize(c), 0.5 * (s.alpha.x + s.alpha.y)) * irradiance;
+    let diffuse = fd_toward(s.pixel.v, normalize(c), 0.5 * (s.pixel.alpha.x + s.pixel.alpha.y)) * irradiance;
     let dr = max(d, r);
     return vec2<f32>(intensity / (dr * dr) * sphere * line * specular, diffuse);
 }

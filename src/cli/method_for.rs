@@ -22,6 +22,34 @@ pub struct MethodFor {
     pub method: ShapeMethod,
 }
 
+/// `--method-for`'s help: what it takes, then each shape with its methods and the defaults
+/// of side A and side B, in `ShapeKind::ALL`'s order (a point's methods are the side's own).
+pub fn help() -> String {
+    let shapes: Vec<String> = ShapeKind::ALL
+        .into_iter()
+        .map(|kind| {
+            if kind == ShapeKind::Point {
+                return "point (the side's method: --point-a and --point-b)".to_string();
+            }
+            let names: Vec<_> = ShapeMethod::all(kind).iter().map(|m| m.name()).collect();
+            format!(
+                "{} ({}; default {} | {})",
+                kind.name(),
+                names.join(", "),
+                ShapeMethod::approximation(kind).name(),
+                ShapeMethod::reference(kind).name()
+            )
+        })
+        .collect();
+    format!(
+        "How a side shades one shape, `[a:|b:]SHAPE=METHOD` (side a, the method alone or left \
+         of a split, unless b: the reference right of it), as often as there are shapes: \
+         `rect=ltc-proxy`, `b:sphere=ltc-disk`. The shapes and their methods (docs/design.md \
+         §1.10–§1.15): {}.",
+        shapes.join(", ")
+    )
+}
+
 /// `[a:|b:]SHAPE=METHOD`, e.g. `rect=ltc-proxy` or `b:disk=ltc-disk` (side A unless told).
 pub fn parse(text: &str) -> std::result::Result<MethodFor, String> {
     let (side, rest) = match text.split_once(':') {

@@ -124,14 +124,8 @@ pub struct Args {
     /// before A's own --encoding).
     #[arg(long, value_parser = |s: &str| Encoding::parse(s))]
     encoding_b: Option<Encoding>,
-    /// How a side shades one shape, `[a:|b:]SHAPE=METHOD` (side a, the method alone or left
-    /// of a split, unless b: the reference right of it), as often as there are shapes:
-    /// `rect=ltc-proxy`, `b:sphere=ltc-disk`. The shapes and their methods
-    /// (docs/design.md §1.10–§1.12): point (the side's method: --point-a and --point-b),
-    /// sphere (exact, ltc-point, ltc-disk, representative-point; default ltc-disk | exact),
-    /// rect (exact, ltc-polygon, ltc-proxy, ltc-proxy-fast, ltc-point; default
-    /// ltc-polygon | exact), disk (exact, ltc-disk, ltc-point; default ltc-disk | exact).
-    #[arg(long, value_parser = method_for::parse, value_name = "[SIDE:]SHAPE=METHOD")]
+    /// How a side shades one shape (`method_for::help`).
+    #[arg(long, value_parser = method_for::parse, value_name = "[SIDE:]SHAPE=METHOD", help = method_for::help())]
     method_for: Vec<MethodFor>,
     /// Alias of --method-for a:sphere=METHOD.
     #[arg(long, value_parser = one_of(&SphereMethod::ALL, SphereMethod::name))]

@@ -101,11 +101,15 @@ pub fn file_work(
     file: &crate::gpu::method_file::MethodFile,
 ) -> Result<Vec<(&'static str, Work)>, String> {
     let source = super::plane_module_source_with(false, Some(file));
-    crate::gpu::method_file::ENTRIES
-        .iter()
-        .zip(file.shades)
-        .filter(|(_, shades)| *shades)
-        .map(|((function, _, shape), _)| Ok((*shape, work_of(&source, function)?)))
+    crate::light::ShapeKind::ALL
+        .into_iter()
+        .filter(|&k| file.shades(k))
+        .map(|k| {
+            Ok((
+                k.name(),
+                work_of(&source, &crate::gpu::method_file::entry(k).0)?,
+            ))
+        })
         .collect()
 }
 

@@ -8,6 +8,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::Alpha;
+use crate::light::EmitterShading;
 use crate::light::disk::{DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::{RectMethod, RectShading, rect_exact, rect_light};
 use crate::light::sphere::cap::Cap;
@@ -170,25 +171,29 @@ impl Case {
             }
             Measured::Rect => {
                 let s = RectShading {
-                    v: self.v,
+                    pixel: EmitterShading {
+                        v: self.v,
+                        alpha: self.alpha,
+                        f0: F0,
+                        ltc: pair,
+                        clip,
+                        normalization,
+                    },
                     rect: self.rect,
-                    alpha: self.alpha,
-                    f0: F0,
-                    ltc: pair,
-                    clip,
-                    normalization,
                 };
                 rect_light(RectMethod::LtcPolygon, &s).specular
             }
             Measured::Disk => {
                 let s = DiskShading {
-                    v: self.v,
+                    pixel: EmitterShading {
+                        v: self.v,
+                        alpha: self.alpha,
+                        f0: F0,
+                        ltc: pair,
+                        clip,
+                        normalization,
+                    },
                     disk: self.disk,
-                    alpha: self.alpha,
-                    f0: F0,
-                    ltc: pair,
-                    clip,
-                    normalization,
                 };
                 disk_light(DiskMethod::LtcDisk, &s).specular
             }

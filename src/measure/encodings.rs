@@ -10,6 +10,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{Alpha, Lobes, view_from_theta};
+use crate::light::EmitterShading;
 use crate::light::disk::{DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::{RectMethod, RectShading, rect_exact, rect_light};
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
@@ -245,26 +246,30 @@ fn one_case(
     let rects = all.iter().map(|t| {
         let pair = t.ltc_pair(alpha, v);
         let s = RectShading {
-            v,
+            pixel: EmitterShading {
+                v,
+                alpha: a,
+                f0: F0,
+                ltc: &pair,
+                clip,
+                normalization,
+            },
             rect,
-            alpha: a,
-            f0: F0,
-            ltc: &pair,
-            clip,
-            normalization,
         };
         rect_light(RectMethod::LtcPolygon, &s)
     });
     let disks = all.iter().map(|t| {
         let pair = t.ltc_pair(alpha, v);
         let s = DiskShading {
-            v,
+            pixel: EmitterShading {
+                v,
+                alpha: a,
+                f0: F0,
+                ltc: &pair,
+                clip,
+                normalization,
+            },
             disk,
-            alpha: a,
-            f0: F0,
-            ltc: &pair,
-            clip,
-            normalization,
         };
         disk_light(DiskMethod::LtcDisk, &s)
     });
@@ -302,13 +307,15 @@ fn anisotropic(
     let point = |pair, method| sphere_light(method, &SphereShading::unit(v, l, 0.0, a, F0, pair));
     let rect_by = |pair| {
         let s = RectShading {
-            v,
+            pixel: EmitterShading {
+                v,
+                alpha: a,
+                f0: F0,
+                ltc: pair,
+                clip: Clipping::BOTH,
+                normalization: Normalization::Corrected,
+            },
             rect: *rect,
-            alpha: a,
-            f0: F0,
-            ltc: pair,
-            clip: Clipping::BOTH,
-            normalization: Normalization::Corrected,
         };
         rect_light(RectMethod::LtcPolygon, &s)
     };

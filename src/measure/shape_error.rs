@@ -9,6 +9,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::brdf::{Alpha, Lobes, view_from_theta};
+use crate::light::EmitterShading;
 use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::form::tilted_frame;
 use crate::light::rect::{Rect, RectMethod, RectShading, rect_exact, rect_light};
@@ -139,13 +140,15 @@ fn cell(
         let pair = lut.ltc_pair(alpha, v);
         let (clip, normalization) = (Clipping::BOTH, Normalization::Corrected);
         let s = RectShading {
-            v,
+            pixel: EmitterShading {
+                v,
+                alpha: Alpha::isotropic(alpha),
+                f0: F0,
+                ltc: &pair,
+                clip,
+                normalization,
+            },
             rect,
-            alpha: Alpha::isotropic(alpha),
-            f0: F0,
-            ltc: &pair,
-            clip,
-            normalization,
         };
         let exact = rect_exact(v, &rect, Alpha::isotropic(alpha), F0, nodes);
         if finer {
@@ -161,13 +164,15 @@ fn cell(
             add(e, rect_light(m, &s), exact);
         }
         let s = DiskShading {
-            v,
+            pixel: EmitterShading {
+                v,
+                alpha: Alpha::isotropic(alpha),
+                f0: F0,
+                ltc: &pair,
+                clip,
+                normalization,
+            },
             disk,
-            alpha: Alpha::isotropic(alpha),
-            f0: F0,
-            ltc: &pair,
-            clip,
-            normalization,
         };
         let exact = disk_exact(v, &disk, Alpha::isotropic(alpha), F0, nodes);
         if finer {

@@ -396,3 +396,22 @@ fn method_for_is_the_per_shape_flags_keyed_by_shape() {
     }
     assert!(!out.exists());
 }
+
+/// `render --help` names every shape `--method-for` takes, each with every one of its methods
+/// (the help is built from the shapes, so a new shape is in it).
+#[test]
+fn the_help_names_every_shape_and_its_methods() {
+    let o = crate::ltc_lab(&["render", "--help"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let help = String::from_utf8_lossy(&o.stdout);
+    for kind in ltc_lab::light::ShapeKind::ALL {
+        assert!(
+            help.contains(&format!("{} (", kind.name())),
+            "{kind:?}: {help}"
+        );
+        for m in ltc_lab::render::ShapeMethod::all(kind) {
+            assert!(help.contains(m.name()), "{kind:?} {}", m.name());
+        }
+    }
+    assert!(help.contains("tube (exact, ltc-line"), "{help}");
+}

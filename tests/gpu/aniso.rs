@@ -87,7 +87,6 @@ fn the_gpu_lookup_is_the_cpu_lookup() {
         ltc::SOURCE,
         ltc_aniso::SOURCE,
         &ltc_lab::gpu::light::sources(),
-        crate::gpu_common::METHOD_CODES,
         PROBE,
     ]
     .join("\n");

@@ -258,3 +258,55 @@ fn the_inspectors_values_of_a_file_are_each_lights_ltc() {
             .is_none()
     );
 }
+
+/// A file's `method_tube` is called for each tube with its centre, half axis, radius and
+/// intensity (windowed at the centre, as a point's): a file giving back the intensity as
+/// specular and (r, |half_axis|, 0) as diffuse renders its point image of the same lights as
+/// points, plus the sum of (r, |half_axis|, 0) at every pixel of the plane it sees.
+#[test]
+fn a_files_tube_function_sees_each_tube() {
+    let source = "fn method_point(pixel: MethodPixel, light: MethodPoint) -> MethodRadiance {\n    return MethodRadiance(light.intensity, vec3<f32>(0.0));\n}\nfn method_tube(pixel: MethodPixel, light: MethodTube) -> MethodRadiance {\n    return MethodRadiance(light.intensity, vec3<f32>(light.radius, length(light.half_axis), 0.0));\n}\n";
+    let file = MethodFile::from_source("tube-fields.wgsl", source).unwrap();
+    assert_eq!(file.shapes(), "point, tube");
+    let Some(mut r) = renderer_with(file) else {
+        return;
+    };
+    let tubes = preset("tube-limits");
+    let mut points = tubes.clone();
+    let mut sum = glam::DVec3::ZERO;
+    for l in &mut points.lights {
+        let ltc_lab::light::Shape::Tube { half_axis, radius } = l.shape else {
+            panic!("tube-limits holds tubes only");
+        };
+        sum += glam::DVec3::new(radius, half_axis.length(), 0.0);
+        l.shape = ltc_lab::light::Shape::Point;
+    }
+    let s = settings(Method::File, Clipping::BOTH);
+    let (tube_frame, point_frame) = (render(&mut r, &tubes, &s), render(&mut r, &points, &s));
+    assert!(
+        point_frame.pixels.iter().any(|p| luminance(*p) > 0.0),
+        "the point image is black"
+    );
+    // f32 sums of a few terms of size ≤ 10: some 1e-5 of them.
+    let mut seen = 0;
+    for (i, (t, p)) in tube_frame
+        .pixels
+        .iter()
+        .zip(&point_frame.pixels)
+        .enumerate()
+    {
+        let d = *t - *p;
+        if d.abs().max_element() < 1e-4 {
+            continue;
+        }
+        assert!(
+            (d - sum).abs().max_element() < 1e-4 * (1.0 + p.max_element()),
+            "pixel {i}: {d} not {sum}"
+        );
+        seen += 1;
+    }
+    assert!(
+        seen > SIZE.0 * SIZE.1 / 4,
+        "{seen} pixels saw the tubes' fields"
+    );
+}

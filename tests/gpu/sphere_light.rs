@@ -4,7 +4,7 @@
 //! enclosing the point, from a tenth of a degree to 60°.
 
 use crate::gpu_common::{
-    METHOD_CODES, PROBE_LTC, condition, gpu, gpu_frame, lights_probe_source, pack_pair, run_probe,
+    PROBE_LTC, condition, gpu, gpu_frame, lights_probe_source, pack_pair, run_probe,
 };
 use glam::DVec3;
 use ltc_lab::brdf::view_from_theta;
@@ -94,7 +94,7 @@ fn pack(c: &Case) -> Vec<[f32; 4]> {
 
 /// The probe `tail` composed after the sphere lights' shaders, run over `input`.
 fn probe(tail: &str, input: &[[f32; 4]], outputs: usize) -> Vec<[f32; 4]> {
-    let source = lights_probe_source(&[METHOD_CODES, tail].concat());
+    let source = lights_probe_source(tail);
     run_probe(&source, &[], bytemuck::cast_slice(input), &[], outputs)
 }
 

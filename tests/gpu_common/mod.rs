@@ -273,16 +273,6 @@ pub fn lights_probe_source(tail: &str) -> String {
     .join("\n")
 }
 
-/// The rect and disk method codes light_shape.wgsl defines, for a probe that does not.
-pub const METHOD_CODES: &str = "
-const RECT_EXACT: u32 = 0u;
-const RECT_LTC_POLYGON: u32 = 1u;
-const RECT_LTC_PROXY: u32 = 2u;
-const RECT_LTC_PROXY_FAST: u32 = 3u;
-const DISK_EXACT: u32 = 0u;
-const DISK_LTC_DISK: u32 = 1u;
-";
-
 /// A probe's reader of an LTC lobe packed by `pack_pair` (four vec4s from `probe_in[k]`):
 /// composed into the probe shaders after their `probe_in` binding.
 pub const PROBE_LTC: &str = "

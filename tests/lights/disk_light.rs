@@ -7,6 +7,7 @@ use std::f64::consts::PI;
 
 use glam::DVec3;
 use ltc_lab::brdf::{self, Alpha, brdf_cos};
+use ltc_lab::light::EmitterShading;
 use ltc_lab::light::disk::{
     Disk, DiskMethod, DiskShading, RENDER_NODES, disk_exact, disk_integral_about, disk_light,
     disk_light_with, ltc_disk_light,
@@ -188,13 +189,15 @@ fn a_disk_facing_away_lights_nothing() {
     };
     for method in DiskMethod::ALL {
         let s = |disk| DiskShading {
-            v,
+            pixel: EmitterShading {
+                v,
+                alpha: Alpha::isotropic(0.3),
+                f0: 0.04,
+                ltc: &pair,
+                clip: Clipping::BOTH,
+                normalization: Normalization::Corrected,
+            },
             disk,
-            alpha: Alpha::isotropic(0.3),
-            f0: 0.04,
-            ltc: &pair,
-            clip: Clipping::BOTH,
-            normalization: Normalization::Corrected,
         };
         assert_eq!(disk_light(method, &s(away)), brdf::Lobes::default());
         assert!(
@@ -300,13 +303,15 @@ fn every_method_is_finite_and_non_negative_at_the_limits() {
             },
         ] {
             let s = DiskShading {
-                v,
+                pixel: EmitterShading {
+                    v,
+                    alpha: Alpha::isotropic(alpha),
+                    f0: 0.04,
+                    ltc: &pair,
+                    clip,
+                    normalization: Normalization::Corrected,
+                },
                 disk,
-                alpha: Alpha::isotropic(alpha),
-                f0: 0.04,
-                ltc: &pair,
-                clip,
-                normalization: Normalization::Corrected,
             };
             for method in DiskMethod::ALL {
                 let lobes = disk_light_with(method, &s, ltc_lab::light::ExactRule::Render);

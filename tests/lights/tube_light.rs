@@ -9,6 +9,7 @@ use std::f64::consts::{PI, TAU};
 
 use glam::DVec3;
 use ltc_lab::brdf::{self, Alpha, brdf_cos_aniso};
+use ltc_lab::light::EmitterShading;
 use ltc_lab::light::polar::{DIFFUSE_NODES, RULE_NODES};
 use ltc_lab::light::tube::band::tube_band;
 use ltc_lab::light::tube::line::{diffuse_line, line_irradiance, ltc_line};
@@ -274,13 +275,15 @@ fn shading<'a>(
     pair: &'a ltc_lab::ltc::LtcPair,
 ) -> TubeShading<'a> {
     TubeShading {
-        v,
+        pixel: EmitterShading {
+            v,
+            alpha: Alpha::isotropic(alpha),
+            f0: 0.04,
+            ltc: pair,
+            clip: Clipping::BOTH,
+            normalization: Normalization::Corrected,
+        },
         tube,
-        alpha: Alpha::isotropic(alpha),
-        f0: 0.04,
-        ltc: pair,
-        clip: Clipping::BOTH,
-        normalization: Normalization::Corrected,
     }
 }
 

@@ -37,7 +37,7 @@ fn expression_value(
 }
 
 /// The shaders' constants that only the shaders read, each with why Rust has no twin.
-const SHADER_ONLY: [(&str, &str); 12] = [
+const SHADER_ONLY: [(&str, &str); 13] = [
     // add_light's side of the split, which light_shape.wgsl picks each shape's override by.
     ("SIDE_A", "light_shape.wgsl's argument, not a pipeline's"),
     ("SIDE_B", "light_shape.wgsl's argument, not a pipeline's"),
@@ -68,13 +68,13 @@ const SHADER_ONLY: [(&str, &str); 12] = [
     ),
     ("METHOD_FILE_RECT", "written when a method file is composed"),
     ("METHOD_FILE_DISK", "written when a method file is composed"),
+    ("METHOD_FILE_TUBE", "written when a method file is composed"),
     // plane.wgsl's largest finite f32, the floor of an empty min.
     ("F32_MAX", "a bound inside plane.wgsl"),
 ];
 
 /// Every constant the WGSL and Rust share, as Rust has it: `(name in the WGSL, value)`.
 fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
-    use ltc_lab::gpu::light_shape::{disk_constant, rect_constant, sphere_constant};
     use ltc_lab::gpu::limits::LOAD;
     use ltc_lab::gpu::ltc::{
         CLIP_HORIZON, CLIP_TRANSFORMED, LUT_VEC4S_PER_CELL, horizon_constant,
@@ -82,7 +82,6 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
     };
     use ltc_lab::gpu::plane::{ViewConstant, method_constant};
     use ltc_lab::gpu::scene::TILE_SIDE;
-    use ltc_lab::light::sphere::SphereMethod;
     use ltc_lab::ltc::Normalization;
     use ltc_lab::ltc::remedy::HorizonRule;
     use ltc_lab::render::Method;
@@ -91,10 +90,13 @@ fn shared_constants() -> Vec<(&'static str, Vec<f64>)> {
     let codes = Method::ALL
         .map(method_constant)
         .into_iter()
-        .chain(SphereMethod::ALL.map(sphere_constant))
-        .chain(ltc_lab::light::rect::RectMethod::ALL.map(rect_constant))
-        .chain(ltc_lab::light::disk::DiskMethod::ALL.map(disk_constant))
-        .chain(ltc_lab::light::tube::TubeMethod::ALL.map(ltc_lab::gpu::tube_light::tube_constant))
+        // Every sized shape's methods, each from its own shader (a point's are `Method`'s).
+        .chain(
+            ltc_lab::light::ShapeKind::ALL
+                .into_iter()
+                .flat_map(ltc_lab::render::ShapeMethod::all)
+                .filter_map(|m| ltc_lab::gpu::light::method_constant(m).ok()),
+        )
         .chain(ViewConstant::ALL.map(ViewConstant::constant))
         .chain(
             [

@@ -16,15 +16,9 @@ fn brdf_sources() -> String {
     [brdf::SOURCE, brdf_aniso::SOURCE].join("\n")
 }
 
-/// brdf, ltc and the lights' files, with the method codes light_shape.wgsl defines.
+/// brdf, ltc and the lights' files (each shape's holding its method codes).
 fn lights_source() -> String {
-    [
-        &brdf_sources(),
-        ltc::SOURCE,
-        &light::sources(),
-        "const RECT_EXACT: u32 = 0u; const RECT_LTC_POLYGON: u32 = 1u; const RECT_LTC_PROXY: u32 = 2u; const RECT_LTC_PROXY_FAST: u32 = 3u; const DISK_EXACT: u32 = 0u; const DISK_LTC_DISK: u32 = 1u;",
-    ]
-    .join("\n")
+    [&brdf_sources(), ltc::SOURCE, &light::sources()].join("\n")
 }
 
 fn validate(name: &str, src: &str) -> naga::Module {

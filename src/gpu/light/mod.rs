@@ -1,5 +1,7 @@
 //! The lights' shaders (docs/design.md §1.10–§1.12, §5.12), one module per WGSL file: each
-//! shape's methods (`sphere_light`, `rect_light`, `disk_light`, twins of `crate::light`), the
+//! shape's methods, its code and its methods' codes (`sphere_light`, `rect_light`,
+//! `disk_light`, `tube_light`, twins of `crate::light`), what every emitter shares
+//! (`emitter`: its shading and `emitter_lobes`, one arm per shape), the
 //! renders' exact rule they share (`polar`, `boundary` and `fan`, twins of `crate::light`'s) and the
 //! dispatch of a light to its shape's method (`light_shape`). `gpu` re-exports them, so their
 //! paths are `gpu::sphere_light` and so on.
@@ -12,6 +14,7 @@
 
 pub mod boundary;
 pub mod disk_light;
+pub mod emitter;
 pub mod fan;
 pub mod light_shape;
 pub mod polar;
@@ -30,6 +33,7 @@ use crate::render::{Method, ShapeMethod};
 /// `brdf`, `brdf_aniso`, `ltc` and `ltc_aniso`.
 pub fn sources() -> String {
     [
+        emitter::SOURCE,
         sphere_light::SOURCE,
         rect_light::SOURCE,
         disk_light::SOURCE,
@@ -42,8 +46,8 @@ pub fn sources() -> String {
     .join("\n")
 }
 
-/// `SHAPE_*` of the shaders (scene.wgsl's for a point and a sphere, light_shape.wgsl's for
-/// the shapes with a second element): its value and its name there.
+/// `SHAPE_*` of the shaders (scene.wgsl's for a point and a sphere, each emitter's own file's,
+/// as rect_light.wgsl's `SHAPE_RECT`): its value and its name there.
 pub fn shape_constant(kind: ShapeKind) -> (u32, &'static str) {
     match kind {
         ShapeKind::Point => (0, "SHAPE_POINT"),
@@ -76,16 +80,16 @@ pub fn second_element(shape: Shape) -> Option<[[f32; 4]; 2]> {
     Some([first.to_array(), second.extend(code).to_array()])
 }
 
-/// A sized shape's method's code: light_shape.wgsl's `SPHERE_*`, `RECT_*` and `DISK_*`, or a
-/// shape's own shader's (tube_light.wgsl's `TUBE_*`). A point's method comes back as the
+/// A sized shape's method's code: its own shader's (sphere_light.wgsl's `SPHERE_*`,
+/// rect_light.wgsl's `RECT_*`, …). A point's method comes back as the
 /// error, its codes being plane.wgsl's (`gpu::plane::shape_method_constant`), so that this
 /// module, below the plane's, does not read it.
 pub fn method_constant(m: ShapeMethod) -> Result<(u32, &'static str), Method> {
     match m {
         ShapeMethod::Point(m) => Err(m),
-        ShapeMethod::Sphere(m) => Ok(light_shape::sphere_constant(m)),
-        ShapeMethod::Rect(m) => Ok(light_shape::rect_constant(m)),
-        ShapeMethod::Disk(m) => Ok(light_shape::disk_constant(m)),
+        ShapeMethod::Sphere(m) => Ok(sphere_light::sphere_constant(m)),
+        ShapeMethod::Rect(m) => Ok(rect_light::rect_constant(m)),
+        ShapeMethod::Disk(m) => Ok(disk_light::disk_constant(m)),
         ShapeMethod::Tube(m) => Ok(tube_light::tube_constant(m)),
     }
 }

@@ -13,6 +13,7 @@ use wgpu::naga;
 use wgpu::naga::valid::Capabilities;
 
 use crate::error::{Error, Result};
+use crate::light::ShapeKind;
 use wgsl_text::{first_directive, line_column, module_names, rewrite, tokens};
 
 /// The shader text (composed after `plane::SOURCE`).
@@ -22,26 +23,33 @@ pub const SOURCE: &str = include_str!("../../../shaders/method_file.wgsl");
 /// (the lab's own shaders are 120 KiB together).
 pub const MAX_BYTES: usize = 256 * 1024;
 
-/// A file's functions: the name, the light's struct, and the shape's name, in the order of
-/// `MethodFile::shades` (point, sphere, rect, disk).
-pub const ENTRIES: [(&str, &str, &str); 4] = [
-    ("method_point", "MethodPoint", "point"),
-    ("method_sphere", "MethodSphere", "sphere"),
-    ("method_rect", "MethodRect", "rect"),
-    ("method_disk", "MethodDisk", "disk"),
-];
+/// Whether a file shades each shape, in `ShapeKind::ALL`'s order.
+pub type Shades = [bool; ShapeKind::ALL.len()];
+
+/// A file's function for `kind` and the light's struct it takes: `method_<shape>` and
+/// `Method<Shape>`, as method_file.wgsl declares them for every shape.
+pub fn entry(kind: ShapeKind) -> (String, String) {
+    let name = kind.name();
+    let mut chars = name.chars();
+    let capital: String = chars
+        .next()
+        .map(|c| c.to_ascii_uppercase())
+        .into_iter()
+        .collect();
+    (
+        format!("method_{name}"),
+        format!("Method{capital}{}", chars.as_str()),
+    )
+}
+
+/// The constant of method_file.wgsl that says whether the file shades `kind`.
+fn shades_constant(kind: ShapeKind) -> String {
+    format!("METHOD_FILE_{}", kind.name().to_ascii_uppercase())
+}
 
 /// METHOD_FILE_STEPS of method_file.wgsl: the steps a file's loops may take for one light
 /// (tests/shaders/main.rs checks the two agree).
 pub const STEPS: u32 = 16384;
-
-/// The constants of method_file.wgsl that say which shapes the file shades.
-const SHADES_CONSTANTS: [&str; 4] = [
-    "METHOD_FILE_POINT",
-    "METHOD_FILE_SPHERE",
-    "METHOD_FILE_RECT",
-    "METHOD_FILE_DISK",
-];
 
 /// The statement at the top of every loop body of a file (method_file.wgsl).
 const LOOP_GUARD: &str = "if method_file_over() { break; }";
@@ -53,8 +61,8 @@ pub struct MethodFile {
     /// The file's name, as messages, charts and tables show it.
     pub name: String,
     source: String,
-    /// Whether it shades points, spheres, rects and disks (`ENTRIES`' order).
-    pub shades: [bool; 4],
+    /// Whether it shades each shape (`ShapeKind::ALL`'s order).
+    pub shades: Shades,
 }
 
 impl MethodFile {
@@ -86,7 +94,7 @@ impl MethodFile {
     }
 
     /// Checks `source` as a method: WGSL that, beside the interface structs alone, parses and
-    /// validates; defines at least one of `ENTRIES` and each with its signature; holds no
+    /// validates; defines at least one shape's `entry` and each with its signature; holds no
     /// directive, entry point, binding, workgroup memory or override; and composes with the
     /// lab's shader. Each refusal names the line and column of the file.
     pub fn from_source(name: &str, source: &str) -> Result<Self> {
@@ -150,13 +158,13 @@ impl MethodFile {
                 .iter()
                 .any(|(_, g)| g.name.as_deref() == Some(f))
         };
-        let shades = ENTRIES.map(|(f, _, _)| defined(f));
+        let shades = ShapeKind::ALL.map(|k| defined(&entry(k).0));
         if !shades.contains(&true) {
+            let functions = ShapeKind::ALL.map(|k| entry(k).0).join(", ");
             return Err(Error::input(
                 name,
                 format!(
-                    "defines none of {}: a method file shades at least one light shape (docs/design.md §5.13)",
-                    ENTRIES.map(|e| e.0).join(", ")
+                    "defines none of {functions}: a method file shades at least one light shape (docs/design.md §5.13)"
                 ),
             ));
         }
@@ -164,7 +172,7 @@ impl MethodFile {
             // At the function's own declaration (`fn` then its name).
             let offset = toks
                 .windows(2)
-                .find(|w| w[0].text == "fn" && w[1].text == f)
+                .find(|w| w[0].text == "fn" && w[1].text == f.as_str())
                 .map_or(0, |w| w[1].start);
             return Err(at(
                 offset,
@@ -196,10 +204,9 @@ impl MethodFile {
         h.finish()
     }
 
-    /// Whether it has a function for `kind` (`ENTRIES` are in `ShapeKind::ALL`'s order; a
-    /// shape after them has none in the interface, and the lab's method shades it).
-    pub fn shades(&self, kind: crate::light::ShapeKind) -> bool {
-        self.shades.get(kind.index()).copied().unwrap_or(false)
+    /// Whether it has a function for `kind`.
+    pub fn shades(&self, kind: ShapeKind) -> bool {
+        self.shades[kind.index()]
     }
 
     /// The text as the file holds it.
@@ -209,11 +216,10 @@ impl MethodFile {
 
     /// The shapes it shades, by name ("point, rect").
     pub fn shapes(&self) -> String {
-        ENTRIES
-            .iter()
-            .zip(self.shades)
-            .filter(|(_, s)| *s)
-            .map(|(e, _)| e.2)
+        ShapeKind::ALL
+            .into_iter()
+            .filter(|&k| self.shades(k))
+            .map(ShapeKind::name)
             .collect::<Vec<_>>()
             .join(", ")
     }
@@ -233,7 +239,7 @@ impl MethodFile {
         // otherwise take the lab's own calls to it, since WGSL's module scope is one.
         let renames: Vec<(String, String)> = own
             .iter()
-            .filter(|(n, _)| !ENTRIES.iter().any(|e| e.0 == *n))
+            .filter(|(n, _)| !ShapeKind::ALL.iter().any(|&k| entry(k).0 == *n))
             .map(|(n, _)| {
                 let mut new = format!("file_{n}");
                 while taken(&new) {
@@ -263,25 +269,27 @@ impl MethodFile {
 
 /// The text after the lab's where no file is loaded: no shape shaded, every function a stub.
 pub fn no_file() -> String {
-    format!("{}\n{}", shade_constants([false; 4]), stubs([false; 4]))
+    let none = ShapeKind::ALL.map(|_| false);
+    format!("{}\n{}", shade_constants(none), stubs(none))
 }
 
-fn shade_constants(shades: [bool; 4]) -> String {
-    SHADES_CONSTANTS
+fn shade_constants(shades: Shades) -> String {
+    ShapeKind::ALL
         .iter()
         .zip(shades)
-        .map(|(c, s)| format!("const {c}: bool = {s};\n"))
+        .map(|(&k, s)| format!("const {}: bool = {s};\n", shades_constant(k)))
         .collect()
 }
 
 /// A function returning nothing for each shape not shaded (never called: the loop takes the
 /// lab's method there).
-fn stubs(shades: [bool; 4]) -> String {
-    ENTRIES
+fn stubs(shades: Shades) -> String {
+    ShapeKind::ALL
         .iter()
         .zip(shades)
         .filter(|(_, s)| !*s)
-        .map(|((f, light, _), _)| {
+        .map(|(&k, _)| {
+            let (f, light) = entry(k);
             format!(
                 "fn {f}(pixel: MethodPixel, light: {light}) -> MethodRadiance {{\n    return MethodRadiance(vec3<f32>(0.0), vec3<f32>(0.0));\n}}\n"
             )
@@ -377,16 +385,12 @@ fn wrong_return(
 
 /// The first function the file defines whose signature is not the interface's (its name and
 /// light struct): each is called as the light loop calls it.
-fn wrong_signature(
-    name: &str,
-    beside: &str,
-    shades: [bool; 4],
-) -> Option<(&'static str, &'static str)> {
-    ENTRIES
+fn wrong_signature(name: &str, beside: &str, shades: Shades) -> Option<(String, String)> {
+    ShapeKind::ALL
         .iter()
         .zip(shades)
         .filter(|(_, s)| *s)
-        .map(|((f, light, _), _)| (*f, *light))
+        .map(|(&k, _)| entry(k))
         .find(|(f, light)| {
             let call = format!(
                 "{beside}\nfn method_file_call(p: MethodPixel, l: {light}) -> MethodRadiance {{ return {f}(p, l); }}\n"

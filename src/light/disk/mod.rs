@@ -13,7 +13,7 @@ use glam::{DMat3, DVec3};
 use crate::brdf::{self, Alpha, Lobes};
 use crate::light::sphere::disk::{cone_image, cone_integral, hemisphere};
 use crate::light::{EmitterLobes, EmitterShading, ExactRule, point_lobes};
-use crate::ltc::{Clipping, Ltc, LtcPair, Normalization};
+use crate::ltc::{Ltc, Normalization};
 use crate::named::named_enum;
 
 pub use form::{
@@ -117,15 +117,9 @@ pub const DISK_POINT_LIMIT: f64 = 1e-7;
 /// One disk light of unit radiance at one shading point: everything the methods read.
 #[derive(Clone, Copy, Debug)]
 pub struct DiskShading<'a> {
-    pub v: DVec3,
+    /// The view, the material, the LTC lobes and the rules (every emitter's).
+    pub pixel: EmitterShading<'a>,
     pub disk: Disk,
-    /// The material's roughness along the shading frame's x and y.
-    pub alpha: Alpha<f64>,
-    pub f0: f64,
-    /// The LTC lobes at this pixel's (θo, α).
-    pub ltc: &'a LtcPair,
-    pub clip: Clipping,
-    pub normalization: Normalization,
 }
 
 /// A disk's unit-radiance lobes by `method` and its area (`EmitterLobes`), centred at
@@ -143,15 +137,7 @@ pub fn emitter_lobes(
         normal: to_frame(normal.normalize()),
         radius,
     };
-    let shading = DiskShading {
-        v: s.v,
-        disk,
-        alpha: s.alpha,
-        f0: s.f0,
-        ltc: s.ltc,
-        clip: s.clip,
-        normalization: s.normalization,
-    };
+    let shading = DiskShading { pixel: *s, disk };
     (disk_light_with(method, &shading, rule), disk.area())
 }
 
@@ -175,7 +161,7 @@ pub fn disk_light_with(method: DiskMethod, s: &DiskShading<'_>, rule: ExactRule)
                 ExactRule::Nodes(nodes) => nodes,
                 ExactRule::Render => RENDER_NODES,
             };
-            disk_exact(s.v, &s.disk, s.alpha, s.f0, nodes)
+            disk_exact(s.pixel.v, &s.disk, s.pixel.alpha, s.pixel.f0, nodes)
         }
         DiskMethod::LtcDisk => disk_ltc(s),
         DiskMethod::LtcPoint => disk_point(method, s),
@@ -190,11 +176,11 @@ pub fn disk_point(method: DiskMethod, s: &DiskShading<'_>) -> Lobes<f64> {
     let exact = method == DiskMethod::Exact;
     let lobes = point_lobes(
         exact,
-        (s.v, l),
-        (s.alpha, s.f0),
-        s.ltc,
-        s.clip,
-        s.normalization,
+        (s.pixel.v, l),
+        (s.pixel.alpha, s.pixel.f0),
+        s.pixel.ltc,
+        s.pixel.clip,
+        s.pixel.normalization,
     );
     Lobes {
         specular: e * lobes.specular,
@@ -221,14 +207,14 @@ pub fn disk_exact(v: DVec3, disk: &Disk, alpha: Alpha<f64>, f0: f64, n: usize) -
 /// magnitude. With case 1 a disk wholly below the surface gives 0; one across it is left to
 /// case 2, as the sphere's LTC disk is (the cone's algebra has no cut).
 pub fn disk_ltc(s: &DiskShading<'_>) -> Lobes<f64> {
-    if s.clip.case1 && s.disk.below_horizon() {
+    if s.pixel.clip.case1 && s.disk.below_horizon() {
         return Lobes::default();
     }
-    let (spec_weight, diff_weight) = s.ltc.lobe_weights(s.f0, s.normalization);
-    let lobe = |ltc| ltc_disk_light(ltc, &s.disk, s.clip.case2, s.normalization);
+    let (spec_weight, diff_weight) = s.pixel.ltc.lobe_weights(s.pixel.f0, s.pixel.normalization);
+    let lobe = |ltc| ltc_disk_light(ltc, &s.disk, s.pixel.clip.case2, s.pixel.normalization);
     Lobes {
-        specular: spec_weight * lobe(&s.ltc.spec),
-        diffuse: diff_weight * lobe(&s.ltc.diff),
+        specular: spec_weight * lobe(&s.pixel.ltc.spec),
+        diffuse: diff_weight * lobe(&s.pixel.ltc.diff),
     }
 }
 

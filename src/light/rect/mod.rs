@@ -13,7 +13,6 @@ use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes};
 use crate::light::{EmitterLobes, EmitterShading, ExactRule, point_lobes};
-use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
 
 pub use form::{EVAL_COLUMNS, PRESETS, SIZES, VECTORS, bench_shape, bench_title, eval_row};
@@ -124,15 +123,9 @@ pub const RECT_POINT_LIMIT: f64 = 1e-3;
 /// One rect light of unit radiance at one shading point: everything the methods read.
 #[derive(Clone, Copy, Debug)]
 pub struct RectShading<'a> {
-    pub v: DVec3,
+    /// The view, the material, the LTC lobes and the rules (every emitter's).
+    pub pixel: EmitterShading<'a>,
     pub rect: Rect,
-    /// The material's roughness along the shading frame's x and y.
-    pub alpha: Alpha<f64>,
-    pub f0: f64,
-    /// The LTC lobes at this pixel's (θo, α).
-    pub ltc: &'a LtcPair,
-    pub clip: Clipping,
-    pub normalization: Normalization,
 }
 
 /// A rect's unit-radiance lobes by `method` and its area (`EmitterLobes`), centred at
@@ -150,15 +143,7 @@ pub fn emitter_lobes(
         u: to_frame(half_u),
         v: to_frame(half_v),
     };
-    let shading = RectShading {
-        v: s.v,
-        rect,
-        alpha: s.alpha,
-        f0: s.f0,
-        ltc: s.ltc,
-        clip: s.clip,
-        normalization: s.normalization,
-    };
+    let shading = RectShading { pixel: *s, rect };
     (rect_light_with(method, &shading, rule), rect.area())
 }
 
@@ -177,11 +162,13 @@ pub fn rect_light_with(method: RectMethod, s: &RectShading<'_>, rule: ExactRule)
         return rect_point(method, s);
     }
     let corners = s.rect.corners();
-    let (clip, normalization) = (s.clip, s.normalization);
+    let (clip, normalization) = (s.pixel.clip, s.pixel.normalization);
     match method {
         RectMethod::Exact => match rule {
-            ExactRule::Nodes(nodes) => rect_exact(s.v, &s.rect, s.alpha, s.f0, nodes),
-            ExactRule::Render => region::rect_rule(s.v, &s.rect, s.alpha, s.f0),
+            ExactRule::Nodes(nodes) => {
+                rect_exact(s.pixel.v, &s.rect, s.pixel.alpha, s.pixel.f0, nodes)
+            }
+            ExactRule::Render => region::rect_rule(s.pixel.v, &s.rect, s.pixel.alpha, s.pixel.f0),
         },
         RectMethod::LtcPolygon => {
             by_lobe(s, &|ltc| ltc_polygon(ltc, &corners, clip, normalization))
@@ -196,10 +183,10 @@ pub fn rect_light_with(method: RectMethod, s: &RectShading<'_>, rule: ExactRule)
 
 /// Each lobe's integral times its magnitude (none for the paper-literal normalization).
 fn by_lobe(s: &RectShading<'_>, integral: &dyn Fn(&crate::ltc::Ltc) -> f64) -> Lobes<f64> {
-    let (spec_weight, diff_weight) = s.ltc.lobe_weights(s.f0, s.normalization);
+    let (spec_weight, diff_weight) = s.pixel.ltc.lobe_weights(s.pixel.f0, s.pixel.normalization);
     Lobes {
-        specular: spec_weight * integral(&s.ltc.spec),
-        diffuse: diff_weight * integral(&s.ltc.diff),
+        specular: spec_weight * integral(&s.pixel.ltc.spec),
+        diffuse: diff_weight * integral(&s.pixel.ltc.diff),
     }
 }
 
@@ -211,11 +198,11 @@ pub fn rect_point(method: RectMethod, s: &RectShading<'_>) -> Lobes<f64> {
     let exact = method == RectMethod::Exact;
     let lobes = point_lobes(
         exact,
-        (s.v, l),
-        (s.alpha, s.f0),
-        s.ltc,
-        s.clip,
-        s.normalization,
+        (s.pixel.v, l),
+        (s.pixel.alpha, s.pixel.f0),
+        s.pixel.ltc,
+        s.pixel.clip,
+        s.pixel.normalization,
     );
     Lobes {
         specular: e * lobes.specular,

@@ -109,13 +109,13 @@ pub fn line_irradiance(a: DVec3, b: DVec3) -> f64 {
 pub fn tube_ltc_line(s: &TubeShading<'_>, ends: bool) -> Lobes<f64> {
     let t = &s.tube;
     // Case 1 clips the segment at the surface before `M⁻¹` can lift a part below it.
-    let segment = match s.clip.case1 {
+    let segment = match s.pixel.clip.case1 {
         true => clip_segment(t.a, t.b),
         false => Some((t.a, t.b)),
     };
     let lobe = |ltc: &Ltc| {
         let line = segment.map_or(0.0, |(a, b)| {
-            t.radius * ltc_line(ltc, a, b, s.normalization)
+            t.radius * ltc_line(ltc, a, b, s.pixel.normalization)
         });
         if !ends {
             return line;
@@ -123,18 +123,18 @@ pub fn tube_ltc_line(s: &TubeShading<'_>, ends: bool) -> Lobes<f64> {
         let end = |p: DVec3, outward: DVec3| {
             let w = p.normalize();
             let area = 0.5 * PI * t.radius * t.radius * (1.0 - outward.dot(w));
-            area * ltc.ltc_eval(w, s.clip, s.normalization)
+            area * ltc.ltc_eval(w, s.pixel.clip, s.pixel.normalization)
                 / p.length_squared().max(t.radius * t.radius)
         };
         let total = line + end(t.a, -t.axis()) + end(t.b, t.axis());
-        match s.normalization {
+        match s.pixel.normalization {
             Normalization::Corrected => total.min(1.0),
             Normalization::PaperLiteral => total.min(PI),
         }
     };
-    let (spec_weight, diff_weight) = s.ltc.lobe_weights(s.f0, s.normalization);
+    let (spec_weight, diff_weight) = s.pixel.ltc.lobe_weights(s.pixel.f0, s.pixel.normalization);
     Lobes {
-        specular: spec_weight * lobe(&s.ltc.spec),
-        diffuse: diff_weight * lobe(&s.ltc.diff),
+        specular: spec_weight * lobe(&s.pixel.ltc.spec),
+        diffuse: diff_weight * lobe(&s.pixel.ltc.diff),
     }
 }

@@ -15,11 +15,10 @@ use std::f64::consts::PI;
 
 use glam::DVec3;
 
-use crate::brdf::{self, Alpha, Lobes, MIN_LIGHT_DISTANCE};
+use crate::brdf::{self, Lobes, MIN_LIGHT_DISTANCE};
 use crate::light::polar::{DIFFUSE_NODES, mirror, rule_nodes};
 use crate::light::sphere::{fd_toward, widening_energy};
 use crate::light::{EmitterLobes, EmitterShading, ExactRule};
-use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::named::named_enum;
 
 pub use form::{
@@ -178,15 +177,9 @@ pub const TUBE_POINT_LIMIT: f64 = 1e-3;
 /// One tube light of unit radiance at one shading point: everything the methods read.
 #[derive(Clone, Copy, Debug)]
 pub struct TubeShading<'a> {
-    pub v: DVec3,
+    /// The view, the material, the LTC lobes and the rules (every emitter's).
+    pub pixel: EmitterShading<'a>,
     pub tube: Tube,
-    /// The material's roughness along the shading frame's x and y.
-    pub alpha: Alpha<f64>,
-    pub f0: f64,
-    /// The LTC lobes at this pixel's (θo, α).
-    pub ltc: &'a LtcPair,
-    pub clip: Clipping,
-    pub normalization: Normalization,
 }
 
 /// A tube's unit-radiance lobes by `method` and the area its radiance `4I/A` divides by, a
@@ -205,15 +198,7 @@ pub fn emitter_lobes(
         b: to_frame(centre + half_axis),
         radius,
     };
-    let shading = TubeShading {
-        v: s.v,
-        tube,
-        alpha: s.alpha,
-        f0: s.f0,
-        ltc: s.ltc,
-        clip: s.clip,
-        normalization: s.normalization,
-    };
+    let shading = TubeShading { pixel: *s, tube };
     (tube_light_with(method, &shading, rule), 0.25 * tube.area())
 }
 
@@ -243,12 +228,14 @@ pub fn tube_light_with(method: TubeMethod, s: &TubeShading<'_>, rule: ExactRule)
             // 3.4% at 0.02 (tests/lights/tube_light.rs): a limit left to fix.
             match rule {
                 ExactRule::Nodes(n) if s.tube.encloses_origin() => {
-                    region::tube_exact(s.v, &s.tube, s.alpha, s.f0, (n, n))
+                    region::tube_exact(s.pixel.v, &s.tube, s.pixel.alpha, s.pixel.f0, (n, n))
                 }
-                ExactRule::Nodes(n) => band::tube_band(s.v, &s.tube, s.alpha, s.f0, (n, n)),
+                ExactRule::Nodes(n) => {
+                    band::tube_band(s.pixel.v, &s.tube, s.pixel.alpha, s.pixel.f0, (n, n))
+                }
                 ExactRule::Render => {
-                    let nodes = (rule_nodes(s.alpha), DIFFUSE_NODES);
-                    band::tube_band(s.v, &s.tube, s.alpha, s.f0, nodes)
+                    let nodes = (rule_nodes(s.pixel.alpha), DIFFUSE_NODES);
+                    band::tube_band(s.pixel.v, &s.tube, s.pixel.alpha, s.pixel.f0, nodes)
                 }
             }
         }
@@ -268,11 +255,11 @@ pub fn tube_point(exact: bool, s: &TubeShading<'_>) -> Lobes<f64> {
     let e = s.tube.projected_area(l) / d2;
     let lobes = crate::light::point_lobes(
         exact,
-        (s.v, l),
-        (s.alpha, s.f0),
-        s.ltc,
-        s.clip,
-        s.normalization,
+        (s.pixel.v, l),
+        (s.pixel.alpha, s.pixel.f0),
+        s.pixel.ltc,
+        s.pixel.clip,
+        s.pixel.normalization,
     );
     Lobes {
         specular: e * lobes.specular,
@@ -290,24 +277,30 @@ pub fn tube_point(exact: bool, s: &TubeShading<'_>) -> Lobes<f64> {
 pub fn tube_representative_point(s: &TubeShading<'_>) -> Lobes<f64> {
     let t = &s.tube;
     let r = t.radius;
-    let reflected = mirror(s.v);
+    let reflected = mirror(s.pixel.v);
     let on_segment = t.a + t.axis() * t.nearest_to_ray(reflected);
     let to_ray = reflected * on_segment.dot(reflected) - on_segment;
     let reach = to_ray.length();
     let closest = on_segment + to_ray * (r / reach).min(1.0);
     let l = closest.try_normalize().unwrap_or(reflected);
     let d = on_segment.length().max(MIN_LIGHT_DISTANCE);
-    let sphere = widening_energy(s.alpha, (r / d).min(1.0));
+    let sphere = widening_energy(s.pixel.alpha, (r / d).min(1.0));
     let wide = |a: f64| (a + 0.5 * (r / d).min(1.0)).min(1.0);
     let line = |a: f64| wide(a) / (wide(a) + 0.5 * (0.5 * t.length() / d).min(1.0)).min(1.0);
-    let energy = sphere * line(s.alpha.x.max(s.alpha.y));
+    let energy = sphere * line(s.pixel.alpha.x.max(s.pixel.alpha.y));
     let intensity = 2.0 * r * t.length() + PI * r * r;
-    let specular = brdf::brdf_cos_aniso(s.v.to_array(), l.to_array(), s.alpha, s.f0).specular;
+    let specular = brdf::brdf_cos_aniso(
+        s.pixel.v.to_array(),
+        l.to_array(),
+        s.pixel.alpha,
+        s.pixel.f0,
+    )
+    .specular;
     let c = t.centre();
     let c2 = c.length_squared().max(r * r);
     let irradiance =
         2.0 * r * line::line_irradiance(t.a, t.b) + PI * r * r * (c.z / c.length()).max(0.0) / c2;
-    let diffuse = fd_toward(s.v, c.normalize(), s.alpha.diffuse()) * irradiance;
+    let diffuse = fd_toward(s.pixel.v, c.normalize(), s.pixel.alpha.diffuse()) * irradiance;
     Lobes {
         specular: intensity / d.max(r).powi(2) * energy * specular,
         diffuse,

@@ -194,13 +194,10 @@ pub struct StudySettings {
     pub encodings: Vec<Encoding>,
 }
 
-/// Which shapes a method file shades, by `ShapeKind::index` (`MethodFile::shades`).
-pub(crate) type FileShades = [bool; ShapeKind::ALL.len()];
-
 /// The renderers of a study: one per table its variants shade with, and the method file's.
 pub(crate) struct Renderers {
     pub by_lut: Vec<(LutChoice, PlaneRenderer)>,
-    pub file: Option<(FileShades, PlaneRenderer)>,
+    pub file: Option<(crate::gpu::method_file::Shades, PlaneRenderer)>,
 }
 
 impl Renderers {
