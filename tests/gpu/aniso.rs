@@ -8,14 +8,12 @@ use glam::DVec3;
 use ltc_lab::brdf::Alpha;
 use ltc_lab::cpu::render;
 use ltc_lab::gpu::{brdf, brdf_aniso, ltc, ltc_aniso};
-use ltc_lab::light::disk::DiskMethod;
-use ltc_lab::light::rect::RectMethod;
-use ltc_lab::light::sphere::SphereMethod;
+use ltc_lab::light::ShapeKind;
 use ltc_lab::ltc::aniso::anchor::shipped;
 use ltc_lab::ltc::aniso::{AnisoAxes, AnisoLut};
 use ltc_lab::ltc::lut::Lut;
 use ltc_lab::ltc::{Clipping, Normalization};
-use ltc_lab::render::{Method, RenderSettings};
+use ltc_lab::render::{Method, RenderSettings, ShapeMethod};
 use ltc_lab::scene::{Scene, SplitMix64, preset};
 
 const PROBE: &str = "
@@ -163,8 +161,11 @@ fn every_shape() -> Scene {
         l.position[0] += 0.3 * k as f64;
         lights.push(l);
     }
-    let disks = preset("disk-limits").lights;
-    lights.extend(disks.into_iter().take(2));
+    // The first two lights of each other emitter's first failure preset.
+    for kind in [ShapeKind::Disk, ShapeKind::Tube] {
+        let (first, _) = ltc_lab::scene::shape_presets(kind)[0];
+        lights.extend(preset(first).lights.into_iter().take(2));
+    }
     let mut point = lights[1];
     point.shape = ltc_lab::light::Shape::Point;
     point.position = [0.3, 0.4, 0.5];
@@ -198,9 +199,13 @@ fn anisotropic_renders_match_the_cpu_by_every_method() {
             };
             for k in variants {
                 let mut s = RenderSettings::single(w, h, method);
-                s.a.set(SphereMethod::ALL[k % SphereMethod::ALL.len()]);
-                s.a.set(RectMethod::ALL[k % RectMethod::ALL.len()]);
-                s.a.set(DiskMethod::ALL[k % DiskMethod::ALL.len()]);
+                for kind in ShapeKind::ALL
+                    .into_iter()
+                    .filter(|&k| k != ShapeKind::Point)
+                {
+                    let all = ShapeMethod::all(kind);
+                    s.a = s.a.with(all[k % all.len()]);
+                }
                 if k == 4 {
                     s.rules.clipping = Clipping::NONE;
                     s.rules.normalization = Normalization::PaperLiteral;
