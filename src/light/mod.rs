@@ -404,6 +404,21 @@ pub struct EmitterShading<'a> {
     pub normalization: Normalization,
 }
 
+impl<'a> EmitterShading<'a> {
+    /// At `v` with `alpha`, `f0` and the pixel's LTC lobes `ltc`, by eq. 30's rules and the
+    /// corrected normalization: the case the error tables and the encodings' figures measure.
+    pub fn corrected(v: DVec3, alpha: Alpha<f64>, f0: f64, ltc: &'a LtcPair) -> Self {
+        Self {
+            v,
+            alpha,
+            f0,
+            ltc,
+            clip: Clipping::BOTH,
+            normalization: Normalization::Corrected,
+        }
+    }
+}
+
 /// An emitter's unit-radiance lobes and the area its radiance `I/A` divides by: what each
 /// emitter's `emitter_lobes` gives (`rect`, `disk`, `tube`).
 pub type EmitterLobes = (Lobes<f64>, f64);

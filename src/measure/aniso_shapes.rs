@@ -13,8 +13,8 @@ use crate::light::disk::{DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::{RectMethod, RectShading, rect_exact, rect_light};
 use crate::light::sphere::cap::Cap;
 use crate::light::sphere::{SphereMethod, SphereShading, sphere_exact, sphere_light};
+use crate::ltc::LtcPair;
 use crate::ltc::lut::{ALPHA_MIN, Lut};
-use crate::ltc::{Clipping, LtcPair, Normalization};
 use crate::measure::shape_error::{BANDS, F0, lights};
 use crate::named::named_enum;
 use crate::scene::SplitMix64;
@@ -160,7 +160,7 @@ impl Case {
 
     /// The LTC method's specular radiance of `shape` with `pair`, eq. 30's rules.
     fn ltc(&self, shape: Measured, pair: &LtcPair) -> f64 {
-        let (clip, normalization) = (Clipping::BOTH, Normalization::Corrected);
+        let pixel = EmitterShading::corrected(self.v, self.alpha, F0, pair);
         match shape {
             Measured::Point => {
                 sphere_light(SphereMethod::LtcPoint, &self.sphere(0.0, pair)).specular
@@ -171,28 +171,14 @@ impl Case {
             }
             Measured::Rect => {
                 let s = RectShading {
-                    pixel: EmitterShading {
-                        v: self.v,
-                        alpha: self.alpha,
-                        f0: F0,
-                        ltc: pair,
-                        clip,
-                        normalization,
-                    },
+                    pixel,
                     rect: self.rect,
                 };
                 rect_light(RectMethod::LtcPolygon, &s).specular
             }
             Measured::Disk => {
                 let s = DiskShading {
-                    pixel: EmitterShading {
-                        v: self.v,
-                        alpha: self.alpha,
-                        f0: F0,
-                        ltc: pair,
-                        clip,
-                        normalization,
-                    },
+                    pixel,
                     disk: self.disk,
                 };
                 disk_light(DiskMethod::LtcDisk, &s).specular

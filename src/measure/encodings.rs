@@ -17,7 +17,6 @@ use crate::light::sphere::{SphereMethod, SphereShading, sphere_light};
 use crate::ltc::aniso::encoded::bytes as aniso_bytes;
 use crate::ltc::fit::{FitSettings, fit_table};
 use crate::ltc::lut::{ALPHA_MIN, Encoding, Lut, Storage, THETA_MAX};
-use crate::ltc::{Clipping, Normalization};
 use crate::measure::horizon::{F0, lobes};
 use crate::measure::shape_error::lights;
 use crate::measure::sphere_error::one_sphere;
@@ -242,18 +241,10 @@ fn one_case(
     let elevation = l.z.asin().to_degrees();
     let azimuth = l.y.atan2(l.x).to_degrees();
     let (rect, disk) = lights(rng, AREA_SOLID_ANGLE, elevation, azimuth);
-    let (clip, normalization) = (Clipping::BOTH, Normalization::Corrected);
     let rects = all.iter().map(|t| {
         let pair = t.ltc_pair(alpha, v);
         let s = RectShading {
-            pixel: EmitterShading {
-                v,
-                alpha: a,
-                f0: F0,
-                ltc: &pair,
-                clip,
-                normalization,
-            },
+            pixel: EmitterShading::corrected(v, a, F0, &pair),
             rect,
         };
         rect_light(RectMethod::LtcPolygon, &s)
@@ -261,14 +252,7 @@ fn one_case(
     let disks = all.iter().map(|t| {
         let pair = t.ltc_pair(alpha, v);
         let s = DiskShading {
-            pixel: EmitterShading {
-                v,
-                alpha: a,
-                f0: F0,
-                ltc: &pair,
-                clip,
-                normalization,
-            },
+            pixel: EmitterShading::corrected(v, a, F0, &pair),
             disk,
         };
         disk_light(DiskMethod::LtcDisk, &s)
@@ -307,14 +291,7 @@ fn anisotropic(
     let point = |pair, method| sphere_light(method, &SphereShading::unit(v, l, 0.0, a, F0, pair));
     let rect_by = |pair| {
         let s = RectShading {
-            pixel: EmitterShading {
-                v,
-                alpha: a,
-                f0: F0,
-                ltc: pair,
-                clip: Clipping::BOTH,
-                normalization: Normalization::Corrected,
-            },
+            pixel: EmitterShading::corrected(v, a, F0, pair),
             rect: *rect,
         };
         rect_light(RectMethod::LtcPolygon, &s)

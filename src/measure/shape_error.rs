@@ -14,7 +14,6 @@ use crate::light::disk::{Disk, DiskMethod, DiskShading, disk_exact, disk_light};
 use crate::light::rect::form::tilted_frame;
 use crate::light::rect::{Rect, RectMethod, RectShading, rect_exact, rect_light};
 use crate::ltc::lut::Lut;
-use crate::ltc::{Clipping, Normalization};
 use crate::scene::SplitMix64;
 
 /// Solid angles of the lights (sr, approximately: `A cos θe / d²`).
@@ -138,16 +137,8 @@ fn cell(
         let (elevation, azimuth) = (rng.uniform(band), rng.uniform([0.0, 360.0]));
         let (rect, disk) = lights(&mut rng, omega, elevation, azimuth);
         let pair = lut.ltc_pair(alpha, v);
-        let (clip, normalization) = (Clipping::BOTH, Normalization::Corrected);
         let s = RectShading {
-            pixel: EmitterShading {
-                v,
-                alpha: Alpha::isotropic(alpha),
-                f0: F0,
-                ltc: &pair,
-                clip,
-                normalization,
-            },
+            pixel: EmitterShading::corrected(v, Alpha::isotropic(alpha), F0, &pair),
             rect,
         };
         let exact = rect_exact(v, &rect, Alpha::isotropic(alpha), F0, nodes);
@@ -164,14 +155,7 @@ fn cell(
             add(e, rect_light(m, &s), exact);
         }
         let s = DiskShading {
-            pixel: EmitterShading {
-                v,
-                alpha: Alpha::isotropic(alpha),
-                f0: F0,
-                ltc: &pair,
-                clip,
-                normalization,
-            },
+            pixel: EmitterShading::corrected(v, Alpha::isotropic(alpha), F0, &pair),
             disk,
         };
         let exact = disk_exact(v, &disk, Alpha::isotropic(alpha), F0, nodes);
