@@ -170,8 +170,7 @@ fn disk_emitter_lobes(
 // method, the paper's point formula for the LTC ones.
 fn disk_point(s: DiskShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     let l = normalize(s.disk.centre);
-    let lobes = point_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0, pair, s.pixel.clip, s.pixel.normalization, exact);
-    return disk_point_irradiance(s.disk) * lobes;
+    return emitter_shading_point_light(s.pixel, pair, l, disk_point_irradiance(s.disk), exact);
 }
 
 // disk_exact: ∫ f cos dω over the disk above the surface at unit radiance, by

@@ -15,6 +15,29 @@ struct EmitterShading {
     normalization: u32,
 }
 
+// EmitterShading::point_light: an emitter as its oriented point light toward unit `l` with
+// `irradiance` at the point — the exact point light where `exact`, the paper's point formula
+// else; the form every emitter takes when it is tiny.
+fn emitter_shading_point_light(
+    pixel: EmitterShading,
+    pair: LtcPair,
+    l: vec3<f32>,
+    irradiance: f32,
+    exact: bool,
+) -> vec2<f32> {
+    let lobes = point_lobes(
+        pixel.v,
+        l,
+        pixel.alpha,
+        pixel.f0,
+        pair,
+        pixel.clip,
+        pixel.normalization,
+        exact,
+    );
+    return irradiance * lobes;
+}
+
 // emitter_lobes: an emitter's unit-radiance lobes (xy) by side A's (`a`) or B's method for its
 // `shape` (the shape's override constants), and the area (z) its radiance I/A divides by.
 // `dims` is its light's second element (its dimensions, src/gpu/light/mod.rs second_element)

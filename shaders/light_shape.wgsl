@@ -1,8 +1,7 @@
 // One light added to a side's sums by the side's method for its shape (docs/design.md §5.12):
 // add_light, by add_point, add_sphere or, for every emitter, add_emitter (emitter.wgsl's
-// emitter_lobes).
-// Composed after scene.wgsl and before plane.wgsl, whose Sums, Pixel, LtcShading,
-// is_factored and add_point it uses; the Rust side is src/gpu/light/light_shape.rs.
+// emitter_lobes). Composed after scene.wgsl and before plane.wgsl, whose Sums, Pixel,
+// LtcShading, is_factored and add_point it uses; the Rust side is src/gpu/light/light_shape.rs.
 
 // The shapes' codes, their methods' codes and the override constants that pick them are
 // each shape's own file's (sphere_light.wgsl, rect_light.wgsl, …); scene.wgsl's light_shape
@@ -80,7 +79,13 @@ fn add_emitter(
     let extra = extra_element(light);
     let dims = mat2x4<f32>(extra.position_range, extra.intensity);
     let centre = light.position_range.xyz - p.x;
-    let pixel = EmitterShading(p.v_tangent, material_alpha(), params.f0, params.clip, params.normalization);
+    let pixel = EmitterShading(
+        p.v_tangent,
+        material_alpha(),
+        params.f0,
+        params.clip,
+        params.normalization,
+    );
     let unit = emitter_lobes(shape, a, dims, centre, p.tangent_from_world, pixel, ltc.pair);
     var lobes = unit.xy;
     let scale = window_falloff_d2(dot(centre, centre), light.position_range.w) / unit.z;

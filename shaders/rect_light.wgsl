@@ -353,8 +353,7 @@ fn rect_emitter_lobes(
 // method, the paper's point formula for the LTC ones.
 fn rect_point(s: RectShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     let l = normalize(s.rect.centre);
-    let lobes = point_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0, pair, s.pixel.clip, s.pixel.normalization, exact);
-    return rect_point_irradiance(s.rect) * lobes;
+    return emitter_shading_point_light(s.pixel, pair, l, rect_point_irradiance(s.rect), exact);
 }
 
 // rect_rule: both lobes of a rect of unit radiance by the renders' rule (src/light/rect/

@@ -146,7 +146,7 @@ fn tube_point(s: TubeShading, pair: LtcPair, exact: bool) -> vec2<f32> {
     let d2 = max(dot(c, c), s.tube.radius * s.tube.radius);
     let l = normalize(c);
     let e = tube_projected_area(s.tube, l) / d2;
-    return e * point_lobes(s.pixel.v, l, s.pixel.alpha, s.pixel.f0, pair, s.pixel.clip, s.pixel.normalization, exact);
+    return emitter_shading_point_light(s.pixel, pair, l, e, exact);
 }
 
 // clip_segment: the part of p1 p2 at or above z = 0, as mat2x3's columns; `false` in the

@@ -417,6 +417,24 @@ impl<'a> EmitterShading<'a> {
             normalization: Normalization::Corrected,
         }
     }
+
+    /// An emitter as its oriented point light toward unit `l` with `irradiance` at the point
+    /// (`point_lobes` times it): the exact point light where `exact`, the paper's point
+    /// formula else — the form every emitter takes when it is tiny.
+    pub fn point_light(&self, exact: bool, l: DVec3, irradiance: f64) -> Lobes<f64> {
+        let lobes = point_lobes(
+            exact,
+            (self.v, l),
+            (self.alpha, self.f0),
+            self.ltc,
+            self.clip,
+            self.normalization,
+        );
+        Lobes {
+            specular: irradiance * lobes.specular,
+            diffuse: irradiance * lobes.diffuse,
+        }
+    }
 }
 
 /// An emitter's unit-radiance lobes and the area its radiance `I/A` divides by: what each

@@ -91,8 +91,8 @@ fn draw(rng: &mut SplitMix64, lut: &Lut, e: &Emitter) -> Case {
     }
 }
 
-/// A unit normal within `tilt_deg` of facing the origin from `centre` (the rest of the way
-/// to edge-on), and one case in ten facing away.
+/// A unit normal from `centre` tilted from facing the origin toward edge-on, its tilt's
+/// elevation at least `least_elevation_deg` (90°: facing it), and one case in ten facing away.
 fn normal_toward_origin(rng: &mut SplitMix64, centre: DVec3, least_elevation_deg: f64) -> DVec3 {
     let tilt = direction(
         rng.uniform([

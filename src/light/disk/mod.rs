@@ -12,7 +12,7 @@ use glam::{DMat3, DVec3};
 
 use crate::brdf::{self, Alpha, Lobes};
 use crate::light::sphere::disk::{cone_image, cone_integral, hemisphere};
-use crate::light::{EmitterLobes, EmitterShading, ExactRule, point_lobes};
+use crate::light::{EmitterLobes, EmitterShading, ExactRule};
 use crate::ltc::{Ltc, Normalization};
 use crate::named::named_enum;
 
@@ -174,18 +174,7 @@ pub fn disk_point(method: DiskMethod, s: &DiskShading<'_>) -> Lobes<f64> {
     let e = s.disk.point_irradiance();
     let l = s.disk.centre.normalize();
     let exact = method == DiskMethod::Exact;
-    let lobes = point_lobes(
-        exact,
-        (s.pixel.v, l),
-        (s.pixel.alpha, s.pixel.f0),
-        s.pixel.ltc,
-        s.pixel.clip,
-        s.pixel.normalization,
-    );
-    Lobes {
-        specular: e * lobes.specular,
-        diffuse: e * lobes.diffuse,
-    }
+    s.pixel.point_light(exact, l, e)
 }
 
 /// The exact radiance of a disk of unit radiance toward `v`, per lobe (base colour 1):

@@ -12,7 +12,7 @@ pub mod region;
 use glam::DVec3;
 
 use crate::brdf::{self, Alpha, Lobes};
-use crate::light::{EmitterLobes, EmitterShading, ExactRule, point_lobes};
+use crate::light::{EmitterLobes, EmitterShading, ExactRule};
 use crate::named::named_enum;
 
 pub use form::{EVAL_COLUMNS, PRESETS, SIZES, VECTORS, bench_shape, bench_title, eval_row};
@@ -196,18 +196,7 @@ pub fn rect_point(method: RectMethod, s: &RectShading<'_>) -> Lobes<f64> {
     let e = s.rect.point_irradiance();
     let l = s.rect.centre.normalize();
     let exact = method == RectMethod::Exact;
-    let lobes = point_lobes(
-        exact,
-        (s.pixel.v, l),
-        (s.pixel.alpha, s.pixel.f0),
-        s.pixel.ltc,
-        s.pixel.clip,
-        s.pixel.normalization,
-    );
-    Lobes {
-        specular: e * lobes.specular,
-        diffuse: e * lobes.diffuse,
-    }
+    s.pixel.point_light(exact, l, e)
 }
 
 /// The exact radiance of a rect of unit radiance toward `v`, per lobe (base colour 1):

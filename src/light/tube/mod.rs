@@ -253,18 +253,7 @@ pub fn tube_point(exact: bool, s: &TubeShading<'_>) -> Lobes<f64> {
     let d2 = c.length_squared().max(s.tube.radius * s.tube.radius);
     let l = c.normalize();
     let e = s.tube.projected_area(l) / d2;
-    let lobes = crate::light::point_lobes(
-        exact,
-        (s.pixel.v, l),
-        (s.pixel.alpha, s.pixel.f0),
-        s.pixel.ltc,
-        s.pixel.clip,
-        s.pixel.normalization,
-    );
-    Lobes {
-        specular: e * lobes.specular,
-        diffuse: e * lobes.diffuse,
-    }
+    s.pixel.point_light(exact, l, e)
 }
 
 /// Karis 2013 ("Real Shading in Unreal Engine 4", tube lights): the specular lobe at the point
