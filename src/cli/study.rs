@@ -68,6 +68,12 @@ pub struct Args {
         default_value = "arrival-fit,constrained-fit,nl-fit,exact-band"
     )]
     horizon: Vec<Horizon>,
+    /// Only these variants of the generated lights, comma-separated (study.csv's names:
+    /// ltc, ltc-fast, ltc-fast-nl-fit…), beside brdf, the reference, which always runs; a
+    /// remedy's variant needs its remedy in --horizon too, an f16 one an adapter with f16.
+    /// Default: every one. The sized lights' variants and the scenes as given are kept.
+    #[arg(long, value_delimiter = ',')]
+    variants: Option<Vec<String>>,
     /// Cases per elevation band of horizon.csv, from 1 to 10⁸: the default puts each band's
     /// error within about 1% of itself, 10⁵ within about 3% in a tenth of the time.
     #[arg(long, default_value_t = horizon::CASES)]
@@ -149,6 +155,12 @@ pub fn run(a: &Args) -> Result<()> {
             ),
         ));
     }
+    let only = a
+        .variants
+        .as_ref()
+        .map(|names| names.iter().map(|n| study::variant_named(n)).collect())
+        .transpose()
+        .map_err(|why| Error::input("--variants", why))?;
     // The scene's range: a material below α_min is refused everywhere else.
     let alphas = ALPHA_MIN..=1.0;
     if let Some(&alpha) = a.alpha.iter().find(|x| !alphas.contains(*x)) {
@@ -180,6 +192,7 @@ pub fn run(a: &Args) -> Result<()> {
         culls: a.culling.cull.clone(),
         range: Range::or_default(a.culling.range),
         horizons: a.horizon.clone(),
+        only,
         heights: heights.unwrap_or(ltc_lab::measure::bench::PAPER_HEIGHTS),
         sizes,
         method_file: a

@@ -23,6 +23,10 @@ const SMALL: [&str; 10] = [
     "20000",
 ];
 
+/// The same study of one variant beside the reference, for the tests of where its files go
+/// (each variant is a pipeline to compile, and the fitted tables' variants a fit).
+const FEW: [&str; 2] = ["--variants", "ltc"];
+
 #[test]
 fn study_writes_every_variant_and_the_pareto_chart() {
     if gpu().is_none() {
@@ -126,6 +130,7 @@ fn study_measures_each_sized_method_against_its_exact_image() {
     args.extend(["--rect-half-edge", "0.05", "--disk-radius", "0.05"]);
     args.extend(["--size-for", "tube=0.02"]);
     args.extend(["--encodings", "f32,unorm8-8"]);
+    args.extend(FEW);
     let o = ltc_lab(&args);
     assert!(o.status.success(), "{}", stderr(&o));
     let rows = ltc_lab::measure::study::read_csv(&dir.join("study.csv")).unwrap();
@@ -218,6 +223,11 @@ fn study_refuses_bad_arguments() {
         (vec!["--disk-radius", "nan"], "--disk-radius"),
         (vec!["--horizon-cases", "0"], "--horizon-cases"),
         (vec!["--horizon-cases", "1000000000"], "--horizon-cases"),
+        // A name study.csv never holds, named with the ones it does.
+        (
+            vec!["--variants", "ltc,ltc-slow"],
+            "no variant \"ltc-slow\"; the variants: brdf, brdf-fast",
+        ),
     ] {
         let mut all = vec!["study", "--out", "/tmp/never-study"];
         all.extend(args);
@@ -235,6 +245,7 @@ fn study_writes_both_files_or_neither() {
     std::fs::create_dir(dir.path().join("study.png")).unwrap();
     let mut args = vec!["study", "--out", dir.path().to_str().unwrap()];
     args.extend(SMALL);
+    args.extend(FEW);
     assert_refused(&ltc_lab(&args), "study.png");
     assert_eq!(
         std::fs::read_to_string(dir.path().join("study.csv")).unwrap(),
@@ -280,6 +291,7 @@ fn a_default_study_directory_never_replaces_an_earlier_study() {
     std::fs::write(cwd.path().join("study/study.csv"), "the earlier study").unwrap();
     let mut args = vec!["study"];
     args.extend(SMALL);
+    args.extend(FEW);
     let o = ltc_lab_in(cwd.path(), &args);
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(
@@ -291,6 +303,10 @@ fn a_default_study_directory_never_replaces_an_earlier_study() {
         "{}",
         stderr(&o)
     );
+    // --variants ran the one asked for beside the reference, no other.
+    let rows = ltc_lab::measure::study::read_csv(&cwd.path().join("study-2/study.csv")).unwrap();
+    let names: Vec<&str> = rows.iter().map(|r| r.variant.as_str()).collect();
+    assert_eq!(names, ["brdf", "ltc"]);
 }
 
 /// Sends SIGTERM (a `kill` does what a service manager or a closed terminal does).
@@ -366,6 +382,8 @@ fn two_default_studies_at_once_get_two_directories() {
         "1",
         "--horizon-cases",
         "2000",
+        "--variants",
+        "ltc-fast",
     ];
     let runs: Vec<Child> = (0..2)
         .map(|_| {

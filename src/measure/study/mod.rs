@@ -18,7 +18,10 @@ use crate::scene::Scene;
 
 mod variants;
 
-pub use variants::{LTC, LutChoice, Variant, encoded_variant, variant, variant_encoding, variants};
+pub use variants::{
+    LTC, LutChoice, REFERENCE, Variant, encoded_variant, variant, variant_encoding, variant_named,
+    variants,
+};
 
 /// One row of `study.csv`.
 #[derive(Clone, Debug, PartialEq)]
@@ -174,6 +177,9 @@ pub struct StudySettings {
     pub range: Option<f64>,
     /// The remedies whose variants run (eq30's always do).
     pub horizons: Vec<Horizon>,
+    /// Only these of the generated lights' variants, beside the reference (`REFERENCE`); every
+    /// one where `None`.
+    pub only: Option<Vec<&'static str>>,
     /// The lights' heights above the plane (paper-100's, or a scene whose lights sit low).
     pub heights: [f64; 2],
     /// Also every light a light of each of these shapes of that size (`ShapeKind::bench_shape`:
@@ -247,10 +253,20 @@ impl Study {
     /// The variants of `s` this device runs, and their renderers.
     pub fn new(ctx: &GpuContext, shipped: &Lut, s: &StudySettings) -> Result<Self> {
         crate::measure::bench::check(ctx, &s.lights, s.size)?;
-        let variants: Vec<Variant> = variants()
+        // The variants shade points: with no generated lights and no point in a scene as
+        // given, none runs, and their tables (two of them fitted, seconds each) are not made.
+        let points = |scene: &Scene| {
+            scene
+                .lights
+                .iter()
+                .any(|l| l.shape.kind() == ShapeKind::Point)
+        };
+        let shaded = !s.lights.is_empty() || s.scenes.iter().any(|(_, scene)| points(scene));
+        let variants: Vec<Variant> = if shaded { variants() } else { Vec::new() }
             .into_iter()
             .filter(|v| !v.method.needs_f16() || ctx.has_f16())
             .filter(|v| v.horizon == Horizon::Eq30 || s.horizons.contains(&v.horizon))
+            .filter(|v| v.name == REFERENCE || s.only.as_ref().is_none_or(|o| o.contains(&v.name)))
             .collect();
         let mut renderers: Vec<(LutChoice, PlaneRenderer)> = Vec::new();
         // The scenes as given shade sized lights with the shipped table too.

@@ -85,6 +85,25 @@ pub fn variants() -> Vec<Variant> {
     ]
 }
 
+/// The variant every other is measured against (error 0), the first of `variants`, which a
+/// study always runs.
+pub const REFERENCE: &str = "brdf";
+
+/// The variant of `variants` named `name` (`study --variants`' parser), or why there is none.
+pub fn variant_named(name: &str) -> Result<&'static str, String> {
+    let all = variants();
+    match all.iter().find(|v| v.name == name) {
+        Some(v) => Ok(v.name),
+        None => {
+            let names: Vec<&str> = all.iter().map(|v| v.name).collect();
+            Err(format!(
+                "no variant {name:?}; the variants: {}",
+                names.join(", ")
+            ))
+        }
+    }
+}
+
 /// The `ltc` variant, which each encoding's variant shades as.
 pub const LTC: Variant = Variant {
     name: "ltc",
