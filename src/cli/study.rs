@@ -68,10 +68,10 @@ pub struct Args {
         default_value = "arrival-fit,constrained-fit,nl-fit,exact-band"
     )]
     horizon: Vec<Horizon>,
-    /// Only these variants of the generated lights, comma-separated (study.csv's names:
-    /// ltc, ltc-fast, ltc-fast-nl-fit…), beside brdf, the reference, which always runs; a
-    /// remedy's variant needs its remedy in --horizon too, an f16 one an adapter with f16.
-    /// Default: every one. The sized lights' variants and the scenes as given are kept.
+    /// Only these point variants, comma-separated (study.csv's names: ltc, ltc-fast,
+    /// ltc-fast-nl-fit…), beside brdf, the reference, which always runs; on the generated
+    /// lights and a scene's points alike. A remedy's variant needs its remedy in --horizon too,
+    /// an f16 one an adapter with f16. Default: every one. The sized lights' methods all run.
     #[arg(long, value_delimiter = ',')]
     variants: Option<Vec<String>>,
     /// Cases per elevation band of horizon.csv, from 1 to 10⁸: the default puts each band's

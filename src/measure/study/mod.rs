@@ -177,8 +177,8 @@ pub struct StudySettings {
     pub range: Option<f64>,
     /// The remedies whose variants run (eq30's always do).
     pub horizons: Vec<Horizon>,
-    /// Only these of the generated lights' variants, beside the reference (`REFERENCE`); every
-    /// one where `None`.
+    /// Only these point variants (of the generated lights and of a scene's points), beside
+    /// the reference (`REFERENCE`); every one where `None`.
     pub only: Option<Vec<&'static str>>,
     /// The lights' heights above the plane (paper-100's, or a scene whose lights sit low).
     pub heights: [f64; 2],

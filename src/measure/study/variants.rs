@@ -89,19 +89,12 @@ pub fn variants() -> Vec<Variant> {
 /// study always runs.
 pub const REFERENCE: &str = "brdf";
 
-/// The variant of `variants` named `name` (`study --variants`' parser), or why there is none.
+/// `variant`'s name, or why there is none, naming the names there are (`study --variants`).
 pub fn variant_named(name: &str) -> Result<&'static str, String> {
-    let all = variants();
-    match all.iter().find(|v| v.name == name) {
-        Some(v) => Ok(v.name),
-        None => {
-            let names: Vec<&str> = all.iter().map(|v| v.name).collect();
-            Err(format!(
-                "no variant {name:?}; the variants: {}",
-                names.join(", ")
-            ))
-        }
-    }
+    variant(name).map(|v| v.name).ok_or_else(|| {
+        let names: Vec<&str> = variants().iter().map(|v| v.name).collect();
+        format!("no variant {name:?}; the variants: {}", names.join(", "))
+    })
 }
 
 /// The `ltc` variant, which each encoding's variant shades as.
